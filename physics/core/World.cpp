@@ -1,0 +1,522 @@
+#include "physics/core/World.h"
+
+#include "physics/effects/SpringEffect.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace phasebox {
+
+namespace {
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Divergence by runaway energy: the drift (the integrator's energy error) exceeds this many
+// times the scene's energy scale and has grown by kGrowth per step kStreak steps in a row
+// (exponential blow-up), or exceeds kAbsurd times the scale whatever its growth.
+constexpr double kRunawayFactor = 10.0;
+constexpr double kGrowth = 1.5;
+constexpr int kStreak = 3;
+constexpr double kAbsurd = 1e8;
+}  // namespace
+
+std::string Divergence::message() const {
+    std::ostringstream out;
+    out << "the simulation diverged at t = " << time << " s";
+    if (!objectId.empty()) out << " in object \"" << objectId << "\"";
+    out << " (" << what << "); the state was restored to t = " << restoredTime
+        << " s. Try a smaller dt, more sub-steps, or an implicit integrator (implicit_euler).";
+    return out.str();
+}
+
+World::World() { integrator_ = makeIntegrator(settings_.integrator); }
+World::~World() = default;
+
+// ---- objects ------------------------------------------------------------------------------
+
+int World::addParticle(const Particle& particle) {
+    storeStateInObjects();
+    particles_.push_back(particle);
+    layoutDirty_ = true;
+    return static_cast<int>(particles_.size()) - 1;
+}
+
+int World::addBox(const Box& box) {
+    storeStateInObjects();
+    boxes_.push_back(box);
+    layoutDirty_ = true;
+    return static_cast<int>(boxes_.size()) - 1;
+}
+
+int World::addPlane(const Plane& plane) {
+    planes_.push_back(plane);
+    return static_cast<int>(planes_.size()) - 1;
+}
+
+int World::addSpring(const Spring& spring) {
+    storeStateInObjects();
+    springs_.push_back(spring);
+    layoutDirty_ = true;
+    return static_cast<int>(springs_.size()) - 1;
+}
+
+int World::addCloth(const Cloth& cloth) {
+    cloths_.push_back(cloth);
+    return static_cast<int>(cloths_.size()) - 1;
+}
+
+void World::storeStateInObjects() {
+    if (layoutDirty_) return;  // the objects already hold the newest values
+    const Vec& q = q_[current_];
+    const Vec& u = u_[current_];
+    for (Particle& p : particles_) {
+        if (p.dof < 0) continue;
+        p.position = q.segment<2>(p.dof);
+        p.velocity = u.segment<2>(p.dof);
+    }
+    for (Box& b : boxes_) {
+        if (b.dof < 0) continue;
+        b.position = q.segment<2>(b.dof);
+        b.angle = q[b.dof + 2];
+        b.velocity = u.segment<2>(b.dof);
+        b.angularVelocity = u[b.dof + 2];
+    }
+}
+
+void World::commit() {
+    if (!layoutDirty_) return;
+    const bool hadLayout = committed_;
+    committed_ = true;
+    const double driftBefore = ledger_.drift;
+
+    dynamicParticles_.clear();
+    dynamicBoxes_.clear();
+    for (int i = 0; i < static_cast<int>(particles_.size()); ++i)
+        if (!particles_[i].pinned) dynamicParticles_.push_back(i);
+    for (int i = 0; i < static_cast<int>(boxes_.size()); ++i)
+        if (!boxes_[i].isStatic) dynamicBoxes_.push_back(i);
+    layout_.dynamicParticles = static_cast<int>(dynamicParticles_.size());
+    layout_.dynamicBoxes = static_cast<int>(dynamicBoxes_.size());
+
+    const int n = layout_.dimension();
+    for (int k = 0; k < 2; ++k) {
+        q_[k].setZero(n);
+        u_[k].setZero(n);
+    }
+    current_ = 0;
+    mass_.setZero(n);
+    invMass_.setZero(n);
+    force_.setZero(n);
+    Vec& q = q_[0];
+    Vec& u = u_[0];
+    for (Particle& p : particles_) p.dof = -1;
+    for (Box& b : boxes_) b.dof = -1;
+    for (int k = 0; k < layout_.dynamicParticles; ++k) {
+        Particle& p = particles_[dynamicParticles_[k]];
+        p.dof = layout_.particleDof(k);
+        q.segment<2>(p.dof) = p.position;
+        u.segment<2>(p.dof) = p.velocity;
+        mass_.segment<2>(p.dof).setConstant(p.mass);
+    }
+    for (int k = 0; k < layout_.dynamicBoxes; ++k) {
+        Box& b = boxes_[dynamicBoxes_[k]];
+        b.dof = layout_.boxDof(k);
+        q.segment<2>(b.dof) = b.position;
+        q[b.dof + 2] = b.angle;
+        u.segment<2>(b.dof) = b.velocity;
+        u[b.dof + 2] = b.angularVelocity;
+        mass_.segment<2>(b.dof).setConstant(b.mass);
+        mass_[b.dof + 2] = b.inertia;
+    }
+    invMass_ = mass_.cwiseInverse();
+
+    rebuildSpringEffect();
+    bindEffects();
+    integrator_->reset(n);
+    layoutDirty_ = false;
+
+    // Keep the drift continuous across an edit: the edit itself is not integration error.
+    ledger_.kinetic = kineticEnergy();
+    ledger_.potential = potentialEnergy();
+    if (hadLayout) {
+        ledger_.initial = ledger_.kinetic + ledger_.potential - ledger_.workNc - driftBefore;
+        ledger_.drift = driftBefore;
+    } else {
+        resetEnergyBaseline();
+    }
+}
+
+void World::rebuildSpringEffect() {
+    if (springs_.empty()) {
+        if (springEffect_) {
+            std::erase_if(effects_, [this](const auto& e) { return e.get() == springEffect_; });
+            springEffect_ = nullptr;
+        }
+        return;
+    }
+    if (!springEffect_) {
+        auto effect = std::make_unique<SpringEffect>();
+        springEffect_ = effect.get();
+        effects_.push_back(std::move(effect));
+    }
+    std::vector<SpringTerm> terms;
+    terms.reserve(springs_.size());
+    auto resolve = [this](const SpringEnd& end) -> BodyPoint {
+        switch (end.kind) {
+            case SpringEnd::Kind::Particle: {
+                const Particle& p = particles_[end.index];
+                return p.dof >= 0 ? BodyPoint::particle(p.dof) : BodyPoint::fixed(p.position);
+            }
+            case SpringEnd::Kind::Box: {
+                const Box& b = boxes_[end.index];
+                if (b.dof >= 0) return BodyPoint::box(b.dof, end.point);
+                return BodyPoint::fixed(b.position + rotation(b.angle) * end.point);
+            }
+            case SpringEnd::Kind::Anchor:
+                break;
+        }
+        return BodyPoint::fixed(end.point);
+    };
+    for (const Spring& s : springs_)
+        terms.push_back({resolve(s.a), resolve(s.b), s.stiffness, s.damping, s.restLength});
+    springEffect_->setTerms(std::move(terms));
+}
+
+void World::bindEffects() {
+    const EffectWorldView view{&layout_, &mass_};
+    for (auto& effect : effects_) effect->bind(view);
+    sortEffectsByChannel();
+}
+
+void World::sortEffectsByChannel() {
+    forceEffects_.clear();
+    fieldEffects_.clear();
+    nonConservative_.clear();
+    for (int i = 0; i < static_cast<int>(effects_.size()); ++i) {
+        Effect& e = *effects_[i];
+        (e.isAccelerationField() ? fieldEffects_ : forceEffects_).push_back(i);
+        if (e.hasNonConservativePart()) nonConservative_.push_back(i);
+    }
+    effectSeconds_.assign(effects_.size(), 0.0);
+}
+
+Vec2 World::particlePosition(int i) const {
+    const Particle& p = particles_.at(i);
+    return p.dof >= 0 && !layoutDirty_ ? Vec2(q_[current_].segment<2>(p.dof)) : p.position;
+}
+Vec2 World::particleVelocity(int i) const {
+    const Particle& p = particles_.at(i);
+    return p.dof >= 0 && !layoutDirty_ ? Vec2(u_[current_].segment<2>(p.dof)) : p.velocity;
+}
+Vec2 World::boxPosition(int i) const {
+    const Box& b = boxes_.at(i);
+    return b.dof >= 0 && !layoutDirty_ ? Vec2(q_[current_].segment<2>(b.dof)) : b.position;
+}
+double World::boxAngle(int i) const {
+    const Box& b = boxes_.at(i);
+    return b.dof >= 0 && !layoutDirty_ ? q_[current_][b.dof + 2] : b.angle;
+}
+Vec2 World::boxVelocity(int i) const {
+    const Box& b = boxes_.at(i);
+    return b.dof >= 0 && !layoutDirty_ ? Vec2(u_[current_].segment<2>(b.dof)) : b.velocity;
+}
+double World::boxAngularVelocity(int i) const {
+    const Box& b = boxes_.at(i);
+    return b.dof >= 0 && !layoutDirty_ ? u_[current_][b.dof + 2] : b.angularVelocity;
+}
+
+Vec2 World::springEndPosition(const SpringEnd& end) const {
+    switch (end.kind) {
+        case SpringEnd::Kind::Particle:
+            return particlePosition(end.index);
+        case SpringEnd::Kind::Box:
+            return boxPosition(end.index) + rotation(boxAngle(end.index)) * end.point;
+        case SpringEnd::Kind::Anchor:
+            break;
+    }
+    return end.point;
+}
+
+double World::springTension(int i) const {
+    if (!springEffect_ || layoutDirty_) return 0.0;
+    return springEffect_->tension(static_cast<std::size_t>(i), q_[current_], u_[current_]);
+}
+
+// ---- effects ------------------------------------------------------------------------------
+
+void World::addEffect(std::unique_ptr<Effect> effect) {
+    // A new effect changes the potential energy: rebuild so the drift stays continuous.
+    storeStateInObjects();
+    layoutDirty_ = true;
+    effects_.push_back(std::move(effect));
+    // The spring effect stays last so that scene effects keep their listed order.
+    if (springEffect_) {
+        auto it = std::find_if(effects_.begin(), effects_.end(),
+                               [this](const auto& e) { return e.get() == springEffect_; });
+        std::rotate(it, it + 1, effects_.end());
+    }
+    bindEffects();
+}
+
+Effect* World::findEffect(const std::string& name) const {
+    for (const auto& e : effects_)
+        if (e->name() == name) return e.get();
+    return nullptr;
+}
+
+// ---- settings -----------------------------------------------------------------------------
+
+void World::setSettings(const SimulationSettings& settings) {
+    if (!findIntegrator(settings.integrator))
+        throw std::invalid_argument("unknown integrator \"" + settings.integrator +
+                                    "\"; known: " + knownIntegratorNames());
+    if (!(settings.dt > 0.0) || !(settings.dt <= 1.0))
+        throw std::invalid_argument("dt must be > 0 and <= 1");
+    if (settings.substeps < 1) throw std::invalid_argument("substeps must be >= 1");
+    if (!(settings.tolerance > 0.0) || !std::isfinite(settings.tolerance))
+        throw std::invalid_argument("tolerance must be > 0");
+    if (settings.newtonIterations < 1)
+        throw std::invalid_argument("newton_iterations must be >= 1");
+    const bool newMethod = settings.integrator != settings_.integrator;
+    settings_ = settings;
+    if (newMethod) {
+        integrator_ = makeIntegrator(settings_.integrator);
+        integrator_->reset(layout_.dimension());
+    }
+    integrator_->setSettings({settings_.tolerance, settings_.newtonIterations});
+}
+
+void World::setIntegrator(const std::string& name) {
+    SimulationSettings s = settings_;
+    s.integrator = name;
+    setSettings(s);
+}
+
+// ---- the ODE view -------------------------------------------------------------------------
+
+double World::acceleration(double t, const Vec& q, const Vec& u, Vec& accel) {
+    ++forceEvaluations_;
+    double power = 0.0;
+    bool written = false;
+    if (!forceEffects_.empty()) {
+        force_.setZero();
+        for (int i : forceEffects_) {
+            const auto start = Clock::now();
+            power += effects_[i]->addForces(t, q, u, force_);
+            effectSeconds_[i] += secondsSince(start);
+        }
+        accel.array() = invMass_.array() * force_.array();
+        written = true;
+    }
+    for (int i : fieldEffects_) {
+        const auto start = Clock::now();
+        effects_[i]->addAccelerations(t, q, u, accel, !written);
+        effectSeconds_[i] += secondsSince(start);
+        written = true;
+    }
+    if (!written) accel.setZero();
+    return power;
+}
+
+double World::nonConservativePower(double t, const Vec& q, const Vec& u) {
+    double power = 0.0;
+    for (int i : nonConservative_) power += effects_[i]->nonConservativePower(t, q, u);
+    return power;
+}
+
+double World::forces(double t, const Vec& q, const Vec& u, Vec& force) {
+    ++forceEvaluations_;
+    force.setZero();
+    double power = 0.0;
+    for (int i = 0; i < static_cast<int>(effects_.size()); ++i) {
+        const auto start = Clock::now();
+        power += effects_[i]->addForces(t, q, u, force);
+        effectSeconds_[i] += secondsSince(start);
+    }
+    return power;
+}
+
+double World::forcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& force,
+                                 ForceJacobians& jacobians) {
+    const double power = forces(t, q, u, force);
+    for (int i = 0; i < static_cast<int>(effects_.size()); ++i) {
+        const auto start = Clock::now();
+        effects_[i]->addJacobians(t, q, u, jacobians);
+        effectSeconds_[i] += secondsSince(start);
+    }
+    return power;
+}
+
+void World::setState(const Vec& q, const Vec& u) {
+    ensureLayout();
+    if (q.size() != layout_.dimension() || u.size() != layout_.dimension())
+        throw std::invalid_argument("state size does not match the world's layout");
+    q_[current_] = q;
+    u_[current_] = u;
+}
+
+std::string World::objectAtDof(int dof) const {
+    if (dof < 0 || dof >= layout_.dimension()) return {};
+    if (dof < layout_.boxBase()) return particles_[dynamicParticles_[dof / 2]].id;
+    return boxes_[dynamicBoxes_[(dof - layout_.boxBase()) / 3]].id;
+}
+
+// ---- stepping -----------------------------------------------------------------------------
+
+bool World::step() {
+    ensureLayout();
+    divergence_.reset();
+    const double h = settings_.dt / settings_.substeps;
+    const double frameStart = time_;
+    const auto stepStart = Clock::now();
+    for (int s = 0; s < settings_.substeps; ++s) {
+        const double t = frameStart + s * h;
+        const int next = 1 - current_;
+        const double workBefore = ledger_.workNc;
+        const bool ok = integrator_->step(*this, t, h, q_[current_], u_[current_], q_[next],
+                                          u_[next], ledger_.workNc);
+        // Contacts and pins act here, on the new state (issue #3).
+        if (!ok || (settings_.substeps > 1 && !(q_[next].allFinite() && u_[next].allFinite()))) {
+            Divergence d;
+            d.time = t + h;
+            d.objectId = firstNonFinite(q_[next], u_[next]);
+            d.what = ok ? "a non-finite value" : std::string(integrator_->info().name) + " failed";
+            d.restoredTime = t;
+            ledger_.workNc = workBefore;
+            time_ = t;
+            divergence_ = d;
+            integratorSeconds_ += secondsSince(stepStart);
+            return false;
+        }
+        current_ = next;
+    }
+    integratorSeconds_ += secondsSince(stepStart);
+    time_ = frameStart + settings_.dt;
+    ++stepCount_;
+    return checkEnergy();
+}
+
+double World::kineticEnergyChecked(bool& finite) const {
+    const Vec& q = q_[current_];
+    const Vec& u = u_[current_];
+    const double* __restrict m = mass_.data();
+    const double* __restrict qp = q.data();
+    const double* __restrict up = u.data();
+    double twiceKinetic = 0.0;
+    double check = 0.0;  // q·0 is NaN exactly when q is not finite
+    const Eigen::Index n = q.size();
+    for (Eigen::Index i = 0; i < n; ++i) {
+        twiceKinetic += m[i] * up[i] * up[i];
+        check += qp[i] * 0.0;
+    }
+    finite = std::isfinite(twiceKinetic) && std::isfinite(check);
+    return 0.5 * twiceKinetic;
+}
+
+double World::kineticEnergy() const {
+    bool finite = true;
+    return kineticEnergyChecked(finite);
+}
+
+double World::potentialEnergy() const {
+    double energy = 0.0;
+    for (const auto& e : effects_) energy += e->potentialEnergy(q_[current_]);
+    return energy;
+}
+
+void World::updateLedger() {
+    ledger_.potential = potentialEnergy();
+    ledger_.drift = ledger_.kinetic + ledger_.potential - ledger_.workNc - ledger_.initial;
+    if (std::abs(ledger_.drift) > ledger_.maxAbsDrift) ledger_.maxAbsDrift = std::abs(ledger_.drift);
+}
+
+bool World::checkEnergy() {
+    bool finite = true;
+    ledger_.kinetic = kineticEnergyChecked(finite);
+    std::string what;
+    if (finite) {
+        updateLedger();
+        const double scale = energyScale_ + std::abs(ledger_.workNc);
+        const double drift = ledger_.drift;
+        if (!std::isfinite(drift)) {
+            what = "non-finite energy";
+        } else {
+            const bool growing = drift > kRunawayFactor * scale && drift > kGrowth * previousDrift_;
+            growthStreak_ = growing ? growthStreak_ + 1 : 0;
+            previousDrift_ = drift;
+            if (growthStreak_ >= kStreak || drift > kAbsurd * scale)
+                what = "energy growing without bound";
+        }
+    } else {
+        what = "a non-finite value";
+    }
+    if (what.empty()) return true;
+
+    Divergence d;
+    d.time = time_;
+    d.objectId = finite ? mostEnergeticObject() : firstNonFinite(q_[current_], u_[current_]);
+    d.what = what;
+    // The other buffer holds the start of the last sub-step: the last good state.
+    current_ = 1 - current_;
+    d.restoredTime = time_ - settings_.dt / settings_.substeps;
+    time_ = d.restoredTime;
+    --stepCount_;
+    ledger_.kinetic = kineticEnergy();
+    updateLedger();
+    growthStreak_ = 0;
+    previousDrift_ = 0.0;
+    divergence_ = d;
+    return false;
+}
+
+void World::resetEnergyBaseline() {
+    ensureLayout();
+    ledger_ = EnergyLedger{};
+    ledger_.kinetic = kineticEnergy();
+    ledger_.potential = potentialEnergy();
+    ledger_.initial = ledger_.kinetic + ledger_.potential;
+    // The scale against which drift is judged: every energy in the scene, and a floor of each
+    // body moving at 1 m/s so that a scene at rest at the origin still has a scale.
+    double scale = ledger_.kinetic + mass_.sum() * 0.5;
+    for (const auto& e : effects_) scale += std::abs(e->potentialEnergy(q_[current_]));
+    energyScale_ = scale;
+    previousDrift_ = 0.0;
+    growthStreak_ = 0;
+}
+
+std::string World::firstNonFinite(const Vec& q, const Vec& u) const {
+    for (int i = 0; i < static_cast<int>(q.size()); ++i)
+        if (!std::isfinite(q[i]) || !std::isfinite(u[i])) return objectAtDof(i);
+    return {};
+}
+
+std::string World::mostEnergeticObject() const {
+    const Vec& u = u_[current_];
+    int best = -1;
+    double bestEnergy = -1.0;
+    for (int i = 0; i < static_cast<int>(u.size()); ++i) {
+        const double e = mass_[i] * u[i] * u[i];
+        if (e > bestEnergy) {
+            bestEnergy = e;
+            best = i;
+        }
+    }
+    return objectAtDof(best);
+}
+
+std::vector<EffectCost> World::effectCosts() const {
+    std::vector<EffectCost> costs;
+    for (std::size_t i = 0; i < effects_.size(); ++i)
+        costs.push_back({effects_[i]->name(), i < effectSeconds_.size() ? effectSeconds_[i] : 0.0});
+    return costs;
+}
+
+void World::resetProfile() {
+    std::fill(effectSeconds_.begin(), effectSeconds_.end(), 0.0);
+    integratorSeconds_ = 0.0;
+}
+
+}  // namespace phasebox

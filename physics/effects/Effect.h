@@ -1,0 +1,76 @@
+#pragma once
+// An effect is one source of smooth force (gravity, drag, springs, …). It works on whole
+// arrays: the world makes one virtual call per effect per evaluation, never one per object.
+//
+// Energy bookkeeping (CONTRACT.md §2): a conservative force reports its potential energy;
+// a non-conservative one reports its power F·v so that its work enters work_nc. An effect
+// may be both (a damped spring: elastic potential plus damping power).
+
+#include "physics/core/Layout.h"
+#include "physics/core/OdeSystem.h"
+#include "physics/core/Types.h"
+
+#include <string>
+#include <string_view>
+
+namespace phasebox {
+
+// What every effect may read of the world: the layout and the per-dof masses.
+struct EffectWorldView {
+    const StateLayout* layout = nullptr;
+    const Vec* mass = nullptr;  // per dof: m, m for particles; m, m, I for boxes
+};
+
+class Effect {
+public:
+    explicit Effect(std::string name) : name_(std::move(name)) {}
+    virtual ~Effect() = default;
+    Effect(const Effect&) = delete;
+    Effect& operator=(const Effect&) = delete;
+
+    const std::string& name() const { return name_; }
+
+    // Adds F(q, u, t) into force (generalised: forces on x, y; torque on θ). Returns the power
+    // of the non-conservative part of the force, F_nc·u (0 for a conservative effect).
+    virtual double addForces(double t, const Vec& q, const Vec& u, Vec& force) = 0;
+
+    // Power of the non-conservative part alone; only called when hasNonConservativePart().
+    virtual double nonConservativePower(double t, const Vec& q, const Vec& u) {
+        (void)t, (void)q, (void)u;
+        return 0.0;
+    }
+
+    // A field effect's force is m·(an acceleration field), like uniform gravity. The world then
+    // asks it for the acceleration directly, which skips the multiply by m and the divide by m
+    // of the force path. With overwrite the effect assigns instead of adding (it is the first
+    // writer of the evaluation), which saves zeroing the array first.
+    virtual bool isAccelerationField() const { return false; }
+    virtual void addAccelerations(double t, const Vec& q, const Vec& u, Vec& accel,
+                                  bool overwrite) {
+        (void)t, (void)q, (void)u, (void)accel, (void)overwrite;
+    }
+
+    // Adds K = ∂F/∂q and D = ∂F/∂u. An effect without Jacobians is treated explicitly by the
+    // implicit integrators (its force enters the right-hand side only).
+    virtual void addJacobians(double t, const Vec& q, const Vec& u, ForceJacobians& jacobians) {
+        (void)t, (void)q, (void)u, (void)jacobians;
+    }
+
+    virtual double potentialEnergy(const Vec& q) const {
+        (void)q;
+        return 0.0;
+    }
+
+    virtual bool hasNonConservativePart() const { return false; }
+
+    // The world's topology changed (objects added or removed): re-read what is needed.
+    virtual void bind(const EffectWorldView& view) { view_ = view; }
+
+protected:
+    EffectWorldView view_;
+
+private:
+    std::string name_;
+};
+
+}  // namespace phasebox

@@ -1,0 +1,144 @@
+#include "physics/effects/SpringEffect.h"
+
+#include <cmath>
+
+namespace phasebox {
+
+namespace {
+// Below this length the spring's direction is undefined; it exerts no force.
+constexpr double kMinLength = 1e-12;
+
+struct SpringGeometry {
+    Vec2 pa = Vec2::Zero(), va = Vec2::Zero(), ra = Vec2::Zero();
+    Vec2 pb = Vec2::Zero(), vb = Vec2::Zero(), rb = Vec2::Zero();
+    Vec2 dir = Vec2::Zero();  // û
+    double length = 0.0;      // L
+    double rate = 0.0;        // L̇
+};
+
+bool evaluate(const SpringTerm& s, const Vec& q, const Vec& u, SpringGeometry& g) {
+    s.a.evaluate(q, u, g.pa, g.va, g.ra);
+    s.b.evaluate(q, u, g.pb, g.vb, g.rb);
+    const Vec2 d = g.pa - g.pb;
+    g.length = d.norm();
+    if (!(g.length > kMinLength)) return false;
+    g.dir = d / g.length;
+    g.rate = g.dir.dot(g.va - g.vb);
+    return true;
+}
+
+// The columns of ∂p/∂q for a point: identity for a particle, [I | perp(r)] for a box point.
+struct PointJacobian {
+    int dof = -1;
+    int columns = 0;
+    Eigen::Matrix<double, 2, 3> j;
+};
+
+PointJacobian pointJacobian(const BodyPoint& point, const Vec2& arm) {
+    PointJacobian pj;
+    if (!point.isDynamic()) return pj;
+    pj.dof = point.dof;
+    pj.j.setZero();
+    pj.j.leftCols<2>().setIdentity();
+    pj.columns = 2;
+    if (point.kind == BodyPoint::Kind::Box) {
+        pj.j.col(2) = perp(arm);
+        pj.columns = 3;
+    }
+    return pj;
+}
+
+// K[x, y] += sign · J_xᵀ·S·J_y, or the damping matrix likewise.
+template <typename Add>
+void addProjected(const PointJacobian& x, const PointJacobian& y, const Mat2& s, double sign,
+                  Add&& add) {
+    if (x.columns == 0 || y.columns == 0) return;
+    const Eigen::Matrix<double, 3, 3> block = sign * x.j.transpose() * s * y.j;
+    for (int r = 0; r < x.columns; ++r)
+        for (int c = 0; c < y.columns; ++c) add(x.dof + r, y.dof + c, block(r, c));
+}
+}  // namespace
+
+void SpringEffect::setTerms(std::vector<SpringTerm> terms) {
+    terms_ = std::move(terms);
+    anyDamping_ = false;
+    for (const SpringTerm& s : terms_) anyDamping_ = anyDamping_ || s.damping != 0.0;
+}
+
+double SpringEffect::addForces(double, const Vec& q, const Vec& u, Vec& force) {
+    double power = 0.0;
+    SpringGeometry g;
+    for (const SpringTerm& s : terms_) {
+        if (!evaluate(s, q, u, g)) continue;
+        const double dampingForce = s.damping * g.rate;
+        const Vec2 f = -(s.stiffness * (g.length - s.restLength) + dampingForce) * g.dir;
+        s.a.applyForce(f, g.ra, force);
+        s.b.applyForce(-f, g.rb, force);
+        power -= dampingForce * g.rate;
+    }
+    return power;
+}
+
+double SpringEffect::nonConservativePower(double, const Vec& q, const Vec& u) {
+    double power = 0.0;
+    SpringGeometry g;
+    for (const SpringTerm& s : terms_) {
+        if (s.damping == 0.0 || !evaluate(s, q, u, g)) continue;
+        power -= s.damping * g.rate * g.rate;
+    }
+    return power;
+}
+
+void SpringEffect::addJacobians(double, const Vec& q, const Vec& u, ForceJacobians& jac) {
+    // Elastic: ∂F_a/∂p_a = −k·[(1 − L₀/L)(I − ûûᵀ) + ûûᵀ]; damping along the axis:
+    // ∂F_a/∂ṗ_a = −c·ûûᵀ. The damping force's dependence on the direction û (a non-symmetric
+    // term) is left out, as in Baraff & Witkin: it only slows Newton's convergence, never
+    // changes the solution, and keeps the matrix symmetric.
+    SpringGeometry g;
+    auto addK = [&](int r, int c, double v) { jac.addStiffness(r, c, v); };
+    auto addD = [&](int r, int c, double v) { jac.addDamping(r, c, v); };
+    for (const SpringTerm& s : terms_) {
+        if (!evaluate(s, q, u, g)) continue;
+        const Mat2 uut = g.dir * g.dir.transpose();
+        const Mat2 ks =
+            -s.stiffness * ((1.0 - s.restLength / g.length) * (Mat2::Identity() - uut) + uut);
+        const PointJacobian ja = pointJacobian(s.a, g.ra);
+        const PointJacobian jb = pointJacobian(s.b, g.rb);
+        addProjected(ja, ja, ks, 1.0, addK);
+        addProjected(ja, jb, ks, -1.0, addK);
+        addProjected(jb, ja, ks, -1.0, addK);
+        addProjected(jb, jb, ks, 1.0, addK);
+        if (s.damping != 0.0) {
+            const Mat2 ds = -s.damping * uut;
+            addProjected(ja, ja, ds, 1.0, addD);
+            addProjected(ja, jb, ds, -1.0, addD);
+            addProjected(jb, ja, ds, -1.0, addD);
+            addProjected(jb, jb, ds, 1.0, addD);
+        }
+        // A box's torque r × F also turns with the box: ∂(r × F)/∂θ = −r·F.
+        const Vec2 f = -(s.stiffness * (g.length - s.restLength) + s.damping * g.rate) * g.dir;
+        if (s.a.kind == BodyPoint::Kind::Box) jac.addStiffness(s.a.dof + 2, s.a.dof + 2, -g.ra.dot(f));
+        if (s.b.kind == BodyPoint::Kind::Box) jac.addStiffness(s.b.dof + 2, s.b.dof + 2, g.rb.dot(f));
+    }
+}
+
+double SpringEffect::potentialEnergy(const Vec& q) const {
+    double energy = 0.0;
+    Vec2 pa = Vec2::Zero(), pb = Vec2::Zero(), v = Vec2::Zero(), r = Vec2::Zero();
+    for (const SpringTerm& s : terms_) {
+        s.a.evaluate(q, q, pa, v, r);
+        s.b.evaluate(q, q, pb, v, r);
+        const double stretch = (pa - pb).norm() - s.restLength;
+        energy += 0.5 * s.stiffness * stretch * stretch;
+    }
+    return energy;
+}
+
+double SpringEffect::tension(std::size_t i, const Vec& q, const Vec& u) const {
+    SpringGeometry g;
+    const SpringTerm& s = terms_.at(i);
+    if (!evaluate(s, q, u, g)) return -s.stiffness * s.restLength;
+    return s.stiffness * (g.length - s.restLength) + s.damping * g.rate;
+}
+
+}  // namespace phasebox

@@ -1,0 +1,42 @@
+#pragma once
+// Damped springs between two points, each a dynamic particle, a point fixed in a dynamic box,
+// or a fixed world point: F_a = −(k·(L − L₀) + c·L̇)·û, F_b = −F_a, with û = (p_a − p_b)/L.
+// Elastic potential ½·k·(L − L₀)²; the damping along the axis does work −c·L̇² (to work_nc).
+// The world creates this effect when the first spring appears and drops it with the last.
+
+#include "physics/effects/Effect.h"
+
+#include <vector>
+
+namespace phasebox {
+
+struct SpringTerm {
+    BodyPoint a, b;
+    double stiffness = 0.0;
+    double damping = 0.0;
+    double restLength = 0.0;
+};
+
+class SpringEffect final : public Effect {
+public:
+    SpringEffect() : Effect("springs") {}
+
+    void setTerms(std::vector<SpringTerm> terms);
+    const std::vector<SpringTerm>& terms() const { return terms_; }
+
+    double addForces(double t, const Vec& q, const Vec& u, Vec& force) override;
+    double nonConservativePower(double t, const Vec& q, const Vec& u) override;
+    void addJacobians(double t, const Vec& q, const Vec& u, ForceJacobians& jacobians) override;
+    double potentialEnergy(const Vec& q) const override;
+    bool hasNonConservativePart() const override { return anyDamping_; }
+
+    // Signed tension k·(L − L₀) + c·L̇ of spring i in state (q, u) (positive = stretched),
+    // for drawing springs coloured by tension.
+    double tension(std::size_t i, const Vec& q, const Vec& u) const;
+
+private:
+    std::vector<SpringTerm> terms_;
+    bool anyDamping_ = false;
+};
+
+}  // namespace phasebox

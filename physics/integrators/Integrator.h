@@ -1,0 +1,75 @@
+#pragma once
+// The integrator interface and registry (CONTRACT.md §3). An integrator advances the state
+// (q, u) of an OdeSystem by one step h; it owns its scratch vectors, sized once by reset().
+
+#include "physics/core/OdeSystem.h"
+
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace phasebox {
+
+struct IntegratorInfo {
+    std::string_view name;         // the fixed name of CONTRACT.md §3
+    std::string_view label;        // for people: "Symplectic Euler"
+    int order;                     // global order of accuracy on smooth problems
+    bool implicit;
+    bool symplectic;
+    bool adaptive;
+    std::string_view evaluations;  // force evaluations per step, as a phrase
+    std::string_view summary;      // one sentence for tooltips and docs
+};
+
+struct IntegratorSettings {
+    double tolerance = 1e-6;   // adaptive methods' local error tolerance
+    int newtonIterations = 1;  // implicit_euler: 1 = the linearised step of Baraff & Witkin
+};
+
+// Counters since the integrator was made or reset; the world reports them.
+struct IntegratorStats {
+    long long acceptedSteps = 0;  // internal steps (adaptive methods take several per call)
+    long long rejectedSteps = 0;
+    long long linearSolves = 0;
+    int lastNewtonIterations = 0;
+    double lastNewtonCorrection = 0.0;  // ∞-norm of the last Newton update (velocity units)
+};
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+
+    virtual const IntegratorInfo& info() const = 0;
+
+    // Sizes scratch memory for a state of this dimension and forgets any step-size history.
+    virtual void reset(int dimension) = 0;
+
+    // Advances the state (q0, u0) at time t to (q, u) at t + h and adds the work of the
+    // non-conservative forces over the step to workNc. The output vectors are distinct from
+    // the input ones and already sized, so the caller keeps the start state for free (the
+    // world double-buffers its state). Returns false when the method fails (a singular linear
+    // system, an adaptive step size that collapsed); q and u are then unspecified.
+    virtual bool step(OdeSystem& system, double t, double h, const Vec& q0, const Vec& u0,
+                      Vec& q, Vec& u, double& workNc) = 0;
+
+    void setSettings(const IntegratorSettings& settings) { settings_ = settings; }
+    const IntegratorSettings& settings() const { return settings_; }
+    const IntegratorStats& stats() const { return stats_; }
+
+protected:
+    IntegratorSettings settings_;
+    IntegratorStats stats_;
+};
+
+// Every method, in the contract's order.
+std::span<const IntegratorInfo> integratorRegistry();
+const IntegratorInfo* findIntegrator(std::string_view name);
+// The names joined by ", ", for error messages.
+std::string knownIntegratorNames();
+
+// nullptr for an unknown name.
+std::unique_ptr<Integrator> makeIntegrator(std::string_view name,
+                                           const IntegratorSettings& settings = {});
+
+}  // namespace phasebox

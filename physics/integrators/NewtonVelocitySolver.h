@@ -1,0 +1,48 @@
+#pragma once
+// The Newton solve shared by the implicit methods. Both look for a velocity v such that
+//     M·(v − u₀) = c·F(q₀ + c·v, v)
+// with c = h for backward Euler (v is the end velocity) and c = h/2 for the implicit midpoint
+// rule (v is the midpoint velocity). The Jacobian of that residual is A = M − c·D − c²·K.
+//
+// The first iteration linearises F about the start (q₀, u₀), which is exactly the step of
+// Baraff & Witkin 1998: (M − c·D − c²·K)·Δv = c·(F₀ + c·K·u₀). Later iterations are Newton
+// steps on the residual at the current iterate.
+
+#include "physics/integrators/Integrator.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+
+namespace phasebox {
+
+class NewtonVelocitySolver {
+public:
+    void reset(int n);
+
+    struct Result {
+        bool ok = false;
+        int iterations = 0;
+        double lastCorrection = 0.0;  // ∞-norm of the last update
+        double power = 0.0;           // non-conservative power at the last force evaluation
+        int linearSolves = 0;
+    };
+
+    // Solves for v. maxIterations ≥ 1; with untilConverged the loop stops early once the
+    // update is below the relative tolerance, and it keeps going (up to maxIterations) while
+    // it is not.
+    Result solve(OdeSystem& sys, double t, double c, const Vec& q0, const Vec& u0, Vec& v,
+                 int maxIterations, bool untilConverged, double relativeTolerance);
+
+private:
+    // Assembles A = M − c·D − c²·K into matrix_ and solves A·x = rhs_ into delta_.
+    bool solveLinear(OdeSystem& sys, double c);
+
+    ForceJacobians jac_;
+    Vec force_, rhs_, delta_, qe_, kU_;
+    SparseMatrix stiffness_, damping_, matrix_;
+    std::vector<Triplet> triplets_;
+    Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
+    Eigen::SparseLU<SparseMatrix> lu_;
+};
+
+}  // namespace phasebox

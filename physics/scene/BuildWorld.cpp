@@ -1,0 +1,197 @@
+#include "physics/scene/BuildWorld.h"
+
+#include "physics/effects/DragEffect.h"
+#include "physics/effects/GravityEffect.h"
+#include "physics/effects/NewtonianGravityEffect.h"
+#include "physics/effects/WindEffect.h"
+
+#include <unordered_map>
+
+namespace phasebox {
+
+namespace {
+Vec2 vec(const Point2& p) { return {p[0], p[1]}; }
+
+std::string summarize(const std::vector<SceneIssue>& issues) {
+    std::string out;
+    for (const SceneIssue& issue : issues) {
+        if (!out.empty()) out += "\n";
+        out += issue.path + ": " + issue.message;
+    }
+    return out;
+}
+
+bool isPinned(const ClothDesc& cloth, int i, int j) {
+    const int nx = cloth.resolution[0];
+    if (const auto* mode = std::get_if<std::string>(&cloth.pinned)) {
+        if (*mode == "top") return j == 0;
+        if (*mode == "top_corners") return j == 0 && (i == 0 || i == nx - 1);
+        if (*mode == "left") return i == 0;
+        return false;
+    }
+    for (const auto& node : std::get<std::vector<std::array<int, 2>>>(cloth.pinned))
+        if (node[0] == i && node[1] == j) return true;
+    return false;
+}
+
+void addClothSprings(World& world, const Cloth& cloth, const ClothDesc& desc) {
+    const auto addSpring = [&](int i0, int j0, int i1, int j1, double k) {
+        if (i1 >= cloth.nx || j1 >= cloth.ny || k <= 0.0) return;
+        Spring s;
+        s.a = {SpringEnd::Kind::Particle, clothNode(cloth, i0, j0), Vec2::Zero()};
+        s.b = {SpringEnd::Kind::Particle, clothNode(cloth, i1, j1), Vec2::Zero()};
+        s.stiffness = k;
+        s.damping = desc.damping;
+        s.restLength = (world.particles()[s.a.index].position - world.particles()[s.b.index].position).norm();
+        s.cloth = static_cast<int>(world.cloths().size());
+        world.addSpring(s);
+    };
+    const ClothStiffnessDesc& k = desc.stiffness;
+    for (int j = 0; j < cloth.ny; ++j) {
+        for (int i = 0; i < cloth.nx; ++i) {
+            addSpring(i, j, i + 1, j, k.structural);  // structural
+            addSpring(i, j, i, j + 1, k.structural);
+            addSpring(i, j, i + 1, j + 1, k.shear);   // shear
+            if (i + 1 < cloth.nx && j + 1 < cloth.ny) {
+                Spring s;
+                s.a = {SpringEnd::Kind::Particle, clothNode(cloth, i + 1, j), Vec2::Zero()};
+                s.b = {SpringEnd::Kind::Particle, clothNode(cloth, i, j + 1), Vec2::Zero()};
+                if (k.shear > 0.0) {
+                    s.stiffness = k.shear;
+                    s.damping = desc.damping;
+                    s.restLength = (world.particles()[s.a.index].position -
+                                    world.particles()[s.b.index].position).norm();
+                    s.cloth = static_cast<int>(world.cloths().size());
+                    world.addSpring(s);
+                }
+            }
+            addSpring(i, j, i + 2, j, k.bend);  // bend
+            addSpring(i, j, i, j + 2, k.bend);
+        }
+    }
+}
+}  // namespace
+
+SceneError::SceneError(std::vector<SceneIssue> issues)
+    : std::runtime_error(summarize(issues)), issues_(std::move(issues)) {}
+
+BuildResult buildWorld(const SceneDesc& scene) {
+    if (auto issues = validateScene(scene); !issues.empty()) throw SceneError(std::move(issues));
+
+    BuildResult result;
+    result.world = std::make_unique<World>();
+    World& world = *result.world;
+
+    // Effects the scene lists, in the contract's order.
+    const EffectsDesc& fx = scene.effects;
+    if (fx.gravity) world.addEffect(std::make_unique<GravityEffect>(vec(fx.gravity->g)));
+    if (fx.drag)
+        world.addEffect(std::make_unique<DragEffect>(fx.drag->linear, fx.drag->quadratic,
+                                                     fx.drag->angular));
+    if (fx.newtonianGravity) {
+        std::vector<Attractor> attractors;
+        for (const AttractorDesc& a : fx.newtonianGravity->attractors)
+            attractors.push_back({vec(a.position), a.mass});
+        world.addEffect(std::make_unique<NewtonianGravityEffect>(
+            fx.newtonianGravity->G, std::move(attractors), fx.newtonianGravity->mutual,
+            fx.newtonianGravity->softening));
+    }
+    if (fx.wind)
+        world.addEffect(std::make_unique<WindEffect>(vec(fx.wind->velocity), fx.wind->drag));
+    if (fx.buoyancy) result.unsupported.push_back("buoyancy");
+    if (fx.flocking) result.unsupported.push_back("flocking");
+    if (fx.particleCollisions) result.unsupported.push_back("particle_collisions");
+
+    // Objects. Ids map to particle or box indices for the springs.
+    std::unordered_map<std::string, SpringEnd> ends;
+    for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+        const ParticleDesc& d = scene.particles[i];
+        Particle p;
+        p.id = particleId(scene, i);
+        p.position = vec(d.position);
+        p.velocity = vec(d.velocity);
+        p.mass = d.mass;
+        p.radius = d.radius;
+        p.pinned = d.pinned;
+        p.restitution = d.restitution;
+        p.friction = d.friction;
+        p.charge = d.charge;
+        ends[p.id] = {SpringEnd::Kind::Particle, world.addParticle(p), Vec2::Zero()};
+    }
+    for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
+        const BoxDesc& d = scene.boxes[i];
+        Box b;
+        b.id = boxId(scene, i);
+        b.position = vec(d.position);
+        b.angle = d.angle;
+        b.velocity = vec(d.velocity);
+        b.angularVelocity = d.angularVelocity;
+        b.size = vec(d.size);
+        b.mass = d.resolvedMass();
+        b.inertia = d.momentOfInertia();
+        b.isStatic = d.isStatic;
+        b.friction = d.friction;
+        b.restitution = d.restitution;
+        ends[b.id] = {SpringEnd::Kind::Box, world.addBox(b), Vec2::Zero()};
+    }
+    for (std::size_t i = 0; i < scene.planes.size(); ++i) {
+        const PlaneDesc& d = scene.planes[i];
+        Plane p;
+        p.id = planeId(scene, i);
+        p.point = vec(d.point);
+        p.normal = vec(d.normal).normalized();
+        p.friction = d.friction;
+        p.restitution = d.restitution;
+        world.addPlane(p);
+    }
+    for (const ClothDesc& d : scene.cloths) {
+        Cloth cloth;
+        cloth.id = d.id;
+        cloth.nx = d.resolution[0];
+        cloth.ny = d.resolution[1];
+        cloth.firstParticle = static_cast<int>(world.particles().size());
+        cloth.firstSpring = static_cast<int>(world.springs().size());
+        const double nodeMass = d.mass / (cloth.nx * cloth.ny);
+        const double dx = d.size[0] / (cloth.nx - 1), dy = d.size[1] / (cloth.ny - 1);
+        for (int j = 0; j < cloth.ny; ++j) {
+            for (int i = 0; i < cloth.nx; ++i) {
+                Particle p;
+                p.id = clothNodeId(d.id, i, j);
+                p.position = {d.origin[0] + i * dx, d.origin[1] - j * dy};
+                p.mass = nodeMass;
+                p.radius = d.radius;
+                p.pinned = isPinned(d, i, j);
+                p.cloth = static_cast<int>(world.cloths().size());
+                ends[p.id] = {SpringEnd::Kind::Particle, world.addParticle(p), Vec2::Zero()};
+            }
+        }
+        addClothSprings(world, cloth, d);
+        cloth.springCount = static_cast<int>(world.springs().size()) - cloth.firstSpring;
+        world.addCloth(cloth);
+    }
+    for (std::size_t i = 0; i < scene.springs.size(); ++i) {
+        const SpringDesc& d = scene.springs[i];
+        Spring s;
+        s.id = springId(scene, i);
+        s.a = ends.at(d.a);
+        s.a.point = vec(d.aPoint);
+        if (d.b) {
+            s.b = ends.at(*d.b);
+            s.b.point = vec(d.bPoint);
+        } else {
+            s.b = {SpringEnd::Kind::Anchor, -1, vec(*d.anchor)};
+        }
+        s.stiffness = d.stiffness;
+        s.damping = d.damping;
+        s.restLength = d.restLength ? *d.restLength
+                                    : (world.springEndPosition(s.a) - world.springEndPosition(s.b)).norm();
+        world.addSpring(s);
+    }
+
+    const SimulationDesc& sim = scene.simulation;
+    world.setSettings({sim.integrator, sim.dt, sim.substeps, sim.tolerance, sim.newtonIterations});
+    world.commit();
+    return result;
+}
+
+}  // namespace phasebox

@@ -1,0 +1,227 @@
+#include "physics/scene/SceneDesc.h"
+
+#include "physics/integrators/Integrator.h"
+
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <unordered_set>
+
+namespace phasebox {
+
+namespace {
+std::string defaultOr(const std::string& id, const char* prefix, std::size_t index) {
+    return id.empty() ? prefix + std::to_string(index) : id;
+}
+
+std::string fmt(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+
+// Collects issues with JSON-style paths: check(path, condition, message).
+class Checker {
+public:
+    explicit Checker(std::vector<SceneIssue>& out) : out_(out) {}
+
+    void fail(const std::string& path, const std::string& message) {
+        out_.push_back({path, message});
+    }
+    // Each numeric check first requires a finite number.
+    bool finite(const std::string& path, double v) {
+        if (std::isfinite(v)) return true;
+        fail(path, "must be a finite number");
+        return false;
+    }
+    void positive(const std::string& path, double v) {
+        if (finite(path, v) && !(v > 0.0)) fail(path, "must be > 0 (got " + fmt(v) + ")");
+    }
+    void nonNegative(const std::string& path, double v) {
+        if (finite(path, v) && v < 0.0) fail(path, "must be >= 0 (got " + fmt(v) + ")");
+    }
+    void unitInterval(const std::string& path, double v) {
+        if (finite(path, v) && (v < 0.0 || v > 1.0))
+            fail(path, "must be between 0 and 1 (got " + fmt(v) + ")");
+    }
+    void point(const std::string& path, const Point2& p) {
+        finite(path + "[0]", p[0]);
+        finite(path + "[1]", p[1]);
+    }
+
+private:
+    std::vector<SceneIssue>& out_;
+};
+
+std::string at(const char* array, std::size_t i) {
+    return std::string(array) + "[" + std::to_string(i) + "]";
+}
+}  // namespace
+
+std::string particleId(const SceneDesc& s, std::size_t i) { return defaultOr(s.particles[i].id, "p", i); }
+std::string boxId(const SceneDesc& s, std::size_t i) { return defaultOr(s.boxes[i].id, "b", i); }
+std::string planeId(const SceneDesc& s, std::size_t i) { return defaultOr(s.planes[i].id, "plane", i); }
+std::string springId(const SceneDesc& s, std::size_t i) { return defaultOr(s.springs[i].id, "s", i); }
+std::string clothNodeId(const std::string& clothId, int i, int j) {
+    return clothId + "[" + std::to_string(i) + "," + std::to_string(j) + "]";
+}
+
+std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
+    std::vector<SceneIssue> issues;
+    Checker check(issues);
+
+    // simulation
+    const SimulationDesc& sim = scene.simulation;
+    if (!findIntegrator(sim.integrator))
+        check.fail("simulation.integrator",
+                   "unknown integrator \"" + sim.integrator + "\"; known: " + knownIntegratorNames());
+    if (check.finite("simulation.dt", sim.dt) && !(sim.dt > 0.0 && sim.dt <= 1.0))
+        check.fail("simulation.dt", "must be > 0 and <= 1 (got " + fmt(sim.dt) + ")");
+    if (sim.substeps < 1) check.fail("simulation.substeps", "must be an integer >= 1");
+    check.positive("simulation.tolerance", sim.tolerance);
+    if (sim.newtonIterations < 1)
+        check.fail("simulation.newton_iterations", "must be an integer >= 1");
+    check.positive("simulation.duration", sim.duration);
+    for (const auto& [key, value] : sim.solver) check.finite("simulation.solver." + key, value);
+
+    // effects
+    const EffectsDesc& fx = scene.effects;
+    if (fx.gravity) check.point("effects.gravity.g", fx.gravity->g);
+    if (fx.drag) {
+        check.nonNegative("effects.drag.linear", fx.drag->linear);
+        check.nonNegative("effects.drag.quadratic", fx.drag->quadratic);
+        check.nonNegative("effects.drag.angular", fx.drag->angular);
+    }
+    if (fx.newtonianGravity) {
+        const auto& ng = *fx.newtonianGravity;
+        check.nonNegative("effects.newtonian_gravity.G", ng.G);
+        check.nonNegative("effects.newtonian_gravity.softening", ng.softening);
+        for (std::size_t i = 0; i < ng.attractors.size(); ++i) {
+            const std::string path = "effects.newtonian_gravity." + at("attractors", i);
+            check.point(path + ".position", ng.attractors[i].position);
+            check.nonNegative(path + ".mass", ng.attractors[i].mass);
+        }
+    }
+    if (fx.buoyancy) {
+        check.positive("effects.buoyancy.fluid_density", fx.buoyancy->fluidDensity);
+        check.finite("effects.buoyancy.surface_y", fx.buoyancy->surfaceY);
+        check.nonNegative("effects.buoyancy.drag", fx.buoyancy->drag);
+        if (!fx.gravity) check.fail("effects.buoyancy", "needs the gravity effect");
+    }
+    if (fx.wind) {
+        check.point("effects.wind.velocity", fx.wind->velocity);
+        check.nonNegative("effects.wind.drag", fx.wind->drag);
+    }
+    if (fx.flocking) {
+        check.positive("effects.flocking.radius", fx.flocking->radius);
+        check.nonNegative("effects.flocking.separation", fx.flocking->separation);
+        check.nonNegative("effects.flocking.alignment", fx.flocking->alignment);
+        check.nonNegative("effects.flocking.cohesion", fx.flocking->cohesion);
+        check.positive("effects.flocking.max_speed", fx.flocking->maxSpeed);
+    }
+    if (fx.particleCollisions)
+        check.unitInterval("effects.particle_collisions.restitution",
+                           fx.particleCollisions->restitution);
+
+    // ids: unique across the scene; springs may refer to particles, boxes and cloth nodes.
+    std::set<std::string> ids;
+    std::unordered_set<std::string> bodies;
+    auto claim = [&](const std::string& path, const std::string& id, bool body) {
+        if (!ids.insert(id).second) check.fail(path, "duplicate id \"" + id + "\"");
+        if (body) bodies.insert(id);
+    };
+
+    for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+        const ParticleDesc& p = scene.particles[i];
+        const std::string path = at("particles", i);
+        claim(path + ".id", particleId(scene, i), true);
+        check.point(path + ".position", p.position);
+        check.point(path + ".velocity", p.velocity);
+        check.positive(path + ".mass", p.mass);
+        check.nonNegative(path + ".radius", p.radius);
+        check.unitInterval(path + ".restitution", p.restitution);
+        check.nonNegative(path + ".friction", p.friction);
+        check.finite(path + ".charge", p.charge);
+    }
+    for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
+        const BoxDesc& b = scene.boxes[i];
+        const std::string path = at("boxes", i);
+        claim(path + ".id", boxId(scene, i), true);
+        check.point(path + ".position", b.position);
+        check.positive(path + ".size[0]", b.size[0]);
+        check.positive(path + ".size[1]", b.size[1]);
+        check.finite(path + ".angle", b.angle);
+        check.point(path + ".velocity", b.velocity);
+        check.finite(path + ".angular_velocity", b.angularVelocity);
+        if (b.mass) check.positive(path + ".mass", *b.mass);
+        else check.positive(path + ".density", b.density);
+        check.nonNegative(path + ".friction", b.friction);
+        check.unitInterval(path + ".restitution", b.restitution);
+    }
+    for (std::size_t i = 0; i < scene.planes.size(); ++i) {
+        const PlaneDesc& p = scene.planes[i];
+        const std::string path = at("planes", i);
+        claim(path + ".id", planeId(scene, i), false);
+        check.point(path + ".point", p.point);
+        check.point(path + ".normal", p.normal);
+        if (p.normal[0] == 0.0 && p.normal[1] == 0.0) check.fail(path + ".normal", "must be non-zero");
+        check.nonNegative(path + ".friction", p.friction);
+        check.unitInterval(path + ".restitution", p.restitution);
+    }
+    for (std::size_t c = 0; c < scene.cloths.size(); ++c) {
+        const ClothDesc& cl = scene.cloths[c];
+        const std::string path = at("cloths", c);
+        if (cl.id.empty()) check.fail(path + ".id", "is required");
+        else claim(path + ".id", cl.id, false);
+        check.point(path + ".origin", cl.origin);
+        check.positive(path + ".size[0]", cl.size[0]);
+        check.positive(path + ".size[1]", cl.size[1]);
+        if (cl.resolution[0] < 2) check.fail(path + ".resolution[0]", "must be an integer >= 2");
+        if (cl.resolution[1] < 2) check.fail(path + ".resolution[1]", "must be an integer >= 2");
+        check.positive(path + ".mass", cl.mass);
+        check.nonNegative(path + ".stiffness.structural", cl.stiffness.structural);
+        check.nonNegative(path + ".stiffness.shear", cl.stiffness.shear);
+        check.nonNegative(path + ".stiffness.bend", cl.stiffness.bend);
+        check.nonNegative(path + ".damping", cl.damping);
+        check.nonNegative(path + ".radius", cl.radius);
+        if (const auto* mode = std::get_if<std::string>(&cl.pinned)) {
+            if (*mode != "top" && *mode != "top_corners" && *mode != "left" && *mode != "none")
+                check.fail(path + ".pinned", "unknown pinning \"" + *mode +
+                                                 "\"; known: top, top_corners, left, none");
+        } else {
+            const auto& nodes = std::get<std::vector<std::array<int, 2>>>(cl.pinned);
+            for (std::size_t k = 0; k < nodes.size(); ++k) {
+                const auto [i, j] = nodes[k];
+                if (i < 0 || i >= cl.resolution[0] || j < 0 || j >= cl.resolution[1])
+                    check.fail(path + ".pinned[" + std::to_string(k) + "]",
+                               "node [" + std::to_string(i) + "," + std::to_string(j) +
+                                   "] is outside the " + std::to_string(cl.resolution[0]) + "x" +
+                                   std::to_string(cl.resolution[1]) + " grid");
+            }
+        }
+        if (!cl.id.empty() && cl.resolution[0] >= 2 && cl.resolution[1] >= 2 &&
+            static_cast<long long>(cl.resolution[0]) * cl.resolution[1] <= 4'000'000)
+            for (int j = 0; j < cl.resolution[1]; ++j)
+                for (int i = 0; i < cl.resolution[0]; ++i) bodies.insert(clothNodeId(cl.id, i, j));
+    }
+    for (std::size_t i = 0; i < scene.springs.size(); ++i) {
+        const SpringDesc& s = scene.springs[i];
+        const std::string path = at("springs", i);
+        claim(path + ".id", springId(scene, i), false);
+        if (s.a.empty()) check.fail(path + ".a", "is required");
+        else if (!bodies.count(s.a)) check.fail(path + ".a", "unknown object id \"" + s.a + "\"");
+        if (s.b && s.anchor) check.fail(path, "has both b and anchor; give one");
+        else if (!s.b && !s.anchor) check.fail(path, "needs either b (an object id) or anchor [x, y]");
+        if (s.b && !bodies.count(*s.b)) check.fail(path + ".b", "unknown object id \"" + *s.b + "\"");
+        if (s.b && *s.b == s.a) check.fail(path + ".b", "must differ from a");
+        if (s.anchor) check.point(path + ".anchor", *s.anchor);
+        check.point(path + ".a_point", s.aPoint);
+        check.point(path + ".b_point", s.bPoint);
+        check.positive(path + ".stiffness", s.stiffness);
+        check.nonNegative(path + ".damping", s.damping);
+        if (s.restLength) check.nonNegative(path + ".rest_length", *s.restLength);
+    }
+    return issues;
+}
+
+}  // namespace phasebox

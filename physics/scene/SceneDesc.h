@@ -1,0 +1,189 @@
+#pragma once
+// Plain description of a scene, mirroring scene format v1 (CONTRACT.md §1) field by field,
+// with the contract's defaults. No behaviour lives here: buildWorld() turns it into a World,
+// validateScene() checks it, and app/SceneIO maps it to and from JSON.
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace phasebox {
+
+using Point2 = std::array<double, 2>;
+
+struct SimulationDesc {
+    std::string integrator = "symplectic_euler";
+    double dt = 1.0 / 60.0;
+    int substeps = 1;
+    double tolerance = 1e-6;
+    int newtonIterations = 1;
+    double duration = 10.0;
+    // Contact solver settings (engine-defined keys). Stored as numbers so unknown engine keys
+    // round-trip through files.
+    std::map<std::string, double> solver;
+};
+
+struct GravityDesc {
+    Point2 g{0.0, -9.81};
+};
+
+struct DragDesc {
+    double linear = 0.0;
+    double quadratic = 0.0;
+    double angular = 0.0;
+};
+
+struct AttractorDesc {
+    Point2 position{0.0, 0.0};
+    double mass = 0.0;
+};
+
+struct NewtonianGravityDesc {
+    double G = 6.674e-11;
+    std::vector<AttractorDesc> attractors;
+    bool mutual = false;
+    double softening = 0.0;
+};
+
+struct BuoyancyDesc {
+    double fluidDensity = 1000.0;
+    double surfaceY = 0.0;
+    double drag = 0.0;
+};
+
+struct WindDesc {
+    Point2 velocity{0.0, 0.0};
+    double drag = 0.0;
+};
+
+struct FlockingDesc {
+    double radius = 1.0;
+    double separation = 1.0;
+    double alignment = 1.0;
+    double cohesion = 1.0;
+    double maxSpeed = 2.0;
+};
+
+struct ParticleCollisionsDesc {
+    double restitution = 1.0;
+};
+
+// Only the effects present here are simulated (absent = not constructed, costs nothing).
+struct EffectsDesc {
+    std::optional<GravityDesc> gravity;
+    std::optional<DragDesc> drag;
+    std::optional<NewtonianGravityDesc> newtonianGravity;
+    std::optional<BuoyancyDesc> buoyancy;
+    std::optional<WindDesc> wind;
+    std::optional<FlockingDesc> flocking;
+    std::optional<ParticleCollisionsDesc> particleCollisions;
+};
+
+struct ParticleDesc {
+    std::string id;  // empty = default "p<index>"
+    Point2 position{0.0, 0.0};
+    Point2 velocity{0.0, 0.0};
+    double mass = 1.0;
+    double radius = 0.05;
+    bool pinned = false;
+    double restitution = 0.5;
+    double friction = 0.2;
+    double charge = 0.0;
+};
+
+struct BoxDesc {
+    std::string id;  // empty = default "b<index>"
+    Point2 position{0.0, 0.0};
+    Point2 size{1.0, 1.0};
+    double angle = 0.0;
+    Point2 velocity{0.0, 0.0};
+    double angularVelocity = 0.0;
+    // Exactly one of mass / density is used: mass when set, else density·w·h.
+    std::optional<double> mass;
+    double density = 1.0;
+    bool isStatic = false;
+    double friction = 0.6;
+    double restitution = 0.0;
+
+    double resolvedMass() const { return mass ? *mass : density * size[0] * size[1]; }
+    double momentOfInertia() const {
+        return resolvedMass() * (size[0] * size[0] + size[1] * size[1]) / 12.0;
+    }
+};
+
+struct PlaneDesc {
+    std::string id;  // empty = default "plane<index>"
+    Point2 point{0.0, 0.0};
+    Point2 normal{0.0, 1.0};
+    double friction = 0.5;
+    double restitution = 0.5;
+};
+
+struct SpringDesc {
+    std::string id;  // empty = default "s<index>"
+    std::string a;
+    std::optional<std::string> b;     // object id, or
+    std::optional<Point2> anchor;     // a fixed world point
+    Point2 aPoint{0.0, 0.0};          // attachment in a box's own frame
+    Point2 bPoint{0.0, 0.0};
+    double stiffness = 0.0;
+    double damping = 0.0;
+    std::optional<double> restLength;  // absent = initial distance
+};
+
+struct ClothStiffnessDesc {
+    double structural = 1000.0;
+    double shear = 100.0;
+    double bend = 10.0;
+};
+
+struct ClothDesc {
+    std::string id;
+    Point2 origin{0.0, 0.0};  // top-left corner
+    Point2 size{1.0, 1.0};
+    std::array<int, 2> resolution{10, 10};
+    double mass = 1.0;  // total
+    ClothStiffnessDesc stiffness;
+    double damping = 0.0;
+    double radius = 0.01;
+    // "top", "top_corners", "left", "none", or an explicit list of [i, j] nodes.
+    std::variant<std::string, std::vector<std::array<int, 2>>> pinned = std::string("top");
+};
+
+struct SceneDesc {
+    static constexpr int kFormatVersion = 1;
+
+    std::string name;
+    std::string description;
+    SimulationDesc simulation;
+    EffectsDesc effects;
+    std::vector<ParticleDesc> particles;
+    std::vector<BoxDesc> boxes;
+    std::vector<PlaneDesc> planes;
+    std::vector<SpringDesc> springs;
+    std::vector<ClothDesc> cloths;
+};
+
+// Default ids by position (CONTRACT.md §1): p0…, b0…, plane0…, s0….
+std::string particleId(const SceneDesc& scene, std::size_t index);
+std::string boxId(const SceneDesc& scene, std::size_t index);
+std::string planeId(const SceneDesc& scene, std::size_t index);
+std::string springId(const SceneDesc& scene, std::size_t index);
+std::string clothNodeId(const std::string& clothId, int i, int j);
+
+// One problem found by validateScene(): a JSON-style path and what is wrong, e.g.
+// {"boxes[3].size[0]", "must be > 0"}.
+struct SceneIssue {
+    std::string path;
+    std::string message;
+};
+
+// Checks every value against the contract's ranges and every reference against the ids.
+// Empty result = the scene can be built.
+std::vector<SceneIssue> validateScene(const SceneDesc& scene);
+
+}  // namespace phasebox

@@ -1,0 +1,47 @@
+# Shared by run.sh and test.sh: install what is missing, configure and build a preset.
+# Sourced, not executed.
+
+PHASEBOX_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+PHASEBOX_PACKAGES=(cmake ninja-build g++ qt6-base-dev libqt6opengl6-dev qt6-charts-dev
+                   qt6-svg-dev libeigen3-dev libgl1-mesa-dev xvfb xauth)
+
+phasebox_log() { printf '[phasebox] %s\n' "$*" >&2; }
+
+# Installs only the Debian packages that are not installed yet.
+phasebox_install_dependencies() {
+    local missing=()
+    local pkg
+    for pkg in "${PHASEBOX_PACKAGES[@]}" "$@"; do
+        if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q 'install ok installed'; then
+            missing+=("$pkg")
+        fi
+    done
+    if [ ${#missing[@]} -eq 0 ]; then
+        return 0
+    fi
+    phasebox_log "installing missing packages: ${missing[*]}"
+    local sudo=""
+    if [ "$(id -u)" -ne 0 ]; then
+        sudo="sudo"
+    fi
+    export DEBIAN_FRONTEND=noninteractive
+    $sudo apt-get update -q >/dev/null
+    $sudo apt-get install -y -q --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+# phasebox_build PRESET [TARGET...]
+phasebox_build() {
+    local preset="$1"
+    shift
+    cd "$PHASEBOX_ROOT"
+    if [ ! -f "build/$preset/CMakeCache.txt" ]; then
+        phasebox_log "configuring preset $preset"
+        cmake --preset "$preset" >/dev/null
+    fi
+    phasebox_log "building preset $preset"
+    if [ $# -gt 0 ]; then
+        cmake --build --preset "$preset" --target "$@"
+    else
+        cmake --build --preset "$preset"
+    fi
+}
