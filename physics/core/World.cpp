@@ -16,8 +16,10 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 // Divergence by runaway energy: the drift (the integrator's energy error) exceeds this many
 // times the scene's energy scale and has grown by kGrowth per step kStreak steps in a row
-// (exponential blow-up), or exceeds kAbsurd times the scale whatever its growth.
-constexpr double kRunawayFactor = 10.0;
+// (exponential blow-up), or exceeds kAbsurd times the scale whatever its growth. The factor is
+// high because a stable method near its limit swings far: symplectic Euler at ω·h = 1.99 is
+// bounded but its energy error reaches 200 times the oscillator's energy.
+constexpr double kRunawayFactor = 1e3;
 constexpr double kGrowth = 1.5;
 constexpr int kStreak = 3;
 constexpr double kAbsurd = 1e8;
@@ -281,6 +283,10 @@ void World::setSettings(const SimulationSettings& settings) {
     if (settings.newtonIterations < 1)
         throw std::invalid_argument("newton_iterations must be >= 1");
     const bool newMethod = settings.integrator != settings_.integrator;
+    if (settings.dt != settings_.dt) {
+        timeBase_ = time_;
+        stepsSinceTimeBase_ = 0;
+    }
     settings_ = settings;
     if (newMethod) {
         integrator_ = makeIntegrator(settings_.integrator);
@@ -370,12 +376,11 @@ bool World::step() {
     ensureLayout();
     divergence_.reset();
     const double h = settings_.dt / settings_.substeps;
-    const double frameStart = time_;
     const auto stepStart = Clock::now();
+    saveFrameStart();
     for (int s = 0; s < settings_.substeps; ++s) {
-        const double t = frameStart + s * h;
+        const double t = frameStart_.time + s * h;
         const int next = 1 - current_;
-        const double workBefore = ledger_.workNc;
         const bool ok = integrator_->step(*this, t, h, q_[current_], u_[current_], q_[next],
                                           u_[next], ledger_.workNc);
         // Contacts and pins act here, on the new state (issue #3).
@@ -384,9 +389,9 @@ bool World::step() {
             d.time = t + h;
             d.objectId = firstNonFinite(q_[next], u_[next]);
             d.what = ok ? "a non-finite value" : std::string(integrator_->info().name) + " failed";
-            d.restoredTime = t;
-            ledger_.workNc = workBefore;
-            time_ = t;
+            current_ = next;  // restoreFrameStart() reads the start from the right place
+            restoreFrameStart();
+            d.restoredTime = time_;
             divergence_ = d;
             integratorSeconds_ += secondsSince(stepStart);
             return false;
@@ -394,9 +399,48 @@ bool World::step() {
         current_ = next;
     }
     integratorSeconds_ += secondsSince(stepStart);
-    time_ = frameStart + settings_.dt;
+    // Time as base + n·dt rather than a running sum, so that step 600 of dt = 1/60 is t = 10.
+    ++stepsSinceTimeBase_;
+    time_ = timeBase_ + static_cast<double>(stepsSinceTimeBase_) * settings_.dt;
     ++stepCount_;
     return checkEnergy();
+}
+
+void World::saveFrameStart() {
+    Checkpoint& c = frameStart_;
+    c.time = time_;
+    c.timeBase = timeBase_;
+    c.stepsSinceTimeBase = stepsSinceTimeBase_;
+    c.stepCount = stepCount_;
+    c.ledger = ledger_;
+    // With one sub-step the other state buffer keeps the frame start for free; with several it
+    // is overwritten, so the start is copied (into memory sized once).
+    c.hasState = settings_.substeps > 1;
+    if (c.hasState) {
+        c.q = q_[current_];
+        c.u = u_[current_];
+    }
+}
+
+void World::restoreFrameStart() {
+    const Checkpoint& c = frameStart_;
+    if (c.hasState) {
+        q_[current_] = c.q;
+        u_[current_] = c.u;
+    } else {
+        current_ = 1 - current_;
+    }
+    restoreScalars(c);
+}
+
+void World::restoreScalars(const Checkpoint& c) {
+    time_ = c.time;
+    timeBase_ = c.timeBase;
+    stepsSinceTimeBase_ = c.stepsSinceTimeBase;
+    stepCount_ = c.stepCount;
+    ledger_ = c.ledger;
+    growthStreak_ = 0;
+    previousDrift_ = 0.0;
 }
 
 double World::kineticEnergyChecked(bool& finite) const {
@@ -437,6 +481,7 @@ bool World::checkEnergy() {
     bool finite = true;
     ledger_.kinetic = kineticEnergyChecked(finite);
     std::string what;
+    bool runaway = false;
     if (finite) {
         updateLedger();
         const double scale = energyScale_ + std::abs(ledger_.workNc);
@@ -445,10 +490,19 @@ bool World::checkEnergy() {
             what = "non-finite energy";
         } else {
             const bool growing = drift > kRunawayFactor * scale && drift > kGrowth * previousDrift_;
+            if (growing && growthStreak_ == 0) {
+                // The growth may be a blow-up: remember where it started, the last good state.
+                streakStart_ = frameStart_;
+                streakStart_.hasState = true;
+                if (!frameStart_.hasState) {
+                    streakStart_.q = q_[1 - current_];
+                    streakStart_.u = u_[1 - current_];
+                }
+            }
             growthStreak_ = growing ? growthStreak_ + 1 : 0;
             previousDrift_ = drift;
-            if (growthStreak_ >= kStreak || drift > kAbsurd * scale)
-                what = "energy growing without bound";
+            runaway = growthStreak_ >= kStreak || drift > kAbsurd * scale;
+            if (runaway) what = "energy growing without bound";
         }
     } else {
         what = "a non-finite value";
@@ -459,15 +513,14 @@ bool World::checkEnergy() {
     d.time = time_;
     d.objectId = finite ? mostEnergeticObject() : firstNonFinite(q_[current_], u_[current_]);
     d.what = what;
-    // The other buffer holds the start of the last sub-step: the last good state.
-    current_ = 1 - current_;
-    d.restoredTime = time_ - settings_.dt / settings_.substeps;
-    time_ = d.restoredTime;
-    --stepCount_;
-    ledger_.kinetic = kineticEnergy();
-    updateLedger();
-    growthStreak_ = 0;
-    previousDrift_ = 0.0;
+    if (runaway && growthStreak_ >= kStreak) {
+        q_[current_] = streakStart_.q;
+        u_[current_] = streakStart_.u;
+        restoreScalars(streakStart_);
+    } else {
+        restoreFrameStart();
+    }
+    d.restoredTime = time_;
     divergence_ = d;
     return false;
 }

@@ -221,7 +221,18 @@ private:
     void updateLedger();
     bool checkSubstep(double t, int substep);
     bool checkEnergy();
-    void restoreLastGood(double restoredTime);
+
+    // What a failed step goes back to: the start of the frame, or of a blow-up's first frame.
+    struct Checkpoint {
+        Vec q, u;  // valid when hasState
+        bool hasState = false;
+        double time = 0.0, timeBase = 0.0;
+        long long stepsSinceTimeBase = 0, stepCount = 0;
+        EnergyLedger ledger;
+    };
+    void saveFrameStart();
+    void restoreFrameStart();
+    void restoreScalars(const Checkpoint& c);
     std::string firstNonFinite(const Vec& q, const Vec& u) const;
     std::string mostEnergeticObject() const;
 
@@ -255,12 +266,15 @@ private:
     Vec mass_, invMass_, force_;
 
     double time_ = 0.0;
+    double timeBase_ = 0.0;  // time_ = timeBase_ + stepsSinceTimeBase_·dt
+    long long stepsSinceTimeBase_ = 0;
     long long stepCount_ = 0;
     long long forceEvaluations_ = 0;
     EnergyLedger ledger_;
     double energyScale_ = 0.0;
     double previousDrift_ = 0.0;
     int growthStreak_ = 0;
+    Checkpoint frameStart_, streakStart_;
     std::optional<Divergence> divergence_;
 };
 

@@ -15,6 +15,8 @@ const IntegratorInfo kImplicitMidpointInfo{
 namespace {
 constexpr int kMaxNewtonIterations = 50;
 constexpr double kNewtonTolerance = 1e-13;
+// Round-off can stall the update above kNewtonTolerance; above this it has not converged.
+constexpr double kNotConverged = 1e-8;
 
 class ImplicitMidpoint final : public Integrator {
 public:
@@ -33,7 +35,10 @@ public:
         stats_.linearSolves += r.linearSolves;
         stats_.lastNewtonIterations = r.iterations;
         stats_.lastNewtonCorrection = r.lastCorrection;
-        if (!r.ok) return false;
+        // Not converged after kMaxNewtonIterations: the step is not the implicit midpoint rule's,
+        // so it fails (the world reports it) rather than passing off a wrong answer.
+        if (!r.ok || r.lastCorrection > kNotConverged * (1.0 + vm_.lpNorm<Eigen::Infinity>()))
+            return false;
         qm_ = q0 + c * vm_;
         workNc += h * sys.nonConservativePower(t + c, qm_, vm_);
         q = q0 + h * vm_;

@@ -151,7 +151,7 @@ BuildResult buildWorld(const SceneDesc& scene) {
         cloth.ny = d.resolution[1];
         cloth.firstParticle = static_cast<int>(world.particles().size());
         cloth.firstSpring = static_cast<int>(world.springs().size());
-        const double nodeMass = d.mass / (cloth.nx * cloth.ny);
+        const double nodeMass = d.mass / (static_cast<double>(cloth.nx) * cloth.ny);
         const double dx = d.size[0] / (cloth.nx - 1), dy = d.size[1] / (cloth.ny - 1);
         for (int j = 0; j < cloth.ny; ++j) {
             for (int i = 0; i < cloth.nx; ++i) {

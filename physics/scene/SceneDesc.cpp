@@ -2,8 +2,9 @@
 
 #include "physics/integrators/Integrator.h"
 
+#include <charconv>
 #include <cmath>
-#include <set>
+#include <map>
 #include <sstream>
 #include <unordered_set>
 
@@ -14,10 +15,11 @@ std::string defaultOr(const std::string& id, const char* prefix, std::size_t ind
     return id.empty() ? prefix + std::to_string(index) : id;
 }
 
+// Shortest text that reads back as v, so that "got 1.0000001" is never printed as "got 1".
 std::string fmt(double v) {
-    std::ostringstream out;
-    out << v;
-    return out.str();
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return std::string(buffer, result.ptr);
 }
 
 // Collects issues with JSON-style paths: check(path, condition, message).
@@ -123,18 +125,49 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
         check.unitInterval("effects.particle_collisions.restitution",
                            fx.particleCollisions->restitution);
 
-    // ids: unique across the scene; springs may refer to particles, boxes and cloth nodes.
-    std::set<std::string> ids;
+    // Sizes: past these limits a scene is refused rather than allowed to exhaust memory or
+    // hang (the limits are documented in docs/scene-format.md).
+    if (sim.substeps > SceneLimits::kMaxSubsteps)
+        check.fail("simulation.substeps", "must be <= " + std::to_string(SceneLimits::kMaxSubsteps));
+    if (sim.newtonIterations > SceneLimits::kMaxNewtonIterations)
+        check.fail("simulation.newton_iterations",
+                   "must be <= " + std::to_string(SceneLimits::kMaxNewtonIterations));
+    long long clothNodes = 0;
+    for (const ClothDesc& cl : scene.cloths)
+        clothNodes += static_cast<long long>(std::max(0, cl.resolution[0])) * std::max(0, cl.resolution[1]);
+    const long long particleCount = static_cast<long long>(scene.particles.size()) + clothNodes;
+    if (particleCount > SceneLimits::kMaxParticles)
+        check.fail(scene.cloths.empty() ? "particles" : "cloths",
+                   "the scene has " + std::to_string(particleCount) + " particles (cloth nodes included); at most " +
+                       std::to_string(SceneLimits::kMaxParticles) + " are allowed");
+    if (static_cast<long long>(scene.boxes.size()) > SceneLimits::kMaxBoxes)
+        check.fail("boxes", "at most " + std::to_string(SceneLimits::kMaxBoxes) + " boxes are allowed");
+    if (static_cast<long long>(scene.springs.size()) > SceneLimits::kMaxSprings)
+        check.fail("springs", "at most " + std::to_string(SceneLimits::kMaxSprings) + " springs are allowed");
+    if (static_cast<long long>(scene.planes.size()) > SceneLimits::kMaxPlanes)
+        check.fail("planes", "at most " + std::to_string(SceneLimits::kMaxPlanes) + " planes are allowed");
+    if (!issues.empty() && (particleCount > SceneLimits::kMaxParticles)) return issues;
+
+    // ids: unique across the scene (cloth node ids included); springs may refer to particles,
+    // boxes and cloth nodes. Each id remembers who holds it, for the messages.
+    std::map<std::string, std::string> ids;  // id → path of its holder
     std::unordered_set<std::string> bodies;
-    auto claim = [&](const std::string& path, const std::string& id, bool body) {
-        if (!ids.insert(id).second) check.fail(path, "duplicate id \"" + id + "\"");
+    auto claim = [&](const std::string& path, const std::string& id, bool body, bool isDefault) {
+        const auto [it, fresh] = ids.emplace(id, path);
+        if (!fresh) {
+            if (isDefault)
+                check.fail(path, "the default id \"" + id + "\" is already used by " + it->second +
+                                     "; give this object an id");
+            else
+                check.fail(path + ".id", "duplicate id \"" + id + "\" (also used by " + it->second + ")");
+        }
         if (body) bodies.insert(id);
     };
 
     for (std::size_t i = 0; i < scene.particles.size(); ++i) {
         const ParticleDesc& p = scene.particles[i];
         const std::string path = at("particles", i);
-        claim(path + ".id", particleId(scene, i), true);
+        claim(path, particleId(scene, i), true, p.id.empty());
         check.point(path + ".position", p.position);
         check.point(path + ".velocity", p.velocity);
         check.positive(path + ".mass", p.mass);
@@ -146,7 +179,7 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
         const BoxDesc& b = scene.boxes[i];
         const std::string path = at("boxes", i);
-        claim(path + ".id", boxId(scene, i), true);
+        claim(path, boxId(scene, i), true, b.id.empty());
         check.point(path + ".position", b.position);
         check.positive(path + ".size[0]", b.size[0]);
         check.positive(path + ".size[1]", b.size[1]);
@@ -161,7 +194,7 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     for (std::size_t i = 0; i < scene.planes.size(); ++i) {
         const PlaneDesc& p = scene.planes[i];
         const std::string path = at("planes", i);
-        claim(path + ".id", planeId(scene, i), false);
+        claim(path, planeId(scene, i), false, p.id.empty());
         check.point(path + ".point", p.point);
         check.point(path + ".normal", p.normal);
         if (p.normal[0] == 0.0 && p.normal[1] == 0.0) check.fail(path + ".normal", "must be non-zero");
@@ -172,7 +205,7 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
         const ClothDesc& cl = scene.cloths[c];
         const std::string path = at("cloths", c);
         if (cl.id.empty()) check.fail(path + ".id", "is required");
-        else claim(path + ".id", cl.id, false);
+        else claim(path, cl.id, false, false);
         check.point(path + ".origin", cl.origin);
         check.positive(path + ".size[0]", cl.size[0]);
         check.positive(path + ".size[1]", cl.size[1]);
@@ -199,20 +232,29 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
                                    std::to_string(cl.resolution[1]) + " grid");
             }
         }
-        if (!cl.id.empty() && cl.resolution[0] >= 2 && cl.resolution[1] >= 2 &&
-            static_cast<long long>(cl.resolution[0]) * cl.resolution[1] <= 4'000'000)
+        if (!cl.id.empty() && cl.resolution[0] >= 2 && cl.resolution[1] >= 2)
             for (int j = 0; j < cl.resolution[1]; ++j)
-                for (int i = 0; i < cl.resolution[0]; ++i) bodies.insert(clothNodeId(cl.id, i, j));
+                for (int i = 0; i < cl.resolution[0]; ++i)
+                    claim(path, clothNodeId(cl.id, i, j), true, false);
     }
     for (std::size_t i = 0; i < scene.springs.size(); ++i) {
         const SpringDesc& s = scene.springs[i];
         const std::string path = at("springs", i);
-        claim(path + ".id", springId(scene, i), false);
+        claim(path, springId(scene, i), false, s.id.empty());
+        auto reference = [&](const std::string& where, const std::string& id) {
+            if (bodies.count(id)) return;
+            const auto it = ids.find(id);
+            if (it == ids.end())
+                check.fail(where, "unknown object id \"" + id + "\"");
+            else
+                check.fail(where, "\"" + id + "\" is " + it->second +
+                                      "; springs attach to particles, boxes and cloth nodes");
+        };
         if (s.a.empty()) check.fail(path + ".a", "is required");
-        else if (!bodies.count(s.a)) check.fail(path + ".a", "unknown object id \"" + s.a + "\"");
+        else reference(path + ".a", s.a);
         if (s.b && s.anchor) check.fail(path, "has both b and anchor; give one");
         else if (!s.b && !s.anchor) check.fail(path, "needs either b (an object id) or anchor [x, y]");
-        if (s.b && !bodies.count(*s.b)) check.fail(path + ".b", "unknown object id \"" + *s.b + "\"");
+        if (s.b) reference(path + ".b", *s.b);
         if (s.b && *s.b == s.a) check.fail(path + ".b", "must differ from a");
         if (s.anchor) check.point(path + ".anchor", *s.anchor);
         check.point(path + ".a_point", s.aPoint);

@@ -175,6 +175,17 @@ std::string planeId(const SceneDesc& scene, std::size_t index);
 std::string springId(const SceneDesc& scene, std::size_t index);
 std::string clothNodeId(const std::string& clothId, int i, int j);
 
+// Sizes past which a scene is refused: far beyond what runs interactively on a laptop, and
+// small enough that a hostile file cannot exhaust memory or hang the program.
+struct SceneLimits {
+    static constexpr long long kMaxParticles = 1'000'000;  // cloth nodes included
+    static constexpr long long kMaxBoxes = 100'000;
+    static constexpr long long kMaxSprings = 4'000'000;
+    static constexpr long long kMaxPlanes = 1'000;
+    static constexpr int kMaxSubsteps = 10'000;
+    static constexpr int kMaxNewtonIterations = 100;
+};
+
 // One problem found by validateScene(): a JSON-style path and what is wrong, e.g.
 // {"boxes[3].size[0]", "must be > 0"}.
 struct SceneIssue {

@@ -1,0 +1,128 @@
+#include "app/cli/Cli.h"
+
+#include "app/io/SceneIO.h"
+#include "physics/integrators/Integrator.h"
+#include "physics/scene/BuildWorld.h"
+
+namespace phasebox::cli {
+
+namespace {
+const char* kUsage =
+    "usage: phasebox-cli COMMAND [OPTIONS]\n"
+    "\n"
+    "commands:\n"
+    "  integrators              list the integrators: name, order, explicit/implicit,\n"
+    "                           symplectic, force evaluations per step\n"
+    "  info SCENE               objects, effects that will run, integrator, dt\n"
+    "  run SCENE [OPTIONS]      simulate; see 'phasebox-cli run --help'\n"
+    "\n"
+    "exit status: 0 success, 1 the simulation diverged, 2 bad input\n";
+}  // namespace
+
+int fail(QTextStream& err, const QString& message) {
+    for (const QString& line : message.split(QLatin1Char('\n')))
+        err << "phasebox-cli: error: " << line << "\n";
+    err.flush();
+    return kBadInput;
+}
+
+bool needsGui(const QStringList& arguments) {
+    return arguments.contains(QStringLiteral("--plot-energy")) ||
+           arguments.contains(QStringLiteral("--plot-phase")) ||
+           arguments.contains(QStringLiteral("--plot"));
+}
+
+int run(const QStringList& arguments, QTextStream& out, QTextStream& err) {
+    if (arguments.isEmpty()) {
+        err << kUsage;
+        return kBadInput;
+    }
+    const QString command = arguments.first();
+    const QStringList rest = arguments.mid(1);
+    if (command == QLatin1String("--help") || command == QLatin1String("-h") ||
+        command == QLatin1String("help")) {
+        out << kUsage;
+        return kSuccess;
+    }
+    if (command == QLatin1String("--version")) {
+        out << "phasebox-cli " << PHASEBOX_VERSION << "\n";
+        return kSuccess;
+    }
+    if (command == QLatin1String("integrators")) return integratorsCommand(rest, out, err);
+    if (command == QLatin1String("info")) return infoCommand(rest, out, err);
+    if (command == QLatin1String("run")) return runCommand(rest, out, err);
+    return fail(err, QStringLiteral("unknown command \"%1\"; known: integrators, info, run").arg(command));
+}
+
+int integratorsCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
+    if (!args.isEmpty()) return fail(err, QStringLiteral("integrators takes no arguments"));
+    out << QStringLiteral("%1 %2 %3 %4 %5\n")
+               .arg(QStringLiteral("name"), -18)
+               .arg(QStringLiteral("order"), -6)
+               .arg(QStringLiteral("kind"), -9)
+               .arg(QStringLiteral("symplectic"), -11)
+               .arg(QStringLiteral("force evaluations per step"));
+    for (const IntegratorInfo& info : integratorRegistry()) {
+        out << QStringLiteral("%1 %2 %3 %4 %5\n")
+                   .arg(QString::fromUtf8(info.name.data(), info.name.size()), -18)
+                   .arg(info.order, -6)
+                   .arg(info.implicit ? QStringLiteral("implicit") : QStringLiteral("explicit"), -9)
+                   .arg(info.symplectic ? QStringLiteral("yes") : QStringLiteral("no"), -11)
+                   .arg(QString::fromUtf8(info.evaluations.data(), info.evaluations.size()));
+    }
+    return kSuccess;
+}
+
+int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
+    if (args.size() != 1) return fail(err, QStringLiteral("usage: phasebox-cli info SCENE"));
+    const SceneLoadResult loaded = SceneIO::load(args.first());
+    if (!loaded.ok()) return fail(err, loaded.errorText());
+    BuildResult built;
+    try {
+        built = buildWorld(*loaded.scene);
+    } catch (const SceneError& e) {
+        return fail(err, args.first() + QStringLiteral(": ") + QString::fromStdString(e.what()));
+    }
+    const SceneDesc& scene = *loaded.scene;
+    const World& world = *built.world;
+
+    int pinned = 0, clothNodes = 0, staticBoxes = 0;
+    for (const Particle& p : world.particles()) {
+        pinned += p.pinned;
+        clothNodes += p.cloth >= 0;
+    }
+    for (const Box& b : world.boxes()) staticBoxes += b.isStatic;
+    const int clothSprings = [&] {
+        int n = 0;
+        for (const Cloth& c : world.cloths()) n += c.springCount;
+        return n;
+    }();
+
+    out << "scene:       " << (scene.name.empty() ? QStringLiteral("(unnamed)") : QString::fromStdString(scene.name)) << "\n";
+    if (!scene.description.empty()) out << "description: " << QString::fromStdString(scene.description) << "\n";
+    out << "objects:\n";
+    out << "  particles  " << world.particles().size() - clothNodes << " (" << pinned << " pinned in all)\n";
+    out << "  boxes      " << world.boxes().size() << " (" << staticBoxes << " static)\n";
+    out << "  planes     " << world.planes().size() << "\n";
+    out << "  springs    " << world.springs().size() - clothSprings << "\n";
+    out << "  cloths     " << world.cloths().size();
+    if (!world.cloths().empty()) out << " (" << clothNodes << " nodes, " << clothSprings << " springs)";
+    out << "\n";
+    out << "state:       " << world.dimension() << " degrees of freedom\n";
+    out << "effects that will run:";
+    if (world.effects().empty()) out << " none";
+    for (const auto& effect : world.effects()) out << " " << QString::fromStdString(effect->name());
+    out << "\n";
+    for (const std::string& name : built.unsupported)
+        out << "not simulated yet: " << QString::fromStdString(name) << "\n";
+    const SimulationDesc& sim = scene.simulation;
+    const IntegratorInfo* info = findIntegrator(sim.integrator);
+    out << "integrator:  " << QString::fromStdString(sim.integrator);
+    if (info) out << " (" << QString::fromUtf8(info->label.data(), info->label.size()) << ", order " << info->order << ")";
+    out << "\n";
+    out << "dt:          " << sim.dt << " s, " << sim.substeps << " sub-step(s)\n";
+    out << "duration:    " << sim.duration << " s\n";
+    return kSuccess;
+}
+
+}  // namespace phasebox::cli

@@ -1,0 +1,26 @@
+#pragma once
+// phasebox-cli (CONTRACT.md §4). Exit status: 0 success, 1 the simulation diverged,
+// 2 bad input (usage, unreadable or invalid scene).
+
+#include <QStringList>
+#include <QTextStream>
+
+namespace phasebox::cli {
+
+enum ExitCode { kSuccess = 0, kDiverged = 1, kBadInput = 2 };
+
+// Runs one command line (without the program name). Output goes to out, messages to err.
+int run(const QStringList& arguments, QTextStream& out, QTextStream& err);
+
+// True when the command line asks for a plot, which needs a QApplication.
+bool needsGui(const QStringList& arguments);
+
+// Commands, one file each.
+int integratorsCommand(const QStringList& args, QTextStream& out, QTextStream& err);
+int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err);
+int runCommand(const QStringList& args, QTextStream& out, QTextStream& err);
+
+// "phasebox-cli: error: " + each line of message, on err; returns kBadInput.
+int fail(QTextStream& err, const QString& message);
+
+}  // namespace phasebox::cli

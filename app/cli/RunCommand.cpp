@@ -1,0 +1,482 @@
+// phasebox-cli run: simulate a scene and report (CONTRACT.md §4).
+
+#include "app/cli/Cli.h"
+#include "app/io/NumberFormat.h"
+#include "app/io/SceneIO.h"
+#include "physics/integrators/Integrator.h"
+#include "physics/scene/BuildWorld.h"
+#include "ui/plots/Charts.h"
+
+#include <QChart>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <numeric>
+#include <optional>
+
+namespace phasebox::cli {
+
+namespace {
+
+const char* kRunUsage =
+    "usage: phasebox-cli run SCENE [--integrator NAME] [--dt S] [--substeps N] [--duration S]\n"
+    "                              [--tolerance T] [--csv FILE] [--every K] [--track ID,ID...]\n"
+    "                              [--json] [--plot-energy FILE] [--plot-phase ID.COORD FILE]\n"
+    "\n"
+    "  --csv FILE        time series: t,kinetic,potential,work_nc,drift and per tracked object\n"
+    "                    ID.x,ID.y,ID.vx,ID.vy (boxes also ID.angle, ID.omega); '-' = stdout\n"
+    "  --every K         one CSV row every K steps (and at t = 0 and the end); default 1\n"
+    "  --track IDS       objects in the CSV; default every particle and box not in a cloth\n"
+    "  --json            one JSON object with timings, energies and every object's state\n"
+    "  --plot-energy F   the energy plot as .png or .svg\n"
+    "  --plot-phase ID.COORD F   phase plot of COORD (x, y or angle) of object ID\n";
+
+struct RunOptions {
+    QString scene;
+    std::optional<QString> integrator;
+    std::optional<double> dt, duration, tolerance;
+    std::optional<int> substeps;
+    QString csv;
+    int every = 1;
+    std::optional<QStringList> track;
+    bool json = false;
+    QString plotEnergy;
+    QString phaseTarget, plotPhase;
+};
+
+// Splits "a,flag[1,2],b" at the commas outside brackets: cloth node ids hold commas.
+QStringList splitIds(const QString& text) {
+    QStringList ids;
+    QString current;
+    int depth = 0;
+    for (const QChar c : text) {
+        if (c == QLatin1Char('[')) ++depth;
+        if (c == QLatin1Char(']')) depth = std::max(0, depth - 1);
+        if (c == QLatin1Char(',') && depth == 0) {
+            if (!current.isEmpty()) ids << current;
+            current.clear();
+            continue;
+        }
+        current += c;
+    }
+    if (!current.isEmpty()) ids << current;
+    return ids;
+}
+
+// Parses the command line; returns an error message or an empty string.
+QString parseOptions(const QStringList& args, RunOptions& o) {
+    auto number = [](const QString& option, const QString& text, double& value) -> QString {
+        bool ok = false;
+        value = text.toDouble(&ok);
+        if (!ok || !std::isfinite(value))
+            return QStringLiteral("%1: must be a number (got \"%2\")").arg(option, text);
+        return {};
+    };
+    auto integer = [](const QString& option, const QString& text, int& value) -> QString {
+        bool ok = false;
+        value = text.toInt(&ok);
+        if (!ok) return QStringLiteral("%1: must be an integer (got \"%2\")").arg(option, text);
+        return {};
+    };
+    for (int i = 0; i < args.size(); ++i) {
+        const QString& a = args[i];
+        if (!a.startsWith(QLatin1String("--"))) {
+            if (!o.scene.isEmpty())
+                return QStringLiteral("unexpected argument \"%1\" (the scene is \"%2\")").arg(a, o.scene);
+            o.scene = a;
+            continue;
+        }
+        if (a == QLatin1String("--json")) {
+            o.json = true;
+            continue;
+        }
+        static const QStringList known{"--integrator", "--dt", "--duration", "--tolerance",
+                                       "--substeps", "--every", "--csv", "--track",
+                                       "--plot-energy", "--plot-phase"};
+        if (!known.contains(a))
+            return QStringLiteral("unknown option \"%1\"; see phasebox-cli run --help").arg(a);
+        const int values = a == QLatin1String("--plot-phase") ? 2 : 1;
+        if (i + values >= args.size())
+            return QStringLiteral("%1 needs %2").arg(a, values == 2 ? QStringLiteral("ID.COORD and FILE")
+                                                                     : QStringLiteral("a value"));
+        const QString v = args[++i];
+        QString error;
+        double d = 0.0;
+        int n = 0;
+        if (a == QLatin1String("--integrator")) {
+            if (!findIntegrator(v.toStdString()))
+                return QStringLiteral("--integrator: unknown integrator \"%1\"; known: %2")
+                    .arg(v, QString::fromStdString(knownIntegratorNames()));
+            o.integrator = v;
+        } else if (a == QLatin1String("--dt")) {
+            if (!(error = number(a, v, d)).isEmpty()) return error;
+            if (!(d > 0.0 && d <= 1.0)) return QStringLiteral("--dt: must be > 0 and <= 1 (got %1)").arg(v);
+            o.dt = d;
+        } else if (a == QLatin1String("--duration")) {
+            if (!(error = number(a, v, d)).isEmpty()) return error;
+            if (!(d > 0.0)) return QStringLiteral("--duration: must be > 0 (got %1)").arg(v);
+            o.duration = d;
+        } else if (a == QLatin1String("--tolerance")) {
+            if (!(error = number(a, v, d)).isEmpty()) return error;
+            if (!(d > 0.0)) return QStringLiteral("--tolerance: must be > 0 (got %1)").arg(v);
+            o.tolerance = d;
+        } else if (a == QLatin1String("--substeps")) {
+            if (!(error = integer(a, v, n)).isEmpty()) return error;
+            if (n < 1) return QStringLiteral("--substeps: must be >= 1 (got %1)").arg(v);
+            o.substeps = n;
+        } else if (a == QLatin1String("--every")) {
+            if (!(error = integer(a, v, n)).isEmpty()) return error;
+            if (n < 1) return QStringLiteral("--every: must be >= 1 (got %1)").arg(v);
+            o.every = n;
+        } else if (a == QLatin1String("--csv")) {
+            o.csv = v;
+        } else if (a == QLatin1String("--track")) {
+            o.track = splitIds(v);
+        } else if (a == QLatin1String("--plot-energy")) {
+            o.plotEnergy = v;
+        } else if (a == QLatin1String("--plot-phase")) {
+            o.phaseTarget = v;
+            o.plotPhase = args[++i];
+        } else {
+            return QStringLiteral("unknown option \"%1\"; see phasebox-cli run --help").arg(a);
+        }
+    }
+    if (o.scene.isEmpty()) return QStringLiteral("run needs a SCENE file");
+    if (o.json && o.csv == QLatin1String("-"))
+        return QStringLiteral("--json and --csv - both write to standard output; give --csv a file");
+    return {};
+}
+
+// An object whose state is written to the CSV or plotted.
+struct Tracked {
+    QString id;
+    bool isBox = false;
+    int index = -1;
+};
+
+std::optional<Tracked> findObject(const World& world, const QString& id) {
+    const std::string key = id.toStdString();
+    for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
+        if (world.particles()[i].id == key) return Tracked{id, false, i};
+    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
+        if (world.boxes()[i].id == key) return Tracked{id, true, i};
+    return std::nullopt;
+}
+
+// Coordinate and velocity of a tracked object: 0 x, 1 y, 2 angle.
+ui::PhaseSample phaseOf(const World& world, const Tracked& t, int coordinate) {
+    if (t.isBox) {
+        if (coordinate == 2) return {world.boxAngle(t.index), world.boxAngularVelocity(t.index)};
+        return {world.boxPosition(t.index)[coordinate], world.boxVelocity(t.index)[coordinate]};
+    }
+    return {world.particlePosition(t.index)[coordinate], world.particleVelocity(t.index)[coordinate]};
+}
+
+class CsvOutput {
+public:
+    bool open(const QString& path, QTextStream& out, QString* error) {
+        if (path == QLatin1String("-")) {
+            stream_ = &out;
+            return true;
+        }
+        file_ = std::make_unique<QSaveFile>(path);
+        file_->setDirectWriteFallback(true);
+        if (!file_->open(QIODevice::WriteOnly | QIODevice::Text)) {
+            *error = QStringLiteral("%1: cannot write the CSV file: %2").arg(path, file_->errorString());
+            return false;
+        }
+        owned_ = std::make_unique<QTextStream>(file_.get());
+        stream_ = owned_.get();
+        return true;
+    }
+    QTextStream& stream() { return *stream_; }
+    bool commit(QString* error) {
+        if (!file_) return true;
+        owned_->flush();
+        if (file_->commit()) return true;
+        *error = QStringLiteral("%1: cannot write the CSV file: %2").arg(file_->fileName(), file_->errorString());
+        return false;
+    }
+
+private:
+    std::unique_ptr<QSaveFile> file_;
+    std::unique_ptr<QTextStream> owned_;
+    QTextStream* stream_ = nullptr;
+};
+
+void writeCsvHeader(QTextStream& s, const std::vector<Tracked>& tracked) {
+    s << "t,kinetic,potential,work_nc,drift";
+    for (const Tracked& t : tracked) {
+        const QStringList cols = t.isBox ? QStringList{"x", "y", "angle", "vx", "vy", "omega"}
+                                         : QStringList{"x", "y", "vx", "vy"};
+        for (const QString& c : cols) s << ',' << t.id << '.' << c;
+    }
+    s << '\n';
+}
+
+void writeCsvRow(QTextStream& s, const World& world, const std::vector<Tracked>& tracked) {
+    const EnergyLedger& e = world.energy();
+    s << formatNumber(world.time()) << ',' << formatNumber(e.kinetic) << ',' << formatNumber(e.potential)
+      << ',' << formatNumber(e.workNc) << ',' << formatNumber(e.drift);
+    for (const Tracked& t : tracked) {
+        if (t.isBox) {
+            const Vec2 p = world.boxPosition(t.index), v = world.boxVelocity(t.index);
+            s << ',' << formatNumber(p.x()) << ',' << formatNumber(p.y()) << ','
+              << formatNumber(world.boxAngle(t.index)) << ',' << formatNumber(v.x()) << ','
+              << formatNumber(v.y()) << ',' << formatNumber(world.boxAngularVelocity(t.index));
+        } else {
+            const Vec2 p = world.particlePosition(t.index), v = world.particleVelocity(t.index);
+            s << ',' << formatNumber(p.x()) << ',' << formatNumber(p.y()) << ','
+              << formatNumber(v.x()) << ',' << formatNumber(v.y());
+        }
+    }
+    s << '\n';
+}
+
+QJsonArray pair(const Vec2& v) { return QJsonArray{v.x(), v.y()}; }
+
+QJsonObject objectsJson(const World& world) {
+    QJsonObject objects;
+    for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
+        objects.insert(QString::fromStdString(world.particles()[i].id),
+                       QJsonObject{{"position", pair(world.particlePosition(i))},
+                                   {"velocity", pair(world.particleVelocity(i))}});
+    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
+        objects.insert(QString::fromStdString(world.boxes()[i].id),
+                       QJsonObject{{"position", pair(world.boxPosition(i))},
+                                   {"velocity", pair(world.boxVelocity(i))},
+                                   {"angle", world.boxAngle(i)},
+                                   {"angular_velocity", world.boxAngularVelocity(i)}});
+    return objects;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    if (v.size() % 2) return *mid;
+    return 0.5 * (*mid + *std::max_element(v.begin(), mid));
+}
+
+bool writePlot(QChart* chart, const QString& path, QTextStream& err) {
+    std::unique_ptr<QChart> owner(chart);
+    QString error;
+    if (ui::exportChart(chart, path, QSize(1000, 600), &error)) return true;
+    fail(err, error);
+    return false;
+}
+
+}  // namespace
+
+int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
+    if (args.contains(QStringLiteral("--help")) || args.contains(QStringLiteral("-h"))) {
+        out << kRunUsage;
+        return kSuccess;
+    }
+    RunOptions o;
+    if (const QString error = parseOptions(args, o); !error.isEmpty()) return fail(err, error);
+
+    SceneLoadResult loaded = SceneIO::load(o.scene);
+    if (!loaded.ok()) return fail(err, loaded.errorText());
+    SceneDesc& scene = *loaded.scene;
+    SimulationDesc& sim = scene.simulation;
+    if (o.integrator) sim.integrator = o.integrator->toStdString();
+    if (o.dt) sim.dt = *o.dt;
+    if (o.substeps) sim.substeps = *o.substeps;
+    if (o.duration) sim.duration = *o.duration;
+    if (o.tolerance) sim.tolerance = *o.tolerance;
+
+    BuildResult built;
+    try {
+        built = buildWorld(scene);
+    } catch (const SceneError& e) {
+        QStringList lines;
+        for (const SceneIssue& issue : e.issues())
+            lines << QStringLiteral("%1: %2: %3").arg(o.scene, QString::fromStdString(issue.path),
+                                                      QString::fromStdString(issue.message));
+        return fail(err, lines.join(QLatin1Char('\n')));
+    }
+    World& world = *built.world;
+    for (const std::string& name : built.unsupported)
+        err << "phasebox-cli: warning: the effect \"" << QString::fromStdString(name)
+            << "\" is not simulated yet and is ignored\n";
+
+    // What to record.
+    std::vector<Tracked> tracked;
+    if (o.track) {
+        for (const QString& id : *o.track) {
+            const auto t = findObject(world, id);
+            if (!t) return fail(err, QStringLiteral("--track: unknown object id \"%1\"").arg(id));
+            tracked.push_back(*t);
+        }
+    } else {
+        for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
+            if (world.particles()[i].cloth < 0)
+                tracked.push_back({QString::fromStdString(world.particles()[i].id), false, i});
+        for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
+            tracked.push_back({QString::fromStdString(world.boxes()[i].id), true, i});
+    }
+    std::optional<Tracked> phaseObject;
+    int phaseCoordinate = 0;
+    if (!o.plotPhase.isEmpty()) {
+        const qsizetype dot = o.phaseTarget.lastIndexOf(QLatin1Char('.'));
+        const QString id = o.phaseTarget.left(dot), coord = o.phaseTarget.mid(dot + 1);
+        phaseObject = dot > 0 ? findObject(world, id) : std::nullopt;
+        if (!phaseObject)
+            return fail(err, QStringLiteral("--plot-phase: unknown object \"%1\" (expected ID.COORD, e.g. ball.x)")
+                                 .arg(o.phaseTarget));
+        if (coord == QLatin1String("x")) phaseCoordinate = 0;
+        else if (coord == QLatin1String("y")) phaseCoordinate = 1;
+        else if (coord == QLatin1String("angle") && phaseObject->isBox) phaseCoordinate = 2;
+        else
+            return fail(err, QStringLiteral("--plot-phase: unknown coordinate \"%1\"; known: x, y%2")
+                                 .arg(coord, phaseObject->isBox ? QStringLiteral(", angle") : QString()));
+    }
+
+    CsvOutput csv;
+    if (!o.csv.isEmpty()) {
+        QString error;
+        if (!csv.open(o.csv, out, &error)) return fail(err, error);
+        writeCsvHeader(csv.stream(), tracked);
+        writeCsvRow(csv.stream(), world, tracked);
+    }
+
+    const double dt = sim.dt;
+    const long long steps = std::max<long long>(1, static_cast<long long>(std::ceil(sim.duration / dt - 1e-9)));
+    const bool plotting = !o.plotEnergy.isEmpty() || phaseObject;
+    std::vector<ui::EnergySample> energy;
+    std::vector<ui::PhaseSample> phase;
+    auto sample = [&] {
+        if (!o.plotEnergy.isEmpty()) {
+            const EnergyLedger& e = world.energy();
+            energy.push_back({world.time(), e.kinetic, e.potential, e.workNc, e.drift});
+        }
+        if (phaseObject) phase.push_back(phaseOf(world, *phaseObject, phaseCoordinate));
+    };
+    if (plotting) {
+        energy.reserve(static_cast<std::size_t>(steps) + 1);
+        phase.reserve(static_cast<std::size_t>(steps) + 1);
+        sample();
+    }
+
+    const double initialEnergy = world.energy().initial;
+    std::vector<double> stepMs;
+    stepMs.reserve(static_cast<std::size_t>(steps));
+    world.resetProfile();
+    using Clock = std::chrono::steady_clock;
+    const auto wallStart = Clock::now();
+    long long done = 0;
+    bool diverged = false;
+    for (long long k = 1; k <= steps; ++k) {
+        const auto start = Clock::now();
+        const bool ok = world.step();
+        stepMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        if (!ok) {
+            diverged = true;
+            break;
+        }
+        done = k;
+        if (!o.csv.isEmpty() && (k % o.every == 0 || k == steps)) writeCsvRow(csv.stream(), world, tracked);
+        if (plotting) sample();
+    }
+    const double wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
+
+    int status = kSuccess;
+    if (!o.csv.isEmpty()) {
+        QString error;
+        if (!csv.commit(&error)) status = fail(err, error);
+    }
+    const QString title = QStringLiteral("%1 — %2, dt = %3 s")
+                              .arg(scene.name.empty() ? o.scene : QString::fromStdString(scene.name),
+                                   QString::fromStdString(sim.integrator), formatNumber(dt));
+    if (!o.plotEnergy.isEmpty() &&
+        !writePlot(ui::createEnergyChart(energy, {}, title), o.plotEnergy, err))
+        status = kBadInput;
+    if (phaseObject) {
+        static const char* names[3][2] = {{"x [m]", "vx [m/s]"}, {"y [m]", "vy [m/s]"}, {"angle [rad]", "omega [rad/s]"}};
+        const QString who = phaseObject->id + QLatin1Char(' ');
+        if (!writePlot(ui::createPhaseChart(phase, who + QLatin1String(names[phaseCoordinate][0]),
+                                            who + QLatin1String(names[phaseCoordinate][1]), title),
+                       o.plotPhase, err))
+            status = kBadInput;
+    }
+
+    const EnergyLedger& e = world.energy();
+    const double stepsRun = static_cast<double>(std::max<long long>(1, static_cast<long long>(stepMs.size())));
+    if (o.json) {
+        QJsonArray effects;
+        for (const EffectCost& cost : world.effectCosts())
+            effects.append(QJsonObject{{"name", QString::fromStdString(cost.name)},
+                                       {"ms_per_step", cost.seconds * 1000.0 / stepsRun}});
+        const double mean = stepMs.empty() ? 0.0 : std::accumulate(stepMs.begin(), stepMs.end(), 0.0) / stepMs.size();
+        QJsonObject report{
+            {"integrator", QString::fromStdString(sim.integrator)},
+            {"dt", dt},
+            {"substeps", sim.substeps},
+            {"steps", static_cast<double>(done)},
+            {"sim_time", world.time()},
+            {"wall_seconds", wallSeconds},
+            {"step_ms", QJsonObject{{"median", median(stepMs)},
+                                    {"mean", mean},
+                                    {"max", stepMs.empty() ? 0.0 : *std::max_element(stepMs.begin(), stepMs.end())}}},
+            {"energy", QJsonObject{{"initial", initialEnergy},
+                                   {"kinetic", e.kinetic},
+                                   {"potential", e.potential},
+                                   {"work_nc", e.workNc},
+                                   {"drift", e.drift},
+                                   {"max_abs_drift", e.maxAbsDrift}}},
+            {"diverged", diverged},
+            {"effects", effects},
+            {"objects", objectsJson(world)},
+            {"force_evaluations", static_cast<double>(world.forceEvaluations())},
+        };
+        if (diverged) {
+            const Divergence& d = *world.divergence();
+            report.insert("divergence", QJsonObject{{"time", d.time},
+                                                    {"object", QString::fromStdString(d.objectId)},
+                                                    {"what", QString::fromStdString(d.what)},
+                                                    {"restored_time", d.restoredTime},
+                                                    {"message", QString::fromStdString(d.message())}});
+        }
+        out << QJsonDocument(report).toJson(QJsonDocument::Indented);
+    } else if (o.csv != QLatin1String("-")) {
+        out << "scene:      " << (scene.name.empty() ? o.scene : QString::fromStdString(scene.name)) << "\n"
+            << "integrator: " << QString::fromStdString(sim.integrator) << ", dt = " << formatNumber(dt)
+            << " s, " << sim.substeps << " sub-step(s)\n"
+            << "ran:        " << done << " steps to t = " << formatNumber(world.time()) << " s in "
+            << QString::number(wallSeconds, 'f', 3) << " s ("
+            << QString::number(median(stepMs), 'g', 3) << " ms per step, median)\n"
+            << "energy:     initial " << QString::number(initialEnergy, 'g', 6) << " J; now kinetic "
+            << QString::number(e.kinetic, 'g', 6) << ", potential " << QString::number(e.potential, 'g', 6)
+            << ", work_nc " << QString::number(e.workNc, 'g', 6) << " J\n"
+            << "drift:      " << QString::number(e.drift, 'g', 3) << " J (largest |drift| "
+            << QString::number(e.maxAbsDrift, 'g', 3) << " J)\n";
+        out << "effects:   ";
+        if (world.effectCosts().empty()) out << " none";
+        for (const EffectCost& cost : world.effectCosts())
+            out << " " << QString::fromStdString(cost.name) << " "
+                << QString::number(cost.seconds * 1000.0 / stepsRun, 'g', 3) << " ms/step;";
+        out << "\n";
+        for (const Tracked& t : tracked) {
+            const ui::PhaseSample x = phaseOf(world, t, 0), y = phaseOf(world, t, 1);
+            out << "  " << t.id << ": position (" << QString::number(x.coordinate, 'g', 6) << ", "
+                << QString::number(y.coordinate, 'g', 6) << "), velocity (" << QString::number(x.velocity, 'g', 6)
+                << ", " << QString::number(y.velocity, 'g', 6) << ")\n";
+        }
+    }
+    out.flush();
+    if (diverged) {
+        err << "phasebox-cli: diverged: " << QString::fromStdString(world.divergence()->message()) << "\n";
+        err.flush();
+        return kDiverged;
+    }
+    return status;
+}
+
+}  // namespace phasebox::cli

@@ -1,0 +1,230 @@
+#include "ui/plots/Charts.h"
+
+#include <QChart>
+#include <QFileInfo>
+#include <QGraphicsScene>
+#include <QImage>
+#include <QLineSeries>
+#include <QPainter>
+#include <QPen>
+#include <QSaveFile>
+#include <QSvgGenerator>
+#include <QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace phasebox::ui {
+
+namespace {
+void fitAxis(QValueAxis* axis, double lo, double hi) {
+    if (!std::isfinite(lo) || !std::isfinite(hi)) lo = hi = 0.0;
+    if (hi - lo < 1e-12 * std::max(1.0, std::abs(hi))) {
+        const double pad = std::max(1e-9, std::abs(hi) * 0.1 + 1e-3);
+        lo -= pad;
+        hi += pad;
+    } else {
+        const double pad = 0.05 * (hi - lo);
+        lo -= pad;
+        hi += pad;
+    }
+    axis->setRange(lo, hi);
+    axis->applyNiceNumbers();
+}
+
+QLineSeries* addSeries(QChart* chart, const QVector<QPointF>& points, const QString& name,
+                       const QColor& color, qreal width = 2.0) {
+    auto* series = new QLineSeries(chart);
+    series->setName(name);
+    series->replace(decimate(points));
+    QPen pen(color);
+    pen.setWidthF(width);
+    series->setPen(pen);
+    chart->addSeries(series);
+    return series;
+}
+
+void attach(QChart* chart, QValueAxis* x, QValueAxis* y) {
+    chart->addAxis(x, Qt::AlignBottom);
+    chart->addAxis(y, Qt::AlignLeft);
+    for (QAbstractSeries* s : chart->series()) {
+        s->attachAxis(x);
+        s->attachAxis(y);
+    }
+}
+
+QChart* newChart(const QString& title) {
+    auto* chart = new QChart;
+    chart->setTitle(title);
+    chart->setAnimationOptions(QChart::NoAnimation);
+    chart->legend()->setAlignment(Qt::AlignBottom);
+    chart->setBackgroundRoundness(0);
+    return chart;
+}
+}  // namespace
+
+QColor energyColor(int series) {
+    static const QColor colors[] = {QColor(0x1f, 0x77, 0xb4), QColor(0x2c, 0xa0, 0x2c),
+                                    QColor(0x20, 0x20, 0x20), QColor(0x94, 0x67, 0xbd),
+                                    QColor(0xd6, 0x27, 0x28)};
+    return colors[std::clamp(series, 0, 4)];
+}
+
+QVector<QPointF> decimate(const QVector<QPointF>& points, int maxPoints) {
+    if (points.size() <= maxPoints || maxPoints < 4) return points;
+    const int buckets = maxPoints / 2;
+    QVector<QPointF> out;
+    out.reserve(2 * buckets + 1);
+    const qsizetype n = points.size();
+    for (int b = 0; b < buckets; ++b) {
+        const qsizetype begin = n * b / buckets, end = n * (b + 1) / buckets;
+        if (begin >= end) continue;
+        qsizetype lo = begin, hi = begin;
+        for (qsizetype i = begin; i < end; ++i) {
+            if (points[i].y() < points[lo].y()) lo = i;
+            if (points[i].y() > points[hi].y()) hi = i;
+        }
+        out.push_back(points[std::min(lo, hi)]);
+        if (lo != hi) out.push_back(points[std::max(lo, hi)]);
+    }
+    if (out.back() != points.back()) out.push_back(points.back());
+    return out;
+}
+
+QChart* createEnergyChart(std::span<const EnergySample> samples,
+                          std::span<const PlotMarker> markers, const QString& title) {
+    QChart* chart = newChart(title);
+    QVector<QPointF> series[5];
+    for (auto& s : series) s.reserve(static_cast<qsizetype>(samples.size()));
+    double tMin = 0.0, tMax = 0.0;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const EnergySample& e : samples) {
+        const double values[5] = {e.kinetic, e.potential, e.kinetic + e.potential, e.workNc, e.drift};
+        for (int k = 0; k < 5; ++k) {
+            series[k].push_back({e.t, values[k]});
+            if (std::isfinite(values[k])) {
+                lo = std::min(lo, values[k]);
+                hi = std::max(hi, values[k]);
+            }
+        }
+    }
+    if (!samples.empty()) {
+        tMin = samples.front().t;
+        tMax = samples.back().t;
+    }
+    static const char* names[5] = {"kinetic", "potential", "total", "work_nc", "drift"};
+    for (int k = 0; k < 5; ++k)
+        addSeries(chart, series[k], QString::fromLatin1(names[k]), energyColor(k), k == 2 ? 2.5 : 1.8);
+    auto* x = new QValueAxis;
+    x->setTitleText(QStringLiteral("time [s]"));
+    auto* y = new QValueAxis;
+    y->setTitleText(QStringLiteral("energy [J]"));
+    fitAxis(x, tMin, tMax > tMin ? tMax : tMin + 1.0);
+    fitAxis(y, lo, hi);
+    for (const PlotMarker& m : markers) {
+        auto* line = addSeries(chart, {{m.t, y->min()}, {m.t, y->max()}}, m.label,
+                               QColor(0x80, 0x80, 0x80), 1.2);
+        QPen pen = line->pen();
+        pen.setStyle(Qt::DashLine);
+        line->setPen(pen);
+    }
+    attach(chart, x, y);
+    return chart;
+}
+
+QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& coordinateName,
+                         const QString& velocityName, const QString& title) {
+    QChart* chart = newChart(title);
+    QVector<QPointF> points;
+    points.reserve(static_cast<qsizetype>(samples.size()));
+    double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
+    for (const PhaseSample& s : samples) {
+        points.push_back({s.coordinate, s.velocity});
+        if (std::isfinite(s.coordinate) && std::isfinite(s.velocity)) {
+            xlo = std::min(xlo, s.coordinate);
+            xhi = std::max(xhi, s.coordinate);
+            ylo = std::min(ylo, s.velocity);
+            yhi = std::max(yhi, s.velocity);
+        }
+    }
+    // A phase portrait is a curve, not a function of x: thin it by stride, not by buckets.
+    if (points.size() > kMaxPlotPoints) {
+        QVector<QPointF> thinned;
+        const qsizetype stride = (points.size() + kMaxPlotPoints - 1) / kMaxPlotPoints;
+        for (qsizetype i = 0; i < points.size(); i += stride) thinned.push_back(points[i]);
+        thinned.push_back(points.back());
+        points = std::move(thinned);
+    }
+    auto* series = new QLineSeries(chart);
+    series->setName(coordinateName + QStringLiteral(" – ") + velocityName);
+    series->replace(points);
+    QPen pen(energyColor(0));
+    pen.setWidthF(1.8);
+    series->setPen(pen);
+    chart->addSeries(series);
+    if (!points.isEmpty()) {
+        auto* start = new QLineSeries(chart);
+        start->setName(QStringLiteral("start"));
+        start->append(points.front());
+        start->setPointsVisible(true);
+        start->setMarkerSize(9);
+        start->setColor(energyColor(4));
+        chart->addSeries(start);
+    }
+    auto* x = new QValueAxis;
+    x->setTitleText(coordinateName);
+    auto* y = new QValueAxis;
+    y->setTitleText(velocityName);
+    fitAxis(x, xlo, xhi);
+    fitAxis(y, ylo, yhi);
+    attach(chart, x, y);
+    return chart;
+}
+
+bool exportChart(QChart* chart, const QString& path, QSize size, QString* error) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix != QLatin1String("png") && suffix != QLatin1String("svg")) {
+        if (error) *error = QStringLiteral("%1: the plot must be a .png or .svg file").arg(path);
+        return false;
+    }
+    // Render through a scene: a chart needs one to lay itself out, but no view or window.
+    QGraphicsScene scene;
+    scene.addItem(chart);
+    chart->setGeometry(QRectF(QPointF(0, 0), size));
+    scene.setSceneRect(QRectF(QPointF(0, 0), size));
+    bool ok = false;
+    QString reason;
+    if (suffix == QLatin1String("png")) {
+        QImage image(size, QImage::Format_ARGB32_Premultiplied);
+        image.fill(Qt::white);
+        {
+            QPainter painter(&image);
+            painter.setRenderHint(QPainter::Antialiasing);
+            scene.render(&painter);
+        }
+        QSaveFile file(path);
+        ok = file.open(QIODevice::WriteOnly) && image.save(&file, "PNG") && file.commit();
+        reason = file.errorString();
+    } else {
+        QSaveFile file(path);
+        if (file.open(QIODevice::WriteOnly)) {
+            QSvgGenerator svg;
+            svg.setOutputDevice(&file);
+            svg.setSize(size);
+            svg.setViewBox(QRect(QPoint(0, 0), size));
+            svg.setTitle(chart->title());
+            {
+                QPainter painter(&svg);
+                scene.render(&painter);
+            }
+            ok = file.commit();
+        }
+        reason = file.errorString();
+    }
+    scene.removeItem(chart);
+    if (!ok && error) *error = QStringLiteral("%1: cannot write the plot: %2").arg(path, reason);
+    return ok;
+}
+
+}  // namespace phasebox::ui

@@ -1,0 +1,61 @@
+#pragma once
+// The plots Phasebox shows, as Qt Charts built from plain samples: energy against time and
+// phase space. The same code serves the app's live plots, picture export and
+// `phasebox-cli run --plot-energy/--plot-phase`, so a saved plot is what the app shows.
+
+#include <QColor>
+#include <QSize>
+#include <QString>
+#include <QVector>
+#include <QPointF>
+
+#include <span>
+
+QT_BEGIN_NAMESPACE
+class QChart;
+QT_END_NAMESPACE
+
+namespace phasebox::ui {
+
+struct EnergySample {
+    double t = 0.0;
+    double kinetic = 0.0;
+    double potential = 0.0;
+    double workNc = 0.0;
+    double drift = 0.0;
+};
+
+// A labelled vertical marker, e.g. where the integrator or dt changed.
+struct PlotMarker {
+    double t = 0.0;
+    QString label;
+};
+
+struct PhaseSample {
+    double coordinate = 0.0;
+    double velocity = 0.0;
+};
+
+// At most this many points per series are drawn; longer series are decimated.
+inline constexpr int kMaxPlotPoints = 4000;
+
+// Keeps the shape of a long series: for each of maxPoints/2 buckets, its minimum and maximum
+// in order, so spikes survive. Series shorter than maxPoints are returned as they are.
+QVector<QPointF> decimate(const QVector<QPointF>& points, int maxPoints = kMaxPlotPoints);
+
+// The energy plot: kinetic, potential, total, work_nc and drift against time, with markers.
+QChart* createEnergyChart(std::span<const EnergySample> samples,
+                          std::span<const PlotMarker> markers, const QString& title);
+
+// Phase space of one coordinate against its velocity.
+QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& coordinateName,
+                         const QString& velocityName, const QString& title);
+
+// Writes a chart as PNG or SVG, chosen by the file's extension (.png, .svg). Needs a
+// QApplication (the offscreen platform is enough). Returns false and sets *error on failure.
+bool exportChart(QChart* chart, const QString& path, QSize size, QString* error);
+
+// The series colours, shared with the app's legends.
+QColor energyColor(int series);  // 0 kinetic, 1 potential, 2 total, 3 work_nc, 4 drift
+
+}  // namespace phasebox::ui
