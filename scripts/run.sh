@@ -8,6 +8,7 @@ phasebox_install_dependencies
 phasebox_build release
 bin="$PHASEBOX_ROOT/build/release/app"
 scene="${1:-$PHASEBOX_ROOT/resources/scenes/demo.phasebox.json}"
+# Until the desktop window exists, Phasebox runs the scene headless and prints a summary.
 
 if [ -x "$bin/phasebox" ]; then
     if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
@@ -18,4 +19,4 @@ if [ -x "$bin/phasebox" ]; then
 fi
 "$bin/phasebox-cli" info "$scene"
 echo
-"$bin/phasebox-cli" run "$scene" --every 60 --csv /dev/stdout | column -s, -t
+"$bin/phasebox-cli" run "$scene"

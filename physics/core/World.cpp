@@ -443,53 +443,86 @@ void World::restoreScalars(const Checkpoint& c) {
     previousDrift_ = 0.0;
 }
 
-double World::kineticEnergyChecked(bool& finite) const {
+World::StateSummary World::summarizeState() const {
+    // One pass over the state for the diagnostics: kinetic energy, the mass moment Σm·x (which
+    // gives uniform gravity's potential without a pass of its own), and finiteness (a sum is
+    // finite exactly when every term is). The particle range is [x y x y …], so 2-lane
+    // accumulators keep x and y apart, and two of each let the adds overlap.
     const Vec& q = q_[current_];
     const Vec& u = u_[current_];
-    const double* __restrict m = mass_.data();
-    const double* __restrict qp = q.data();
-    const double* __restrict up = u.data();
-    double twiceKinetic = 0.0;
-    double check = 0.0;  // q·0 is NaN exactly when q is not finite
-    const Eigen::Index n = q.size();
-    for (Eigen::Index i = 0; i < n; ++i) {
-        twiceKinetic += m[i] * up[i] * up[i];
-        check += qp[i] * 0.0;
+    const double* m = mass_.data();
+    const double* qp = q.data();
+    const double* up = u.data();
+    using A2 = Eigen::Array2d;
+    A2 ke0 = A2::Zero(), ke1 = A2::Zero(), mom0 = A2::Zero(), mom1 = A2::Zero();
+    const int particleEnd = layout_.boxBase();
+    int i = 0;
+    for (; i + 4 <= particleEnd; i += 4) {
+        const A2 m0 = Eigen::Map<const A2>(m + i), m1 = Eigen::Map<const A2>(m + i + 2);
+        const A2 u0 = Eigen::Map<const A2>(up + i), u1 = Eigen::Map<const A2>(up + i + 2);
+        ke0 += m0 * u0 * u0;
+        ke1 += m1 * u1 * u1;
+        mom0 += m0 * Eigen::Map<const A2>(qp + i);
+        mom1 += m1 * Eigen::Map<const A2>(qp + i + 2);
     }
-    finite = std::isfinite(twiceKinetic) && std::isfinite(check);
-    return 0.5 * twiceKinetic;
+    for (; i < particleEnd; i += 2) {
+        const A2 m0 = Eigen::Map<const A2>(m + i), u0 = Eigen::Map<const A2>(up + i);
+        ke0 += m0 * u0 * u0;
+        mom0 += m0 * Eigen::Map<const A2>(qp + i);
+    }
+    double angularKinetic = 0.0, angles = 0.0;
+    for (int b = 0; b < layout_.dynamicBoxes; ++b) {
+        const int k = layout_.boxDof(b);
+        const A2 mb = Eigen::Map<const A2>(m + k), ub = Eigen::Map<const A2>(up + k);
+        ke0 += mb * ub * ub;
+        mom0 += mb * Eigen::Map<const A2>(qp + k);
+        angularKinetic += m[k + 2] * up[k + 2] * up[k + 2];
+        angles += qp[k + 2];
+    }
+    StateSummary summary;
+    summary.kinetic = 0.5 * ((ke0 + ke1).sum() + angularKinetic);
+    const A2 moment = mom0 + mom1;
+    summary.massMoment = Vec2(moment[0], moment[1]);
+    summary.finite = std::isfinite(summary.kinetic) && moment.isFinite().all() && std::isfinite(angles);
+    return summary;
 }
 
-double World::kineticEnergy() const {
-    bool finite = true;
-    return kineticEnergyChecked(finite);
-}
+double World::kineticEnergy() const { return summarizeState().kinetic; }
 
-double World::potentialEnergy() const {
+double World::potentialEnergy() const { return potentialEnergy(summarizeState().massMoment); }
+
+double World::potentialEnergy(const Vec2& massMoment) const {
     double energy = 0.0;
-    for (const auto& e : effects_) energy += e->potentialEnergy(q_[current_]);
+    for (const auto& e : effects_) {
+        double fromMoment = 0.0;
+        energy += e->potentialFromMassMoment(massMoment, fromMoment) ? fromMoment
+                                                                     : e->potentialEnergy(q_[current_]);
+    }
     return energy;
 }
 
-void World::updateLedger() {
-    ledger_.potential = potentialEnergy();
+void World::updateLedger(const Vec2& massMoment) {
+    ledger_.potential = potentialEnergy(massMoment);
     ledger_.drift = ledger_.kinetic + ledger_.potential - ledger_.workNc - ledger_.initial;
     if (std::abs(ledger_.drift) > ledger_.maxAbsDrift) ledger_.maxAbsDrift = std::abs(ledger_.drift);
 }
 
 bool World::checkEnergy() {
-    bool finite = true;
-    ledger_.kinetic = kineticEnergyChecked(finite);
+    const StateSummary summary = summarizeState();
+    const bool finite = summary.finite;
+    ledger_.kinetic = summary.kinetic;
     std::string what;
     bool runaway = false;
     if (finite) {
-        updateLedger();
-        const double scale = energyScale_ + std::abs(ledger_.workNc);
+        updateLedger(summary.massMoment);
         const double drift = ledger_.drift;
         if (!std::isfinite(drift)) {
             what = "non-finite energy";
         } else {
-            const bool growing = drift > kRunawayFactor * scale && drift > kGrowth * previousDrift_;
+            // The growth rule measures against the scene's own energy, not against work_nc: in
+            // a damped blow-up the damping's work explodes as fast as the drift and would hide it.
+            const bool growing =
+                drift > kRunawayFactor * energyScale_ && drift > kGrowth * previousDrift_;
             if (growing && growthStreak_ == 0) {
                 // The growth may be a blow-up: remember where it started, the last good state.
                 streakStart_ = frameStart_;
@@ -501,7 +534,8 @@ bool World::checkEnergy() {
             }
             growthStreak_ = growing ? growthStreak_ + 1 : 0;
             previousDrift_ = drift;
-            runaway = growthStreak_ >= kStreak || drift > kAbsurd * scale;
+            runaway = growthStreak_ >= kStreak ||
+                      drift > kAbsurd * (energyScale_ + std::abs(ledger_.workNc));
             if (runaway) what = "energy growing without bound";
         }
     } else {

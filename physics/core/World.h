@@ -216,9 +216,14 @@ private:
     void rebuildSpringEffect();
     void sortEffectsByChannel();
     void bindEffects();
-    // Kinetic energy fused with a finiteness check of the whole state (one pass).
-    double kineticEnergyChecked(bool& finite) const;
-    void updateLedger();
+    struct StateSummary {
+        double kinetic = 0.0;
+        Vec2 massMoment = Vec2::Zero();  // Σ m·(x, y) over particles and boxes
+        bool finite = true;               // every coordinate and velocity is finite
+    };
+    StateSummary summarizeState() const;
+    double potentialEnergy(const Vec2& massMoment) const;
+    void updateLedger(const Vec2& massMoment);
     bool checkSubstep(double t, int substep);
     bool checkEnergy();
 

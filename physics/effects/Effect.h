@@ -61,6 +61,14 @@ public:
         return 0.0;
     }
 
+    // An effect whose potential depends on the state only through the mass moment Σm·x
+    // (uniform gravity: −g·Σm·x) may compute it from the moment, which the world already has
+    // from its diagnostics pass; returns false when it cannot.
+    virtual bool potentialFromMassMoment(const Vec2& massMoment, double& energy) const {
+        (void)massMoment, (void)energy;
+        return false;
+    }
+
     virtual bool hasNonConservativePart() const { return false; }
 
     // The world's topology changed (objects added or removed): re-read what is needed.

@@ -12,6 +12,10 @@ public:
 
     double addForces(double t, const Vec& q, const Vec& u, Vec& force) override;
     double potentialEnergy(const Vec& q) const override;
+    bool potentialFromMassMoment(const Vec2& massMoment, double& energy) const override {
+        energy = -g_.dot(massMoment);
+        return true;
+    }
     bool isAccelerationField() const override { return true; }
     void addAccelerations(double t, const Vec& q, const Vec& u, Vec& accel,
                           bool overwrite) override;

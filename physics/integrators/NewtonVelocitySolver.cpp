@@ -2,41 +2,88 @@
 
 namespace phasebox {
 
+// Updates this small relative to the velocity are round-off when they stop shrinking.
+constexpr double kRoundOffFloor = 1e-9;
+
 void NewtonVelocitySolver::reset(int n) {
     force_.setZero(n);
     rhs_.setZero(n);
     delta_.setZero(n);
     qe_.setZero(n);
     kU_.setZero(n);
-    stiffness_.resize(n, n);
-    damping_.resize(n, n);
     matrix_.resize(n, n);
+    patternSize_ = 0;  // the next assembly builds the pattern anew
+}
+
+namespace {
+std::size_t hashPattern(const ForceJacobians& jac, int n) {
+    std::size_t h = static_cast<std::size_t>(n) * 0x9e3779b97f4a7c15ull;
+    auto mix = [&h](const std::vector<Triplet>& triplets) {
+        for (const Triplet& t : triplets) {
+            h ^= static_cast<std::size_t>(t.row()) * 0x100000001b3ull + static_cast<std::size_t>(t.col());
+            h *= 0x9e3779b97f4a7c15ull;
+        }
+        h ^= triplets.size();
+    };
+    mix(jac.stiffness);
+    mix(jac.damping);
+    return h;
+}
+}  // namespace
+
+void NewtonVelocitySolver::assemble(OdeSystem& sys, double c) {
+    const Vec& mass = sys.mass();
+    const int n = static_cast<int>(mass.size());
+    const std::size_t total = n + jac_.stiffness.size() + jac_.damping.size();
+    const std::size_t hash = hashPattern(jac_, n);
+    if (total == patternSize_ && hash == patternHash_) {
+        double* values = matrix_.valuePtr();
+        std::fill(values, values + matrix_.nonZeros(), 0.0);
+        std::size_t k = 0;
+        for (int i = 0; i < n; ++i) values[slot_[k++]] += mass[i];
+        for (const Triplet& t : jac_.stiffness) values[slot_[k++]] -= c * c * t.value();
+        for (const Triplet& t : jac_.damping) values[slot_[k++]] -= c * t.value();
+        return;
+    }
+    triplets_.clear();
+    triplets_.reserve(total);
+    for (int i = 0; i < n; ++i) triplets_.emplace_back(i, i, mass[i]);
+    for (const Triplet& t : jac_.stiffness) triplets_.emplace_back(t.row(), t.col(), -c * c * t.value());
+    for (const Triplet& t : jac_.damping) triplets_.emplace_back(t.row(), t.col(), -c * t.value());
+    matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
+    matrix_.makeCompressed();
+    slot_.resize(total);
+    for (std::size_t k = 0; k < total; ++k)
+        slot_[k] = static_cast<int>(&matrix_.coeffRef(triplets_[k].row(), triplets_[k].col()) -
+                                    matrix_.valuePtr());
+    patternSize_ = total;
+    patternHash_ = hash;
+    ldltAnalyzed_ = luAnalyzed_ = false;
 }
 
 bool NewtonVelocitySolver::solveLinear(OdeSystem& sys, double c) {
-    const Vec& mass = sys.mass();
-    const int n = static_cast<int>(mass.size());
     if (jac_.stiffness.empty() && jac_.damping.empty()) {
         // No effect has a Jacobian: A = M is diagonal.
         delta_ = rhs_.cwiseProduct(sys.inverseMass());
         return true;
     }
-    triplets_.clear();
-    triplets_.reserve(jac_.stiffness.size() + jac_.damping.size() + n);
-    for (int i = 0; i < n; ++i) triplets_.emplace_back(i, i, mass[i]);
-    for (const Triplet& k : jac_.stiffness) triplets_.emplace_back(k.row(), k.col(), -c * c * k.value());
-    for (const Triplet& d : jac_.damping) triplets_.emplace_back(d.row(), d.col(), -c * d.value());
-    matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
-
+    assemble(sys, c);
     if (jac_.symmetric) {
-        ldlt_.compute(matrix_);
+        if (!ldltAnalyzed_) {
+            ldlt_.analyzePattern(matrix_);
+            ldltAnalyzed_ = true;
+        }
+        ldlt_.factorize(matrix_);
         if (ldlt_.info() == Eigen::Success) {
             delta_ = ldlt_.solve(rhs_);
             if (ldlt_.info() == Eigen::Success && delta_.allFinite()) return true;
         }
     }
     // Non-symmetric Jacobians, or an indefinite matrix LDLᵀ could not factor: general LU.
-    lu_.analyzePattern(matrix_);
+    if (!luAnalyzed_) {
+        lu_.analyzePattern(matrix_);
+        luAnalyzed_ = true;
+    }
     lu_.factorize(matrix_);
     if (lu_.info() != Eigen::Success) return false;
     delta_ = lu_.solve(rhs_);
@@ -55,8 +102,8 @@ NewtonVelocitySolver::Result NewtonVelocitySolver::solve(OdeSystem& sys, double 
     result.power = sys.forcesAndJacobians(t, q0, u0, force_, jac_);
     rhs_ = c * force_;
     if (!jac_.stiffness.empty()) {
-        stiffness_.setFromTriplets(jac_.stiffness.begin(), jac_.stiffness.end());
-        kU_.noalias() = stiffness_ * u0;
+        kU_.setZero();  // K·u₀ straight from the triplets (duplicates add up, as in K)
+        for (const Triplet& t : jac_.stiffness) kU_[t.row()] += t.value() * u0[t.col()];
         rhs_ += (c * c) * kU_;
     }
     if (!solveLinear(sys, c)) return result;
@@ -75,10 +122,15 @@ NewtonVelocitySolver::Result NewtonVelocitySolver::solve(OdeSystem& sys, double 
         ++result.linearSolves;
         v += delta_;
         ++result.iterations;
+        const double previous = result.lastCorrection;
         result.lastCorrection = delta_.lpNorm<Eigen::Infinity>();
         if (!v.allFinite()) return result;
-        if (untilConverged &&
-            result.lastCorrection <= relativeTolerance * (1.0 + v.lpNorm<Eigen::Infinity>()))
+        if (!untilConverged) continue;
+        const double scale = 1.0 + v.lpNorm<Eigen::Infinity>();
+        if (result.lastCorrection <= relativeTolerance * scale) break;
+        // At the round-off floor the update stops shrinking (quadratic convergence would cut it
+        // by far more than half): further iterations cannot improve the answer.
+        if (result.lastCorrection <= kRoundOffFloor * scale && result.lastCorrection > 0.5 * previous)
             break;
     }
     result.ok = v.allFinite();

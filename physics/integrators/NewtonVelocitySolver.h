@@ -34,13 +34,22 @@ public:
                  int maxIterations, bool untilConverged, double relativeTolerance);
 
 private:
-    // Assembles A = M − c·D − c²·K into matrix_ and solves A·x = rhs_ into delta_.
+    // Assembles A = M − c·D − c²·K into matrix_. The sparsity pattern is built once and only
+    // refilled while the effects produce the same triplet structure (the usual case: springs
+    // do not come and go between steps), so a step neither allocates nor re-analyses.
+    void assemble(OdeSystem& sys, double c);
+    // Solves A·x = rhs_ into delta_.
     bool solveLinear(OdeSystem& sys, double c);
 
     ForceJacobians jac_;
     Vec force_, rhs_, delta_, qe_, kU_;
-    SparseMatrix stiffness_, damping_, matrix_;
+    SparseMatrix matrix_;
     std::vector<Triplet> triplets_;
+    std::vector<int> slot_;  // for each assembled triplet, its index in matrix_'s values
+    std::size_t patternHash_ = 0;
+    std::size_t patternSize_ = 0;
+    bool ldltAnalyzed_ = false;
+    bool luAnalyzed_ = false;
     Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
     Eigen::SparseLU<SparseMatrix> lu_;
 };
