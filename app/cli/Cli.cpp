@@ -109,9 +109,11 @@ int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     if (!world.cloths().empty()) out << " (" << clothNodes << " nodes, " << clothSprings << " springs)";
     out << "\n";
     out << "state:       " << world.dimension() << " degrees of freedom\n";
+    // The same list as run --json's effects: everything that costs time per step.
     out << "effects that will run:";
-    if (world.effects().empty()) out << " none";
-    for (const auto& effect : world.effects()) out << " " << QString::fromStdString(effect->name());
+    const std::vector<EffectCost> costs = world.effectCosts();
+    if (costs.empty()) out << " none";
+    for (const EffectCost& cost : costs) out << " " << QString::fromStdString(cost.name);
     out << "\n";
     for (const std::string& name : built.unsupported)
         out << "not simulated yet: " << QString::fromStdString(name) << "\n";

@@ -1,5 +1,6 @@
 #include "physics/core/World.h"
 
+#include "physics/contacts/ContactStage.h"
 #include "physics/effects/SpringEffect.h"
 
 #include <algorithm>
@@ -137,6 +138,13 @@ void World::commit() {
 
     rebuildSpringEffect();
     bindEffects();
+    if (ContactStage::needed(*this, particleCollisions_)) {
+        if (!contacts_)
+            contacts_ = std::make_unique<ContactStage>(particleCollisions_, particleRestitution_);
+        contacts_->bind(*this);
+    } else {
+        contacts_.reset();
+    }
     integrator_->reset(n);
     layoutDirty_ = false;
 
@@ -295,6 +303,14 @@ void World::setSettings(const SimulationSettings& settings) {
     integrator_->setSettings({settings_.tolerance, settings_.newtonIterations});
 }
 
+void World::setParticleCollisions(bool enabled, double restitution) {
+    storeStateInObjects();
+    particleCollisions_ = enabled;
+    particleRestitution_ = restitution;
+    contacts_.reset();  // rebuilt with the new pair rule
+    layoutDirty_ = true;
+}
+
 void World::setIntegrator(const std::string& name) {
     SimulationSettings s = settings_;
     s.integrator = name;
@@ -378,12 +394,17 @@ bool World::step() {
     const double h = settings_.dt / settings_.substeps;
     const auto stepStart = Clock::now();
     saveFrameStart();
+    if (contacts_) {
+        const auto start = Clock::now();
+        contacts_->collide(*this, q_[current_], u_[current_], settings_.dt, settings_.contacts);
+        contactSeconds_ += secondsSince(start);
+    }
     for (int s = 0; s < settings_.substeps; ++s) {
         const double t = frameStart_.time + s * h;
         const int next = 1 - current_;
-        const bool ok = integrator_->step(*this, t, h, q_[current_], u_[current_], q_[next],
-                                          u_[next], ledger_.workNc);
-        // Contacts and pins act here, on the new state (issue #3).
+        bool ok = integrator_->step(*this, t, h, q_[current_], u_[current_], q_[next], u_[next],
+                                    ledger_.workNc);
+        if (ok && contacts_) ok = solveContacts(h, q_[current_], q_[next], u_[next]);
         if (!ok || (settings_.substeps > 1 && !(q_[next].allFinite() && u_[next].allFinite()))) {
             Divergence d;
             d.time = t + h;
@@ -404,6 +425,19 @@ bool World::step() {
     time_ = timeBase_ + static_cast<double>(stepsSinceTimeBase_) * settings_.dt;
     ++stepCount_;
     return checkEnergy();
+}
+
+bool World::solveContacts(double h, const Vec& q0, Vec& q, Vec& u) {
+    // Contacts act after the smooth step as impulses (positions move by h·Δv); the energy
+    // they add or remove is their work, booked in work_nc.
+    const auto start = Clock::now();
+    const double before = mechanicalEnergy(q, u);
+    contacts_->solveSubstep(h, q0, q, u, settings_.contacts);
+    const double after = mechanicalEnergy(q, u);
+    contactSeconds_ += secondsSince(start);
+    if (!std::isfinite(after)) return true;  // reported by the finiteness check
+    ledger_.workNc += after - before;
+    return true;
 }
 
 void World::saveFrameStart() {
@@ -443,13 +477,11 @@ void World::restoreScalars(const Checkpoint& c) {
     previousDrift_ = 0.0;
 }
 
-World::StateSummary World::summarizeState() const {
+World::StateSummary World::summarizeState(const Vec& q, const Vec& u) const {
     // One pass over the state for the diagnostics: kinetic energy, the mass moment Σm·x (which
     // gives uniform gravity's potential without a pass of its own), and finiteness (a sum is
     // finite exactly when every term is). The particle range is [x y x y …], so 2-lane
     // accumulators keep x and y apart, and two of each let the adds overlap.
-    const Vec& q = q_[current_];
-    const Vec& u = u_[current_];
     const double* m = mass_.data();
     const double* qp = q.data();
     const double* up = u.data();
@@ -487,28 +519,35 @@ World::StateSummary World::summarizeState() const {
     return summary;
 }
 
-double World::kineticEnergy() const { return summarizeState().kinetic; }
+double World::kineticEnergy() const { return summarizeState(q_[current_], u_[current_]).kinetic; }
 
-double World::potentialEnergy() const { return potentialEnergy(summarizeState().massMoment); }
+double World::potentialEnergy() const {
+    return potentialEnergy(q_[current_], summarizeState(q_[current_], u_[current_]).massMoment);
+}
 
-double World::potentialEnergy(const Vec2& massMoment) const {
+double World::potentialEnergy(const Vec& q, const Vec2& massMoment) const {
     double energy = 0.0;
     for (const auto& e : effects_) {
         double fromMoment = 0.0;
         energy += e->potentialFromMassMoment(massMoment, fromMoment) ? fromMoment
-                                                                     : e->potentialEnergy(q_[current_]);
+                                                                     : e->potentialEnergy(q);
     }
     return energy;
 }
 
+double World::mechanicalEnergy(const Vec& q, const Vec& u) const {
+    const StateSummary summary = summarizeState(q, u);
+    return summary.kinetic + potentialEnergy(q, summary.massMoment);
+}
+
 void World::updateLedger(const Vec2& massMoment) {
-    ledger_.potential = potentialEnergy(massMoment);
+    ledger_.potential = potentialEnergy(q_[current_], massMoment);
     ledger_.drift = ledger_.kinetic + ledger_.potential - ledger_.workNc - ledger_.initial;
     if (std::abs(ledger_.drift) > ledger_.maxAbsDrift) ledger_.maxAbsDrift = std::abs(ledger_.drift);
 }
 
 bool World::checkEnergy() {
-    const StateSummary summary = summarizeState();
+    const StateSummary summary = summarizeState(q_[current_], u_[current_]);
     const bool finite = summary.finite;
     ledger_.kinetic = summary.kinetic;
     std::string what;
@@ -546,6 +585,7 @@ bool World::checkEnergy() {
     Divergence d;
     d.time = time_;
     d.objectId = finite ? mostEnergeticObject() : firstNonFinite(q_[current_], u_[current_]);
+    if (d.objectId.empty()) d.objectId = mostEnergeticObject();  // energy overflowed first
     d.what = what;
     if (runaway && growthStreak_ >= kStreak) {
         q_[current_] = streakStart_.q;
@@ -598,11 +638,13 @@ std::vector<EffectCost> World::effectCosts() const {
     std::vector<EffectCost> costs;
     for (std::size_t i = 0; i < effects_.size(); ++i)
         costs.push_back({effects_[i]->name(), i < effectSeconds_.size() ? effectSeconds_[i] : 0.0});
+    if (contacts_) costs.push_back({"contacts", contactSeconds_});
     return costs;
 }
 
 void World::resetProfile() {
     std::fill(effectSeconds_.begin(), effectSeconds_.end(), 0.0);
+    contactSeconds_ = 0.0;
     integratorSeconds_ = 0.0;
 }
 

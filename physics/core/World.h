@@ -7,6 +7,7 @@
 // object's own position/velocity fields are only its setup values; for a pinned particle or
 // a static box the object's fields are the truth.
 
+#include "physics/contacts/ContactSolver.h"
 #include "physics/core/Layout.h"
 #include "physics/core/OdeSystem.h"
 #include "physics/effects/Effect.h"
@@ -20,6 +21,7 @@
 
 namespace phasebox {
 
+class ContactStage;
 class SpringEffect;
 
 struct Particle {
@@ -90,6 +92,7 @@ struct SimulationSettings {
     int substeps = 1;
     double tolerance = 1e-6;
     int newtonIterations = 1;
+    ContactSettings contacts;  // the scene's simulation.solver
 };
 
 // CONTRACT.md §2.
@@ -157,6 +160,13 @@ public:
     const std::vector<std::unique_ptr<Effect>>& effects() const { return effects_; }
     Effect* findEffect(const std::string& name) const;
 
+    // Particle–particle contacts (the scene's particle_collisions), with their restitution.
+    // Contacts between boxes, planes and disks run whenever two such things can touch.
+    void setParticleCollisions(bool enabled, double restitution);
+    bool particleCollisions() const { return particleCollisions_; }
+    // The contact stage, or nullptr when nothing in the scene can touch.
+    const ContactStage* contacts() const { return contacts_.get(); }
+
     // ---- settings and stepping --------------------------------------------------------
     // Throws std::invalid_argument for an unknown integrator or an out-of-range number;
     // the world is unchanged then. Switching the integrator keeps the state exactly.
@@ -221,8 +231,10 @@ private:
         Vec2 massMoment = Vec2::Zero();  // Σ m·(x, y) over particles and boxes
         bool finite = true;               // every coordinate and velocity is finite
     };
-    StateSummary summarizeState() const;
-    double potentialEnergy(const Vec2& massMoment) const;
+    StateSummary summarizeState(const Vec& q, const Vec& u) const;
+    double potentialEnergy(const Vec& q, const Vec2& massMoment) const;
+    double mechanicalEnergy(const Vec& q, const Vec& u) const;
+    bool solveContacts(double h, const Vec& q0, Vec& q, Vec& u);
     void updateLedger(const Vec2& massMoment);
     bool checkSubstep(double t, int substep);
     bool checkEnergy();
@@ -257,6 +269,11 @@ private:
     std::vector<int> nonConservative_;  // those with power to account
     std::vector<double> effectSeconds_; // parallel to effects_
     double integratorSeconds_ = 0.0;    // whole smooth steps, effects included
+
+    std::unique_ptr<ContactStage> contacts_;
+    bool particleCollisions_ = false;
+    double particleRestitution_ = 1.0;
+    double contactSeconds_ = 0.0;
 
     SimulationSettings settings_;
     std::unique_ptr<Integrator> integrator_;

@@ -72,6 +72,23 @@ void addClothSprings(World& world, const Cloth& cloth, const ClothDesc& desc) {
 }
 }  // namespace
 
+ContactSettings contactSettings(const std::map<std::string, double>& solver) {
+    ContactSettings settings;
+    auto take = [&](const char* key, auto& field) {
+        if (const auto it = solver.find(key); it != solver.end())
+            field = static_cast<std::remove_reference_t<decltype(field)>>(it->second);
+    };
+    take("iterations", settings.iterations);
+    take("relax_iterations", settings.relaxIterations);
+    take("contact_hertz", settings.hertz);
+    take("damping_ratio", settings.dampingRatio);
+    take("push_out", settings.pushOut);
+    take("restitution_threshold", settings.restitutionThreshold);
+    take("linear_slop", settings.linearSlop);
+    take("speculative_distance", settings.speculativeDistance);
+    return settings;
+}
+
 SceneError::SceneError(std::vector<SceneIssue> issues)
     : std::runtime_error(summarize(issues)), issues_(std::move(issues)) {}
 
@@ -100,7 +117,7 @@ BuildResult buildWorld(const SceneDesc& scene) {
         world.addEffect(std::make_unique<WindEffect>(vec(fx.wind->velocity), fx.wind->drag));
     if (fx.buoyancy) result.unsupported.push_back("buoyancy");
     if (fx.flocking) result.unsupported.push_back("flocking");
-    if (fx.particleCollisions) result.unsupported.push_back("particle_collisions");
+    if (fx.particleCollisions) world.setParticleCollisions(true, fx.particleCollisions->restitution);
 
     // Objects. Ids map to particle or box indices for the springs.
     std::unordered_map<std::string, SpringEnd> ends;
@@ -189,7 +206,8 @@ BuildResult buildWorld(const SceneDesc& scene) {
     }
 
     const SimulationDesc& sim = scene.simulation;
-    world.setSettings({sim.integrator, sim.dt, sim.substeps, sim.tolerance, sim.newtonIterations});
+    world.setSettings({sim.integrator, sim.dt, sim.substeps, sim.tolerance, sim.newtonIterations,
+                       contactSettings(sim.solver)});
     world.commit();
     return result;
 }

@@ -28,6 +28,10 @@ struct BuildResult {
     std::vector<std::string> unsupported;
 };
 
+// The contact solver's settings from the scene's simulation.solver (keys as documented in
+// docs/scene-format.md; absent keys keep their defaults).
+ContactSettings contactSettings(const std::map<std::string, double>& solver);
+
 // Throws SceneError when validateScene() finds issues.
 BuildResult buildWorld(const SceneDesc& scene);
 

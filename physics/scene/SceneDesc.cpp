@@ -84,7 +84,20 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     if (sim.newtonIterations < 1)
         check.fail("simulation.newton_iterations", "must be an integer >= 1");
     check.positive("simulation.duration", sim.duration);
-    for (const auto& [key, value] : sim.solver) check.finite("simulation.solver." + key, value);
+    // The contact solver's keys (engine-defined); others are ignored like any unknown key.
+    for (const auto& [key, value] : sim.solver) {
+        const std::string path = "simulation.solver." + key;
+        if (!check.finite(path, value)) continue;
+        if (key == "iterations" || key == "relax_iterations") {
+            if (value < 0 || value > 1000 || value != std::floor(value))
+                check.fail(path, "must be an integer between 0 and 1000");
+        } else if (key == "contact_hertz" || key == "push_out") {
+            check.positive(path, value);
+        } else if (key == "damping_ratio" || key == "restitution_threshold" || key == "linear_slop" ||
+                   key == "speculative_distance") {
+            check.nonNegative(path, value);
+        }
+    }
 
     // effects
     const EffectsDesc& fx = scene.effects;

@@ -94,7 +94,7 @@ private slots:
         const Result r = cli({"info", write("mixed.json", kMixed)});
         QCOMPARE(r.status, 0);
         const QString text = QString::fromUtf8(r.out);
-        QVERIFY2(text.contains("effects that will run: gravity drag springs"), qPrintable(text));
+        QVERIFY2(text.contains("effects that will run: gravity drag springs contacts"), qPrintable(text));
         QVERIFY(text.contains("symplectic_euler"));
         QVERIFY(text.contains("0.02"));
         QVERIFY(text.contains("cloths     1 (9 nodes"));
@@ -119,7 +119,8 @@ private slots:
             effects << e.toObject()["name"].toString();
             QVERIFY(e.toObject()["ms_per_step"].toDouble() >= 0.0);
         }
-        QCOMPARE(effects, (QStringList{"gravity", "drag", "springs"}));
+        // A box and disks that can touch: the contact stage runs and reports its cost too.
+        QCOMPARE(effects, (QStringList{"gravity", "drag", "springs", "contacts"}));
         const QJsonObject objects = o["objects"].toObject();
         QCOMPARE(objects.size(), 1 + 1 + 9);  // cloth nodes included
         QVERIFY(objects.contains("flag[2,1]"));

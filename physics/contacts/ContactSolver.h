@@ -1,0 +1,115 @@
+#pragma once
+// Sequential impulses on contact constraints, after the smooth step of every sub-step.
+//
+// The scheme is Box2D v3's soft step, adapted to a solver that runs after the integrator:
+// per sub-step of length h, with s the separation at the sub-step's start,
+//   warm start → bounce → soft solve → move positions by h·Δv → relax.
+// - Soft solve: a penetrating contact (s < 0) is a spring-damper of `hertz` and
+//   `dampingRatio` whose push-out speed is capped at `pushOut`; a speculative one (s > 0) only
+//   forbids closing more than the gap in this sub-step (v_n ≥ −s/h), which also catches fast
+//   bodies before they pass through thin walls. The two points of a manifold are solved
+//   together (a 2×2 block), which keeps tall stacks from tipping.
+// - Relax: the same constraints without the push-out bias, on velocities only, so that the
+//   position correction leaves no velocity behind (no energy is added by removing overlap).
+// - Restitution first, on the current velocities, in passes until no contact that meets
+//   within the sub-step approaches faster than the threshold: v_n ← −e·v_n (exactly
+//   energy-conserving for e = 1, and the passes let a Newton's cradle hand its momentum down
+//   the row ball by ball). An isolated pair is also moved to where it would be had it bounced
+//   at its time of impact, so that a rebound's height is right.
+// - Friction: Coulomb, each point's tangent impulse clamped to μ times its normal impulse.
+// - Warm starting: accumulated impulses carry over from step to step when a contact's
+//   pair and feature ids persist.
+
+#include "physics/contacts/Geometry.h"
+#include "physics/core/Types.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace phasebox {
+
+struct ContactSettings {
+    int iterations = 4;                 // soft solve iterations per sub-step
+    int relaxIterations = 2;            // bias-free iterations per sub-step
+    double hertz = 60.0;                // contact stiffness (capped at a quarter of 1/h)
+    double dampingRatio = 10.0;
+    double pushOut = 3.0;               // m/s: the fastest overlap is removed
+    double restitutionThreshold = 1.0;  // m/s: slower impacts do not bounce (no jitter at rest)
+    double linearSlop = 0.005;          // m: overlap tolerated without correction
+    double speculativeDistance = 0.02;  // m: contacts are made this far ahead of touching
+};
+
+// A body as the solver sees it: its velocity, and where it was when contacts were found.
+struct SolverBody {
+    int dof = -1;  // first state index
+    bool rotates = false;
+    double invMass = 0.0;
+    double invInertia = 0.0;
+    Vec2 v = Vec2::Zero();
+    double w = 0.0;
+    Vec2 collidePosition = Vec2::Zero();
+    double collideAngle = 0.0;
+    Vec2 dp = Vec2::Zero();  // displacement since the contacts were found
+    double dAngle = 0.0;
+    Vec2 positionShift = Vec2::Zero();  // this sub-step's time-of-impact correction
+    double angleShift = 0.0;
+    int contactCount = 0;  // constraints this step
+};
+
+struct ContactPoint {
+    Vec2 anchorA = Vec2::Zero();  // from each body's centre to the contact point, at collide
+    Vec2 anchorB = Vec2::Zero();
+    double baseSeparation = 0.0;  // separation when found
+    double normalMass = 0.0;
+    double tangentMass = 0.0;
+    double normalImpulse = 0.0;   // accumulated (warm-started)
+    double tangentImpulse = 0.0;
+    std::uint32_t id = 0;
+    bool shifted = false;  // moved to its time of impact in this sub-step
+};
+
+struct ContactConstraint {
+    std::uint64_t key = 0;  // the shape pair, for matching across steps
+    int bodyA = -1, bodyB = -1;  // solver body indices, −1 = static
+    Vec2 normal = Vec2::Zero();  // from A to B
+    double friction = 0.0;
+    double restitution = 0.0;
+    double stiffness = 1.0;  // multiplier of the contact hertz (see prepare())
+    int pointCount = 0;
+    ContactPoint points[2];
+};
+
+class ContactSolver {
+public:
+    std::vector<SolverBody>& bodies() { return bodies_; }
+    std::vector<ContactConstraint>& constraints() { return constraints_; }
+    const std::vector<ContactConstraint>& constraints() const { return constraints_; }
+
+    // Computes effective masses; call after the constraints and bodies are set for a step.
+    void prepare();
+
+    // One sub-step: q0 is the state at its start, (q, u) after the smooth step; on return
+    // (q, u) satisfy the contacts.
+    void solveSubstep(double h, const Vec& q0, Vec& q, Vec& u, const ContactSettings& settings);
+
+private:
+    struct Softness {
+        double biasRate, massScale, impulseScale;
+    };
+    void loadBodies(const Vec& positions, const Vec& u);
+    void warmStart();
+    void bounce(double h, const ContactSettings& settings);
+    static Softness makeSoft(double hertz, double zeta, double h);
+    bool solveBlock(ContactConstraint& c, SolverBody* a, SolverBody* b, const double bias[2],
+                    const double compliance[2]);
+    void solve(double h, bool useBias, const ContactSettings& settings);
+    double separation(const ContactConstraint& c, const ContactPoint& p) const;
+
+    std::vector<SolverBody> bodies_;
+    std::vector<ContactConstraint> constraints_;
+    std::vector<Softness> softness_;  // per constraint, for the current sub-step length
+    std::vector<Vec2> smoothV_;
+    std::vector<double> smoothW_;
+};
+
+}  // namespace phasebox

@@ -1,0 +1,211 @@
+#include "physics/contacts/ContactStage.h"
+
+#include "physics/core/World.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+
+namespace phasebox {
+
+bool ContactStage::needed(const World& world, bool particleCollisions) {
+    int dynamicBodies = 0, disks = 0, boxes = static_cast<int>(world.boxes().size());
+    for (const Particle& p : world.particles()) {
+        if (p.radius <= 0.0) continue;
+        ++disks;
+        dynamicBodies += !p.pinned;
+    }
+    for (const Box& b : world.boxes()) dynamicBodies += !b.isStatic;
+    if (dynamicBodies == 0) return false;
+    if (!world.planes().empty()) return true;
+    if (boxes >= 2 || (boxes >= 1 && disks >= 1)) return true;
+    return particleCollisions && disks >= 2;
+}
+
+void ContactStage::bind(const World& world) {
+    colliders_.clear();
+    const auto& particles = world.particles();
+    for (int i = 0; i < static_cast<int>(particles.size()); ++i) {
+        const Particle& p = particles[i];
+        if (p.radius > 0.0)
+            colliders_.push_back({Collider::Kind::Disk, i, p.dof, p.friction, p.restitution});
+    }
+    const auto& boxes = world.boxes();
+    for (int i = 0; i < static_cast<int>(boxes.size()); ++i) {
+        const Box& b = boxes[i];
+        colliders_.push_back({Collider::Kind::Box, i, b.dof, b.friction, b.restitution});
+    }
+    planes_.clear();
+    planeFriction_.clear();
+    planeRestitution_.clear();
+    for (const Plane& p : world.planes()) {
+        planes_.push_back({p.point, p.normal});
+        planeFriction_.push_back(p.friction);
+        planeRestitution_.push_back(p.restitution);
+    }
+    disks_.assign(colliders_.size(), Disk{Vec2::Zero(), 0.0});
+    boxes_.assign(colliders_.size(), OrientedBox{Vec2::Zero(), 0.0, Vec2::Zero()});
+    bounds_.resize(colliders_.size());
+    bodyOfCollider_.assign(colliders_.size(), -1);
+    previous_.clear();
+    solver_.constraints().clear();
+}
+
+int ContactStage::solverBodyFor(int collider, const Vec& q) {
+    const Collider& c = colliders_[collider];
+    if (c.dof < 0) return -1;
+    int& index = bodyOfCollider_[collider];
+    if (index >= 0) return index;
+    std::vector<SolverBody>& bodies = solver_.bodies();
+    index = static_cast<int>(bodies.size());
+    SolverBody b;
+    b.dof = c.dof;
+    b.rotates = c.kind == Collider::Kind::Box;
+    b.collidePosition = q.segment<2>(c.dof);
+    if (b.rotates) b.collideAngle = q[c.dof + 2];
+    bodies.push_back(b);
+    return index;
+}
+
+void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB,
+                                 const Manifold& m, double friction, double restitution,
+                                 const Vec& q) {
+    ContactConstraint c;
+    c.key = key;
+    c.normal = m.normal;
+    c.friction = friction;
+    c.restitution = restitution;
+    c.bodyA = colliderA >= 0 ? solverBodyFor(colliderA, q) : -1;
+    c.bodyB = solverBodyFor(colliderB, q);
+    const Vec2 centerA = colliderA >= 0 ? (colliders_[colliderA].kind == Collider::Kind::Disk
+                                               ? disks_[colliderA].center
+                                               : boxes_[colliderA].center)
+                                        : Vec2::Zero();
+    const Vec2 centerB = colliders_[colliderB].kind == Collider::Kind::Disk ? disks_[colliderB].center
+                                                                            : boxes_[colliderB].center;
+    c.pointCount = m.pointCount;
+    for (int k = 0; k < m.pointCount; ++k) {
+        ContactPoint& p = c.points[k];
+        p.anchorA = colliderA >= 0 ? Vec2(m.points[k].position - centerA) : Vec2::Zero();
+        p.anchorB = m.points[k].position - centerB;
+        p.baseSeparation = m.points[k].separation;
+        p.id = m.points[k].id;
+    }
+    solver_.constraints().push_back(c);
+}
+
+void ContactStage::collide(const World& world, const Vec& q, const Vec& u, double dt,
+                           const ContactSettings& settings) {
+    // Last step's constraints, with their accumulated impulses, for warm starting.
+    std::swap(previous_, solver_.constraints());
+    solver_.constraints().clear();
+    solver_.bodies().clear();
+    std::fill(bodyOfCollider_.begin(), bodyOfCollider_.end(), -1);
+
+    // Shapes and bounds. A body's bounds grow by the distance it can travel in this step, so
+    // that a fast body finds what lies ahead of it (the speculative contacts then stop it).
+    const int count = static_cast<int>(colliders_.size());
+    std::vector<double>& sweep = sweep_;
+    sweep.assign(count, 0.0);
+    for (int i = 0; i < count; ++i) {
+        const Collider& c = colliders_[i];
+        if (c.kind == Collider::Kind::Disk) {
+            const Particle& p = world.particles()[c.object];
+            disks_[i] = {c.dof >= 0 ? Vec2(q.segment<2>(c.dof)) : p.position, p.radius};
+            bounds_[i] = boundingBox(disks_[i]);
+        } else {
+            const Box& b = world.boxes()[c.object];
+            boxes_[i] = c.dof >= 0 ? OrientedBox{q.segment<2>(c.dof), q[c.dof + 2], 0.5 * b.size}
+                                   : OrientedBox{b.position, b.angle, 0.5 * b.size};
+            bounds_[i] = boundingBox(boxes_[i]);
+        }
+        if (c.dof >= 0) {
+            double speed = u.segment<2>(c.dof).norm();
+            if (c.kind == Collider::Kind::Box)
+                speed += std::abs(u[c.dof + 2]) * boxes_[i].halfExtents.norm();
+            sweep[i] = speed * dt;
+        }
+        const Vec2 grow = Vec2::Constant(settings.speculativeDistance + sweep[i]);
+        bounds_[i].lower -= grow;
+        bounds_[i].upper += grow;
+    }
+
+    Manifold m;
+    broadPhase_.findPairs(bounds_, pairs_);
+    for (const auto& [i, j] : pairs_) {
+        const Collider& a = colliders_[i];
+        const Collider& b = colliders_[j];
+        if (a.dof < 0 && b.dof < 0) continue;
+        const double margin = settings.speculativeDistance + sweep[i] + sweep[j];
+        const double friction = std::sqrt(a.friction * b.friction);
+        double restitution = std::max(a.restitution, b.restitution);
+        const std::uint64_t key = (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint64_t>(j);
+        const bool diskA = a.kind == Collider::Kind::Disk, diskB = b.kind == Collider::Kind::Disk;
+        if (diskA && diskB) {
+            if (!particleCollisions_) continue;
+            const Particle& pa = world.particles()[a.object];
+            const Particle& pb = world.particles()[b.object];
+            if (pa.cloth >= 0 && pa.cloth == pb.cloth) continue;  // no cloth self-collision
+            restitution = particleRestitution_;
+            if (collideDisks(disks_[i], disks_[j], margin, m))
+                addConstraint(key, i, j, m, friction, restitution, q);
+        } else if (!diskA && !diskB) {
+            if (collideBoxes(boxes_[i], boxes_[j], margin, m))
+                addConstraint(key, i, j, m, friction, restitution, q);
+        } else {
+            const int box = diskA ? j : i, disk = diskA ? i : j;
+            if (collideBoxDisk(boxes_[box], disks_[disk], margin, m))
+                addConstraint((static_cast<std::uint64_t>(box) << 32) | static_cast<std::uint64_t>(disk),
+                              box, disk, m, friction, restitution, q);
+        }
+    }
+    // Planes against every dynamic body (planes are infinite: not in the broad phase).
+    for (int k = 0; k < static_cast<int>(planes_.size()); ++k) {
+        const HalfPlane& plane = planes_[k];
+        for (int i = 0; i < count; ++i) {
+            const Collider& c = colliders_[i];
+            if (c.dof < 0) continue;
+            const double margin = settings.speculativeDistance + sweep[i];
+            const double friction = std::sqrt(planeFriction_[k] * c.friction);
+            const double restitution = std::max(planeRestitution_[k], c.restitution);
+            const std::uint64_t key =
+                (static_cast<std::uint64_t>(count + k) << 32) | static_cast<std::uint64_t>(i);
+            const bool hit = c.kind == Collider::Kind::Disk
+                                 ? collidePlaneDisk(plane, disks_[i], margin, m)
+                                 : collidePlaneBox(plane, boxes_[i], margin, m);
+            if (hit) addConstraint(key, -1, i, m, friction, restitution, q);
+        }
+    }
+
+    // Warm start: carry the impulses of persisting contacts (same shapes, same features).
+    std::vector<ContactConstraint>& now = solver_.constraints();
+    std::sort(now.begin(), now.end(), [](const auto& x, const auto& y) { return x.key < y.key; });
+    auto old = previous_.begin();
+    for (ContactConstraint& c : now) {
+        while (old != previous_.end() && old->key < c.key) ++old;
+        if (old == previous_.end()) break;
+        if (old->key != c.key) continue;
+        for (int k = 0; k < c.pointCount; ++k)
+            for (int l = 0; l < old->pointCount; ++l)
+                if (c.points[k].id == old->points[l].id) {
+                    c.points[k].normalImpulse = old->points[l].normalImpulse;
+                    c.points[k].tangentImpulse = old->points[l].tangentImpulse;
+                }
+    }
+    // Bodies' masses, now that the solver body list is complete.
+    const Vec& invMass = world.inverseMass();
+    for (SolverBody& b : solver_.bodies()) {
+        b.invMass = invMass[b.dof];
+        b.invInertia = b.rotates ? invMass[b.dof + 2] : 0.0;
+    }
+    solver_.prepare();
+}
+
+int ContactStage::pointCount() const {
+    int n = 0;
+    for (const ContactConstraint& c : solver_.constraints()) n += c.pointCount;
+    return n;
+}
+
+}  // namespace phasebox

@@ -1,0 +1,68 @@
+#pragma once
+// The contact stage of the world's step: finds contacts once per step (broad phase, narrow
+// phase, matching last step's contacts for warm starting) and hands them to the solver for
+// every sub-step. It exists only while the scene holds two things that can touch.
+
+#include "physics/contacts/BroadPhase.h"
+#include "physics/contacts/ContactSolver.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace phasebox {
+
+class World;
+
+class ContactStage {
+public:
+    // Whether a world needs a contact stage at all: two things that can touch, one of them
+    // dynamic. Particle–particle pairs count only with particleCollisions.
+    static bool needed(const World& world, bool particleCollisions);
+
+    ContactStage(bool particleCollisions, double particleRestitution)
+        : particleCollisions_(particleCollisions), particleRestitution_(particleRestitution) {}
+
+    // Rebuilds the collider list after the world's objects changed.
+    void bind(const World& world);
+
+    // Finds the contacts of the state (q, u) for a step of length dt.
+    void collide(const World& world, const Vec& q, const Vec& u, double dt,
+                 const ContactSettings& settings);
+
+    void solveSubstep(double h, const Vec& q0, Vec& q, Vec& u, const ContactSettings& settings) {
+        solver_.solveSubstep(h, q0, q, u, settings);
+    }
+
+    const std::vector<ContactConstraint>& contacts() const { return solver_.constraints(); }
+    int pointCount() const;
+
+private:
+    struct Collider {
+        enum class Kind : unsigned char { Disk, Box } kind;
+        int object;       // particle or box index
+        int dof;          // −1 static
+        double friction;
+        double restitution;
+    };
+
+    int solverBodyFor(int collider, const Vec& q);
+    void addConstraint(std::uint64_t key, int colliderA, int colliderB, const Manifold& m,
+                       double friction, double restitution, const Vec& q);
+
+    bool particleCollisions_;
+    double particleRestitution_;
+    std::vector<Collider> colliders_;
+    std::vector<Disk> disks_;         // per collider, when a disk
+    std::vector<OrientedBox> boxes_;  // per collider, when a box
+    std::vector<Aabb> bounds_;
+    std::vector<double> sweep_;       // per collider: how far it can move in this step
+    std::vector<std::pair<int, int>> pairs_;
+    std::vector<HalfPlane> planes_;
+    std::vector<double> planeFriction_, planeRestitution_;
+    std::vector<int> bodyOfCollider_;  // solver body index in this step, −1 none yet
+    std::vector<ContactConstraint> previous_;
+    BroadPhase broadPhase_;
+    ContactSolver solver_;
+};
+
+}  // namespace phasebox

@@ -1,0 +1,69 @@
+#pragma once
+// Collision shapes and contact manifolds: plain geometry, no bodies, no state layout.
+//
+// Conventions (shared by every narrow-phase function):
+// - A manifold's normal is a unit vector pointing from shape A to shape B.
+// - A point's separation is the signed distance between the two surfaces along the normal at
+//   that point: negative when they overlap. Points are reported when separation < margin
+//   (speculative contacts: margin > 0 finds contacts that are about to happen).
+// - A point's position is midway between the two surfaces.
+// - A point's id names the features that made it (e.g. reference face and incident vertex),
+//   so that the same contact keeps its id from step to step and its impulse can warm-start.
+
+#include "physics/core/Types.h"
+
+#include <cstdint>
+
+namespace phasebox {
+
+struct Disk {
+    Vec2 center;
+    double radius;
+};
+
+struct OrientedBox {
+    Vec2 center;
+    double angle;
+    Vec2 halfExtents;
+};
+
+// A static half-plane: solid on the side opposite the unit normal.
+struct HalfPlane {
+    Vec2 point;
+    Vec2 normal;
+};
+
+struct Aabb {
+    Vec2 lower;
+    Vec2 upper;
+    bool overlaps(const Aabb& o) const {
+        return lower.x() <= o.upper.x() && o.lower.x() <= upper.x() && lower.y() <= o.upper.y() &&
+               o.lower.y() <= upper.y();
+    }
+};
+
+struct ManifoldPoint {
+    Vec2 position = Vec2::Zero();
+    double separation = 0.0;
+    std::uint32_t id = 0;
+};
+
+struct Manifold {
+    Vec2 normal = Vec2::Zero();  // from A to B
+    int pointCount = 0;
+    ManifoldPoint points[2];
+};
+
+Aabb boundingBox(const Disk& disk);
+Aabb boundingBox(const OrientedBox& box);
+
+// Each returns true and fills the manifold when at least one point has separation < margin.
+bool collideDisks(const Disk& a, const Disk& b, double margin, Manifold& m);
+bool collidePlaneDisk(const HalfPlane& a, const Disk& b, double margin, Manifold& m);
+bool collideBoxDisk(const OrientedBox& a, const Disk& b, double margin, Manifold& m);
+bool collidePlaneBox(const HalfPlane& a, const OrientedBox& b, double margin, Manifold& m);
+// Separating axes over the four face normals, then the incident face clipped against the
+// reference face's side planes: up to two points.
+bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Manifold& m);
+
+}  // namespace phasebox

@@ -1,0 +1,230 @@
+#include "physics/scene/SceneLibrary.h"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+namespace phasebox::scenes {
+
+namespace {
+// Stacks want sub-steps: the soft contacts are stiffer and the sequential impulses converge
+// further per step (Box2D v3's finding); dt stays the classroom's 1/60.
+SceneDesc contactScene(const std::string& name, const std::string& description) {
+    SceneDesc s;
+    s.name = name;
+    s.description = description;
+    s.simulation.integrator = "symplectic_euler";
+    s.simulation.dt = 1.0 / 60.0;
+    s.simulation.substeps = 4;
+    s.effects.gravity = GravityDesc{};
+    return s;
+}
+
+PlaneDesc ground(double friction = 0.6, double restitution = 0.0) {
+    PlaneDesc p;
+    p.id = "ground";
+    p.point = {0.0, 0.0};
+    p.normal = {0.0, 1.0};
+    p.friction = friction;
+    p.restitution = restitution;
+    return p;
+}
+
+// Builds "prefix" + n without GCC 12's false -Wrestrict alarm on operator+ of a literal.
+std::string name(const char* prefix, int n) {
+    std::string out(prefix);
+    out += std::to_string(n);
+    return out;
+}
+
+BoxDesc box(const std::string& id, double x, double y, double w, double h) {
+    BoxDesc b;
+    b.id = id;
+    b.position = {x, y};
+    b.size = {w, h};
+    return b;
+}
+}  // namespace
+
+SceneDesc pyramid(int rows) {
+    SceneDesc s = contactScene(name("Pyramid of ", rows) + " rows",
+                               "1 m boxes with friction 0.6 stacked into a pyramid. A good "
+                               "solver keeps it standing; watch the contact cost per step.");
+    s.planes.push_back(ground());
+    for (int row = 0; row < rows; ++row) {
+        const int count = rows - row;
+        for (int i = 0; i < count; ++i) {
+            const double x = (i - 0.5 * (count - 1)) * 1.0;
+            s.boxes.push_back(box(name("r", row) + name("c", i), x, 0.5 + row, 1.0, 1.0));
+        }
+    }
+    return s;
+}
+
+SceneDesc tower(int count) {
+    SceneDesc s = contactScene(name("Tower of ", count) + " boxes",
+                               "A single column of 1 m boxes. Tall towers are where solvers drift.");
+    s.planes.push_back(ground());
+    for (int i = 0; i < count; ++i) s.boxes.push_back(box(name("t", i), 0.0, 0.5 + i, 1.0, 1.0));
+    return s;
+}
+
+SceneDesc stack(const std::vector<double>& masses) {
+    SceneDesc s = contactScene("Heavy on light", "Boxes of very different masses stacked, the "
+                                                 "heaviest on top: a classic solver failure.");
+    s.planes.push_back(ground());
+    for (std::size_t i = 0; i < masses.size(); ++i) {
+        BoxDesc b = box(name("m", static_cast<int>(i)), 0.0, 0.5 + static_cast<double>(i), 1.0, 1.0);
+        b.mass = masses[i];
+        s.boxes.push_back(b);
+    }
+    return s;
+}
+
+SceneDesc bigOnSmall(double ratio) {
+    SceneDesc s = contactScene("Big on small", "A 2 m box far heavier than the 0.5 m box under it.");
+    s.planes.push_back(ground());
+    BoxDesc small = box("small", 0.0, 0.25, 0.5, 0.5);
+    small.mass = 1.0;
+    BoxDesc big = box("big", 0.0, 0.5 + 1.0, 2.0, 2.0);
+    big.mass = ratio;
+    s.boxes = {small, big};
+    return s;
+}
+
+SceneDesc ballDrop(double height, double restitution) {
+    SceneDesc s = contactScene("Bouncing ball", "A ball dropped on the floor. With restitution e it "
+                                                "rises to e² of its drop height.");
+    s.planes.push_back(ground(0.2, 0.0));
+    ParticleDesc p;
+    p.id = "ball";
+    p.radius = 0.1;
+    p.position = {0.0, height + p.radius};
+    p.restitution = restitution;
+    s.particles.push_back(p);
+    return s;
+}
+
+SceneDesc incline(double degrees, double friction) {
+    SceneDesc s = contactScene("Box on an incline", "A box on a slope: it holds when tan θ ≤ μ, "
+                                                    "else it slides with a = g·(sin θ − μ·cos θ).");
+    const double theta = degrees * std::numbers::pi / 180.0;
+    PlaneDesc slope;
+    slope.id = "slope";
+    slope.point = {0.0, 0.0};
+    slope.normal = {-std::sin(theta), std::cos(theta)};
+    slope.friction = friction;
+    s.planes.push_back(slope);
+    BoxDesc b = box("box", 0.5 * -std::sin(theta), 0.5 * std::cos(theta), 1.0, 1.0);
+    b.angle = theta;
+    b.friction = friction;
+    s.boxes.push_back(b);
+    return s;
+}
+
+SceneDesc elasticGas(int count, unsigned seed) {
+    SceneDesc s = contactScene("Elastic gas", "Disks with restitution 1 and no friction in a closed "
+                                              "box: the kinetic energy stays constant.");
+    s.effects.gravity.reset();
+    s.effects.particleCollisions = ParticleCollisionsDesc{1.0};
+    s.simulation.substeps = 4;
+    // Every impact must bounce, however slow (nothing rests in a gas, so nothing can jitter).
+    s.simulation.solver["restitution_threshold"] = 0.0;
+    const double size = 4.0;
+    const Point2 normals[4] = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}};
+    const Point2 points[4] = {{0, 0}, {0, size}, {0, 0}, {size, 0}};
+    for (int k = 0; k < 4; ++k) {
+        PlaneDesc wall;
+        wall.id = name("wall", k);
+        wall.point = points[k];
+        wall.normal = normals[k];
+        wall.friction = 0.0;
+        wall.restitution = 1.0;
+        s.planes.push_back(wall);
+    }
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> speed(-2.0, 2.0);
+    const int perRow = static_cast<int>(std::ceil(std::sqrt(count)));
+    const double spacing = (size - 0.4) / perRow;
+    for (int i = 0; i < count; ++i) {
+        ParticleDesc p;
+        p.id = name("d", i);
+        p.radius = 0.05;
+        p.position = {0.2 + spacing * (0.5 + i % perRow), 0.2 + spacing * (0.5 + i / perRow)};
+        p.velocity = {speed(rng), speed(rng)};
+        p.restitution = 1.0;
+        p.friction = 0.0;
+        s.particles.push_back(p);
+    }
+    return s;
+}
+
+SceneDesc newtonsCradle(int count, double speed) {
+    SceneDesc s = contactScene("Newton's cradle", "Touching balls in a row: the momentum of the "
+                                                  "first passes down the row to the last.");
+    s.effects.gravity.reset();
+    s.effects.particleCollisions = ParticleCollisionsDesc{1.0};
+    // A cradle swings slowly: every impact must bounce, not only those above 1 m/s.
+    s.simulation.solver["restitution_threshold"] = 0.01;
+    for (int i = 0; i < count; ++i) {
+        ParticleDesc p;
+        p.id = name("ball", i);
+        p.radius = 0.1;
+        p.position = {0.2 * i, 0.0};
+        p.restitution = 1.0;
+        p.friction = 0.0;
+        s.particles.push_back(p);
+    }
+    s.particles.front().position = {-0.3, 0.0};
+    s.particles.front().velocity = {speed, 0.0};
+    return s;
+}
+
+SceneDesc bullet(double speed) {
+    SceneDesc s = contactScene("Bullet and thin wall", "A small fast disk against a thin wall: "
+                                                       "it must not tunnel through.");
+    s.effects.gravity.reset();
+    s.simulation.substeps = 1;
+    BoxDesc wall = box("wall", 5.0, 0.0, 0.1, 4.0);
+    wall.isStatic = true;
+    s.boxes.push_back(wall);
+    ParticleDesc p;
+    p.id = "bullet";
+    p.radius = 0.05;
+    p.position = {0.0, 0.0};
+    p.velocity = {speed, 0.0};
+    p.mass = 0.01;
+    s.particles.push_back(p);
+    return s;
+}
+
+SceneDesc dominoes(int count) {
+    SceneDesc s = contactScene("Dominoes", "A row of dominoes; the first is tipped over.");
+    s.planes.push_back(ground());
+    for (int i = 0; i < count; ++i) {
+        BoxDesc d = box(name("d", i), 0.5 * i, 0.5, 0.1, 1.0);
+        d.friction = 0.6;
+        s.boxes.push_back(d);
+    }
+    s.boxes.front().angularVelocity = -1.5;
+    return s;
+}
+
+const std::vector<NamedScene>& library() {
+    static const std::vector<NamedScene> scenes{
+        {"pyramid", "20-row box pyramid", [] { return pyramid(20); }},
+        {"pyramid40", "40-row box pyramid", [] { return pyramid(40); }},
+        {"tower", "tower of 40 boxes", [] { return tower(40); }},
+        {"heavy-on-light", "1, 20 and 400 kg boxes stacked", [] { return stack({1, 20, 400}); }},
+        {"big-on-small", "2 m box 100× heavier than the 0.5 m box under it", [] { return bigOnSmall(100); }},
+        {"ball-drop", "ball with restitution 0.8 dropped from 1 m", [] { return ballDrop(1.0, 0.8); }},
+        {"incline", "box on a 20° incline, μ = 0.5", [] { return incline(20, 0.5); }},
+        {"gas", "200 elastic disks in a box", [] { return elasticGas(200); }},
+        {"cradle", "Newton's cradle of 5 balls", [] { return newtonsCradle(5, 1.0); }},
+        {"bullet", "0.05 m disk at 200 m/s against a 0.1 m wall", [] { return bullet(200); }},
+        {"dominoes", "row of 30 dominoes", [] { return dominoes(30); }},
+    };
+    return scenes;
+}
+
+}  // namespace phasebox::scenes

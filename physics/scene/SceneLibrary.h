@@ -1,0 +1,42 @@
+#pragma once
+// Named scenes, built in code so that the tests, the benchmarks, the command line and the app
+// share them: the scene that is benchmarked is the scene that can be opened and looked at.
+
+#include "physics/scene/SceneDesc.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace phasebox::scenes {
+
+// A pyramid of `rows` rows of 1 m boxes on a ground plane (friction 0.6), base centred at x = 0.
+SceneDesc pyramid(int rows);
+// A single column of `count` 1 m boxes on the ground.
+SceneDesc tower(int count);
+// Three boxes stacked bottom to top with these masses (e.g. 1, 20, 400 kg): heavy on light.
+SceneDesc stack(const std::vector<double>& masses);
+// A 2 m box `ratio` times heavier than the 0.5 m box it stands on.
+SceneDesc bigOnSmall(double ratio);
+// A ball (radius 0.1 m) whose bottom starts `height` above a floor, with this restitution.
+SceneDesc ballDrop(double height, double restitution);
+// A 1 m box resting on a plane inclined by `degrees`, friction μ on both (so the pair's μ).
+SceneDesc incline(double degrees, double friction);
+// `count` disks (radius 0.05 m, e = 1, μ = 0) with random velocities in a closed 4 m box.
+SceneDesc elasticGas(int count, unsigned seed = 1);
+// `count` touching balls in a row, the first moving into them at `speed`.
+SceneDesc newtonsCradle(int count, double speed);
+// A 0.05 m disk at `speed` toward a static wall 0.1 m thick.
+SceneDesc bullet(double speed);
+// A row of `count` dominoes (0.1 × 1 m, 0.5 m apart), the first one tipped over.
+SceneDesc dominoes(int count);
+
+struct NamedScene {
+    std::string name;
+    std::string summary;
+    std::function<SceneDesc()> make;
+};
+// The library with default sizes, for `phasebox-cli scene` and the app.
+const std::vector<NamedScene>& library();
+
+}  // namespace phasebox::scenes

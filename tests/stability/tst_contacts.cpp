@@ -1,0 +1,222 @@
+// The hard contact cases of issue #3, each against what physics says must happen.
+
+#include "physics/contacts/ContactStage.h"
+#include "physics/scene/BuildWorld.h"
+#include "physics/scene/SceneLibrary.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace phasebox;
+
+namespace {
+
+std::unique_ptr<World> build(const SceneDesc& scene) { return buildWorld(scene).world; }
+
+// Steps for `seconds`; fails the test (returns false) if the world reports divergence.
+bool run(World& world, double seconds) {
+    const long long steps = std::llround(seconds / world.settings().dt);
+    for (long long k = 0; k < steps; ++k)
+        if (!world.step()) {
+            qWarning("diverged: %s", world.divergence()->message().c_str());
+            return false;
+        }
+    return true;
+}
+
+// The largest distance any box moved from its setup position.
+double largestBoxDisplacement(const World& world) {
+    double worst = 0.0;
+    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
+        worst = std::max(worst, (world.boxPosition(i) - world.boxes()[i].position).norm());
+    return worst;
+}
+
+}  // namespace
+
+class TestContacts : public QObject {
+    Q_OBJECT
+
+private slots:
+    void pyramidStands_data() {
+        QTest::addColumn<int>("rows");
+        QTest::newRow("20 rows") << 20;
+        QTest::newRow("40 rows") << 40;
+    }
+    void pyramidStands() {
+        QFETCH(int, rows);
+        auto world = build(scenes::pyramid(rows));
+        QVERIFY(run(*world, 10.0));
+        const double moved = largestBoxDisplacement(*world);
+        qInfo("%d-row pyramid: largest box displacement after 10 s = %.4f m", rows, moved);
+        QVERIFY2(moved < 0.05, qPrintable(QString::number(moved)));
+    }
+
+    void towerStands_data() {
+        QTest::addColumn<int>("count");
+        QTest::newRow("30 boxes") << 30;
+        QTest::newRow("40 boxes") << 40;
+    }
+    void towerStands() {
+        // Standing means: no box slid or tipped. A column of soft contacts also shortens a
+        // little under its own weight (each contact carries the boxes above it), which is
+        // bounded separately.
+        QFETCH(int, count);
+        auto world = build(scenes::tower(count));
+        QVERIFY(run(*world, 10.0));
+        double sideways = 0.0, tilt = 0.0;
+        for (int i = 0; i < count; ++i) {
+            sideways = std::max(sideways, std::abs(world->boxPosition(i).x()));
+            tilt = std::max(tilt, std::abs(world->boxAngle(i)));
+        }
+        const double height = count * 1.0;
+        const double shortening = height - (world->boxPosition(count - 1).y() + 0.5);
+        qInfo("tower of %d after 10 s: sideways %.2e m, tilt %.2e rad, shortened by %.4f m (%.2f%%)",
+              count, sideways, tilt, shortening, 100.0 * shortening / height);
+        QVERIFY(sideways < 0.01);
+        QVERIFY(tilt < 0.01);
+        QVERIFY(shortening < 0.005 * height);
+    }
+
+    void heavyOnLightStands() {
+        auto world = build(scenes::stack({1, 20, 400}));
+        QVERIFY(run(*world, 10.0));
+        const double moved = largestBoxDisplacement(*world);
+        qInfo("1/20/400 kg stack: largest displacement %.4f m", moved);
+        QVERIFY(moved < 0.05);
+        auto big = build(scenes::bigOnSmall(100));
+        QVERIFY(run(*big, 10.0));
+        qInfo("2 m box 100x on 0.5 m box: largest displacement %.4f m", largestBoxDisplacement(*big));
+        QVERIFY(largestBoxDisplacement(*big) < 0.05);
+    }
+
+    void ballBouncesToESquaredHeight() {
+        auto world = build(scenes::ballDrop(1.0, 0.8));
+        const double radius = world->particles()[0].radius;
+        // Fall, bounce, and record the top of the first rebound.
+        double top = 0.0;
+        bool bounced = false;
+        for (int k = 0; k < 600; ++k) {
+            QVERIFY(world->step());
+            const double vy = world->particleVelocity(0).y();
+            const double height = world->particlePosition(0).y() - radius;
+            if (vy > 0.0) bounced = true;
+            if (bounced) top = std::max(top, height);
+            if (bounced && vy < 0.0) break;
+        }
+        qInfo("rebound height %.4f m (expected 0.64)", top);
+        QVERIFY(bounced);
+        QVERIFY2(std::abs(top - 0.64) < 0.02 * 0.64, qPrintable(QString::number(top)));
+    }
+
+    void inelasticBallRestsWithoutJitter() {
+        auto world = build(scenes::ballDrop(1.0, 0.0));
+        QVERIFY(run(*world, 2.0));
+        const double radius = world->particles()[0].radius;
+        double lo = 1e9, hi = -1e9, fastest = 0.0;
+        for (int k = 0; k < 120; ++k) {
+            QVERIFY(world->step());
+            const double y = world->particlePosition(0).y() - radius;
+            lo = std::min(lo, y);
+            hi = std::max(hi, y);
+            fastest = std::max(fastest, world->particleVelocity(0).norm());
+        }
+        qInfo("resting ball: height in [%.6f, %.6f], fastest %.2e m/s", lo, hi, fastest);
+        QVERIFY(hi - lo < 1e-4);
+        QVERIFY(fastest < 1e-3);
+        QVERIFY(std::abs(lo) < 0.01);  // on the floor, within the slop
+    }
+
+    void boxHoldsOnIncline() {
+        auto world = build(scenes::incline(20, 0.5));  // tan 20° = 0.364 < 0.5
+        QVERIFY(run(*world, 5.0));
+        const double moved = (world->boxPosition(0) - world->boxes()[0].position).norm();
+        qInfo("box on 20 deg incline with mu 0.5: moved %.5f m in 5 s", moved);
+        QVERIFY(moved < 0.01);
+    }
+
+    void boxSlidesWithCoulombAcceleration() {
+        const double theta = 20.0 * std::numbers::pi / 180.0, mu = 0.2, g = 9.81;
+        auto world = build(scenes::incline(20, mu));
+        QVERIFY(run(*world, 0.5));  // let the contact settle
+        const Vec2 down(-std::cos(theta), -std::sin(theta));
+        const double s0 = world->boxPosition(0).dot(down), v0 = world->boxVelocity(0).dot(down);
+        const double t = 1.5;
+        QVERIFY(run(*world, t));
+        const double s1 = world->boxPosition(0).dot(down);
+        // s1 − s0 = v0·t + a·t²/2 ⇒ the measured acceleration:
+        const double measured = 2.0 * (s1 - s0 - v0 * t) / (t * t);
+        const double expected = g * (std::sin(theta) - mu * std::cos(theta));
+        qInfo("sliding: a = %.4f m/s^2, expected %.4f", measured, expected);
+        QVERIFY(std::abs(measured - expected) < 0.02 * expected);
+    }
+
+    void elasticGasKeepsItsEnergy() {
+        auto world = build(scenes::elasticGas(200));
+        const double e0 = world->energy().kinetic;
+        double worst = 0.0;
+        for (int k = 0; k < 600; ++k) {
+            QVERIFY(world->step());
+            worst = std::max(worst, std::abs(world->energy().kinetic - e0) / e0);
+        }
+        qInfo("elastic gas: largest relative change of kinetic energy over 10 s = %.2e", worst);
+        QVERIFY(worst < 1e-3);
+    }
+
+    void newtonsCradlePassesMomentum() {
+        auto world = build(scenes::newtonsCradle(5, 1.0));
+        QVERIFY(run(*world, 1.0));
+        const int last = static_cast<int>(world->particles().size()) - 1;
+        for (int i = 0; i < last; ++i) {
+            qInfo("ball %d: vx = %.4f", i, world->particleVelocity(i).x());
+            QVERIFY(std::abs(world->particleVelocity(i).x()) < 0.02);
+        }
+        qInfo("last ball: vx = %.4f", world->particleVelocity(last).x());
+        QVERIFY(std::abs(world->particleVelocity(last).x() - 1.0) < 0.02);
+    }
+
+    void bulletDoesNotTunnel() {
+        // 200 m/s at dt = 1/60 is 3.3 m per step against a 0.1 m wall: only continuous
+        // collision (here, speculative contacts over the swept distance) can stop it.
+        auto world = build(scenes::bullet(200));
+        QCOMPARE(world->settings().dt, 1.0 / 60.0);
+        const double radius = world->particles()[0].radius;
+        const double wallFront = world->boxes()[0].position.x() - 0.5 * world->boxes()[0].size.x();
+        double furthest = -1e9;
+        for (int k = 0; k < 60; ++k) {
+            QVERIFY(world->step());
+            furthest = std::max(furthest, world->particlePosition(0).x() + radius);
+        }
+        qInfo("bullet: furthest reach %.4f m, wall front face at %.2f m; velocity after 1 s %.1f m/s",
+              furthest, wallFront, world->particleVelocity(0).x());
+        QVERIFY(furthest <= wallFront + 0.01);
+        QVERIFY(world->particleVelocity(0).x() < 0.0);  // it bounced back
+    }
+
+    void dominoesAllFall() {
+        auto world = build(scenes::dominoes(30));
+        QVERIFY(run(*world, 10.0));
+        for (int i = 0; i < 30; ++i) {
+            const double angle = std::abs(world->boxAngle(i));
+            QVERIFY2(angle > 0.5, qPrintable(QStringLiteral("domino %1 stands (angle %2)").arg(i).arg(angle)));
+        }
+    }
+
+    void contactsExistOnlyWhenThingsCanTouch() {
+        SceneDesc s;
+        s.particles.push_back({});
+        auto lonely = build(s);
+        QVERIFY(lonely->contacts() == nullptr);
+        s.planes.push_back({});
+        auto withFloor = build(s);
+        QVERIFY(withFloor->contacts() != nullptr);
+        bool listed = false;
+        for (const EffectCost& c : withFloor->effectCosts()) listed = listed || c.name == "contacts";
+        QVERIFY(listed);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestContacts)
+#include "tst_contacts.moc"
