@@ -1,7 +1,13 @@
 #include "app/cli/Cli.h"
 
 #include "app/io/SceneIO.h"
+
+#include <QFile>
+
+#include <cmath>
+#include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/integrators/Integrator.h"
+#include "physics/scene/SceneLibrary.h"
 #include "physics/scene/BuildWorld.h"
 
 namespace phasebox::cli {
@@ -15,6 +21,8 @@ const char* kUsage =
     "                           symplectic, force evaluations per step\n"
     "  info SCENE               objects, effects that will run, integrator, dt\n"
     "  run SCENE [OPTIONS]      simulate; see 'phasebox-cli run --help'\n"
+    "  scene [NAME] [FILE]      write a built-in scene (pyramid, cloth, gas, ...) as a scene\n"
+    "                           file, to FILE or standard output; no NAME lists them\n"
     "\n"
     "exit status: 0 success, 1 the simulation diverged, 2 bad input\n";
 }  // namespace
@@ -51,7 +59,8 @@ int run(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     if (command == QLatin1String("integrators")) return integratorsCommand(rest, out, err);
     if (command == QLatin1String("info")) return infoCommand(rest, out, err);
     if (command == QLatin1String("run")) return runCommand(rest, out, err);
-    return fail(err, QStringLiteral("unknown command \"%1\"; known: integrators, info, run").arg(command));
+    if (command == QLatin1String("scene")) return sceneCommand(rest, out, err);
+    return fail(err, QStringLiteral("unknown command \"%1\"; known: integrators, info, run, scene").arg(command));
 }
 
 int integratorsCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
@@ -71,6 +80,30 @@ int integratorsCommand(const QStringList& args, QTextStream& out, QTextStream& e
                    .arg(QString::fromUtf8(info.evaluations.data(), info.evaluations.size()));
     }
     return kSuccess;
+}
+
+int sceneCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
+    const auto& library = scenes::library();
+    if (args.isEmpty()) {
+        for (const scenes::NamedScene& s : library)
+            out << QString::fromStdString(s.name).leftJustified(16) << QString::fromStdString(s.summary) << "\n";
+        return kSuccess;
+    }
+    if (args.size() > 2) return fail(err, QStringLiteral("usage: phasebox-cli scene [NAME] [FILE]"));
+    for (const scenes::NamedScene& s : library) {
+        if (QString::fromStdString(s.name) != args[0]) continue;
+        const SceneDesc scene = s.make();
+        if (args.size() == 1) {
+            out << SceneIO::serialize(scene);
+            return kSuccess;
+        }
+        QString error;
+        if (!SceneIO::save(scene, args[1], &error)) return fail(err, error);
+        return kSuccess;
+    }
+    QStringList names;
+    for (const scenes::NamedScene& s : library) names << QString::fromStdString(s.name);
+    return fail(err, QStringLiteral("unknown scene \"%1\"; known: %2").arg(args[0], names.join(QStringLiteral(", "))));
 }
 
 int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
@@ -124,6 +157,25 @@ int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     out << "\n";
     out << "dt:          " << sim.dt << " s, " << sim.substeps << " sub-step(s)\n";
     out << "duration:    " << sim.duration << " s\n";
+
+    // The stability advisor: the stiffest mode and each explicit method's largest stable step.
+    const StabilityAdvice advice = adviseStability(*built.world);
+    if (advice.omegaMax > 0.0) {
+        out << "stability:   stiffest mode omega = " << QString::number(advice.omegaMax, 'g', 4)
+            << " rad/s (period " << QString::number(2.0 * M_PI / advice.omegaMax, 'g', 3)
+            << " s); largest stable sub-step per method:\n";
+        for (const StepLimit& limit : advice.limits) {
+            out << "  " << QString::fromLatin1(limit.integrator.data(), limit.integrator.size()).leftJustified(18);
+            if (std::isinf(limit.maxDt)) out << "any";
+            else if (limit.maxDt == 0.0) out << "none";
+            else out << QString::number(limit.maxDt, 'g', 3) << " s";
+            out << "  (" << QString::fromStdString(limit.note) << ")\n";
+        }
+    } else {
+        out << "stability:   nothing in the scene oscillates; every method is stable\n";
+    }
+    out << (advice.currentStable ? "advice:      " : "warning:     ")
+        << QString::fromStdString(advice.message) << "\n";
     return kSuccess;
 }
 

@@ -19,6 +19,7 @@ bool needsGui(const QStringList& arguments);
 int integratorsCommand(const QStringList& args, QTextStream& out, QTextStream& err);
 int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err);
 int runCommand(const QStringList& args, QTextStream& out, QTextStream& err);
+int sceneCommand(const QStringList& args, QTextStream& out, QTextStream& err);
 
 // "phasebox-cli: error: " + each line of message, on err; returns kBadInput.
 int fail(QTextStream& err, const QString& message);

@@ -436,6 +436,17 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             {"objects", objectsJson(world)},
             {"force_evaluations", static_cast<double>(world.forceEvaluations())},
         };
+        if (world.integrator().info().implicit) {
+            // The implicit solve's work: Newton iterations, linear solves and (for large systems)
+            // conjugate-gradient iterations per step, and the last relative residual.
+            const IntegratorStats& st = world.integrator().stats();
+            report.insert("implicit_solver",
+                          QJsonObject{{"last_newton_iterations", st.lastNewtonIterations},
+                                      {"linear_solves_per_step", static_cast<double>(st.linearSolves) / stepsRun},
+                                      {"cg_iterations_per_step", static_cast<double>(st.linearIterations) / stepsRun},
+                                      {"last_cg_iterations", st.lastLinearIterations},
+                                      {"last_cg_residual", st.lastLinearResidual}});
+        }
         if (diverged) {
             const Divergence& d = *world.divergence();
             report.insert("divergence", QJsonObject{{"time", d.time},

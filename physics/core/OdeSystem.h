@@ -18,7 +18,13 @@ struct ForceJacobians {
     std::vector<Triplet> stiffness;  // K
     std::vector<Triplet> damping;    // D
     bool symmetric = true;           // false when some effect adds a non-symmetric term
+    // Asked for by the implicit integrators: leave out the parts of K that can make
+    // M − h·D − h²·K indefinite (a compressed spring's geometric stiffness, as Choi & Ko 2002
+    // do for cloth), so that the matrix is symmetric positive definite and conjugate gradients
+    // apply. Newton's residual stays exact, so iterating still converges to the true step.
+    bool definite = false;
 
+    // Empties the buffers (keeping their capacity) for the next evaluation.
     void clear() {
         stiffness.clear();
         damping.clear();

@@ -1,5 +1,6 @@
 #include "physics/effects/SpringEffect.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace phasebox {
@@ -98,10 +99,13 @@ void SpringEffect::addJacobians(double, const Vec& q, const Vec& u, ForceJacobia
     auto addK = [&](int r, int c, double v) { jac.addStiffness(r, c, v); };
     auto addD = [&](int r, int c, double v) { jac.addDamping(r, c, v); };
     for (const SpringTerm& s : terms_) {
-        if (!evaluate(s, q, u, g)) continue;
-        const Mat2 uut = g.dir * g.dir.transpose();
-        const Mat2 ks =
-            -s.stiffness * ((1.0 - s.restLength / g.length) * (Mat2::Identity() - uut) + uut);
+        // A degenerate spring still writes its (zero) blocks: the sparsity pattern must not
+        // change from step to step, or the implicit solver would have to analyse it again.
+        const bool valid = evaluate(s, q, u, g);
+        const Mat2 uut = valid ? Mat2(g.dir * g.dir.transpose()) : Mat2::Zero();
+        double transverse = valid ? 1.0 - s.restLength / g.length : 0.0;
+        if (jac.definite) transverse = std::max(transverse, 0.0);
+        const Mat2 ks = -s.stiffness * (transverse * (Mat2::Identity() - uut) + uut);
         const PointJacobian ja = pointJacobian(s.a, g.ra);
         const PointJacobian jb = pointJacobian(s.b, g.rb);
         addProjected(ja, ja, ks, 1.0, addK);
@@ -109,14 +113,15 @@ void SpringEffect::addJacobians(double, const Vec& q, const Vec& u, ForceJacobia
         addProjected(jb, ja, ks, -1.0, addK);
         addProjected(jb, jb, ks, 1.0, addK);
         if (s.damping != 0.0) {
-            const Mat2 ds = -s.damping * uut;
+            const Mat2 ds = -s.damping * uut;  // zero for a degenerate spring, same pattern
             addProjected(ja, ja, ds, 1.0, addD);
             addProjected(ja, jb, ds, -1.0, addD);
             addProjected(jb, ja, ds, -1.0, addD);
             addProjected(jb, jb, ds, 1.0, addD);
         }
         // A box's torque r × F also turns with the box: ∂(r × F)/∂θ = −r·F.
-        const Vec2 f = -(s.stiffness * (g.length - s.restLength) + s.damping * g.rate) * g.dir;
+        const Vec2 f = valid ? Vec2(-(s.stiffness * (g.length - s.restLength) + s.damping * g.rate) * g.dir)
+                             : Vec2::Zero();
         if (s.a.kind == BodyPoint::Kind::Box) jac.addStiffness(s.a.dof + 2, s.a.dof + 2, -g.ra.dot(f));
         if (s.b.kind == BodyPoint::Kind::Box) jac.addStiffness(s.b.dof + 2, s.b.dof + 2, g.rb.dot(f));
     }

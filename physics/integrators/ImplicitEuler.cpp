@@ -27,6 +27,9 @@ public:
         stats_.linearSolves += r.linearSolves;
         stats_.lastNewtonIterations = r.iterations;
         stats_.lastNewtonCorrection = r.lastCorrection;
+        stats_.lastLinearIterations = r.linearIterations;
+        stats_.lastLinearResidual = r.linearResidual;
+        stats_.linearIterations += r.linearIterations;
         if (!r.ok) return false;
         q = q0 + h * u;
         workNc += h * sys.nonConservativePower(t + h, q, u);

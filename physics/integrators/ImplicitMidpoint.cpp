@@ -35,6 +35,9 @@ public:
         stats_.linearSolves += r.linearSolves;
         stats_.lastNewtonIterations = r.iterations;
         stats_.lastNewtonCorrection = r.lastCorrection;
+        stats_.lastLinearIterations = r.linearIterations;
+        stats_.lastLinearResidual = r.linearResidual;
+        stats_.linearIterations += r.linearIterations;
         // Not converged after kMaxNewtonIterations: the step is not the implicit midpoint rule's,
         // so it fails (the world reports it) rather than passing off a wrong answer.
         if (!r.ok || r.lastCorrection > kNotConverged * (1.0 + vm_.lpNorm<Eigen::Infinity>()))

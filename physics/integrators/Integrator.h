@@ -34,6 +34,9 @@ struct IntegratorStats {
     long long linearSolves = 0;
     int lastNewtonIterations = 0;
     double lastNewtonCorrection = 0.0;  // ∞-norm of the last Newton update (velocity units)
+    int lastLinearIterations = 0;       // conjugate-gradient iterations in the last step
+    double lastLinearResidual = 0.0;    // its relative residual
+    long long linearIterations = 0;     // summed
 };
 
 class Integrator {

@@ -11,6 +11,7 @@ void NewtonVelocitySolver::reset(int n) {
     delta_.setZero(n);
     qe_.setZero(n);
     kU_.setZero(n);
+    guess_.setZero(n);
     matrix_.resize(n, n);
     patternSize_ = 0;  // the next assembly builds the pattern anew
 }
@@ -61,13 +62,33 @@ void NewtonVelocitySolver::assemble(OdeSystem& sys, double c) {
     ldltAnalyzed_ = luAnalyzed_ = false;
 }
 
-bool NewtonVelocitySolver::solveLinear(OdeSystem& sys, double c) {
+bool NewtonVelocitySolver::solveLinear(OdeSystem& sys, double c, bool warmStart, Result& result) {
     if (jac_.stiffness.empty() && jac_.damping.empty()) {
         // No effect has a Jacobian: A = M is diagonal.
         delta_ = rhs_.cwiseProduct(sys.inverseMass());
         return true;
     }
     assemble(sys, c);
+    if (jac_.symmetric && matrix_.rows() >= kIterativeThreshold) {
+        // The first (Baraff & Witkin) solve is a linearisation anyway and tolerates a loose
+        // residual; Newton refinements need a tight one or they could not converge.
+        cg_.setTolerance(warmStart ? kIterativeTolerance : kRefinementTolerance);
+        cg_.setMaxIterations(std::max<Eigen::Index>(200, matrix_.rows() / 4));
+        cg_.compute(matrix_);
+        if (warmStart) {
+            delta_ = cg_.solveWithGuess(rhs_, guess_);
+        } else {
+            delta_ = cg_.solve(rhs_);
+        }
+        result.linearIterations += static_cast<int>(cg_.iterations());
+        result.linearResidual = cg_.error();
+        if (cg_.info() == Eigen::Success && delta_.allFinite()) {
+            if (warmStart) guess_ = delta_;
+            return true;
+        }
+        // Not converged (an indefinite matrix despite the definite Jacobian): fall through to
+        // the direct solvers below.
+    }
     if (jac_.symmetric) {
         if (!ldltAnalyzed_) {
             ldlt_.analyzePattern(matrix_);
@@ -99,6 +120,7 @@ NewtonVelocitySolver::Result NewtonVelocitySolver::solve(OdeSystem& sys, double 
 
     // Iteration 1: linearise about the start (Baraff & Witkin).
     jac_.clear();
+    jac_.definite = true;
     result.power = sys.forcesAndJacobians(t, q0, u0, force_, jac_);
     rhs_ = c * force_;
     if (!jac_.stiffness.empty()) {
@@ -106,7 +128,7 @@ NewtonVelocitySolver::Result NewtonVelocitySolver::solve(OdeSystem& sys, double 
         for (const Triplet& t : jac_.stiffness) kU_[t.row()] += t.value() * u0[t.col()];
         rhs_ += (c * c) * kU_;
     }
-    if (!solveLinear(sys, c)) return result;
+    if (!solveLinear(sys, c, true, result)) return result;
     ++result.linearSolves;
     v = u0 + delta_;
     result.iterations = 1;
@@ -116,9 +138,10 @@ NewtonVelocitySolver::Result NewtonVelocitySolver::solve(OdeSystem& sys, double 
     while (result.iterations < maxIterations) {
         qe_ = q0 + c * v;
         jac_.clear();
+        jac_.definite = true;
         result.power = sys.forcesAndJacobians(t, qe_, v, force_, jac_);
         rhs_ = c * force_ - mass.cwiseProduct(v - u0);  // −R
-        if (!solveLinear(sys, c)) return result;
+        if (!solveLinear(sys, c, false, result)) return result;
         ++result.linearSolves;
         v += delta_;
         ++result.iterations;

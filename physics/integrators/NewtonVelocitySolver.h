@@ -10,6 +10,7 @@
 
 #include "physics/integrators/Integrator.h"
 
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
@@ -25,7 +26,16 @@ public:
         double lastCorrection = 0.0;  // ∞-norm of the last update
         double power = 0.0;           // non-conservative power at the last force evaluation
         int linearSolves = 0;
+        int linearIterations = 0;     // conjugate-gradient iterations, summed (0 when direct)
+        double linearResidual = 0.0;  // relative residual of the last iterative solve
     };
+
+    // Systems with at least this many degrees of freedom are solved by preconditioned
+    // conjugate gradients (warm-started from the last step's answer) rather than by a sparse
+    // factorisation, whose fill-in grows faster than the cloth.
+    static constexpr int kIterativeThreshold = 2000;
+    static constexpr double kIterativeTolerance = 1e-4;
+    static constexpr double kRefinementTolerance = 1e-12;
 
     // Solves for v. maxIterations ≥ 1; with untilConverged the loop stops early once the
     // update is below the relative tolerance, and it keeps going (up to maxIterations) while
@@ -39,7 +49,7 @@ private:
     // do not come and go between steps), so a step neither allocates nor re-analyses.
     void assemble(OdeSystem& sys, double c);
     // Solves A·x = rhs_ into delta_.
-    bool solveLinear(OdeSystem& sys, double c);
+    bool solveLinear(OdeSystem& sys, double c, bool warmStart, Result& result);
 
     ForceJacobians jac_;
     Vec force_, rhs_, delta_, qe_, kU_;
@@ -51,6 +61,8 @@ private:
     bool ldltAnalyzed_ = false;
     bool luAnalyzed_ = false;
     Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
+    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg_;
+    Vec guess_;  // the last step's first update, to warm-start the next one
     Eigen::SparseLU<SparseMatrix> lu_;
 };
 

@@ -31,6 +31,10 @@ SceneDesc bullet(double speed);
 // A row of `count` dominoes (0.1 × 1 m, 0.5 m apart), the first one tipped over.
 SceneDesc dominoes(int count);
 
+// An n × n cloth of 1 m × 1 m, 1 kg in all, pinned along its top edge, structural stiffness
+// k (shear k/10, bend k/100), under gravity, stepped by implicit Euler at dt = 1/60.
+SceneDesc cloth(int n, double structuralStiffness);
+
 struct NamedScene {
     std::string name;
     std::string summary;

@@ -1,0 +1,107 @@
+#include "physics/diagnostics/StabilityAdvisor.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace phasebox {
+
+namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+std::string number(double v) {
+    std::ostringstream out;
+    out.precision(3);
+    out << v;
+    return out.str();
+}
+}  // namespace
+
+double stabilityBound(std::string_view integrator) {
+    if (integrator == "symplectic_euler" || integrator == "velocity_verlet") return 2.0;
+    if (integrator == "rk4") return 2.0 * std::sqrt(2.0);
+    if (integrator == "implicit_euler" || integrator == "implicit_midpoint") return kInfinity;
+    if (integrator == "adaptive_euler" || integrator == "rk45") return kInfinity;  // they adapt h
+    return 0.0;  // explicit Euler, midpoint, Heun: |R(iωh)| > 1 for every h > 0
+}
+
+StabilityAdvice adviseStability(World& world, int powerIterations) {
+    StabilityAdvice advice;
+    world.commit();
+    const SimulationSettings& settings = world.settings();
+    advice.dt = settings.dt / settings.substeps;
+
+    // ω²_max by power iteration on S = M^{-1/2}·(−K)·M^{-1/2} (symmetric; K from the exact
+    // Jacobian, so a compressed spring's softening counts).
+    const int n = world.dimension();
+    ForceJacobians jac;
+    Vec force(n);
+    world.forcesAndJacobians(world.time(), world.positions(), world.velocities(), force, jac);
+    if (n > 0 && !jac.stiffness.empty()) {
+        SparseMatrix k(n, n);
+        k.setFromTriplets(jac.stiffness.begin(), jac.stiffness.end());
+        const Vec scale = world.inverseMass().cwiseSqrt();
+        Vec x = Vec::Ones(n).normalized(), y(n);
+        // A fixed, irregular start so no mode is missed by symmetry.
+        for (int i = 0; i < n; ++i) x[i] += 0.01 * std::sin(1.7 * i);
+        x.normalize();
+        double lambda = 0.0;
+        for (int it = 0; it < powerIterations; ++it) {
+            y = -(scale.asDiagonal() * (k * (scale.asDiagonal() * x)));
+            const double norm = y.norm();
+            if (!(norm > 0.0) || !std::isfinite(norm)) break;
+            lambda = x.dot(y);
+            x = y / norm;
+        }
+        advice.omegaMax = lambda > 0.0 ? std::sqrt(lambda) : 0.0;
+    }
+
+    const double omega = advice.omegaMax;
+    for (const IntegratorInfo& info : integratorRegistry()) {
+        if (info.adaptive) continue;
+        StepLimit limit{info.name, 0.0, {}};
+        const double bound = stabilityBound(info.name);
+        if (omega == 0.0 || bound == kInfinity) {
+            limit.maxDt = kInfinity;
+            limit.note = omega == 0.0 ? "nothing oscillates" : "stable at any step";
+        } else if (bound > 0.0) {
+            limit.maxDt = bound / omega;
+            limit.note = "omega*h < " + number(bound);
+        } else {
+            limit.maxDt = 0.0;
+            limit.note = "gains energy at every step";
+        }
+        advice.limits.push_back(limit);
+    }
+
+    const std::string& method = settings.integrator;
+    const double bound = stabilityBound(method);
+    const double wh = omega * advice.dt;
+    if (omega > 0.0 && bound != kInfinity && wh >= bound) {
+        advice.currentStable = false;
+        std::ostringstream out;
+        out << method << " at a sub-step of " << number(advice.dt) << " s has omega*h = "
+            << number(wh);
+        if (bound > 0.0)
+            out << " (stable below " << number(bound) << "): it will blow up. Use dt/substeps below "
+                << number(bound / omega) << " s (" << std::ceil(settings.dt * omega / bound)
+                << " sub-steps), or an implicit integrator.";
+        else
+            out << ": it gains energy at every step. Use symplectic_euler, velocity_verlet or an "
+                   "implicit integrator.";
+        advice.message = out.str();
+    } else if (omega > 0.0 && bound == 0.0) {
+        advice.currentStable = false;
+        std::ostringstream out;
+        out << method << " gains energy every step on this scene (factor about "
+            << number(method == "explicit_euler" ? 1.0 + wh * wh : 1.0 + std::pow(wh, 4) / 4.0)
+            << " per sub-step for its stiffest mode).";
+        advice.message = out.str();
+    } else {
+        advice.message = omega > 0.0 ? method + " is stable at this step (omega*h = " + number(wh) + ")"
+                                     : "nothing in the scene oscillates";
+    }
+    return advice;
+}
+
+}  // namespace phasebox
