@@ -1,5 +1,6 @@
 // The stability advisor against the step sizes at which methods are seen to blow up.
 
+#include "PhysicsTestSupport.h"
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/scene/BuildWorld.h"
 
@@ -16,22 +17,7 @@ namespace {
 // linear oscillator with ω = √(k/m) (a spring with a rest length is nonlinear when stretched
 // far, which would cap a blow-up).
 SceneDesc spring(double k, double m, const std::string& integrator, double dt) {
-    SceneDesc s;
-    s.simulation.integrator = integrator;
-    s.simulation.dt = dt;
-    ParticleDesc p;
-    p.id = "bob";
-    p.position = {0.1, 0.0};
-    p.mass = m;
-    p.radius = 0.0;
-    s.particles.push_back(p);
-    SpringDesc sp;
-    sp.a = "bob";
-    sp.anchor = Point2{0.0, 0.0};
-    sp.stiffness = k;
-    sp.restLength = 0.0;
-    s.springs.push_back(sp);
-    return s;
+    return testing::oscillatorScene(integrator, dt, {0.1, 0.0}, {0.0, 0.0}, k, m);
 }
 
 // Whether `steps` steps stay bounded (no divergence and |x − 1| below 100× the start).
@@ -66,7 +52,7 @@ private slots:
         p2.radius = 0.0;
         s.particles.push_back(p2);
         SpringDesc sp;
-        sp.a = "bob";
+        sp.a = "ball";
         sp.b = "second";
         sp.stiffness = 100.0;
         sp.restLength = 0.0;
