@@ -345,10 +345,12 @@ void readSimulation(Fields& f, SimulationDesc& sim) {
     f.number("tolerance", sim.tolerance);
     f.integer("newton_iterations", sim.newtonIterations);
     f.number("duration", sim.duration);
-    // The solver's keys belong to the engine, so none of them is "unknown" here.
+    // The solver's keys belong to the engine (SceneDesc.h lists the ones it reads); a near miss
+    // of one is a typo like any other, and the rest are kept so that they round-trip.
     const QJsonValue solver = f.get("solver");
     QJsonObject object;
     if (solver.isUndefined() || !f.reader().object(solver, f.at("solver"), object)) return;
+    f.reader().checkKeys(object, f.at("solver"), kSolverKeys);
     for (auto it = object.begin(); it != object.end(); ++it) {
         double value = 0.0;
         if (f.reader().number(it.value(), join(f.at("solver"), it.key()), value))

@@ -77,6 +77,8 @@ void ContactSolver::prepare() {
     }
     smoothV_.resize(bodies_.size());
     smoothW_.resize(bodies_.size());
+    bounceV_.resize(bodies_.size());
+    bounceW_.resize(bodies_.size());
 }
 
 void ContactSolver::loadBodies(const Vec& positions, const Vec& u) {
@@ -275,7 +277,7 @@ void ContactSolver::solve(double h, bool useBias, const ContactSettings& setting
 }
 
 void ContactSolver::solveSubstep(double h, const Vec& q0, Vec& q, Vec& u,
-                                 const ContactSettings& settings) {
+                                 const ContactSettings& settings, double positionWeight) {
     if (constraints_.empty()) return;
     // Each contact's softness for this sub-step (its stiffness multiplier: see prepare()).
     const double hertz = std::min(settings.hertz, 0.25 / h);
@@ -289,7 +291,15 @@ void ContactSolver::solveSubstep(double h, const Vec& q0, Vec& q, Vec& u,
         smoothW_[i] = bodies_[i].w;
     }
     warmStart();
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        bounceV_[i] = bodies_[i].v;
+        bounceW_[i] = bodies_[i].w;
+    }
     bounce(h, settings);
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        bounceV_[i] = bodies_[i].v - bounceV_[i];
+        bounceW_[i] = bodies_[i].w - bounceW_[i];
+    }
     for (int it = 0; it < settings.iterations; ++it) solve(h, true, settings);
 
     // Positions move by h·Δv: the contact impulses act as if applied before the position
@@ -302,7 +312,19 @@ void ContactSolver::solveSubstep(double h, const Vec& q0, Vec& q, Vec& u,
         if (b.rotates) b.dAngle = q[b.dof + 2] - b.collideAngle;
     }
     for (int it = 0; it < settings.relaxIterations; ++it) solve(h, false, settings);
-    for (const SolverBody& b : bodies_) {
+
+    // What is left after relax is the contact force's own impulse (bounces apart: those act at
+    // the instant of impact). The integrator would have moved a body by positionWeight·h·Δv
+    // under such a force, not by h·Δv; moving it by the difference keeps a resting body still
+    // under every method (the soft push-out, removed from the velocity by relax, still moves it
+    // by its whole h·Δv: that is its purpose).
+    const double excess = 1.0 - positionWeight;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        const SolverBody& b = bodies_[i];
+        if (excess != 0.0) {
+            q.segment<2>(b.dof) -= excess * h * (b.v - smoothV_[i] - bounceV_[i]);
+            if (b.rotates) q[b.dof + 2] -= excess * h * (b.w - smoothW_[i] - bounceW_[i]);
+        }
         u.segment<2>(b.dof) = b.v;
         if (b.rotates) u[b.dof + 2] = b.w;
     }

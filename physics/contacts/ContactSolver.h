@@ -35,7 +35,6 @@ struct ContactSettings {
     double dampingRatio = 10.0;
     double pushOut = 3.0;               // m/s: the fastest overlap is removed
     double restitutionThreshold = 1.0;  // m/s: slower impacts do not bounce (no jitter at rest)
-    double linearSlop = 0.005;          // m: overlap tolerated without correction
     double speculativeDistance = 0.02;  // m: contacts are made this far ahead of touching
 };
 
@@ -90,7 +89,9 @@ public:
 
     // One sub-step: q0 is the state at its start, (q, u) after the smooth step; on return
     // (q, u) satisfy the contacts.
-    void solveSubstep(double h, const Vec& q0, Vec& q, Vec& u, const ContactSettings& settings);
+    // positionWeight: the integrator's IntegratorInfo::positionWeight.
+    void solveSubstep(double h, const Vec& q0, Vec& q, Vec& u, const ContactSettings& settings,
+                      double positionWeight);
 
 private:
     struct Softness {
@@ -108,8 +109,8 @@ private:
     std::vector<SolverBody> bodies_;
     std::vector<ContactConstraint> constraints_;
     std::vector<Softness> softness_;  // per constraint, for the current sub-step length
-    std::vector<Vec2> smoothV_;
-    std::vector<double> smoothW_;
+    std::vector<Vec2> smoothV_, bounceV_;  // per body: after the smooth step; the bounces' Δv
+    std::vector<double> smoothW_, bounceW_;
 };
 
 }  // namespace phasebox

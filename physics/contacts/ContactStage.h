@@ -29,8 +29,9 @@ public:
     void collide(const World& world, const Vec& q, const Vec& u, double dt,
                  const ContactSettings& settings);
 
-    void solveSubstep(double h, const Vec& q0, Vec& q, Vec& u, const ContactSettings& settings) {
-        solver_.solveSubstep(h, q0, q, u, settings);
+    void solveSubstep(double h, const Vec& q0, Vec& q, Vec& u, const ContactSettings& settings,
+                      double positionWeight) {
+        solver_.solveSubstep(h, q0, q, u, settings, positionWeight);
     }
 
     const std::vector<ContactConstraint>& contacts() const { return solver_.constraints(); }

@@ -432,7 +432,7 @@ bool World::solveContacts(double h, const Vec& q0, Vec& q, Vec& u) {
     // they add or remove is their work, booked in work_nc.
     const auto start = Clock::now();
     const double before = mechanicalEnergy(q, u);
-    contacts_->solveSubstep(h, q0, q, u, settings_.contacts);
+    contacts_->solveSubstep(h, q0, q, u, settings_.contacts, integrator_->info().positionWeight);
     const double after = mechanicalEnergy(q, u);
     contactSeconds_ += secondsSince(start);
     if (!std::isfinite(after)) return true;  // reported by the finiteness check

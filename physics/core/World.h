@@ -192,7 +192,7 @@ public:
     // Seconds spent in each effect (and the world's own stages) since resetProfile().
     std::vector<EffectCost> effectCosts() const;
     void resetProfile();
-    // Seconds spent in the smooth steps (integrator and effects) since resetProfile().
+    // Seconds spent stepping (integrator, effects and contacts) since resetProfile().
     double integratorSeconds() const { return integratorSeconds_; }
 
     // ---- the flat state (the ODE view) ------------------------------------------------
@@ -268,7 +268,7 @@ private:
     std::vector<int> fieldEffects_;     // the acceleration-field channel
     std::vector<int> nonConservative_;  // those with power to account
     std::vector<double> effectSeconds_; // parallel to effects_
-    double integratorSeconds_ = 0.0;    // whole smooth steps, effects included
+    double integratorSeconds_ = 0.0;    // whole steps: smooth steps, effects and contacts
 
     std::unique_ptr<ContactStage> contacts_;
     bool particleCollisions_ = false;

@@ -13,7 +13,7 @@ namespace phasebox::methods {
 
 const IntegratorInfo kDormandPrinceInfo{
     "rk45", "Dormand–Prince 5(4)", 5, false, false, true, "6 per attempt (+1 per call)",
-    "Embedded Runge–Kutta pair with error control; the reference for the accuracy lab."};
+    "Embedded Runge–Kutta pair with error control; the reference for the accuracy lab.", 0.5};
 
 namespace {
 constexpr long long kMaxInternalSteps = 10'000'000;

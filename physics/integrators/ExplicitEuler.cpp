@@ -7,7 +7,7 @@ namespace phasebox::methods {
 
 const IntegratorInfo kExplicitEulerInfo{
     "explicit_euler", "Explicit Euler", 1, false, false, false, "1",
-    "Forward Euler on (x, v): first order, gains energy on every oscillation."};
+    "Forward Euler on (x, v): first order, gains energy on every oscillation.", 0.0};
 
 namespace {
 class ExplicitEuler final : public Integrator {

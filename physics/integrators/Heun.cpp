@@ -6,7 +6,7 @@ namespace phasebox::methods {
 
 const IntegratorInfo kHeunInfo{
     "heun", "Heun (explicit trapezoid)", 2, false, false, false, "2",
-    "Average of the slopes at the start and at an Euler-predicted end point."};
+    "Average of the slopes at the start and at an Euler-predicted end point.", 0.5};
 
 namespace {
 class Heun final : public Integrator {

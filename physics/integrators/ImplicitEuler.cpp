@@ -12,7 +12,7 @@ namespace phasebox::methods {
 const IntegratorInfo kImplicitEulerInfo{
     "implicit_euler", "Implicit Euler", 1, true, false, false,
     "1 + Jacobian per Newton iteration",
-    "Backward Euler, Newton-linearised (Baraff & Witkin): unconditionally stable, dissipative."};
+    "Backward Euler, Newton-linearised (Baraff & Witkin): unconditionally stable, dissipative.", 1.0};
 
 namespace {
 class ImplicitEuler final : public Integrator {

@@ -10,7 +10,7 @@ namespace phasebox::methods {
 const IntegratorInfo kImplicitMidpointInfo{
     "implicit_midpoint", "Implicit midpoint", 2, true, true, false,
     "1 + Jacobian per Newton iteration (to convergence)",
-    "Implicit midpoint rule: symplectic, second order, conserves a linear spring's energy."};
+    "Implicit midpoint rule: symplectic, second order, conserves a linear spring's energy.", 0.5};
 
 namespace {
 constexpr int kMaxNewtonIterations = 50;

@@ -20,6 +20,11 @@ struct IntegratorInfo {
     bool adaptive;
     std::string_view evaluations;  // force evaluations per step, as a phrase
     std::string_view summary;      // one sentence for tooltips and docs
+    // How far a constant acceleration a moves a body in one step, in units of a·h²: 1 for
+    // symplectic and implicit Euler (x' = x + h·v'), ½ for the second-order methods, 0 for
+    // explicit Euler (x' = x + h·v). Contacts move positions as this method would have under
+    // the contact force, so that a body resting on the ground stays put whatever the method.
+    double positionWeight;
 };
 
 struct IntegratorSettings {

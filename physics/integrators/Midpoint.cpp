@@ -7,7 +7,7 @@ namespace phasebox::methods {
 
 const IntegratorInfo kMidpointInfo{
     "midpoint", "Midpoint (RK2)", 2, false, false, false, "2",
-    "Explicit midpoint: a half step to estimate the slope, then a full step with it."};
+    "Explicit midpoint: a half step to estimate the slope, then a full step with it.", 0.5};
 
 namespace {
 class Midpoint final : public Integrator {

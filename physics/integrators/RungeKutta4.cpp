@@ -6,7 +6,7 @@ namespace phasebox::methods {
 
 const IntegratorInfo kRungeKutta4Info{
     "rk4", "Runge–Kutta 4", 4, false, false, false, "4",
-    "Classic fourth-order Runge–Kutta: four slopes weighted 1/6, 1/3, 1/3, 1/6."};
+    "Classic fourth-order Runge–Kutta: four slopes weighted 1/6, 1/3, 1/3, 1/6.", 0.5};
 
 namespace {
 class RungeKutta4 final : public Integrator {

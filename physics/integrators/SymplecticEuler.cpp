@@ -9,7 +9,7 @@ namespace phasebox::methods {
 
 const IntegratorInfo kSymplecticEulerInfo{
     "symplectic_euler", "Symplectic Euler", 1, false, true, false, "1",
-    "Semi-implicit Euler: velocity first, then position with the new velocity; bounded energy."};
+    "Semi-implicit Euler: velocity first, then position with the new velocity; bounded energy.", 1.0};
 
 namespace {
 class SymplecticEuler final : public Integrator {

@@ -9,7 +9,7 @@ namespace phasebox::methods {
 
 const IntegratorInfo kVelocityVerletInfo{
     "velocity_verlet", "Velocity Verlet", 2, false, true, false, "2",
-    "Position from the current acceleration, velocity from the average of old and new ones."};
+    "Position from the current acceleration, velocity from the average of old and new ones.", 0.5};
 
 namespace {
 class VelocityVerlet final : public Integrator {

@@ -84,7 +84,6 @@ ContactSettings contactSettings(const std::map<std::string, double>& solver) {
     take("damping_ratio", settings.dampingRatio);
     take("push_out", settings.pushOut);
     take("restitution_threshold", settings.restitutionThreshold);
-    take("linear_slop", settings.linearSlop);
     take("speculative_distance", settings.speculativeDistance);
     return settings;
 }

@@ -93,7 +93,7 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
                 check.fail(path, "must be an integer between 0 and 1000");
         } else if (key == "contact_hertz" || key == "push_out") {
             check.positive(path, value);
-        } else if (key == "damping_ratio" || key == "restitution_threshold" || key == "linear_slop" ||
+        } else if (key == "damping_ratio" || key == "restitution_threshold" ||
                    key == "speculative_distance") {
             check.nonNegative(path, value);
         }
