@@ -50,6 +50,7 @@ struct SolverBody {
     double collideAngle = 0.0;
     Vec2 dp = Vec2::Zero();  // displacement since the contacts were found
     double dAngle = 0.0;
+    Mat2 dRotation = Mat2::Identity();  // R(dAngle), once per solver phase
     Vec2 positionShift = Vec2::Zero();  // this sub-step's time-of-impact correction
     double angleShift = 0.0;
     int contactCount = 0;  // constraints this step
@@ -59,6 +60,7 @@ struct ContactPoint {
     Vec2 anchorA = Vec2::Zero();  // from each body's centre to the contact point, at collide
     Vec2 anchorB = Vec2::Zero();
     double baseSeparation = 0.0;  // separation when found
+    double separation = 0.0;      // now (updated once per solver phase)
     double normalMass = 0.0;
     double tangentMass = 0.0;
     double normalImpulse = 0.0;   // accumulated (warm-started)
@@ -104,7 +106,7 @@ private:
     bool solveBlock(ContactConstraint& c, SolverBody* a, SolverBody* b, const double bias[2],
                     const double compliance[2]);
     void solve(double h, bool useBias, const ContactSettings& settings);
-    double separation(const ContactConstraint& c, const ContactPoint& p) const;
+    void updateSeparations();
 
     std::vector<SolverBody> bodies_;
     std::vector<ContactConstraint> constraints_;

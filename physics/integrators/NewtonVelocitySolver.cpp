@@ -12,6 +12,7 @@ void NewtonVelocitySolver::reset(int n) {
     qe_.setZero(n);
     kU_.setZero(n);
     guess_.setZero(n);
+    for (Vec* v : {&inverseDiagonal_, &residual_, &z_, &direction_, &product_}) v->setZero(n);
     matrix_.resize(n, n);
     patternSize_ = 0;  // the next assembly builds the pattern anew
 }
@@ -72,17 +73,16 @@ bool NewtonVelocitySolver::solveLinear(OdeSystem& sys, double c, bool warmStart,
     if (jac_.symmetric && matrix_.rows() >= kIterativeThreshold) {
         // The first (Baraff & Witkin) solve is a linearisation anyway and tolerates a loose
         // residual; Newton refinements need a tight one or they could not converge.
-        cg_.setTolerance(warmStart ? kIterativeTolerance : kRefinementTolerance);
-        cg_.setMaxIterations(std::max<Eigen::Index>(200, matrix_.rows() / 4));
-        cg_.compute(matrix_);
-        if (warmStart) {
-            delta_ = cg_.solveWithGuess(rhs_, guess_);
-        } else {
-            delta_ = cg_.solve(rhs_);
-        }
-        result.linearIterations += static_cast<int>(cg_.iterations());
-        result.linearResidual = cg_.error();
-        if (cg_.info() == Eigen::Success && delta_.allFinite()) {
+        const double tolerance = warmStart ? kIterativeTolerance : kRefinementTolerance;
+        const int maxIterations = std::max<int>(200, static_cast<int>(matrix_.rows() / 4));
+        if (warmStart) delta_ = guess_;
+        else delta_.setZero();
+        int iterations = 0;
+        double residual = 0.0;
+        const bool converged = conjugateGradient(tolerance, maxIterations, iterations, residual);
+        result.linearIterations += iterations;
+        result.linearResidual = residual;
+        if (converged && delta_.allFinite()) {
             if (warmStart) guess_ = delta_;
             return true;
         }
@@ -109,6 +109,41 @@ bool NewtonVelocitySolver::solveLinear(OdeSystem& sys, double c, bool warmStart,
     if (lu_.info() != Eigen::Success) return false;
     delta_ = lu_.solve(rhs_);
     return lu_.info() == Eigen::Success && delta_.allFinite();
+}
+
+bool NewtonVelocitySolver::conjugateGradient(double tolerance, int maxIterations, int& iterations,
+                                             double& residual) {
+    // Conjugate gradients preconditioned by the diagonal (Jacobi), solving matrix_·delta_ =
+    // rhs_ from the guess already in delta_. Every vector is a member sized once, so a step
+    // allocates nothing. Stops when ‖r‖ ≤ tolerance·‖rhs‖.
+    const double rhsNorm = rhs_.norm();
+    if (!(rhsNorm > 0.0)) {
+        delta_.setZero();
+        residual = 0.0;
+        return true;
+    }
+    inverseDiagonal_ = matrix_.diagonal().cwiseInverse();
+    residual_.noalias() = matrix_ * delta_;
+    residual_ = rhs_ - residual_;
+    z_ = inverseDiagonal_.cwiseProduct(residual_);
+    direction_ = z_;
+    double rz = residual_.dot(z_);
+    for (iterations = 0; iterations < maxIterations; ++iterations) {
+        residual = residual_.norm() / rhsNorm;
+        if (residual <= tolerance) return true;
+        product_.noalias() = matrix_ * direction_;
+        const double curvature = direction_.dot(product_);
+        if (!(curvature > 0.0)) return false;  // not positive definite along this direction
+        const double alpha = rz / curvature;
+        delta_ += alpha * direction_;
+        residual_ -= alpha * product_;
+        z_ = inverseDiagonal_.cwiseProduct(residual_);
+        const double rzNext = residual_.dot(z_);
+        direction_ = z_ + (rzNext / rz) * direction_;
+        rz = rzNext;
+    }
+    residual = residual_.norm() / rhsNorm;
+    return residual <= tolerance;
 }
 
 NewtonVelocitySolver::Result NewtonVelocitySolver::solve(OdeSystem& sys, double t, double c,

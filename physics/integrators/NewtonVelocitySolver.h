@@ -10,7 +10,6 @@
 
 #include "physics/integrators/Integrator.h"
 
-#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
 
@@ -50,6 +49,7 @@ private:
     void assemble(OdeSystem& sys, double c);
     // Solves A·x = rhs_ into delta_.
     bool solveLinear(OdeSystem& sys, double c, bool warmStart, Result& result);
+    bool conjugateGradient(double tolerance, int maxIterations, int& iterations, double& residual);
 
     ForceJacobians jac_;
     Vec force_, rhs_, delta_, qe_, kU_;
@@ -61,8 +61,8 @@ private:
     bool ldltAnalyzed_ = false;
     bool luAnalyzed_ = false;
     Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
-    Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg_;
     Vec guess_;  // the last step's first update, to warm-start the next one
+    Vec inverseDiagonal_, residual_, z_, direction_, product_;  // conjugate-gradient scratch
     Eigen::SparseLU<SparseMatrix> lu_;
 };
 

@@ -392,7 +392,8 @@ void printTable(std::FILE* out, const std::vector<PyramidResult>& results, int s
                  "\n|dp|max is tst_contacts' measure (Phasebox must stay within 0.05 m). lean = "
                  "largest sideways shift of a row's\nmean x. Box2D 2.4's polygon skins push "
                  "touching boxes ~0.015 m apart per contact, so its pyramids spread\nand rise "
-                 "symmetrically as they settle (|dx|max, top dy) without leaning or tilting.\n");
+                 "symmetrically as they settle (|dx|max, top dy); that moves no row's centre and "
+                 "turns no box,\nso lean and tilt are what is left of a real deformation.\n");
 }
 
 std::string toJson(const std::vector<PyramidResult>& results, int steps, int repeat) {
