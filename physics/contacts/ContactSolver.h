@@ -30,7 +30,7 @@ namespace phasebox {
 
 struct ContactSettings {
     int iterations = 4;                 // soft solve iterations per sub-step
-    int relaxIterations = 2;            // bias-free iterations per sub-step
+    int relaxIterations = 1;            // bias-free iterations per sub-step
     double hertz = 60.0;                // contact stiffness (capped at a quarter of 1/h)
     double dampingRatio = 10.0;
     double pushOut = 3.0;               // m/s: the fastest overlap is removed
