@@ -3,8 +3,6 @@
 #include "physics/core/World.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 
 namespace phasebox {
