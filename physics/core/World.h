@@ -237,7 +237,9 @@ private:
     bool solveContacts(double h, const Vec& q0, Vec& q, Vec& u);
     void updateLedger(const Vec2& massMoment);
     bool checkSubstep(double t, int substep);
-    bool checkEnergy();
+    bool checkEnergy(const StateSummary* precomputed);
+    bool fusedFreeFall() const;
+    void freeFallStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u, StateSummary* summary);
 
     // What a failed step goes back to: the start of the frame, or of a blow-up's first frame.
     struct Checkpoint {
