@@ -45,13 +45,19 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
         // A fixed, irregular start so no mode is missed by symmetry.
         for (int i = 0; i < n; ++i) x[i] += 0.01 * std::sin(1.7 * i);
         x.normalize();
+        // The Rayleigh quotient approaches the top eigenvalue from below, slowly when the top
+        // modes crowd together (a fine cloth): iterate until it settles to 1e-6, so that the
+        // advised step is not optimistic.
         double lambda = 0.0;
         for (int it = 0; it < powerIterations; ++it) {
             y = -(scale.asDiagonal() * (k * (scale.asDiagonal() * x)));
             const double norm = y.norm();
             if (!(norm > 0.0) || !std::isfinite(norm)) break;
-            lambda = x.dot(y);
+            const double next = x.dot(y);
             x = y / norm;
+            const bool settled = it > 10 && std::abs(next - lambda) <= 1e-6 * std::abs(next);
+            lambda = next;
+            if (settled) break;
         }
         advice.omegaMax = lambda > 0.0 ? std::sqrt(lambda) : 0.0;
     }

@@ -32,7 +32,7 @@ struct StabilityAdvice {
 };
 
 // Reads the world's force Jacobian at its current state (the world is not changed).
-StabilityAdvice adviseStability(World& world, int powerIterations = 60);
+StabilityAdvice adviseStability(World& world, int powerIterations = 2000);
 
 // ω·h bound of a method for undamped oscillation: +∞, a finite bound, or 0 (unstable).
 double stabilityBound(std::string_view integrator);
