@@ -136,6 +136,8 @@ void World::commit() {
         mass_[b.dof + 2] = b.inertia;
     }
     invMass_ = mass_.cwiseInverse();
+    particleMass_.resize(layout_.dynamicParticles);
+    for (int k = 0; k < layout_.dynamicParticles; ++k) particleMass_[k] = mass_[layout_.particleDof(k)];
 
     rebuildSpringEffect();
     bindEffects();
@@ -464,6 +466,8 @@ void World::freeFallStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
     A2 ke0 = A2::Zero(), ke1 = A2::Zero(), mom0 = A2::Zero(), mom1 = A2::Zero();
     int i = 0;
     if (summary) {
+        // Per-particle masses (half the bytes of the per-dof ones) for the diagnostics.
+        const double* pm = particleMass_.data();
         for (; i + 4 <= particleEnd; i += 4) {
             const A2 v0 = Eigen::Map<const A2>(u0p + i) + hg;
             const A2 v1 = Eigen::Map<const A2>(u0p + i + 2) + hg;
@@ -473,9 +477,9 @@ void World::freeFallStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
             Eigen::Map<A2>(up + i + 2) = v1;
             Eigen::Map<A2>(qp + i) = x0;
             Eigen::Map<A2>(qp + i + 2) = x1;
-            const A2 m0 = Eigen::Map<const A2>(m + i), m1 = Eigen::Map<const A2>(m + i + 2);
-            ke0 += m0 * v0 * v0;
-            ke1 += m1 * v1 * v1;
+            const double m0 = pm[i / 2], m1 = pm[i / 2 + 1];
+            ke0 += m0 * (v0 * v0);
+            ke1 += m1 * (v1 * v1);
             mom0 += m0 * x0;
             mom1 += m1 * x1;
         }

@@ -288,6 +288,7 @@ private:
     Vec q_[2], u_[2];
     int current_ = 0;
     Vec mass_, invMass_, force_;
+    Vec particleMass_;  // per dynamic particle (the fused free-fall pass reads half the bytes)
 
     double time_ = 0.0;
     double timeBase_ = 0.0;  // time_ = timeBase_ + stepsSinceTimeBase_·dt
