@@ -26,8 +26,17 @@ inline bool countingOn = false;
 inline AllocationCounts counts;
 }  // namespace detail
 
+// AddressSanitizer owns malloc and operator new; replacing them under it crashes at start-up,
+// so a sanitizer build counts nothing (the release build runs the allocation checks).
+#if defined(__SANITIZE_ADDRESS__)
+#define PHASEBOX_BENCH_NO_COUNTING 1
+constexpr bool kCountsAllocations = false;
+#else
+constexpr bool kCountsAllocations = true;
+#endif
+
 // Whether malloc is watched too (glibc only); without it Eigen's allocations go unseen.
-#if defined(__GLIBC__)
+#if defined(__GLIBC__) && !defined(PHASEBOX_BENCH_NO_COUNTING)
 constexpr bool kCountsMalloc = true;
 #else
 constexpr bool kCountsMalloc = false;
@@ -44,6 +53,7 @@ inline AllocationCounts stopCountingAllocations() {
 
 }  // namespace phasebox::bench
 
+#if !defined(PHASEBOX_BENCH_NO_COUNTING)
 #if defined(__GLIBC__)
 // glibc lets a program replace malloc by defining it; its own allocator stays reachable under
 // these names (the documented "Replacing malloc" hooks). Every other entry point (free,
@@ -112,3 +122,4 @@ void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+#endif  // !PHASEBOX_BENCH_NO_COUNTING

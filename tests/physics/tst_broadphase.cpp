@@ -204,8 +204,10 @@ void TestBroadPhase::noAllocationOnceWarm() {
         broadPhase.findPairs(boxes, pairs);
     }
     const AllocationCounts counts = stopCountingAllocations();
-    QCOMPARE(counts.total(), 0LL);
     QCOMPARE(pairs, bruteForce(boxes));
+    if (!kCountsAllocations)
+        qInfo("allocations are not counted under AddressSanitizer; the release build checks them");
+    QCOMPARE(counts.total(), 0LL);
 }
 
 void TestBroadPhase::timing10000() {
