@@ -394,7 +394,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     }
     const QString title = QStringLiteral("%1 — %2, dt = %3 s")
                               .arg(scene.name.empty() ? o.scene : QString::fromStdString(scene.name),
-                                   QString::fromStdString(sim.integrator), formatNumber(dt));
+                                   QString::fromStdString(sim.integrator), QString::number(dt, 'g', 4));
     if (!o.plotEnergy.isEmpty() &&
         !writePlot(ui::createEnergyChart(energy, {}, title), o.plotEnergy, err))
         status = kBadInput;

@@ -18,6 +18,13 @@
 namespace phasebox::ui {
 
 namespace {
+// Time runs exactly over the samples: padding or rounding it out would show times that never were.
+void fitTimeAxis(QValueAxis* axis, double lo, double hi) {
+    if (!(hi > lo)) hi = lo + 1.0;
+    axis->setRange(lo, hi);
+    axis->setLabelFormat(QStringLiteral("%.3g"));
+}
+
 void fitAxis(QValueAxis* axis, double lo, double hi) {
     if (!std::isfinite(lo) || !std::isfinite(hi)) lo = hi = 0.0;
     if (hi - lo < 1e-12 * std::max(1.0, std::abs(hi))) {
@@ -31,6 +38,7 @@ void fitAxis(QValueAxis* axis, double lo, double hi) {
     }
     axis->setRange(lo, hi);
     axis->applyNiceNumbers();
+    axis->setLabelFormat(QStringLiteral("%.4g"));
 }
 
 QLineSeries* addSeries(QChart* chart, const QVector<QPointF>& points, const QString& name,
@@ -120,7 +128,7 @@ QChart* createEnergyChart(std::span<const EnergySample> samples,
     x->setTitleText(QStringLiteral("time [s]"));
     auto* y = new QValueAxis;
     y->setTitleText(QStringLiteral("energy [J]"));
-    fitAxis(x, tMin, tMax > tMin ? tMax : tMin + 1.0);
+    fitTimeAxis(x, tMin, tMax);
     fitAxis(y, lo, hi);
     for (const PlotMarker& m : markers) {
         auto* line = addSeries(chart, {{m.t, y->min()}, {m.t, y->max()}}, m.label,
