@@ -274,6 +274,26 @@ void World::addEffect(std::unique_ptr<Effect> effect) {
     bindEffects();
 }
 
+std::unique_ptr<Effect> World::removeEffect(const Effect* effect) {
+    if (effect == springEffect_) return nullptr;
+    auto it = std::find_if(effects_.begin(), effects_.end(),
+                           [effect](const auto& e) { return e.get() == effect; });
+    if (it == effects_.end()) return nullptr;
+    // Like adding one, removing an effect changes the potential energy: rebuild.
+    storeStateInObjects();
+    layoutDirty_ = true;
+    std::unique_ptr<Effect> removed = std::move(*it);
+    effects_.erase(it);
+    bindEffects();
+    return removed;
+}
+
+void World::setTime(double t) {
+    time_ = t;
+    timeBase_ = t;
+    stepsSinceTimeBase_ = 0;
+}
+
 Effect* World::findEffect(const std::string& name) const {
     for (const auto& e : effects_)
         if (e->name() == name) return e.get();

@@ -159,6 +159,9 @@ public:
     void addEffect(std::unique_ptr<Effect> effect);
     const std::vector<std::unique_ptr<Effect>>& effects() const { return effects_; }
     Effect* findEffect(const std::string& name) const;
+    // Takes an effect out of the world (a released mouse spring, an effect switched off) and
+    // hands it back; nullptr when it is not here. The spring effect is the world's own.
+    std::unique_ptr<Effect> removeEffect(const Effect* effect);
 
     // Particle–particle contacts (the scene's particle_collisions), with their restitution.
     // Contacts between boxes, planes and disks run whenever two such things can touch.
@@ -182,6 +185,8 @@ public:
     const std::optional<Divergence>& divergence() const { return divergence_; }
 
     double time() const { return time_; }
+    // Sets the clock (a rebuilt world continuing a run); steps count on from here.
+    void setTime(double t);
     long long stepCount() const { return stepCount_; }
     long long forceEvaluations() const { return forceEvaluations_; }
 
