@@ -5,6 +5,7 @@
 #include "physics/effects/SpringEffect.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -138,6 +139,8 @@ void World::commit() {
     invMass_ = mass_.cwiseInverse();
     particleMass_.resize(layout_.dynamicParticles);
     for (int k = 0; k < layout_.dynamicParticles; ++k) particleMass_[k] = mass_[layout_.particleDof(k)];
+    totalDofMass_ = mass_.sum();
+    freeFallBound_.reset();
 
     rebuildSpringEffect();
     bindEffects();
@@ -401,6 +404,7 @@ void World::setState(const Vec& q, const Vec& u) {
         throw std::invalid_argument("state size does not match the world's layout");
     q_[current_] = q;
     u_[current_] = u;
+    freeFallBound_.reset();
 }
 
 std::string World::objectAtDof(int dof) const {
@@ -416,17 +420,21 @@ bool World::step() {
     divergence_.reset();
     const double h = settings_.dt / settings_.substeps;
     const auto stepStart = Clock::now();
-    saveFrameStart();
+    const bool fused = fusedFreeFall();
+    // A free-fall frame that provably cannot diverge is stepped in place: with nothing to go
+    // back to, the second buffer (half of the memory traffic of this memory-bound pass) is
+    // not needed.
+    const bool inPlace = fused && freeFallCannotDiverge();
+    saveFrameStart(inPlace);
     if (contacts_) {
         const auto start = Clock::now();
         contacts_->collide(*this, q_[current_], u_[current_], settings_.dt, settings_.contacts);
         contactSeconds_ += secondsSince(start);
     }
-    const bool fused = fusedFreeFall();
     StateSummary summary;
     for (int s = 0; s < settings_.substeps; ++s) {
         const double t = frameStart_.time + s * h;
-        const int next = 1 - current_;
+        const int next = inPlace ? current_ : 1 - current_;
         bool ok = true;
         if (fused) {
             const auto start = Clock::now();
@@ -457,7 +465,26 @@ bool World::step() {
     ++stepsSinceTimeBase_;
     time_ = timeBase_ + static_cast<double>(stepsSinceTimeBase_) * settings_.dt;
     ++stepCount_;
-    return checkEnergy(fused ? &summary : nullptr);
+    const bool good = checkEnergy(fused ? &summary : nullptr);
+    if (fused && good) freeFallBound_ = summary;
+    else freeFallBound_.reset();
+    return good;
+}
+
+bool World::freeFallCannotDiverge() const {
+    // Symplectic Euler in a uniform field changes the energy by exactly −½·h²·|g|²·Σm per
+    // sub-step: it never grows, so only an overflow could diverge. From the last frame's
+    // largest |v| and |x|, a frame of n sub-steps reaches at most |v| + n·h·|g| and
+    // |x| + n·h·(that); when Σm times their squares stays far below the double range, no
+    // value and no energy sum can overflow (or become NaN), and there is nothing to restore.
+    if (!freeFallBound_ || !freeFallBound_->finite) return false;
+    const Vec2 g = static_cast<const GravityEffect&>(*effects_[0]).g();
+    const double gMax = std::max(std::abs(g.x()), std::abs(g.y()));
+    const double v = freeFallBound_->maxAbsVelocity + settings_.dt * gMax;
+    const double x = freeFallBound_->maxAbsPosition + settings_.dt * v;
+    constexpr double kSafe = 1e280;
+    const double m = std::max(totalDofMass_, 1.0);
+    return v * v * m < kSafe && x * m < kSafe && x < kSafe;
 }
 
 bool World::fusedFreeFall() const {
@@ -484,6 +511,7 @@ void World::freeFallStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
     double* up = u.data();
     const int particleEnd = layout_.boxBase();
     A2 ke0 = A2::Zero(), ke1 = A2::Zero(), mom0 = A2::Zero(), mom1 = A2::Zero();
+    A2 xMax = A2::Zero(), vMax = A2::Zero();
     int i = 0;
     if (summary) {
         // Per-particle masses (half the bytes of the per-dof ones) for the diagnostics.
@@ -502,6 +530,8 @@ void World::freeFallStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
             ke1 += m1 * (v1 * v1);
             mom0 += m0 * x0;
             mom1 += m1 * x1;
+            vMax = vMax.max(v0.abs().max(v1.abs()));
+            xMax = xMax.max(x0.abs().max(x1.abs()));
         }
     } else {
         for (; i + 2 <= particleEnd; i += 2) {
@@ -519,6 +549,8 @@ void World::freeFallStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
             const A2 m0 = Eigen::Map<const A2>(m + i);
             ke0 += m0 * v0 * v0;
             mom0 += m0 * x0;
+            vMax = vMax.max(v0.abs());
+            xMax = xMax.max(x0.abs());
         }
     }
     double angularKinetic = 0.0, angles = 0.0;
@@ -535,8 +567,14 @@ void World::freeFallStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
         mom0 += mb * x0;
         angularKinetic += m[k + 2] * up[k + 2] * up[k + 2];
         angles += qp[k + 2];
+        vMax = vMax.max(v0.abs().max(A2::Constant(std::abs(up[k + 2]))));
+        xMax = xMax.max(x0.abs().max(A2::Constant(std::abs(qp[k + 2]))));
     }
     if (!summary) return;
+    // NaN compares false, so max() may drop it: finiteness is judged by the sums below, and
+    // the bound is only used when they are finite.
+    summary->maxAbsVelocity = vMax.maxCoeff();
+    summary->maxAbsPosition = xMax.maxCoeff();
     summary->kinetic = 0.5 * ((ke0 + ke1).sum() + angularKinetic);
     const A2 moment = mom0 + mom1;
     summary->massMoment = Vec2(moment[0], moment[1]);
@@ -556,8 +594,9 @@ bool World::solveContacts(double h, const Vec& q0, Vec& q, Vec& u) {
     return true;
 }
 
-void World::saveFrameStart() {
+void World::saveFrameStart(bool inPlace) {
     Checkpoint& c = frameStart_;
+    c.inPlace = inPlace;
     c.time = time_;
     c.timeBase = timeBase_;
     c.stepsSinceTimeBase = stepsSinceTimeBase_;
@@ -565,7 +604,7 @@ void World::saveFrameStart() {
     c.ledger = ledger_;
     // With one sub-step the other state buffer keeps the frame start for free; with several it
     // is overwritten, so the start is copied (into memory sized once).
-    c.hasState = settings_.substeps > 1;
+    c.hasState = settings_.substeps > 1 && !inPlace;
     if (c.hasState) {
         c.q = q_[current_];
         c.u = u_[current_];
@@ -574,6 +613,9 @@ void World::saveFrameStart() {
 
 void World::restoreFrameStart() {
     const Checkpoint& c = frameStart_;
+    // An in-place frame was proven unable to diverge (freeFallCannotDiverge); were it to
+    // happen anyway, the other buffer holds an older good state, which is what is restored.
+    assert(!c.inPlace);
     if (c.hasState) {
         q_[current_] = c.q;
         u_[current_] = c.u;
@@ -677,8 +719,9 @@ bool World::checkEnergy(const StateSummary* precomputed) {
         } else {
             // The growth rule measures against the scene's own energy, not against work_nc: in
             // a damped blow-up the damping's work explodes as fast as the drift and would hide it.
-            const bool growing =
-                drift > kRunawayFactor * energyScale_ && drift > kGrowth * previousDrift_;
+            // (An in-place free-fall frame cannot gain energy: see freeFallCannotDiverge.)
+            const bool growing = !frameStart_.inPlace && drift > kRunawayFactor * energyScale_ &&
+                                 drift > kGrowth * previousDrift_;
             if (growing && growthStreak_ == 0) {
                 // The growth may be a blow-up: remember where it started, the last good state.
                 streakStart_ = frameStart_;
@@ -691,7 +734,8 @@ bool World::checkEnergy(const StateSummary* precomputed) {
             growthStreak_ = growing ? growthStreak_ + 1 : 0;
             previousDrift_ = drift;
             runaway = growthStreak_ >= kStreak ||
-                      drift > kAbsurd * (energyScale_ + std::abs(ledger_.workNc));
+                      (!frameStart_.inPlace &&
+                       drift > kAbsurd * (energyScale_ + std::abs(ledger_.workNc)));
             if (runaway) what = "energy growing without bound";
         }
     } else {

@@ -235,6 +235,8 @@ private:
         double kinetic = 0.0;
         Vec2 massMoment = Vec2::Zero();  // Σ m·(x, y) over particles and boxes
         bool finite = true;               // every coordinate and velocity is finite
+        // Largest |coordinate| and |velocity| component; only the free-fall pass fills them.
+        double maxAbsPosition = 0.0, maxAbsVelocity = 0.0;
     };
     StateSummary summarizeState(const Vec& q, const Vec& u) const;
     double potentialEnergy(const Vec& q, const Vec2& massMoment) const;
@@ -244,17 +246,19 @@ private:
     bool checkSubstep(double t, int substep);
     bool checkEnergy(const StateSummary* precomputed);
     bool fusedFreeFall() const;
+    bool freeFallCannotDiverge() const;
     void freeFallStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u, StateSummary* summary);
 
     // What a failed step goes back to: the start of the frame, or of a blow-up's first frame.
     struct Checkpoint {
         Vec q, u;  // valid when hasState
         bool hasState = false;
+        bool inPlace = false;  // the frame was stepped in place: there is no state to go back to
         double time = 0.0, timeBase = 0.0;
         long long stepsSinceTimeBase = 0, stepCount = 0;
         EnergyLedger ledger;
     };
-    void saveFrameStart();
+    void saveFrameStart(bool inPlace);
     void restoreFrameStart();
     void restoreScalars(const Checkpoint& c);
     std::string firstNonFinite(const Vec& q, const Vec& u) const;
@@ -294,6 +298,9 @@ private:
     int current_ = 0;
     Vec mass_, invMass_, force_;
     Vec particleMass_;  // per dynamic particle (the fused free-fall pass reads half the bytes)
+    double totalDofMass_ = 0.0;  // Σ of mass_, for the free-fall overflow bound
+    // Maxima of the state after the last free-fall frame, valid until anything else touches it.
+    std::optional<StateSummary> freeFallBound_;
 
     double time_ = 0.0;
     double timeBase_ = 0.0;  // time_ = timeBase_ + stepsSinceTimeBase_·dt

@@ -178,6 +178,7 @@ private slots:
     void mutualGravityBinaryOrbit();
     void onlyListedEffectsAreConstructed();
     void freeFallFastPathMatchesTheGenericStep();
+    void freeFallInPlaceNeverLosesTheLastGoodState();
 };
 
 // Symplectic Euler under gravity alone takes a fused single-pass step; it must compute exactly
@@ -217,6 +218,37 @@ void TestWorldInvariants::freeFallFastPathMatchesTheGenericStep() {
     QVERIFY(std::abs(a.kinetic - b.kinetic) <= 1e-12 * std::abs(b.kinetic));
     QVERIFY(std::abs(a.potential - b.potential) <= 1e-12 * std::abs(b.potential));
     QVERIFY(std::abs(a.drift - b.drift) <= 1e-9 * (std::abs(b.kinetic) + std::abs(b.potential)));
+}
+
+// The free-fall pass steps in place only when it can prove that no value or energy sum can
+// overflow. A state near the top of the double range must therefore still be stepped with the
+// frame start kept, and an overflow must restore it, whatever ran before.
+void TestWorldInvariants::freeFallInPlaceNeverLosesTheLastGoodState() {
+    SceneDesc scene;
+    scene.simulation = simulation("symplectic_euler", 0.01);
+    scene.effects.gravity = GravityDesc{{0.0, -9.81}};
+    for (int i = 0; i < 5; ++i) {
+        ParticleDesc p;
+        p.position = {1.0 * i, 2.0};
+        p.radius = 0.0;
+        scene.particles.push_back(p);
+    }
+    auto world = build(scene);
+    for (int k = 0; k < 10; ++k) QVERIFY(world->step());  // in place from the second frame on
+    Eigen::VectorXd q = world->positions(), u = world->velocities();
+    u[3] = 1e200;  // kinetic energy ½·m·v² overflows to infinity in the next frame's sums
+    world->setState(q, u);
+    const double t = world->time();
+    QVERIFY(!world->step());
+    QVERIFY(world->divergence().has_value());
+    QCOMPARE(world->divergence()->objectId, std::string("p1"));
+    QVERIFY(world->positions() == q && world->velocities() == u);
+    QCOMPARE(world->time(), t);
+    // Back to ordinary values, the world steps on.
+    u[3] = 1.0;
+    world->setState(q, u);
+    for (int k = 0; k < 10; ++k) QVERIFY(world->step());
+    QVERIFY(world->positions().allFinite() && world->velocities().allFinite());
 }
 
 // Switching the integrator between two steps changes nothing in the state, the clock or the
