@@ -215,7 +215,7 @@ void writeCsvHeader(QTextStream& s, const std::vector<Tracked>& tracked) {
     for (const Tracked& t : tracked) {
         const QStringList cols = t.isBox ? QStringList{"x", "y", "angle", "vx", "vy", "omega"}
                                          : QStringList{"x", "y", "vx", "vy"};
-        for (const QString& c : cols) s << ',' << t.id << '.' << c;
+        for (const QString& c : cols) s << ',' << csvField(t.id + QLatin1Char('.') + c);
     }
     s << '\n';
 }

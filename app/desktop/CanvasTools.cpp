@@ -1,0 +1,283 @@
+#include "app/desktop/CanvasTools.h"
+
+#include "app/document/Document.h"
+#include "app/document/PropertyTable.h"
+#include "physics/core/World.h"
+#include "ui/canvas/SceneView.h"
+
+#include <QLineF>
+
+#include <cmath>
+
+namespace phasebox {
+
+namespace {
+Point2 point(QPointF p) { return {p.x(), p.y()}; }
+
+// The key pair that places an object of this kind.
+std::optional<std::pair<QString, QString>> positionKeys(ObjectKind kind) {
+    switch (kind) {
+        case ObjectKind::Particle:
+        case ObjectKind::Box: return std::pair{QStringLiteral("position.x"), QStringLiteral("position.y")};
+        case ObjectKind::Plane: return std::pair{QStringLiteral("point.x"), QStringLiteral("point.y")};
+        case ObjectKind::Cloth: return std::pair{QStringLiteral("origin.x"), QStringLiteral("origin.y")};
+        default: return std::nullopt;
+    }
+}
+
+QString formatLength(double metres) { return QString::number(metres, 'f', 2) + QStringLiteral(" m"); }
+}  // namespace
+
+CanvasTools::CanvasTools(Document& document, ui::SceneView& view, QObject* parent)
+    : QObject(parent), document_(document), view_(view) {
+    connect(&view_, &ui::SceneView::worldMousePressed, this, &CanvasTools::pressed);
+    connect(&view_, &ui::SceneView::worldMouseMoved, this, &CanvasTools::moved);
+    connect(&view_, &ui::SceneView::worldMouseReleased, this, &CanvasTools::released);
+}
+
+QString CanvasTools::toolName(Tool tool) {
+    switch (tool) {
+        case Tool::Select: return tr("Select / move");
+        case Tool::Particle: return tr("Add particle");
+        case Tool::Spring: return tr("Add spring");
+        case Tool::Cloth: return tr("Add cloth");
+        case Tool::Box: return tr("Add box");
+        case Tool::Plane: return tr("Add plane");
+        case Tool::Pin: return tr("Pin / unpin");
+    }
+    return {};
+}
+
+QString CanvasTools::toolHelp(Tool tool) {
+    switch (tool) {
+        case Tool::Select:
+            return tr("Click to select (Shift adds), drag to move; while running, drag an object to "
+                      "pull it with a mouse spring.");
+        case Tool::Particle: return tr("Click to drop a particle; drag to give it a velocity.");
+        case Tool::Spring:
+            return tr("Drag from an object to another, or to empty space for a fixed anchor.");
+        case Tool::Cloth: return tr("Drag a rectangle: a cloth pinned along its top edge.");
+        case Tool::Box: return tr("Drag a rectangle: a box of that size.");
+        case Tool::Plane:
+            return tr("Drag a line along the surface; the solid side is to the right of the drag.");
+        case Tool::Pin: return tr("Click a particle to pin or unpin it, a box to make it static.");
+    }
+    return {};
+}
+
+void CanvasTools::setTool(Tool tool) {
+    if (tool == tool_) return;
+    cancel();
+    tool_ = tool;
+    view_.setCursor(tool == Tool::Select ? Qt::ArrowCursor : Qt::CrossCursor);
+    emit toolChanged(tool);
+    emit message(toolHelp(tool));
+}
+
+QString CanvasTools::objectAt(QPointF world) const {
+    const ui::PickResult hit = view_.pick(view_.toWidget(world));
+    if (!hit) return {};
+    return QString::fromStdString(hit.id);
+}
+
+bool CanvasTools::isClick(QPointF world) const {
+    return QLineF(view_.toWidget(start_), view_.toWidget(world)).length() < kClickPixels;
+}
+
+void CanvasTools::report(bool ok, const QString& error) {
+    if (!ok && !error.isEmpty()) emit message(error);
+}
+
+void CanvasTools::pressed(QPointF world, Qt::MouseButton button, Qt::KeyboardModifiers modifiers) {
+    if (button != Qt::LeftButton) return;
+    dragging_ = true;
+    moved_ = false;
+    start_ = world;
+    startObject_ = objectAt(world);
+    grabbing_ = false;
+    if (tool_ != Tool::Select) return;
+
+    if (startObject_.isEmpty()) {
+        if (!(modifiers & Qt::ShiftModifier)) document_.setSelection({});
+        return;
+    }
+    // Select (Shift toggles the object in the selection).
+    QStringList selection = document_.selection();
+    if (modifiers & Qt::ShiftModifier) {
+        if (selection.contains(startObject_)) selection.removeAll(startObject_);
+        else selection.append(startObject_);
+    } else if (!selection.contains(startObject_)) {
+        selection = {startObject_};
+    }
+    document_.setSelection(selection);
+
+    // While the simulation runs (or has run), a drag pulls a dynamic object with a spring; at
+    // the setup it moves the object.
+    if (document_.hasRun()) {
+        const World& w = document_.world();
+        const ui::PickResult hit = view_.pick(view_.toWidget(world));
+        Point2 local{0.0, 0.0};
+        if (hit.kind == ui::PickResult::Box) {
+            const Vec2 offset = Vec2(world.x(), world.y()) - w.boxPosition(hit.index);
+            const Vec2 inBox = rotation(-w.boxAngle(hit.index)) * offset;
+            local = {inBox.x(), inBox.y()};
+        }
+        if ((hit.kind == ui::PickResult::Particle || hit.kind == ui::PickResult::Box) &&
+            document_.grab(startObject_, local, point(world))) {
+            grabbing_ = true;
+            emit message(tr("Pulling %1 with a mouse spring").arg(startObject_));
+            return;
+        }
+    }
+    const ObjectRef ref = findObject(document_.setup(), startObject_.toStdString());
+    if (const auto keys = positionKeys(ref.kind)) {
+        const QString id = QString::fromStdString(objectId(document_.setup(), ref));
+        const auto x = propertyValue(document_.setup(), id, keys->first);
+        const auto y = propertyValue(document_.setup(), id, keys->second);
+        if (x && y) grabOffset_ = QPointF(*x, *y) - world;
+        startObject_ = id;  // a cloth node moves its whole cloth
+    } else {
+        startObject_.clear();  // springs are not moved by dragging
+    }
+}
+
+void CanvasTools::moved(QPointF world, Qt::MouseButtons buttons, Qt::KeyboardModifiers) {
+    if (!dragging_ || !(buttons & Qt::LeftButton)) return;
+    if (!moved_ && isClick(world)) return;
+    moved_ = true;
+    if (tool_ == Tool::Select) {
+        if (grabbing_) {
+            document_.moveGrab(point(world));
+            view_.setOverlay({ui::ToolOverlay::Line, start_, world, {}});
+        } else if (!startObject_.isEmpty()) {
+            QString error;
+            report(document_.moveObject(startObject_, point(world + grabOffset_), &error), error);
+        }
+        return;
+    }
+    showPreview(world);
+}
+
+void CanvasTools::showPreview(QPointF world) {
+    ui::ToolOverlay overlay;
+    overlay.a = start_;
+    overlay.b = world;
+    const QPointF d = world - start_;
+    switch (tool_) {
+        case Tool::Particle:
+            overlay.shape = ui::ToolOverlay::Arrow;
+            overlay.text = tr("v = %1 m/s")
+                               .arg(std::hypot(d.x(), d.y()) * kVelocityPerMetre, 0, 'f', 2);
+            break;
+        case Tool::Spring: {
+            overlay.shape = ui::ToolOverlay::Line;
+            const QString target = objectAt(world);
+            overlay.text = target.isEmpty() ? tr("anchor, %1").arg(formatLength(std::hypot(d.x(), d.y())))
+                                            : target;
+            break;
+        }
+        case Tool::Cloth:
+        case Tool::Box:
+            overlay.shape = ui::ToolOverlay::Rect;
+            overlay.text = formatLength(std::abs(d.x())) + QStringLiteral(" × ") +
+                           formatLength(std::abs(d.y()));
+            break;
+        case Tool::Plane: overlay.shape = ui::ToolOverlay::Arrow; break;
+        default: return;
+    }
+    view_.setOverlay(overlay);
+}
+
+void CanvasTools::released(QPointF world, Qt::MouseButton button, Qt::KeyboardModifiers) {
+    if (button != Qt::LeftButton || !dragging_) return;
+    finish(world);
+    dragging_ = false;
+    view_.setOverlay({});
+    document_.finishInteraction();
+}
+
+void CanvasTools::finish(QPointF world) {
+    const bool click = !moved_ && isClick(world);
+    const QPointF d = world - start_;
+    QString error, id;
+    switch (tool_) {
+        case Tool::Select:
+            if (grabbing_) document_.releaseGrab();
+            grabbing_ = false;
+            return;
+        case Tool::Particle: {
+            ParticleDesc p;
+            p.position = point(start_);
+            if (!click) p.velocity = {d.x() * kVelocityPerMetre, d.y() * kVelocityPerMetre};
+            report(document_.addObject(p, &error, &id), error);
+            break;
+        }
+        case Tool::Spring: {
+            const QString target = objectAt(world);
+            if (startObject_.isEmpty() || click || target == startObject_) {
+                emit message(tr("A spring starts on an object: drag from a particle or box."));
+                return;
+            }
+            SpringDesc s;
+            s.a = startObject_.toStdString();
+            if (target.isEmpty()) s.anchor = point(world);
+            else s.b = target.toStdString();
+            // Stiff enough to hold a 1 kg ball against gravity with a visible stretch.
+            s.stiffness = 50.0;
+            s.damping = 0.1;
+            report(document_.addObject(s, &error, &id), error);
+            break;
+        }
+        case Tool::Cloth: {
+            if (click) return;
+            ClothDesc c;
+            c.origin = {std::min(start_.x(), world.x()), std::max(start_.y(), world.y())};
+            c.size = {std::abs(d.x()), std::abs(d.y())};
+            // About 20 cm between nodes, between 4 and 24 nodes a side.
+            const auto nodes = [](double length) { return std::clamp(int(length / 0.2) + 1, 4, 24); };
+            c.resolution = {nodes(c.size[0]), nodes(c.size[1])};
+            report(document_.addObject(c, &error, &id), error);
+            break;
+        }
+        case Tool::Box: {
+            if (click) return;
+            BoxDesc b;
+            b.position = {0.5 * (start_.x() + world.x()), 0.5 * (start_.y() + world.y())};
+            b.size = {std::abs(d.x()), std::abs(d.y())};
+            report(document_.addObject(b, &error, &id), error);
+            break;
+        }
+        case Tool::Plane: {
+            if (click) return;
+            PlaneDesc p;
+            p.point = point(start_);
+            // Solid to the right of the drag: the normal points to its left.
+            p.normal = {-d.y(), d.x()};
+            report(document_.addObject(p, &error, &id), error);
+            break;
+        }
+        case Tool::Pin: {
+            if (!click || startObject_.isEmpty()) return;
+            const ObjectRef ref = findObject(document_.setup(), startObject_.toStdString());
+            const QString key = ref.kind == ObjectKind::Box ? QStringLiteral("static")
+                                                             : QStringLiteral("pinned");
+            const auto current = propertyValue(document_.setup(), startObject_, key);
+            if (!current) {
+                emit message(tr("Only particles can be pinned and boxes made static."));
+                return;
+            }
+            report(document_.setPinned(startObject_, *current == 0.0, &error), error);
+            return;
+        }
+    }
+    if (!id.isEmpty()) document_.setSelection({id});
+}
+
+void CanvasTools::cancel() {
+    if (grabbing_) document_.releaseGrab();
+    grabbing_ = false;
+    dragging_ = false;
+    view_.setOverlay({});
+}
+
+}  // namespace phasebox

@@ -1,0 +1,76 @@
+#pragma once
+// What the mouse does on the canvas, tool by tool. The canvas (ui::SceneView) only reports
+// presses, moves and releases in world coordinates; this turns them into Document edits, one
+// undoable command per gesture (a drag merges into one), with a dashed preview while dragging.
+//
+//   Select   click picks (Shift adds), drag moves the object; while the simulation has run,
+//            dragging a dynamic object pulls it with a mouse spring instead
+//   Particle click drops a particle; a drag sets its launch velocity (1 m/s per metre dragged)
+//   Spring   drag from an object to another object, or to empty space for an anchor
+//   Cloth    drag a rectangle: a cloth pinned along its top edge
+//   Box      drag a rectangle: a box of that size
+//   Plane    drag a line along the surface; the solid side is to the right of the drag
+//   Pin      click a particle to pin or unpin it, a box to make it static or dynamic
+
+#include <QObject>
+#include <QPointF>
+#include <QString>
+
+#include <optional>
+
+namespace phasebox {
+
+class Document;
+namespace ui {
+class SceneView;
+}
+
+class CanvasTools : public QObject {
+    Q_OBJECT
+
+public:
+    enum class Tool { Select, Particle, Spring, Cloth, Box, Plane, Pin };
+
+    CanvasTools(Document& document, ui::SceneView& view, QObject* parent = nullptr);
+
+    Tool tool() const { return tool_; }
+    void setTool(Tool tool);
+    static QString toolName(Tool tool);
+    static QString toolHelp(Tool tool);
+
+    // Launch speed per metre dragged with the particle tool.
+    static constexpr double kVelocityPerMetre = 1.0;
+    // A drag shorter than this many pixels is a click.
+    static constexpr double kClickPixels = 4.0;
+
+signals:
+    void toolChanged(phasebox::CanvasTools::Tool tool);
+    // A line for the status bar: what the tool does, or why an edit was refused.
+    void message(const QString& text);
+
+private:
+    void pressed(QPointF world, Qt::MouseButton button, Qt::KeyboardModifiers modifiers);
+    void moved(QPointF world, Qt::MouseButtons buttons, Qt::KeyboardModifiers modifiers);
+    void released(QPointF world, Qt::MouseButton button, Qt::KeyboardModifiers modifiers);
+    void finish(QPointF world);
+    void cancel();
+    bool isClick(QPointF world) const;
+    void report(bool ok, const QString& error);
+    void showPreview(QPointF world);
+    // The id of the object under a world point, or empty.
+    QString objectAt(QPointF world) const;
+
+    Document& document_;
+    ui::SceneView& view_;
+    Tool tool_ = Tool::Select;
+
+    // The gesture in progress.
+    bool dragging_ = false;
+    QPointF start_;
+    QString startObject_;
+    QPointF grabOffset_;  // the moved object's position minus the press point
+    bool grabbing_ = false;
+    bool moved_ = false;
+};
+
+}  // namespace phasebox

@@ -1,0 +1,114 @@
+#include "app/desktop/DesktopOptions.h"
+
+#include "app/desktop/MainWindow.h"
+#include "physics/core/World.h"
+#include "ui/canvas/SceneView.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QPixmap>
+#include <QTextStream>
+
+#include <cmath>
+
+namespace phasebox {
+
+bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, QString* error) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Phasebox, a 2D physics sandbox for the classroom"));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"),
+                                        QStringLiteral("Save a picture of the window to FILE and exit."),
+                                        QStringLiteral("FILE"));
+    const QCommandLineOption runFor(QStringLiteral("run-for"),
+                                    QStringLiteral("Simulate S seconds before the picture (default 0)."),
+                                    QStringLiteral("S"), QStringLiteral("0"));
+    const QCommandLineOption canvas(QStringLiteral("canvas"),
+                                    QStringLiteral("Canvas backend: auto, raster or opengl."),
+                                    QStringLiteral("BACKEND"), QStringLiteral("auto"));
+    const QCommandLineOption presentation(QStringLiteral("presentation"),
+                                          QStringLiteral("Start in presentation mode (full screen, large type)."));
+    parser.addOptions({screenshot, runFor, canvas, presentation});
+    parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file to open (default: the demo)."));
+    if (!parser.parse(arguments)) {
+        *error = parser.errorText();
+        return false;
+    }
+    if (parser.isSet(QStringLiteral("help")) || parser.isSet(QStringLiteral("version"))) {
+        parser.process(arguments);  // prints and exits
+    }
+    bool ok = false;
+    options.runFor = parser.value(runFor).toDouble(&ok);
+    if (!ok || !std::isfinite(options.runFor) || options.runFor < 0.0 || options.runFor > 1e6) {
+        *error = QStringLiteral("--run-for: expected a number of seconds >= 0, got \"%1\"").arg(parser.value(runFor));
+        return false;
+    }
+    options.screenshot = parser.value(screenshot);
+    options.canvas = parser.value(canvas).toLower();
+    if (!QStringList{"auto", "raster", "opengl"}.contains(options.canvas)) {
+        *error = QStringLiteral("--canvas: expected auto, raster or opengl, got \"%1\"").arg(options.canvas);
+        return false;
+    }
+    options.presentation = parser.isSet(presentation);
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() > 1) {
+        *error = QStringLiteral("expected at most one scene file, got %1").arg(positional.size());
+        return false;
+    }
+    options.scene = positional.isEmpty() ? QString() : positional.first();
+    return true;
+}
+
+int takeScreenshot(MainWindow& window, const DesktopOptions& options, QString* error) {
+    window.show();
+    QApplication::processEvents();
+    int status = 0;
+    if (options.runFor > 0.0 && !window.controller().advance(options.runFor)) status = 1;
+    window.refreshNow();
+    QApplication::processEvents();
+    const QPixmap picture = window.grab();
+    if (picture.isNull() || !picture.save(options.screenshot, "PNG")) {
+        *error = QStringLiteral("could not write %1").arg(options.screenshot);
+        return 2;
+    }
+    return status;
+}
+
+int runDesktop(QApplication& app) {
+    DesktopOptions options;
+    QString error;
+    QTextStream err(stderr);
+    if (!parseDesktopOptions(app.arguments(), options, &error)) {
+        err << "phasebox: error: " << error << "\n";
+        return 2;
+    }
+    MainWindow window;
+    const ui::CanvasBackend backend = options.canvas == QLatin1String("raster")   ? ui::CanvasBackend::Raster
+                                      : options.canvas == QLatin1String("opengl") ? ui::CanvasBackend::OpenGL
+                                                                                  : ui::CanvasBackend::Auto;
+    window.canvas()->setBackend(backend);
+    const QString scene = options.scene.isEmpty() ? kDemoScene : options.scene;
+    const bool headless = !options.screenshot.isEmpty();
+    if (!window.openFile(scene, headless, &error)) {
+        err << "phasebox: error: " << error << "\n";
+        if (headless) return 2;
+    }
+    if (headless) {
+        const int status = takeScreenshot(window, options, &error);
+        if (status == 2) err << "phasebox: error: " << error << "\n";
+        if (status == 1)
+            err << "phasebox: the simulation diverged: "
+                << QString::fromStdString(window.document().world().divergence()
+                                              ? window.document().world().divergence()->message()
+                                              : std::string())
+                << "\n";
+        return status;
+    }
+    if (options.presentation) window.setPresentationMode(true);
+    window.show();
+    return app.exec();
+}
+
+}  // namespace phasebox

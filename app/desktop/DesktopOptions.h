@@ -1,0 +1,34 @@
+#pragma once
+// The desktop app's command line (CONTRACT.md §5) and its screenshot mode, apart from main()
+// so that tests can drive them.
+
+#include <QString>
+
+class QApplication;
+
+namespace phasebox {
+
+class MainWindow;
+
+struct DesktopOptions {
+    QString scene;           // empty: the built-in demo
+    QString screenshot;      // non-empty: save a picture of the window and exit
+    double runFor = 0.0;     // simulated seconds before the picture
+    QString canvas;          // "auto", "raster" or "opengl"
+    bool presentation = false;
+};
+
+inline const QString kDemoScene = QStringLiteral(":/scenes/demo.phasebox.json");
+
+// Parses the arguments; on a usage error returns false with the message in *error.
+bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, QString* error);
+
+// Simulates options.runFor seconds in the window, refreshes every view and saves a picture of
+// the whole window. Returns 0, 1 when the simulation diverged (the picture is still written,
+// showing the restored state and the message), 2 when the picture cannot be written.
+int takeScreenshot(MainWindow& window, const DesktopOptions& options, QString* error);
+
+// The whole app: parse, open the window (or take the screenshot), run the event loop.
+int runDesktop(QApplication& app);
+
+}  // namespace phasebox

@@ -1,0 +1,422 @@
+#include "app/document/Commands.h"
+
+#include "app/document/Document.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace phasebox {
+
+namespace {
+QString joinIssues(const std::vector<SceneIssue>& issues) {
+    QStringList lines;
+    for (const SceneIssue& issue : issues)
+        lines << QString::fromStdString(issue.path + ": " + issue.message);
+    return lines.join(QLatin1Char('\n'));
+}
+
+QString quoted(const std::string& id) {
+    return QLatin1Char('"') + QString::fromStdString(id) + QLatin1Char('"');
+}
+
+// Removes the listed (ascending) indices from v, back to front so the indices stay valid.
+template <typename T>
+void eraseAt(std::vector<T>& v, const std::vector<std::pair<std::size_t, T>>& removed) {
+    for (auto it = removed.rbegin(); it != removed.rend(); ++it)
+        v.erase(v.begin() + static_cast<std::ptrdiff_t>(it->first));
+}
+// Puts them back, front to back: each lands at its original index.
+template <typename T>
+void insertAt(std::vector<T>& v, const std::vector<std::pair<std::size_t, T>>& removed) {
+    for (const auto& [index, object] : removed)
+        v.insert(v.begin() + static_cast<std::ptrdiff_t>(index), object);
+}
+
+// The scene array an object of this type lives in.
+std::vector<ParticleDesc>& arrayOf(SceneDesc& s, const ParticleDesc&) {
+    return s.particles;
+}
+std::vector<BoxDesc>& arrayOf(SceneDesc& s, const BoxDesc&) {
+    return s.boxes;
+}
+std::vector<PlaneDesc>& arrayOf(SceneDesc& s, const PlaneDesc&) {
+    return s.planes;
+}
+std::vector<SpringDesc>& arrayOf(SceneDesc& s, const SpringDesc&) {
+    return s.springs;
+}
+std::vector<ClothDesc>& arrayOf(SceneDesc& s, const ClothDesc&) {
+    return s.cloths;
+}
+
+// Whether a spring end names this body: the object itself or, for a cloth, one of its nodes.
+bool attachedTo(const std::string& end, const std::string& id, bool cloth) {
+    if (end == id) return true;
+    return cloth && end.size() > id.size() + 2 && end.compare(0, id.size(), id) == 0 &&
+           end[id.size()] == '[';
+}
+
+bool sameSimulation(const SimulationDesc& a, const SimulationDesc& b) {
+    return a.integrator == b.integrator && a.dt == b.dt && a.substeps == b.substeps &&
+           a.tolerance == b.tolerance && a.newtonIterations == b.newtonIterations &&
+           a.duration == b.duration && a.solver == b.solver;
+}
+
+// The one field in which two settings differ, or empty when they differ in several (or none).
+QString changedField(const SimulationDesc& a, const SimulationDesc& b) {
+    QStringList fields;
+    if (a.integrator != b.integrator) fields << QStringLiteral("integrator");
+    if (a.dt != b.dt) fields << QStringLiteral("dt");
+    if (a.substeps != b.substeps) fields << QStringLiteral("substeps");
+    if (a.tolerance != b.tolerance) fields << QStringLiteral("tolerance");
+    if (a.newtonIterations != b.newtonIterations) fields << QStringLiteral("newton_iterations");
+    if (a.duration != b.duration) fields << QStringLiteral("duration");
+    if (a.solver != b.solver) fields << QStringLiteral("solver");
+    return fields.size() == 1 ? fields.front() : QString();
+}
+}  // namespace
+
+// ---- DocumentCommand -------------------------------------------------------------------------
+
+DocumentCommand::DocumentCommand(Document& document, const QString& text)
+    : QUndoCommand(text), document_(document), interaction_(document.interaction()) {}
+
+void DocumentCommand::redo() {
+    if (!isValid()) {
+        setObsolete(true);  // QUndoStack::push drops it
+        return;
+    }
+    apply(document_.editableSetup());
+    commit();
+}
+
+void DocumentCommand::undo() {
+    revert(document_.editableSetup());
+    commit();
+}
+
+void DocumentCommand::commit() {
+    rebuildWorld(movedIds());
+}
+void DocumentCommand::rebuildWorld(const QStringList& moved) {
+    document_.setupEdited(moved);
+}
+void DocumentCommand::updateSimulation() {
+    document_.simulationEdited();
+}
+const SceneDesc& DocumentCommand::setup() const {
+    return document_.setup();
+}
+
+void DocumentCommand::validate() {
+    if (!isValid()) return;
+    SceneDesc trial = setup();
+    apply(trial);
+    if (const auto issues = validateScene(trial); !issues.empty()) refuse(joinIssues(issues));
+}
+
+// ---- AddObjectCommand ------------------------------------------------------------------------
+
+AddObjectCommand::AddObjectCommand(Document& document, ObjectDesc object)
+    : DocumentCommand(document, {}), object_(std::move(object)) {
+    std::visit(
+        [&](auto& desc) {
+            if (desc.id.empty()) {
+                static const char* const prefixes[] = {"p", "b", "plane", "s", "cloth"};
+                desc.id = uniqueObjectId(setup(), prefixes[object_.index()]);
+            }
+            id_ = desc.id;
+        },
+        object_);
+    setText(QObject::tr("Add %1 %2").arg(objectKindName(objectKind(object_)), objectId()));
+    validate();
+}
+
+void AddObjectCommand::apply(SceneDesc& scene) const {
+    std::visit([&](const auto& desc) { arrayOf(scene, desc).push_back(desc); }, object_);
+}
+
+void AddObjectCommand::revert(SceneDesc& scene) const {
+    // The stack undoes in reverse order, so the object is the last of its array again.
+    std::visit([&](const auto& desc) { arrayOf(scene, desc).pop_back(); }, object_);
+}
+
+// ---- DeleteObjectsCommand --------------------------------------------------------------------
+
+DeleteObjectsCommand::DeleteObjectsCommand(Document& document, const QStringList& ids)
+    : DocumentCommand(document, {}) {
+    const SceneDesc& scene = setup();
+    std::vector<bool> particle(scene.particles.size()), box(scene.boxes.size()),
+        plane(scene.planes.size()), spring(scene.springs.size()), cloth(scene.cloths.size());
+    std::vector<std::pair<std::string, bool>> bodies;  // deleted bodies (id, is a cloth)
+    QStringList names;
+    for (const QString& qid : ids) {
+        const std::string id = qid.toStdString();
+        const ObjectRef ref = findObject(scene, id);
+        switch (ref.kind) {
+            case ObjectKind::Particle:
+                particle[ref.index] = true;
+                break;
+            case ObjectKind::Box:
+                box[ref.index] = true;
+                break;
+            case ObjectKind::Plane:
+                plane[ref.index] = true;
+                break;
+            case ObjectKind::Spring:
+                spring[ref.index] = true;
+                break;
+            case ObjectKind::Cloth:
+                cloth[ref.index] = true;
+                break;
+            case ObjectKind::None:
+                continue;
+        }
+        const std::string name = objectId(scene, ref);
+        if (!names.contains(QString::fromStdString(name))) names << QString::fromStdString(name);
+        if (ref.kind != ObjectKind::Plane && ref.kind != ObjectKind::Spring)
+            bodies.emplace_back(name, ref.kind == ObjectKind::Cloth);
+    }
+    // A spring cannot outlive a body it is attached to.
+    for (std::size_t i = 0; i < scene.springs.size(); ++i) {
+        const SpringDesc& s = scene.springs[i];
+        for (const auto& [id, isCloth] : bodies)
+            if (attachedTo(s.a, id, isCloth) || (s.b && attachedTo(*s.b, id, isCloth)))
+                spring[i] = true;
+    }
+    auto collect = [](const auto& array, const std::vector<bool>& marked, auto& out) {
+        for (std::size_t i = 0; i < array.size(); ++i)
+            if (marked[i]) out.emplace_back(i, array[i]);
+    };
+    collect(scene.particles, particle, particles_);
+    collect(scene.boxes, box, boxes_);
+    collect(scene.planes, plane, planes_);
+    collect(scene.springs, spring, springs_);
+    collect(scene.cloths, cloth, cloths_);
+
+    if (names.isEmpty())
+        refuse(QObject::tr("nothing to delete: no object has the id %1")
+                   .arg(ids.join(QStringLiteral(", "))));
+    setText(names.size() == 1
+                ? QObject::tr("Delete %1").arg(names.front())
+                : QObject::tr("Delete %n objects", nullptr, static_cast<int>(names.size())));
+    validate();
+}
+
+void DeleteObjectsCommand::apply(SceneDesc& scene) const {
+    eraseAt(scene.particles, particles_);
+    eraseAt(scene.boxes, boxes_);
+    eraseAt(scene.planes, planes_);
+    eraseAt(scene.springs, springs_);
+    eraseAt(scene.cloths, cloths_);
+}
+
+void DeleteObjectsCommand::revert(SceneDesc& scene) const {
+    insertAt(scene.particles, particles_);
+    insertAt(scene.boxes, boxes_);
+    insertAt(scene.planes, planes_);
+    insertAt(scene.springs, springs_);
+    insertAt(scene.cloths, cloths_);
+}
+
+// ---- MoveObjectCommand -----------------------------------------------------------------------
+
+MoveObjectCommand::MoveObjectCommand(Document& document, const QString& id, const Point2& position)
+    : DocumentCommand(document, QObject::tr("Move %1").arg(id)),
+      id_(id.toStdString()),
+      ref_(findObject(setup(), id_)),
+      to_(position) {
+    const SceneDesc& scene = setup();
+    switch (ref_.kind) {
+        case ObjectKind::Particle:
+            from_ = scene.particles[ref_.index].position;
+            break;
+        case ObjectKind::Box:
+            from_ = scene.boxes[ref_.index].position;
+            break;
+        case ObjectKind::Plane:
+            from_ = scene.planes[ref_.index].point;
+            break;
+        case ObjectKind::Cloth:
+            from_ = scene.cloths[ref_.index].origin;
+            break;
+        case ObjectKind::Spring:
+            if (const auto& anchor = scene.springs[ref_.index].anchor)
+                from_ = *anchor;
+            else
+                refuse(
+                    QObject::tr("spring %1 hangs between two bodies; move them instead").arg(id));
+            break;
+        case ObjectKind::None:
+            refuse(QObject::tr("unknown object id %1").arg(quoted(id_)));
+            break;
+    }
+    if (ref_.kind == ObjectKind::Cloth)
+        id_ = scene.cloths[ref_.index].id;  // a node moves its cloth
+    // Only the position changes, so only it needs checking: a full validateScene() at every
+    // mouse move of a drag would cost more than the rebuild.
+    if (!std::isfinite(position[0]) || !std::isfinite(position[1]))
+        refuse(QObject::tr("the position of %1 must be finite").arg(quoted(id_)));
+}
+
+void MoveObjectCommand::place(SceneDesc& scene, const Point2& position) const {
+    switch (ref_.kind) {
+        case ObjectKind::Particle:
+            scene.particles[ref_.index].position = position;
+            break;
+        case ObjectKind::Box:
+            scene.boxes[ref_.index].position = position;
+            break;
+        case ObjectKind::Plane:
+            scene.planes[ref_.index].point = position;
+            break;
+        case ObjectKind::Cloth:
+            scene.cloths[ref_.index].origin = position;
+            break;
+        case ObjectKind::Spring:
+            scene.springs[ref_.index].anchor = position;
+            break;
+        case ObjectKind::None:
+            break;
+    }
+}
+
+void MoveObjectCommand::apply(SceneDesc& scene) const {
+    place(scene, to_);
+}
+void MoveObjectCommand::revert(SceneDesc& scene) const {
+    place(scene, from_);
+}
+
+bool MoveObjectCommand::mergeWith(const QUndoCommand* other) {
+    const auto* next = static_cast<const MoveObjectCommand*>(other);  // same id(): same type
+    if (next->id_ != id_ || !sameInteraction(*next) || !next->isValid()) return false;
+    to_ = next->to_;
+    setObsolete(to_ == from_);  // dragged back to where it was: no step at all
+    return true;
+}
+
+// ---- SetPropertyCommand ----------------------------------------------------------------------
+
+SetPropertyCommand::SetPropertyCommand(Document& document, const QString& id, const QString& key,
+                                       double value)
+    : DocumentCommand(document, {}),
+      objectId_(id),
+      key_(key),
+      ref_(findObject(setup(), id.toStdString())) {
+    if (!ref_.isValid()) {
+        refuse(QObject::tr("unknown object id %1").arg(quoted(id.toStdString())));
+        return;
+    }
+    objectId_ = QString::fromStdString(objectId(setup(), ref_));  // a cloth node names its cloth
+    before_ = objectDesc(setup(), ref_);
+    SceneDesc trial = setup();
+    if (!setPropertyValue(trial, objectId_, key, value)) {
+        refuse(QObject::tr("%1 %2 has no property \"%3\"")
+                   .arg(objectKindName(ref_.kind), objectId_, key));
+        return;
+    }
+    after_ = objectDesc(trial, ref_);
+    moves_ = propertyMovesObject(setup(), objectId_, key);
+    const QString label = [&] {
+        for (const PropertyRow& row : propertiesOf(setup(), objectId_))
+            if (row.key == key) return row.label.toLower();
+        return key;
+    }();
+    setText(QObject::tr("Set %1 of %2").arg(label, objectId_));
+    validate();
+}
+
+void SetPropertyCommand::apply(SceneDesc& scene) const {
+    setObjectDesc(scene, ref_, after_);
+}
+void SetPropertyCommand::revert(SceneDesc& scene) const {
+    setObjectDesc(scene, ref_, before_);
+}
+
+QStringList SetPropertyCommand::movedIds() const {
+    return moves_ ? QStringList{objectId_} : QStringList{};
+}
+
+bool SetPropertyCommand::mergeWith(const QUndoCommand* other) {
+    const auto* next = static_cast<const SetPropertyCommand*>(other);
+    if (next->objectId_ != objectId_ || next->key_ != key_ || !sameInteraction(*next) ||
+        !next->isValid())
+        return false;
+    after_ = next->after_;
+    return true;
+}
+
+// ---- SetPinnedCommand ------------------------------------------------------------------------
+
+SetPinnedCommand::SetPinnedCommand(Document& document, const QString& id, bool pinned)
+    : DocumentCommand(document, {}), ref_(findObject(setup(), id.toStdString())), pinned_(pinned) {
+    if (ref_.kind == ObjectKind::Particle) {
+        before_ = setup().particles[ref_.index].pinned;
+        setText(pinned ? QObject::tr("Pin %1").arg(id) : QObject::tr("Unpin %1").arg(id));
+    } else if (ref_.kind == ObjectKind::Box) {
+        before_ = setup().boxes[ref_.index].isStatic;
+        setText(pinned ? QObject::tr("Make %1 static").arg(id)
+                       : QObject::tr("Make %1 dynamic").arg(id));
+    } else {
+        refuse(ref_.isValid() ? QObject::tr("only particles and boxes can be pinned")
+                              : QObject::tr("unknown object id %1").arg(quoted(id.toStdString())));
+    }
+}
+
+void SetPinnedCommand::set(SceneDesc& scene, bool pinned) const {
+    if (ref_.kind == ObjectKind::Particle)
+        scene.particles[ref_.index].pinned = pinned;
+    else if (ref_.kind == ObjectKind::Box)
+        scene.boxes[ref_.index].isStatic = pinned;
+}
+
+void SetPinnedCommand::apply(SceneDesc& scene) const {
+    set(scene, pinned_);
+}
+void SetPinnedCommand::revert(SceneDesc& scene) const {
+    set(scene, before_);
+}
+
+// ---- SetSimulationCommand --------------------------------------------------------------------
+
+SetSimulationCommand::SetSimulationCommand(Document& document, const SimulationDesc& simulation)
+    : DocumentCommand(document, {}),
+      before_(setup().simulation),
+      after_(simulation),
+      field_(changedField(before_, after_)) {
+    setText(field_.isEmpty() ? QObject::tr("Change simulation settings")
+                             : QObject::tr("Change %1").arg(field_));
+    validate();
+}
+
+bool SetSimulationCommand::mergeWith(const QUndoCommand* other) {
+    const auto* next = static_cast<const SetSimulationCommand*>(other);
+    if (field_.isEmpty() || next->field_ != field_ || !sameInteraction(*next) || !next->isValid())
+        return false;
+    after_ = next->after_;
+    setObsolete(sameSimulation(before_, after_));
+    return true;
+}
+
+// ---- SetEffectCommand ------------------------------------------------------------------------
+
+SetEffectCommand::SetEffectCommand(Document& document, const EffectsDesc& effects,
+                                   const QString& text, const QString& mergeKey)
+    : DocumentCommand(document, text),
+      before_(setup().effects),
+      after_(effects),
+      mergeKey_(mergeKey) {
+    validate();
+}
+
+bool SetEffectCommand::mergeWith(const QUndoCommand* other) {
+    const auto* next = static_cast<const SetEffectCommand*>(other);
+    if (mergeKey_.isEmpty() || next->mergeKey_ != mergeKey_ || !sameInteraction(*next) ||
+        !next->isValid())
+        return false;
+    after_ = next->after_;
+    return true;
+}
+
+}  // namespace phasebox

@@ -1,0 +1,185 @@
+#include "app/sim/Recorder.h"
+
+#include "app/io/NumberFormat.h"
+#include "physics/core/World.h"
+
+#include <QSaveFile>
+#include <QTextStream>
+
+#include <algorithm>
+
+namespace phasebox {
+
+namespace {
+// Keeps elements 0, 2, 4, … of v.
+template <typename T>
+void keepEveryOther(std::vector<T>& v) {
+    std::size_t out = 0;
+    for (std::size_t i = 0; i < v.size(); i += 2) v[out++] = v[i];
+    v.resize(out);
+}
+
+// Writes lines through QSaveFile: a failed export never leaves half a file behind.
+template <typename WriteRows>
+bool writeCsv(const QString& path, QString* error, const QString& header, WriteRows&& rows) {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
+        if (error) *error = QObject::tr("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    QTextStream out(&file);
+    out << header << '\n';
+    rows(out);
+    out.flush();
+    if (out.status() != QTextStream::Ok || !file.commit()) {
+        if (error) *error = QObject::tr("cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+}  // namespace
+
+Recorder::Recorder(QObject* parent) : QObject(parent) {}
+
+void Recorder::clear() {
+    energy_.clear();
+    markers_.clear();
+    phase_.clear();
+    phaseTimes_.clear();
+    haveSettings_ = false;
+    lastTime_ = -1.0;
+    stride_ = 1;
+    calls_ = 0;
+    pending_ = false;
+    emit cleared();
+}
+
+void Recorder::setMaxSamples(std::size_t maxSamples) {
+    maxSamples_ = std::max<std::size_t>(maxSamples, 2);
+    while (energy_.size() >= maxSamples_ || phase_.size() >= maxSamples_) halve();
+}
+
+void Recorder::setPhaseTarget(const QString& objectId, const QString& coordinate) {
+    phaseObject_ = objectId.toStdString();
+    phaseCoordinate_ = coordinate;
+    phaseIndex_ = -1;
+    phase_.clear();
+    phaseTimes_.clear();
+}
+
+QString Recorder::phaseVelocityName() const {
+    if (phaseCoordinate_ == QLatin1String("y")) return QStringLiteral("vy");
+    if (phaseCoordinate_ == QLatin1String("angle")) return QStringLiteral("omega");
+    return QStringLiteral("vx");
+}
+
+void Recorder::record(const World& world) {
+    const double t = world.time();
+    if (t < lastTime_) clear();  // the world was reset: a new run
+    if (t == lastTime_) return;
+    lastTime_ = t;
+    // Every step is checked for a change of method, sampled or not, so a marker is never lost
+    // to the stride.
+    checkSettings(world);
+    if (calls_++ % stride_ != 0) return;
+
+    const EnergyLedger& e = world.energy();
+    energy_.push_back({t, e.kinetic, e.potential, e.workNc, e.drift});
+    ui::PhaseSample sample;
+    if (samplePhase(world, sample)) {
+        phase_.push_back(sample);
+        phaseTimes_.push_back(t);
+    }
+    pending_ = true;
+    if (energy_.size() >= maxSamples_ || phase_.size() >= maxSamples_) halve();
+}
+
+void Recorder::flush() {
+    if (!pending_) return;
+    pending_ = false;
+    emit samplesAdded();
+}
+
+void Recorder::halve() {
+    keepEveryOther(energy_);
+    keepEveryOther(phase_);
+    keepEveryOther(phaseTimes_);
+    stride_ *= 2;
+    // The next sample lands one new stride after the last kept one.
+    calls_ = 1;
+}
+
+void Recorder::checkSettings(const World& world) {
+    const SimulationSettings& s = world.settings();
+    if (haveSettings_ && (s.integrator != lastIntegrator_ || s.dt != lastDt_)) {
+        // The marker is where the new settings began: the start of this step.
+        markers_.push_back({world.time() - s.dt, QStringLiteral("%1, dt %2")
+                                                     .arg(QString::fromStdString(s.integrator))
+                                                     .arg(s.dt, 0, 'g', 4)});
+    }
+    haveSettings_ = true;
+    lastIntegrator_ = s.integrator;
+    lastDt_ = s.dt;
+}
+
+bool Recorder::samplePhase(const World& world, ui::PhaseSample& sample) {
+    if (phaseObject_.empty()) return false;
+    // The world is rebuilt by edits, so the cached index is checked against the id each time
+    // (one string compare per step) and searched again only when it no longer matches.
+    const auto& particles = world.particles();
+    const auto& boxes = world.boxes();
+    const bool cached =
+        phaseIndex_ >= 0 && (phaseIsBox_ ? phaseIndex_ < static_cast<int>(boxes.size()) &&
+                                               boxes[phaseIndex_].id == phaseObject_
+                                         : phaseIndex_ < static_cast<int>(particles.size()) &&
+                                               particles[phaseIndex_].id == phaseObject_);
+    if (!cached) {
+        phaseIndex_ = -1;
+        const auto find = [this](const auto& objects) {
+            for (int i = 0; i < static_cast<int>(objects.size()); ++i)
+                if (objects[i].id == phaseObject_) return i;
+            return -1;
+        };
+        phaseIsBox_ = false;
+        phaseIndex_ = find(particles);
+        if (phaseIndex_ < 0) {
+            phaseIsBox_ = true;
+            phaseIndex_ = find(boxes);
+        }
+        if (phaseIndex_ < 0) return false;
+    }
+    const int i = phaseIndex_;
+    if (phaseCoordinate_ == QLatin1String("angle")) {
+        if (!phaseIsBox_) return false;
+        sample = {world.boxAngle(i), world.boxAngularVelocity(i)};
+        return true;
+    }
+    const int axis = phaseCoordinate_ == QLatin1String("y") ? 1 : 0;
+    const Vec2 x = phaseIsBox_ ? world.boxPosition(i) : world.particlePosition(i);
+    const Vec2 v = phaseIsBox_ ? world.boxVelocity(i) : world.particleVelocity(i);
+    sample = {x[axis], v[axis]};
+    return true;
+}
+
+bool Recorder::writeEnergyCsv(const QString& path, QString* error) const {
+    return writeCsv(path, error, QStringLiteral("t,kinetic,potential,work_nc,drift"),
+                    [&](QTextStream& out) {
+                        for (const ui::EnergySample& s : energy_)
+                            out << formatNumber(s.t) << ',' << formatNumber(s.kinetic) << ','
+                                << formatNumber(s.potential) << ',' << formatNumber(s.workNc) << ','
+                                << formatNumber(s.drift) << '\n';
+                    });
+}
+
+bool Recorder::writePhaseCsv(const QString& path, QString* error) const {
+    const QString id = phaseObject();
+    const QString header =
+        QStringLiteral("t,%1.%2,%1.%3").arg(id, phaseCoordinate_, phaseVelocityName());
+    return writeCsv(path, error, header, [&](QTextStream& out) {
+        for (std::size_t k = 0; k < phase_.size(); ++k)
+            out << formatNumber(phaseTimes_[k]) << ',' << formatNumber(phase_[k].coordinate) << ','
+                << formatNumber(phase_[k].velocity) << '\n';
+    });
+}
+
+}  // namespace phasebox

@@ -1,0 +1,168 @@
+#include "app/sim/SimulationController.h"
+
+#include "app/document/Document.h"
+#include "app/sim/Recorder.h"
+#include "physics/core/World.h"
+#include "physics/diagnostics/StabilityAdvisor.h"
+
+#include <algorithm>
+
+namespace phasebox {
+
+namespace {
+// A longer gap between ticks (a debugger stop, a suspended laptop, a modal dialog) is not owed
+// to the simulation: catching up on it would only burn the next ticks' budgets.
+constexpr double kMaxTickGapSeconds = 0.25;
+// Steps whose clock lands this close below a whole dt still count as whole (rounding).
+constexpr double kDtSlack = 1e-9;
+constexpr qint64 kStatsIntervalNs = 250'000'000;
+constexpr qint64 kRateWindowNs = 1'000'000'000;
+// The weight of the newest step in the moving average of msPerStep().
+constexpr double kAverageWeight = 0.05;
+}  // namespace
+
+SimulationController::SimulationController(Document& document, QObject* parent)
+    : QObject(parent), document_(document) {
+    timer_.setTimerType(Qt::PreciseTimer);
+    timer_.setInterval(kTickMs);
+    connect(&timer_, &QTimer::timeout, this, &SimulationController::tick);
+    // A new scene (load, new, reset) starts paused.
+    connect(&document_, &Document::sceneReset, this, &SimulationController::pause);
+    clock_.start();
+}
+
+void SimulationController::setSpeed(double speed) {
+    speed_ = std::clamp(speed, kMinSpeed, kMaxSpeed);
+}
+
+void SimulationController::play() {
+    if (isRunning()) return;
+    backlog_ = 0.0;
+    recentTicks_.clear();
+    sinceTick_.start();
+    timer_.start();
+    emit runningChanged(true);
+}
+
+void SimulationController::pause() {
+    if (!isRunning()) return;
+    timer_.stop();
+    backlog_ = 0.0;
+    recentTicks_.clear();
+    realTimeFactor_ = 0.0;
+    emit runningChanged(false);
+    emit statsChanged();
+}
+
+void SimulationController::togglePlay() {
+    isRunning() ? pause() : play();
+}
+
+void SimulationController::singleStep() {
+    pause();
+    const bool ok = stepOnce();
+    if (recorder_) recorder_->flush();
+    if (ok) emit stepped();
+}
+
+void SimulationController::reset() {
+    pause();
+    document_.reset();
+}
+
+bool SimulationController::advance(double simSeconds) {
+    const double target = document_.world().time() + simSeconds;
+    bool ok = true, moved = false;
+    while (document_.world().time() + 0.5 * document_.world().settings().dt < target) {
+        if (!stepOnce()) {
+            ok = false;
+            break;
+        }
+        moved = true;
+    }
+    if (recorder_) recorder_->flush();
+    if (moved) emit stepped();
+    return ok;
+}
+
+void SimulationController::tick() {
+    const double wall =
+        std::min(static_cast<double>(sinceTick_.nsecsElapsed()) * 1e-9, kMaxTickGapSeconds);
+    sinceTick_.restart();
+    const double dt = document_.world().settings().dt;
+    backlog_ += wall * speed_;
+
+    QElapsedTimer budget;
+    budget.start();
+    const qint64 budgetNs = static_cast<qint64>(kBudgetMs * 1e6);
+    double simulated = 0.0;
+    bool moved = false;
+    while (backlog_ >= dt * (1.0 - kDtSlack)) {
+        // At least one step per tick, however slow: the clock must move. After that the budget
+        // rules, and what it leaves undone is dropped, not owed (the clock slows instead).
+        if (moved && budget.nsecsElapsed() > budgetNs) {
+            backlog_ = 0.0;
+            break;
+        }
+        if (!stepOnce()) {
+            if (recorder_) recorder_->flush();
+            if (moved) emit stepped();
+            return;
+        }
+        backlog_ -= dt;
+        simulated += dt;
+        moved = true;
+    }
+    if (recorder_) recorder_->flush();
+    updateRealTimeFactor(wall, simulated);
+    if (moved) emit stepped();
+}
+
+bool SimulationController::stepOnce() {
+    World& world = document_.world();
+    QElapsedTimer timer;
+    timer.start();
+    const bool ok = world.step();
+    const double ms = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+    msPerStep_ = msPerStep_ == 0.0 ? ms : (1.0 - kAverageWeight) * msPerStep_ + kAverageWeight * ms;
+    if (!ok) {
+        reportDivergence();
+        return false;
+    }
+    if (recorder_) recorder_->record(world);
+    return true;
+}
+
+void SimulationController::reportDivergence() {
+    pause();
+    World& world = document_.world();
+    QString message = world.divergence()
+                          ? QString::fromStdString(world.divergence()->message())
+                          : tr("the simulation diverged. Try a smaller dt, more sub-steps, or an "
+                               "implicit integrator (implicit_euler).");
+    // The general advice is in the message; the stability advisor can say how small a step
+    // this scene and method need (it reads the stiffest mode from the force Jacobian).
+    const StabilityAdvice advice = adviseStability(world, 500);
+    if (!advice.currentStable && !advice.message.empty())
+        message += QLatin1Char('\n') + QString::fromStdString(advice.message);
+    emit diverged(message);
+}
+
+void SimulationController::updateRealTimeFactor(double wallSeconds, double simSeconds) {
+    const qint64 now = clock_.nsecsElapsed();
+    recentTicks_.push_back({now, wallSeconds, simSeconds});
+    while (!recentTicks_.empty() && recentTicks_.front().endNs < now - kRateWindowNs)
+        recentTicks_.pop_front();
+    double wall = 0.0, sim = 0.0;
+    for (const TickRecord& t : recentTicks_) {
+        wall += t.wallSeconds;
+        sim += t.simSeconds;
+    }
+    realTimeFactor_ = wall > 0.0 ? sim / wall : 0.0;
+    if (now - lastStatsNs_ >= kStatsIntervalNs) {
+        lastStatsNs_ = now;
+        emit statsChanged();
+    }
+}
+
+}  // namespace phasebox

@@ -1,0 +1,97 @@
+#pragma once
+// Drives the document's world in (scaled) real time: fixed-dt steps on a ~60 Hz timer with a
+// frame budget.
+//
+// Each tick adds the wall time since the last tick, times the speed, to a backlog of
+// simulated time and takes as many world steps as the backlog holds, but stops when the
+// tick's wall budget is spent and drops the rest of the backlog. A scene too heavy for real
+// time therefore runs in slow motion (realTimeFactor() < speed) instead of freezing the
+// window: the event loop gets control back every tick. A step is never split or skipped,
+// so the run is the same sequence of dt steps however fast the machine is.
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+#include <deque>
+
+namespace phasebox {
+
+class Document;
+class Recorder;
+
+class SimulationController : public QObject {
+    Q_OBJECT
+
+public:
+    explicit SimulationController(Document& document, QObject* parent = nullptr);
+
+    bool isRunning() const { return timer_.isActive(); }
+    // Simulated seconds per wall second, clamped to [0.25, 4].
+    void setSpeed(double speed);
+    double speed() const { return speed_; }
+    // Simulated time per wall time over the last second (0 while paused).
+    double realTimeFactor() const { return realTimeFactor_; }
+    // Wall milliseconds per world step, a moving average.
+    double msPerStep() const { return msPerStep_; }
+
+    // The recorder is fed after every successful step (and flushed once per tick), so the
+    // plots get every sample, not one per frame. nullptr to stop.
+    void setRecorder(Recorder* recorder) { recorder_ = recorder; }
+
+    // Runs synchronously until the world's clock has advanced by simSeconds (to within half a
+    // step), without the timer or the frame budget: for tests, the command line and
+    // "--run-for". Returns false when the simulation diverged (which is reported as in play).
+    bool advance(double simSeconds);
+
+    static constexpr double kMinSpeed = 0.25;
+    static constexpr double kMaxSpeed = 4.0;
+    static constexpr int kTickMs = 16;         // ~60 Hz
+    static constexpr double kBudgetMs = 12.0;  // leaves the rest of a 16 ms frame for painting
+
+public slots:
+    void play();
+    void pause();
+    void togglePlay();
+    // One world step, paused or not.
+    void singleStep();
+    // Pauses and rebuilds the world from the setup (Document::reset).
+    void reset();
+
+signals:
+    void runningChanged(bool running);
+    // After each tick (or single step, or advance) that moved the clock.
+    void stepped();
+    void statsChanged();
+    // The world diverged and was restored to its last good state; the controller paused.
+    // The message names the time and the object and says what to do about it.
+    void diverged(const QString& message);
+
+private:
+    void tick();
+    // One world step, timed and recorded; false when it diverged (already reported).
+    bool stepOnce();
+    void reportDivergence();
+    void updateRealTimeFactor(double wallSeconds, double simSeconds);
+
+    Document& document_;
+    Recorder* recorder_ = nullptr;
+    QTimer timer_;
+    QElapsedTimer sinceTick_;
+    double speed_ = 1.0;
+    double backlog_ = 0.0;  // simulated seconds owed to the wall clock
+
+    // Statistics: the ticks of the last second (wall, simulated) for the real-time factor.
+    struct TickRecord {
+        qint64 endNs;
+        double wallSeconds, simSeconds;
+    };
+    QElapsedTimer clock_;
+    std::deque<TickRecord> recentTicks_;
+    qint64 lastStatsNs_ = 0;
+    double realTimeFactor_ = 0.0;
+    double msPerStep_ = 0.0;
+};
+
+}  // namespace phasebox

@@ -1,0 +1,288 @@
+// The desktop app as a user drives it, offscreen: tools on the canvas with real mouse events,
+// undo and redo, switching the integrator while running, the plots, files, exports, and the
+// screenshot mode of CONTRACT.md §5.
+
+#include "app/desktop/CanvasTools.h"
+#include "app/desktop/DesktopOptions.h"
+#include "app/desktop/MainWindow.h"
+#include "app/io/SceneIO.h"
+#include "physics/core/World.h"
+#include "ui/canvas/SceneView.h"
+#include "ui/panels/ParametersPanel.h"
+
+#include <QAction>
+#include <QChart>
+#include <QChartView>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFile>
+#include <QImage>
+#include <QLineSeries>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace phasebox;
+
+namespace {
+QByteArray serialized(MainWindow& w) { return SceneIO::serialize(w.document().setup()); }
+
+// A press, a few moves and a release, as a hand would drag.
+void drag(QWidget* widget, QPoint from, QPoint to) {
+    QTest::mousePress(widget, Qt::LeftButton, {}, from);
+    for (int k = 1; k <= 4; ++k) QTest::mouseMove(widget, from + (to - from) * k / 4);
+    QTest::mouseRelease(widget, Qt::LeftButton, {}, to);
+}
+
+QPointF worldAt(MainWindow& w, QPoint pixel) { return w.canvas()->toWorld(QPointF(pixel)); }
+
+int pointsIn(QChartView* view) {
+    int points = 0;
+    for (QAbstractSeries* s : view->chart()->series())
+        if (auto* line = qobject_cast<QLineSeries*>(s)) points += line->count();
+    return points;
+}
+}  // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void windowStartsWithTheDocks() {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.canvas() && !w.canvas()->usingOpenGL());  // offscreen: the raster canvas
+        for (const char* dock : {"parametersDock", "effectsDock", "propertiesDock", "plotsDock", "sceneDock"})
+            QVERIFY2(w.findChild<QDockWidget*>(dock), dock);
+        QVERIFY(w.openFile(kDemoScene, true));
+        QVERIFY(!w.document().world().particles().empty());
+    }
+
+    void toolsAddObjectsWithTheMouse() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QWidget* canvas = w.canvas();
+        const QRect r = canvas->rect();
+        const QPoint c = r.center();
+
+        // A click drops a particle where the mouse is.
+        w.action("toolParticle")->trigger();
+        QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Particle);
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, c);
+        QCOMPARE(w.document().setup().particles.size(), std::size_t(1));
+        const auto& p = w.document().setup().particles[0];
+        const QPointF at = worldAt(w, c);
+        QVERIFY(std::abs(p.position[0] - at.x()) < 1e-9 && std::abs(p.position[1] - at.y()) < 1e-9);
+        QCOMPARE(p.velocity[0], 0.0);
+
+        // A drag launches one: velocity = metres dragged × 1 m/s per metre.
+        const QPoint from = c + QPoint(-200, 0), to = c + QPoint(-100, -50);
+        drag(canvas, from, to);
+        QCOMPARE(w.document().setup().particles.size(), std::size_t(2));
+        const QPointF v = worldAt(w, to) - worldAt(w, from);
+        const auto& launched = w.document().setup().particles[1];
+        QVERIFY(std::abs(launched.velocity[0] - v.x()) < 1e-9);
+        QVERIFY(std::abs(launched.velocity[1] - v.y()) < 1e-9);
+
+        // A spring from the first particle to empty space hangs it from an anchor.
+        w.action("toolSpring")->trigger();
+        drag(canvas, c, c + QPoint(0, -120));
+        QCOMPARE(w.document().setup().springs.size(), std::size_t(1));
+        const SpringDesc& s = w.document().setup().springs[0];
+        QCOMPARE(s.a, w.document().setup().particles[0].id);
+        QVERIFY(s.anchor.has_value() && !s.b.has_value());
+        // A spring between the two particles.
+        drag(canvas, c, from);
+        QCOMPARE(w.document().setup().springs.size(), std::size_t(2));
+        QVERIFY(w.document().setup().springs[1].b.has_value());
+
+        // A box and a cloth from rectangles.
+        w.action("toolBox")->trigger();
+        drag(canvas, c + QPoint(100, 100), c + QPoint(200, 150));
+        QCOMPARE(w.document().setup().boxes.size(), std::size_t(1));
+        const BoxDesc& box = w.document().setup().boxes[0];
+        const QPointF size = worldAt(w, c + QPoint(200, 150)) - worldAt(w, c + QPoint(100, 100));
+        QVERIFY(std::abs(box.size[0] - std::abs(size.x())) < 1e-9);
+        QVERIFY(std::abs(box.size[1] - std::abs(size.y())) < 1e-9);
+        w.action("toolCloth")->trigger();
+        drag(canvas, c + QPoint(-300, -250), c + QPoint(-150, -150));
+        QCOMPARE(w.document().setup().cloths.size(), std::size_t(1));
+        QVERIFY(w.document().world().cloths().size() == 1);
+
+        // Every edit is one undo step; undo all of them and redo all of them.
+        QUndoStack* stack = w.document().undoStack();
+        QCOMPARE(stack->count(), 6);
+        const QByteArray full = serialized(w);
+        for (int k = 0; k < 6; ++k) w.action("undo")->trigger();
+        QVERIFY(w.document().setup().particles.empty() && w.document().setup().cloths.empty());
+        for (int k = 0; k < 6; ++k) w.action("redo")->trigger();
+        QCOMPARE(serialized(w), full);
+    }
+
+    void draggingAnObjectIsOneUndoStep() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QWidget* canvas = w.canvas();
+        const QPoint c = canvas->rect().center();
+        w.action("toolParticle")->trigger();
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, c);
+        w.action("toolSelect")->trigger();
+        const int before = w.document().undoStack()->count();
+        drag(canvas, c, c + QPoint(80, 40));
+        QCOMPARE(w.document().undoStack()->count(), before + 1);
+        const QPointF expected = worldAt(w, c + QPoint(80, 40));
+        const auto& p = w.document().setup().particles[0];
+        QVERIFY(std::abs(p.position[0] - expected.x()) < 1e-9);
+        QCOMPARE(w.document().selection(), QStringList{QString::fromStdString(p.id)});
+    }
+
+    void switchingIntegratorWhileRunningKeepsTheState() {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.openFile(kDemoScene, true));
+        w.controller().play();
+        QVERIFY(w.controller().advance(0.5));
+        const Eigen::VectorXd q = w.document().world().positions();
+        const Eigen::VectorXd u = w.document().world().velocities();
+        const double t = w.document().world().time();
+        auto* combo = w.parametersPanel()->findChild<QComboBox*>();
+        QVERIFY(combo);
+        const int rk4 = combo->findData(QStringLiteral("rk4"));
+        QVERIFY(rk4 >= 0);
+        combo->setCurrentIndex(rk4);
+        QCOMPARE(QString::fromStdString(w.document().world().settings().integrator), QStringLiteral("rk4"));
+        QVERIFY(w.document().world().positions() == q);
+        QVERIFY(w.document().world().velocities() == u);
+        QCOMPARE(w.document().world().time(), t);
+        QVERIFY(w.controller().advance(0.5));
+        w.controller().pause();
+        // The energy plot has the samples and a marker where the integrator changed.
+        w.refreshNow();
+        QVERIFY(w.recorder().energySamples().size() >= 59);
+        QVERIFY(pointsIn(w.plotsPanel()->energyView()) > 0);
+        QCOMPARE(w.recorder().markers().empty(), false);
+        QVERIFY(w.recorder().markers().back().label.contains(QStringLiteral("rk4")));
+    }
+
+    void selectingAnObjectPlotsItsPhaseSpace() {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.openFile(kDemoScene, true));
+        const QString id = QString::fromStdString(w.document().setup().particles[0].id);
+        w.document().setSelection({id});
+        QVERIFY(w.controller().advance(1.0));
+        w.refreshNow();
+        QCOMPARE(w.recorder().phaseObject(), id);
+        QVERIFY(w.recorder().phaseSamples().size() >= 59);
+        QVERIFY(pointsIn(w.plotsPanel()->phaseView()) > 0);
+    }
+
+    void saveAndOpenRoundTrip() {
+        QTemporaryDir dir;
+        MainWindow w;
+        QVERIFY(w.openFile(kDemoScene, true));
+        const QByteArray scene = serialized(w);
+        const QString path = dir.filePath("copy.phasebox.json");
+        QString error;
+        QVERIFY2(w.saveFile(path, &error), qPrintable(error));
+        QVERIFY(!w.document().isModified());
+        w.document().newScene();
+        QVERIFY(serialized(w) != scene);
+        QVERIFY(w.openFile(path, true));
+        QCOMPARE(serialized(w), scene);
+        QCOMPARE(w.document().filePath(), path);
+    }
+
+    void aBadFileLeavesTheOpenSceneUntouched() {
+        QTemporaryDir dir;
+        MainWindow w;
+        QVERIFY(w.openFile(kDemoScene, true));
+        const QByteArray before = serialized(w);
+        const QString bad = dir.filePath("bad.phasebox.json");
+        QFile f(bad);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"format": "phasebox-scene", "version": 1, "particles": [{"position": [0, 0], "mass": -1}]})");
+        f.close();
+        QString error;
+        QVERIFY(!w.openFile(bad, true, &error));
+        QVERIFY2(error.contains("particles[0].mass"), qPrintable(error));
+        QCOMPARE(serialized(w), before);
+        QCOMPARE(w.document().filePath(), kDemoScene);
+    }
+
+    void exportsWriteValidFiles() {
+        QTemporaryDir dir;
+        MainWindow w;
+        w.show();
+        QVERIFY(w.openFile(kDemoScene, true));
+        w.document().setSelection({QString::fromStdString(w.document().setup().particles[0].id)});
+        QVERIFY(w.controller().advance(1.0));
+        QString error;
+        for (auto plot : {ui::PlotsPanel::Plot::Energy, ui::PlotsPanel::Plot::Phase}) {
+            const QString base = dir.filePath(plot == ui::PlotsPanel::Plot::Energy ? "energy" : "phase");
+            QVERIFY2(w.exportPlot(plot, base + ".png", &error), qPrintable(error));
+            QImage image(base + ".png");
+            QVERIFY(!image.isNull() && image.width() >= 800);
+            QVERIFY2(w.exportPlot(plot, base + ".svg", &error), qPrintable(error));
+            QFile svg(base + ".svg");
+            QVERIFY(svg.open(QIODevice::ReadOnly));
+            QVERIFY(svg.readAll().contains("<svg"));
+            QVERIFY2(w.exportPlot(plot, base + ".csv", &error), qPrintable(error));
+            QFile csv(base + ".csv");
+            QVERIFY(csv.open(QIODevice::ReadOnly));
+            const QList<QByteArray> lines = csv.readAll().split('\n');
+            QVERIFY(lines.size() > 60);
+            if (plot == ui::PlotsPanel::Plot::Energy) QCOMPARE(lines[0], QByteArray("t,kinetic,potential,work_nc,drift"));
+            else QVERIFY(lines[0].startsWith("t,"));
+            QCOMPARE(lines[1].count(','), lines[0].count(','));
+        }
+        QVERIFY2(w.exportCanvas(dir.filePath("canvas.png"), &error), qPrintable(error));
+        QVERIFY(!QImage(dir.filePath("canvas.png")).isNull());
+    }
+
+    void screenshotModeWritesAPicture() {
+        QTemporaryDir dir;
+        const QString png = dir.filePath("shot.png");
+        QProcess app;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("QT_QPA_PLATFORM", "offscreen");
+        app.setProcessEnvironment(env);
+        app.start(QStringLiteral(PHASEBOX_DESKTOP),
+                  {"--screenshot", png, "--run-for", "1",
+                   QStringLiteral(PHASEBOX_SOURCE_DIR "/resources/scenes/box-pyramid.phasebox.json")});
+        QVERIFY(app.waitForFinished(60000));
+        QCOMPARE(app.exitCode(), 0);
+        const QImage image(png);
+        QVERIFY(!image.isNull());
+        QVERIFY(image.width() >= 800 && image.height() >= 500);
+        // A bad scene: exit 2 with the loader's message, no picture.
+        app.start(QStringLiteral(PHASEBOX_DESKTOP), {"--screenshot", dir.filePath("none.png"), "/no/such.json"});
+        QVERIFY(app.waitForFinished(60000));
+        QCOMPARE(app.exitCode(), 2);
+        QVERIFY(app.readAllStandardError().contains("phasebox: error:"));
+        QVERIFY(!QFile::exists(dir.filePath("none.png")));
+    }
+
+    void divergenceIsReportedAndTheStateStaysFinite() {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.openFile(QStringLiteral(":/scenes/stiff-spring-blowup.phasebox.json"), true));
+        SimulationDesc s = w.document().setup().simulation;
+        s.integrator = "symplectic_euler";
+        QVERIFY(w.document().applySimulationSettings(s));
+        QVERIFY(!w.controller().advance(2.0));
+        QVERIFY(!w.controller().isRunning());
+        const World& world = w.document().world();
+        QVERIFY(world.divergence().has_value());
+        QVERIFY(world.positions().allFinite() && world.velocities().allFinite());
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"

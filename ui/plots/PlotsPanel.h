@@ -1,0 +1,65 @@
+#pragma once
+// The live plots: energy against time and the phase space of one coordinate, stacked in a
+// splitter, with Pause, Clear and Export buttons. The charts are the ones of Charts.h, so a
+// plot on screen is the plot `phasebox-cli run --plot-energy` writes.
+//
+// The panel only shows data and emits requests; the app feeds it (at a few frames per second:
+// rebuilding a chart of a few thousand decimated points costs a few milliseconds) and does the
+// exporting.
+
+#include "ui/plots/Charts.h"
+
+#include <QWidget>
+
+#include <span>
+
+QT_BEGIN_NAMESPACE
+class QChartView;
+class QLabel;
+class QToolButton;
+QT_END_NAMESPACE
+
+namespace phasebox::ui {
+
+class PlotsPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    enum class Plot { Energy, Phase };
+
+    explicit PlotsPanel(QWidget* parent = nullptr);
+
+    // Replaces what the energy plot shows (ignored while paused).
+    void setEnergy(std::span<const EnergySample> samples, std::span<const PlotMarker> markers,
+                   const QString& title);
+    // Replaces the phase plot; an empty coordinate name shows how to choose an object.
+    void setPhase(std::span<const PhaseSample> samples, const QString& coordinateName,
+                  const QString& velocityName, const QString& title);
+
+    bool isPaused() const { return paused_; }
+    void setPaused(bool paused);
+    // Larger fonts and lines for presentation mode.
+    void setPresentation(bool on);
+
+    QChartView* energyView() const { return energyView_; }
+    QChartView* phaseView() const { return phaseView_; }
+
+signals:
+    void clearRequested();
+    void pausedChanged(bool paused);
+    // format: "png", "svg" or "csv".
+    void exportRequested(phasebox::ui::PlotsPanel::Plot plot, const QString& format);
+
+private:
+    QToolButton* exportButton(Plot plot, const QString& text);
+    void styleChart(QChartView* view);
+
+    QChartView* energyView_ = nullptr;
+    QChartView* phaseView_ = nullptr;
+    QLabel* phaseHint_ = nullptr;
+    QToolButton* pauseButton_ = nullptr;
+    bool paused_ = false;
+    bool presentation_ = false;
+};
+
+}  // namespace phasebox::ui
