@@ -3,6 +3,7 @@
 #include "app/document/Document.h"
 #include "app/document/PropertyTable.h"
 #include "physics/core/World.h"
+#include "physics/effects/MouseSpringEffect.h"
 #include "ui/canvas/SceneView.h"
 
 #include <QLineF>
@@ -148,7 +149,7 @@ void CanvasTools::moved(QPointF world, Qt::MouseButtons buttons, Qt::KeyboardMod
     if (tool_ == Tool::Select) {
         if (grabbing_) {
             document_.moveGrab(point(world));
-            view_.setOverlay({ui::ToolOverlay::Line, start_, world, {}});
+            refreshGrabOverlay();
         } else if (!startObject_.isEmpty()) {
             QString error;
             report(document_.moveObject(startObject_, point(world + grabOffset_), &error), error);
@@ -156,6 +157,15 @@ void CanvasTools::moved(QPointF world, Qt::MouseButtons buttons, Qt::KeyboardMod
         return;
     }
     showPreview(world);
+}
+
+void CanvasTools::refreshGrabOverlay() {
+    const MouseSpringEffect* spring = document_.mouseSpring();
+    if (!grabbing_ || !spring || !spring->isAttached()) return;
+    const Vec2 from = spring->grabbedPoint(document_.world().positions());
+    const Vec2 to = spring->target();
+    view_.setOverlay({ui::ToolOverlay::Line, QPointF(from.x(), from.y()), QPointF(to.x(), to.y()),
+                      tr("pulling %1").arg(startObject_)});
 }
 
 void CanvasTools::showPreview(QPointF world) {

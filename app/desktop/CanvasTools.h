@@ -37,6 +37,9 @@ public:
     void setTool(Tool tool);
     static QString toolName(Tool tool);
     static QString toolHelp(Tool tool);
+    // While an object is pulled, the rubber band follows the object as it moves: call after
+    // every step.
+    void refreshGrabOverlay();
 
     // Launch speed per metre dragged with the particle tool.
     static constexpr double kVelocityPerMetre = 1.0;

@@ -452,6 +452,7 @@ void MainWindow::refreshNow() {
 }
 
 void MainWindow::updateCanvas() {
+    tools_->refreshGrabOverlay();
     canvas_->setHudText(tr("t = %1 s   %2, dt %3 s")
                             .arg(document_.world().time(), 0, 'f', 2)
                             .arg(QString::fromStdString(document_.setup().simulation.integrator))

@@ -142,6 +142,36 @@ private slots:
         QCOMPARE(w.document().selection(), QStringList{QString::fromStdString(p.id)});
     }
 
+    // While running, dragging a dynamic object pulls it with a mouse spring: it follows the
+    // mouse, and letting go releases it.
+    void grabbingPullsAnObjectWhileRunning() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(w.openFile(kDemoScene, true));
+        QVERIFY(w.controller().advance(0.2));
+        const World& world = w.document().world();
+        const QPoint ball = w.canvas()->toWidget(QPointF(world.particlePosition(0).x(),
+                                                         world.particlePosition(0).y())).toPoint();
+        const QPoint target = ball + QPoint(150, -100);
+        QWidget* canvas = w.canvas();
+        QTest::mousePress(canvas, Qt::LeftButton, {}, ball);
+        QTest::mouseMove(canvas, ball + QPoint(75, -50));
+        QTest::mouseMove(canvas, target);
+        QVERIFY(w.document().isGrabbing());
+        QVERIFY(w.controller().advance(3.0));
+        const QPointF goal = worldAt(w, target);
+        const Vec2 p = w.document().world().particlePosition(0);
+        // The spring is stiff against the ball's own spring and gravity: it ends near the mouse.
+        QVERIFY2((p - Vec2(goal.x(), goal.y())).norm() < 0.25,
+                 qPrintable(QString("ball at (%1, %2), mouse at (%3, %4)")
+                                .arg(p.x()).arg(p.y()).arg(goal.x()).arg(goal.y())));
+        QTest::mouseRelease(canvas, Qt::LeftButton, {}, target);
+        QVERIFY(!w.document().isGrabbing());
+        // Pulling is not an edit of the setup.
+        QCOMPARE(w.document().undoStack()->count(), 0);
+    }
+
     void switchingIntegratorWhileRunningKeepsTheState() {
         MainWindow w;
         w.show();
