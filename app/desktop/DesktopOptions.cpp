@@ -30,7 +30,10 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
                                     QStringLiteral("BACKEND"), QStringLiteral("auto"));
     const QCommandLineOption presentation(QStringLiteral("presentation"),
                                           QStringLiteral("Start in presentation mode (full screen, large type)."));
-    parser.addOptions({screenshot, runFor, canvas, presentation});
+    const QCommandLineOption select(QStringLiteral("select"),
+                                    QStringLiteral("Select the object ID at start (the phase plot follows it)."),
+                                    QStringLiteral("ID"));
+    parser.addOptions({screenshot, runFor, canvas, presentation, select});
     parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file to open (default: the demo)."));
     if (!parser.parse(arguments)) {
         *error = parser.errorText();
@@ -52,6 +55,7 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
         return false;
     }
     options.presentation = parser.isSet(presentation);
+    options.select = parser.value(select);
     const QStringList positional = parser.positionalArguments();
     if (positional.size() > 1) {
         *error = QStringLiteral("expected at most one scene file, got %1").arg(positional.size());
@@ -95,7 +99,9 @@ int runDesktop(QApplication& app) {
         err << "phasebox: error: " << error << "\n";
         if (headless) return 2;
     }
+    if (!options.select.isEmpty()) window.document().setSelection({options.select});
     if (headless) {
+        if (options.presentation) window.setPresentationMode(true);
         const int status = takeScreenshot(window, options, &error);
         if (status == 2) err << "phasebox: error: " << error << "\n";
         if (status == 1)

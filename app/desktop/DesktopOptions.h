@@ -16,6 +16,7 @@ struct DesktopOptions {
     double runFor = 0.0;     // simulated seconds before the picture
     QString canvas;          // "auto", "raster" or "opengl"
     bool presentation = false;
+    QString select;          // an object to select at start (its phase space is plotted)
 };
 
 inline const QString kDemoScene = QStringLiteral(":/scenes/demo.phasebox.json");

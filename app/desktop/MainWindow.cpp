@@ -411,6 +411,7 @@ void MainWindow::onSelectionChanged() {
     for (const QString& id : selection) options.selectedIds.insert(id.toStdString());
     canvas_->setRenderOptions(options);
     updateProperties(true);
+    if (properties_->hasObject()) findChild<QDockWidget*>(QStringLiteral("propertiesDock"))->raise();
     // The phase plot follows the first selected particle or box.
     const QString first = selection.isEmpty() ? QString() : selection.first();
     const ObjectRef ref = findObject(document_.setup(), first.toStdString());
