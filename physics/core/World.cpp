@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -758,6 +759,42 @@ bool World::checkEnergy(const StateSummary* precomputed) {
     d.restoredTime = time_;
     divergence_ = d;
     return false;
+}
+
+double World::estimateLocalError() {
+    ensureLayout();
+    const int n = layout_.dimension();
+    if (n == 0) return 0.0;
+    const IntegratorInfo& info = integrator_->info();
+    if (!errorIntegrator_ || errorIntegrator_->info().name != info.name) {
+        errorIntegrator_ = makeIntegrator(info.name);
+        errorIntegrator_->reset(n);
+    }
+    for (int k = 0; k < 3; ++k) {
+        if (errorQ_[k].size() != n) {
+            errorQ_[k].resize(n);
+            errorU_[k].resize(n);
+            errorIntegrator_->reset(n);
+        }
+    }
+    errorIntegrator_->setSettings(integrator_->settings());
+    // The estimate is not part of the run: its force evaluations and time are not booked.
+    const long long evaluations = forceEvaluations_;
+    errorSavedSeconds_ = effectSeconds_;
+    const double h = settings_.dt / settings_.substeps;
+    const Vec& q = q_[current_];
+    const Vec& u = u_[current_];
+    double work = 0.0;
+    bool ok = errorIntegrator_->step(*this, time_, h, q, u, errorQ_[0], errorU_[0], work);
+    ok = ok && errorIntegrator_->step(*this, time_, 0.5 * h, q, u, errorQ_[1], errorU_[1], work);
+    ok = ok && errorIntegrator_->step(*this, time_ + 0.5 * h, 0.5 * h, errorQ_[1], errorU_[1],
+                                      errorQ_[2], errorU_[2], work);
+    forceEvaluations_ = evaluations;
+    effectSeconds_ = errorSavedSeconds_;
+    if (!ok) return std::numeric_limits<double>::infinity();
+    const double difference = (errorQ_[0] - errorQ_[2]).lpNorm<Eigen::Infinity>();
+    const double p = std::max(1, info.order);
+    return difference / (1.0 - std::pow(2.0, -p));
 }
 
 void World::resetEnergyBaseline() {

@@ -191,6 +191,14 @@ public:
     long long forceEvaluations() const { return forceEvaluations_; }
 
     // ---- diagnostics ------------------------------------------------------------------
+    // Step doubling at the current state: one sub-step of h = dt/substeps against two of h/2
+    // with the current method, smooth forces only (contacts are events, not a smooth error).
+    // Returns the estimated local error of one sub-step, max over position coordinates (m,
+    // or rad for a box angle): the difference of the two answers divided by (1 − 2^−p) for a
+    // method of order p. The world, its clock, ledger, counters and profile are untouched, and
+    // a separate integrator instance keeps the run's own (its adaptive step, its solver's warm
+    // start) as it was, so estimating never changes the simulation. Costs about three steps.
+    double estimateLocalError();
     const EnergyLedger& energy() const { return ledger_; }
     // Makes the current state the energy baseline (drift 0, work_nc 0).
     void resetEnergyBaseline();
@@ -288,6 +296,10 @@ private:
 
     SimulationSettings settings_;
     std::unique_ptr<Integrator> integrator_;
+    // For estimateLocalError(): its own instance of the method and scratch state.
+    std::unique_ptr<Integrator> errorIntegrator_;
+    Vec errorQ_[3], errorU_[3];
+    std::vector<double> errorSavedSeconds_;
 
     StateLayout layout_;
     bool layoutDirty_ = true;

@@ -1,0 +1,97 @@
+// The live error estimate (World::estimateLocalError, step doubling at the current state)
+// against the true local error of one step, which the harmonic oscillator gives in closed
+// form; and the guarantee that estimating never changes the run.
+
+#include "PhysicsTestSupport.h"
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace phasebox;
+using namespace phasebox::testing;
+
+namespace {
+constexpr const char* kFixedStep[] = {"explicit_euler", "symplectic_euler", "midpoint", "heun",
+                                      "rk4", "velocity_verlet", "implicit_euler", "implicit_midpoint"};
+}
+
+class TestErrorEstimate : public QObject {
+    Q_OBJECT
+
+private slots:
+    // Explicit Euler on x'' = −x from (1, 0): one step of h lands at x = 1 against cos h, a
+    // local error h²/2 + O(h⁴); two half steps land at 1 − h²/4, so the doubling estimate
+    // (1 − (1 − h²/4)) / (1 − 1/2) is h²/2 exactly.
+    void explicitEulerEstimateIsExact() {
+        const double h = 0.01;
+        auto world = build(oscillatorScene("explicit_euler", h, {1.0, 0.0}, {0.0, 0.0}));
+        // To round-off: the difference 1 − (1 − h²/4) cancels all but 4 of 16 digits.
+        QVERIFY(std::abs(world->estimateLocalError() - h * h / 2.0) <= 1e-9 * h * h);
+    }
+
+    // For every fixed-step method, the estimate is the true local error to leading order: one
+    // step from a generic state compared with the exact solution over h.
+    void estimateMatchesTheTrueLocalError_data() {
+        QTest::addColumn<QString>("integrator");
+        for (const char* name : kFixedStep) QTest::newRow(name) << QString(name);
+    }
+    void estimateMatchesTheTrueLocalError() {
+        QFETCH(QString, integrator);
+        const double h = 0.02;
+        const Eigen::Vector2d x0(0.8, -0.3), v0(0.4, 0.9);
+        auto world = build(oscillatorScene(integrator.toStdString(), h, x0, v0));
+        const double estimate = world->estimateLocalError();
+        QVERIFY(world->step());
+        // Exact: x(h) = x0·cos h + v0·sin h for ω = 1.
+        const Eigen::Vector2d exact = x0 * std::cos(h) + v0 * std::sin(h);
+        const Eigen::Vector2d got(world->positions()[0], world->positions()[1]);
+        const double truth = (got - exact).lpNorm<Eigen::Infinity>();
+        // Leading order only: the next term is a factor h (or h² for symmetric methods) smaller.
+        QVERIFY2(estimate > 0.5 * truth && estimate < 2.0 * truth,
+                 qPrintable(QString("%1: estimate %2, true local error %3").arg(integrator).arg(estimate).arg(truth)));
+    }
+
+    // Estimating after every step leaves the run bit for bit as it was: the clock, the state,
+    // the ledger and the force-evaluation count — for the adaptive and implicit methods too,
+    // whose integrators keep state between steps.
+    void estimatingNeverChangesTheRun_data() {
+        QTest::addColumn<QString>("integrator");
+        for (const char* name : kFixedStep) QTest::newRow(name) << QString(name);
+        QTest::newRow("rk45") << QStringLiteral("rk45");
+        QTest::newRow("adaptive_euler") << QStringLiteral("adaptive_euler");
+    }
+    void estimatingNeverChangesTheRun() {
+        QFETCH(QString, integrator);
+        const SceneDesc scene = keplerScene(integrator.toStdString(), 0.01, 0.5);
+        auto plain = build(scene);
+        auto watched = build(scene);
+        for (int k = 0; k < 200; ++k) {
+            QVERIFY(plain->step());
+            QVERIFY(watched->step());
+            QVERIFY(watched->estimateLocalError() >= 0.0);
+        }
+        QVERIFY(plain->positions() == watched->positions());
+        QVERIFY(plain->velocities() == watched->velocities());
+        QCOMPARE(plain->time(), watched->time());
+        QCOMPARE(plain->forceEvaluations(), watched->forceEvaluations());
+        QCOMPARE(plain->energy().drift, watched->energy().drift);
+    }
+
+    // The estimate grows as the step grows, by the method's order plus one.
+    void estimateScalesWithTheOrder() {
+        for (const char* name : {"explicit_euler", "midpoint", "rk4"}) {
+            const double h = 0.04;
+            auto coarse = build(oscillatorScene(name, h, {0.8, -0.3}, {0.4, 0.9}));
+            auto fine = build(oscillatorScene(name, h / 2, {0.8, -0.3}, {0.4, 0.9}));
+            const double ratio = coarse->estimateLocalError() / fine->estimateLocalError();
+            const int order = coarse->integrator().info().order;
+            const double expected = std::pow(2.0, order + 1);
+            QVERIFY2(std::abs(std::log2(ratio) - std::log2(expected)) < 0.2,
+                     qPrintable(QString("%1: ratio %2, expected %3").arg(name).arg(ratio).arg(expected)));
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestErrorEstimate)
+#include "tst_error_estimate.moc"
