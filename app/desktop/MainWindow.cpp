@@ -61,7 +61,11 @@ MainWindow::MainWindow(QWidget* parent)
     statusMessage_ = new QLabel(this);
     statusMessage_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(statusMessage_, 1);
-    for (QLabel* label : {statusTime_, statusSpeed_, statusCost_}) statusBar()->addPermanentWidget(label);
+    statusError_ = new QLabel(this);
+    statusError_->setToolTip(tr("Step doubling at the current state: the error one step of this "
+                                "method makes now. Raise dt and watch it grow."));
+    for (QLabel* label : {statusError_, statusTime_, statusSpeed_, statusCost_})
+        statusBar()->addPermanentWidget(label);
     connect(tools_, &CanvasTools::message, statusMessage_, &QLabel::setText);
     connect(tools_, &CanvasTools::toolChanged, this, [this](CanvasTools::Tool tool) {
         const QList<QAction*> actions = toolGroup_->actions();
@@ -151,6 +155,10 @@ void MainWindow::createActions() {
     option("velocityArrows", tr("&Velocity Arrows"), QKeySequence(Qt::Key_V), &ui::RenderOptions::velocityArrows);
     option("labels", tr("Object &Labels"), QKeySequence(Qt::Key_L), &ui::RenderOptions::labels);
     option("grid", tr("Metre &Grid"), QKeySequence(Qt::Key_G), &ui::RenderOptions::grid);
+    QAction* estimate = make("errorEstimate", tr("Live &Error Estimate"), QKeySequence(Qt::Key_E),
+                             [this](bool on) { controller_.setEstimateErrors(on); updatePlots(); });
+    estimate->setCheckable(true);
+    estimate->setChecked(true);
 
     toolGroup_ = new QActionGroup(this);
     const struct {
@@ -198,7 +206,8 @@ void MainWindow::createMenus() {
     QMenu* exports = file->addMenu(tr("&Export"));
     exports->addAction(action("exportCanvas"));
     for (const auto& [plot, name] : {std::pair{ui::PlotsPanel::Plot::Energy, tr("Energy Plot")},
-                                     std::pair{ui::PlotsPanel::Plot::Phase, tr("Phase Plot")}})
+                                     std::pair{ui::PlotsPanel::Plot::Phase, tr("Phase Plot")},
+                                     std::pair{ui::PlotsPanel::Plot::Error, tr("Error Plot")}})
         for (const QString& format : {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("csv")})
             exports->addAction(tr("%1 as %2…").arg(name, format.toUpper()), this,
                                [this, plot = plot, format] { exportPlotInteractively(plot, format); });
@@ -224,7 +233,7 @@ void MainWindow::createMenus() {
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : docks_) viewMenu_->addAction(dock->toggleViewAction());
     viewMenu_->addSeparator();
-    for (const char* name : {"fit", "trails", "velocityArrows", "labels", "grid", "presentation"})
+    for (const char* name : {"fit", "trails", "velocityArrows", "labels", "grid", "errorEstimate", "presentation"})
         viewMenu_->addAction(action(name));
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -339,6 +348,19 @@ void MainWindow::createDocks() {
     connect(browser_, &ui::SceneBrowser::deleteRequested, action("delete"), &QAction::trigger);
 
     connect(plots_, &ui::PlotsPanel::clearRequested, &recorder_, &Recorder::clear);
+    connect(plots_, &ui::PlotsPanel::phaseCoordinateRequested, this, [this](const QString& coordinate) {
+        const QString object = recorder_.phaseObject();
+        const ObjectRef ref = findObject(document_.setup(), object.toStdString());
+        if (object.isEmpty() || (coordinate == QLatin1String("angle") && ref.kind != ObjectKind::Box)) {
+            statusMessage_->setText(object.isEmpty() ? tr("Click an object first.")
+                                                     : tr("Only boxes have an angle."));
+            plots_->setPhaseCoordinate(recorder_.phaseCoordinate());
+            return;
+        }
+        recorder_.setPhaseTarget(object, coordinate);
+        recorder_.record(document_.world());
+        updatePlots();
+    });
     connect(plots_, &ui::PlotsPanel::exportRequested, this, &MainWindow::exportPlotInteractively);
     connect(plots_, &ui::PlotsPanel::pausedChanged, this, [this](bool paused) {
         if (!paused) updatePlots();
@@ -417,15 +439,29 @@ void MainWindow::onSelectionChanged() {
     const ObjectRef ref = findObject(document_.setup(), first.toStdString());
     const bool isNode = first.contains(QLatin1Char('['));
     if (ref.kind == ObjectKind::Particle || ref.kind == ObjectKind::Box || isNode) {
-        const QString coordinate =
-            ref.kind == ObjectKind::Box && recorder_.phaseCoordinate() == QLatin1String("angle")
-                ? QStringLiteral("angle")
-                : (recorder_.phaseCoordinate() == QLatin1String("angle") ? QStringLiteral("x")
-                                                                          : recorder_.phaseCoordinate());
+        const QString coordinate = defaultPhaseCoordinate(first);
         recorder_.setPhaseTarget(first, coordinate);
+        plots_->setPhaseCoordinate(coordinate);
         recorder_.record(document_.world());
     }
     updatePlots();
+}
+
+QString MainWindow::defaultPhaseCoordinate(const QString& id) const {
+    // The coordinate that moves: the larger live velocity component, or at rest the direction
+    // gravity will move it.
+    const World& w = document_.world();
+    const std::string name = id.toStdString();
+    Vec2 v = Vec2::Zero();
+    for (std::size_t i = 0; i < w.particles().size(); ++i)
+        if (w.particles()[i].id == name) v = w.particleVelocity(static_cast<int>(i));
+    for (std::size_t i = 0; i < w.boxes().size(); ++i)
+        if (w.boxes()[i].id == name) v = w.boxVelocity(static_cast<int>(i));
+    if (v.squaredNorm() == 0.0) {
+        const auto& gravity = document_.setup().effects.gravity;
+        if (gravity) v = Vec2(gravity->g[0], gravity->g[1]);
+    }
+    return std::abs(v.y()) > std::abs(v.x()) ? QStringLiteral("y") : QStringLiteral("x");
 }
 
 void MainWindow::onStepped() {
@@ -468,6 +504,11 @@ void MainWindow::updatePlots() {
                       tr("Energy (%1, dt %2 s)")
                           .arg(QString::fromStdString(s.integrator))
                           .arg(s.dt, 0, 'g', 4));
+    plots_->setError(recorder_.errorSamples(),
+                     tr("Local error per step (%1, dt %2 s)")
+                         .arg(QString::fromStdString(s.integrator))
+                         .arg(s.dt / s.substeps, 0, 'g', 4),
+                     errorPlotNote());
     const QString object = recorder_.phaseObject();
     if (object.isEmpty()) {
         plots_->setPhase({}, {}, {}, tr("Phase space"));
@@ -479,8 +520,18 @@ void MainWindow::updatePlots() {
     }
 }
 
+QString MainWindow::errorPlotNote() const {
+    if (!controller_.estimatesErrors()) return tr("The live error estimate is off (View menu).");
+    if (controller_.msPerStep() > SimulationController::kMaxEstimateStepMs)
+        return tr("No live error estimate: a step takes %1 ms, and the estimate would cost three more.")
+            .arg(controller_.msPerStep(), 0, 'g', 3);
+    return tr("Press Play: the error one step makes is estimated as the simulation runs.");
+}
+
 void MainWindow::updateStatus() {
     const World& w = document_.world();
+    const double error = controller_.lastErrorEstimate();
+    statusError_->setText(std::isfinite(error) ? tr("local error ≈ %1 m").arg(error, 0, 'g', 2) : QString());
     statusTime_->setText(tr("t = %1").arg(formatSeconds(w.time())));
     statusSpeed_->setText(controller_.isRunning()
                               ? tr("real-time factor %1 (speed %2×)")

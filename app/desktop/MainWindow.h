@@ -109,6 +109,8 @@ private:
     void updateProperties(bool rebuild);
     void updatePlots();
     void updateAdvice();
+    QString errorPlotNote() const;
+    QString defaultPhaseCoordinate(const QString& id) const;
     void updateCanvas();
 
     // Keyboard control of the parameters.
@@ -139,6 +141,7 @@ private:
     QLabel* statusTime_ = nullptr;
     QLabel* statusSpeed_ = nullptr;
     QLabel* statusCost_ = nullptr;
+    QLabel* statusError_ = nullptr;
     QLabel* statusMessage_ = nullptr;
 
     QStringList recentFiles_;

@@ -161,9 +161,13 @@ void MainWindow::dropEvent(QDropEvent* event) {
 // ---- exports ---------------------------------------------------------------------------------
 
 bool MainWindow::exportPlot(ui::PlotsPanel::Plot plot, const QString& path, QString* error) {
-    if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive))
-        return plot == ui::PlotsPanel::Plot::Energy ? recorder_.writeEnergyCsv(path, error)
-                                                    : recorder_.writePhaseCsv(path, error);
+    if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) {
+        switch (plot) {
+            case ui::PlotsPanel::Plot::Energy: return recorder_.writeEnergyCsv(path, error);
+            case ui::PlotsPanel::Plot::Phase: return recorder_.writePhaseCsv(path, error);
+            case ui::PlotsPanel::Plot::Error: return recorder_.writeErrorCsv(path, error);
+        }
+    }
     // The picture is made from the recorded samples in a chart of its own, not grabbed from
     // the screen, so it is complete even while the plots are paused or the dock is hidden.
     const auto& sim = document_.setup().simulation;
@@ -173,6 +177,11 @@ bool MainWindow::exportPlot(ui::PlotsPanel::Plot plot, const QString& path, QStr
                                           tr("Energy (%1, dt %2 s)")
                                               .arg(QString::fromStdString(sim.integrator))
                                               .arg(sim.dt, 0, 'g', 4)));
+    } else if (plot == ui::PlotsPanel::Plot::Error) {
+        chart.reset(ui::createErrorChart(recorder_.errorSamples(),
+                                         tr("Local error per step (%1, dt %2 s)")
+                                             .arg(QString::fromStdString(sim.integrator))
+                                             .arg(sim.dt / sim.substeps, 0, 'g', 4)));
     } else {
         const QString object = recorder_.phaseObject();
         if (object.isEmpty()) {
@@ -196,7 +205,9 @@ bool MainWindow::exportCanvas(const QString& path, QString* error) {
 }
 
 void MainWindow::exportPlotInteractively(ui::PlotsPanel::Plot plot, const QString& format) {
-    const QString base = plot == ui::PlotsPanel::Plot::Energy ? QStringLiteral("energy") : QStringLiteral("phase");
+    const QString base = plot == ui::PlotsPanel::Plot::Energy  ? QStringLiteral("energy")
+                         : plot == ui::PlotsPanel::Plot::Phase ? QStringLiteral("phase")
+                                                               : QStringLiteral("error");
     const QString dir = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Export Plot"), QDir(dir).filePath(base + QLatin1Char('.') + format),

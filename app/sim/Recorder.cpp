@@ -46,6 +46,7 @@ void Recorder::clear() {
     markers_.clear();
     phase_.clear();
     phaseTimes_.clear();
+    errors_.clear();
     haveSettings_ = false;
     lastTime_ = -1.0;
     stride_ = 1;
@@ -71,6 +72,17 @@ QString Recorder::phaseVelocityName() const {
     if (phaseCoordinate_ == QLatin1String("y")) return QStringLiteral("vy");
     if (phaseCoordinate_ == QLatin1String("angle")) return QStringLiteral("omega");
     return QStringLiteral("vx");
+}
+
+void Recorder::recordError(double t, double error) {
+    if (!errors_.empty() && t < errors_.back().x()) errors_.clear();  // a new run
+    errors_.emplace_back(t, error);
+    if (errors_.size() > maxSamples_) {
+        std::size_t kept = 0;
+        for (std::size_t k = 0; k < errors_.size(); k += 2) errors_[kept++] = errors_[k];
+        errors_.resize(kept);
+    }
+    pending_ = true;
 }
 
 void Recorder::record(const World& world) {
@@ -173,12 +185,18 @@ bool Recorder::writeEnergyCsv(const QString& path, QString* error) const {
 
 bool Recorder::writePhaseCsv(const QString& path, QString* error) const {
     const QString id = phaseObject();
-    const QString header =
-        QStringLiteral("t,%1.%2,%1.%3").arg(id, phaseCoordinate_, phaseVelocityName());
+    const QString header = QStringLiteral("t,") + csvField(id + QLatin1Char('.') + phaseCoordinate_) +
+                           QLatin1Char(',') + csvField(id + QLatin1Char('.') + phaseVelocityName());
     return writeCsv(path, error, header, [&](QTextStream& out) {
         for (std::size_t k = 0; k < phase_.size(); ++k)
             out << formatNumber(phaseTimes_[k]) << ',' << formatNumber(phase_[k].coordinate) << ','
                 << formatNumber(phase_[k].velocity) << '\n';
+    });
+}
+
+bool Recorder::writeErrorCsv(const QString& path, QString* error) const {
+    return writeCsv(path, error, QStringLiteral("t,local_error"), [&](QTextStream& out) {
+        for (const QPointF& p : errors_) out << formatNumber(p.x()) << ',' << formatNumber(p.y()) << '\n';
     });
 }
 

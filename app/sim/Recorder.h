@@ -10,6 +10,7 @@
 #include "ui/plots/Charts.h"
 
 #include <QObject>
+#include <QPointF>
 #include <QString>
 
 #include <cstddef>
@@ -39,6 +40,11 @@ public:
     const std::vector<ui::PhaseSample>& phaseSamples() const { return phase_; }
     const std::vector<double>& phaseTimes() const { return phaseTimes_; }
 
+    // The live local error estimate (World::estimateLocalError) against time, one sample per
+    // displayed frame while running; halved like the other series when it grows too long.
+    void recordError(double t, double error);
+    const std::vector<QPointF>& errorSamples() const { return errors_; }
+
     // The object and coordinate of the phase plot: "x", "y" (particles and boxes) or "angle"
     // (boxes), against vx, vy or omega. Changing it clears the phase series.
     void setPhaseTarget(const QString& objectId, const QString& coordinate);
@@ -56,6 +62,8 @@ public:
     bool writeEnergyCsv(const QString& path, QString* error) const;
     // Header t,ID.COORD,ID.VELOCITY (e.g. t,ball.x,ball.vx).
     bool writePhaseCsv(const QString& path, QString* error) const;
+    // Header t,local_error.
+    bool writeErrorCsv(const QString& path, QString* error) const;
 
     static constexpr std::size_t kDefaultMaxSamples = 200'000;
 
@@ -72,6 +80,7 @@ private:
     std::vector<ui::PlotMarker> markers_;
     std::vector<ui::PhaseSample> phase_;
     std::vector<double> phaseTimes_;
+    std::vector<QPointF> errors_;
 
     std::string phaseObject_;
     QString phaseCoordinate_ = QStringLiteral("x");

@@ -6,6 +6,7 @@
 #include "physics/diagnostics/StabilityAdvisor.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace phasebox {
 
@@ -73,12 +74,17 @@ void SimulationController::reset() {
 bool SimulationController::advance(double simSeconds) {
     const double target = document_.world().time() + simSeconds;
     bool ok = true, moved = false;
+    // One estimate per 1/60 s of simulated time, as many as playing at 1× would make.
+    const double dt = document_.world().settings().dt;
+    const long long stride = std::max<long long>(1, std::llround(1.0 / (60.0 * dt)));
+    long long steps = 0;
     while (document_.world().time() + 0.5 * document_.world().settings().dt < target) {
         if (!stepOnce()) {
             ok = false;
             break;
         }
         moved = true;
+        if (++steps % stride == 0) estimateError();
     }
     if (recorder_) recorder_->flush();
     if (moved) emit stepped();
@@ -113,9 +119,20 @@ void SimulationController::tick() {
         simulated += dt;
         moved = true;
     }
+    if (moved) estimateError();
     if (recorder_) recorder_->flush();
     updateRealTimeFactor(wall, simulated);
     if (moved) emit stepped();
+}
+
+void SimulationController::estimateError() {
+    if (!estimateErrors_ || msPerStep_ > kMaxEstimateStepMs) {
+        lastError_ = std::numeric_limits<double>::quiet_NaN();
+        return;
+    }
+    World& world = document_.world();
+    lastError_ = world.estimateLocalError();
+    if (recorder_) recorder_->recordError(world.time(), lastError_);
 }
 
 bool SimulationController::stepOnce() {

@@ -15,6 +15,7 @@
 #include <QTimer>
 
 #include <deque>
+#include <limits>
 
 namespace phasebox {
 
@@ -45,6 +46,15 @@ public:
     // "--run-for". Returns false when the simulation diverged (which is reported as in play).
     bool advance(double simSeconds);
 
+    // The live error estimate (World::estimateLocalError, about three steps' work) once per
+    // displayed frame, recorded by the recorder. Skipped while a step costs more than
+    // kMaxEstimateStepMs, so a heavy scene does not slow down four-fold for it.
+    void setEstimateErrors(bool on) { estimateErrors_ = on; }
+    bool estimatesErrors() const { return estimateErrors_; }
+    // The last estimate (m or rad), NaN when none was made.
+    double lastErrorEstimate() const { return lastError_; }
+    static constexpr double kMaxEstimateStepMs = 4.0;
+
     static constexpr double kMinSpeed = 0.25;
     static constexpr double kMaxSpeed = 4.0;
     static constexpr int kTickMs = 16;         // ~60 Hz
@@ -74,6 +84,7 @@ private:
     bool stepOnce();
     void reportDivergence();
     void updateRealTimeFactor(double wallSeconds, double simSeconds);
+    void estimateError();
 
     Document& document_;
     Recorder* recorder_ = nullptr;
@@ -92,6 +103,8 @@ private:
     qint64 lastStatsNs_ = 0;
     double realTimeFactor_ = 0.0;
     double msPerStep_ = 0.0;
+    bool estimateErrors_ = true;
+    double lastError_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace phasebox

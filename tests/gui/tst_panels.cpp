@@ -235,7 +235,7 @@ private slots:
         QVERIFY(tree->topLevelItem(0)->flags() & Qt::ItemIsUserCheckable);
         QVERIFY(!(tree->topLevelItem(3)->flags() & Qt::ItemIsUserCheckable));
         QVERIFY(!tree->topLevelItem(3)->data(0, Qt::CheckStateRole).isValid());
-        QCOMPARE(panel.costText("contacts"), QString("0.870"));
+        QCOMPARE(panel.costText("contacts"), QString("0.870 ms"));
 
         // Same names: updated in place, the selected row stays selected.
         QTreeWidgetItem* drag = tree->topLevelItem(1);
@@ -298,13 +298,13 @@ private slots:
         const std::vector<EffectCost> costs{
             {"gravity", 0.002}, {"drag", 0.0005}, {"contacts", 0.001}};
         panel.setCosts(costs, 1000, 0.005);
-        QCOMPARE(panel.costText("gravity"), QString("0.00200"));
+        QCOMPARE(panel.costText("gravity"), QString("2.00 µs"));
         QCOMPARE(panel.costText("springs"), QString("–"));  // not in the profile: not running
-        QCOMPARE(panel.costText("integrator"), QString("0.00150"));
-        QCOMPARE(panel.totalText(), QString("total: 0.00500 ms per step"));
-        QCOMPARE(EffectsPanel::formatMs(1.2), QString("1.20"));
-        QCOMPARE(EffectsPanel::formatMs(123.4), QString("123"));
-        QCOMPARE(EffectsPanel::formatMs(9.996), QString("10.0"));
+        QCOMPARE(panel.costText("integrator"), QString("1.50 µs"));
+        QCOMPARE(panel.totalText(), QString("total: 5.00 µs per step"));
+        QCOMPARE(EffectsPanel::formatMs(1.2), QString("1.20 ms"));
+        QCOMPARE(EffectsPanel::formatMs(123.4), QString("123 ms"));
+        QCOMPARE(EffectsPanel::formatMs(9.996), QString("10.0 ms"));
         QCOMPARE(EffectsPanel::formatMs(qQNaN()), QString("–"));
     }
 

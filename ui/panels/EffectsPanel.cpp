@@ -70,18 +70,22 @@ QString EffectsPanel::formatMs(double ms) {
     if (!(ms >= 0.0) || !std::isfinite(ms)) return QStringLiteral("–");
     if (ms == 0.0) return QStringLiteral("0");
     // Three significant digits with their trailing zeros (1.20, not 1.2), so a column of
-    // changing numbers keeps its shape.
-    int decimals = std::max(0, 2 - static_cast<int>(std::floor(std::log10(ms))));
+    // changing numbers keeps its shape; below 0.1 ms in microseconds, so that gravity's
+    // 0.0000421 ms reads as 0.0421 µs and fits the column.
+    const bool micro = ms < 0.1;
+    const double value = micro ? ms * 1000.0 : ms;
+    int decimals = std::max(0, 2 - static_cast<int>(std::floor(std::log10(value))));
     const double scale = std::pow(10.0, decimals);
-    if (decimals > 0 && std::round(ms * scale) >= 1000.0) --decimals;  // 9.996 → 10.0
-    return QString::number(ms, 'f', std::min(decimals, 9));
+    if (decimals > 0 && std::round(value * scale) >= 1000.0) --decimals;  // 9.996 → 10.0
+    return QString::number(value, 'f', std::min(decimals, 9)) +
+           (micro ? QStringLiteral(" µs") : QStringLiteral(" ms"));
 }
 
 EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
     tree_ = new QTreeWidget;
     tree_->setObjectName(QStringLiteral("effects"));
     tree_->setColumnCount(2);
-    tree_->setHeaderLabels({tr("Effect"), tr("ms/step")});
+    tree_->setHeaderLabels({tr("Effect"), tr("per step")});
     tree_->headerItem()->setTextAlignment(kCostColumn, Qt::AlignRight | Qt::AlignVCenter);
     tree_->headerItem()->setToolTip(kCostColumn,
                                     tr("Milliseconds of CPU time per step, over the last frames"));
@@ -95,8 +99,8 @@ EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
     // A fixed cost column: resizing to contents would relayout the view on every frame.
     header->setSectionResizeMode(kCostColumn, QHeaderView::Fixed);
     const int costWidth =
-        std::max(tree_->fontMetrics().horizontalAdvance(QStringLiteral("00.0000")),
-                 header->fontMetrics().horizontalAdvance(tr("ms/step"))) +
+        std::max(tree_->fontMetrics().horizontalAdvance(QStringLiteral("0.0000 µs")),
+                 header->fontMetrics().horizontalAdvance(tr("per step"))) +
         16;
     header->resizeSection(kCostColumn, costWidth);
     connect(tree_, &QTreeWidget::itemChanged, this, &EffectsPanel::onItemChanged);
@@ -248,7 +252,7 @@ void EffectsPanel::setCost(const QString& name, double msPerStep) {
 }
 
 void EffectsPanel::updateTotal(double totalMs) {
-    total_->setText(tr("total: %1 ms per step").arg(formatMs(totalMs)));
+    total_->setText(tr("total: %1 per step").arg(formatMs(totalMs)));
 }
 
 void EffectsPanel::onItemChanged(QTreeWidgetItem* item, int column) {

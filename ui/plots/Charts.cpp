@@ -5,6 +5,7 @@
 #include <QGraphicsScene>
 #include <QImage>
 #include <QLineSeries>
+#include <QLogValueAxis>
 #include <QPainter>
 #include <QPen>
 #include <QSaveFile>
@@ -138,6 +139,38 @@ QChart* createEnergyChart(std::span<const EnergySample> samples,
         line->setPen(pen);
     }
     attach(chart, x, y);
+    return chart;
+}
+
+QChart* createErrorChart(std::span<const QPointF> samples, const QString& title) {
+    QChart* chart = newChart(title);
+    QVector<QPointF> points;
+    points.reserve(static_cast<qsizetype>(samples.size()));
+    double tlo = std::numeric_limits<double>::infinity(), thi = -tlo, elo = tlo, ehi = -tlo;
+    for (const QPointF& p : samples) {
+        if (!(p.y() > 0.0) || !std::isfinite(p.y())) continue;
+        points.push_back(p);
+        tlo = std::min(tlo, p.x());
+        thi = std::max(thi, p.x());
+        elo = std::min(elo, p.y());
+        ehi = std::max(ehi, p.y());
+    }
+    auto* series = addSeries(chart, points, QStringLiteral("local error per step"), energyColor(4), 1.6);
+    chart->legend()->setVisible(false);
+    auto* t = new QValueAxis;
+    t->setTitleText(QStringLiteral("time [s]"));
+    fitTimeAxis(t, std::isfinite(tlo) ? tlo : 0.0, std::isfinite(thi) ? thi : 1.0);
+    auto* e = new QLogValueAxis;
+    e->setTitleText(QStringLiteral("error [m]"));
+    e->setBase(10.0);
+    e->setLabelFormat(QStringLiteral("%.0e"));
+    if (!std::isfinite(elo)) elo = ehi = 1e-6;
+    // Whole decades around the samples, so the axis reads as orders of magnitude.
+    e->setRange(std::pow(10.0, std::floor(std::log10(elo))), std::pow(10.0, std::ceil(std::log10(ehi)) + (ehi == elo ? 1 : 0)));
+    chart->addAxis(t, Qt::AlignBottom);
+    chart->addAxis(e, Qt::AlignLeft);
+    series->attachAxis(t);
+    series->attachAxis(e);
     return chart;
 }
 

@@ -51,6 +51,10 @@ QChart* createEnergyChart(std::span<const EnergySample> samples,
 QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& coordinateName,
                          const QString& velocityName, const QString& title);
 
+// The live local error estimate against time, on a logarithmic error axis (non-positive and
+// non-finite samples are left out: a log axis cannot show them).
+QChart* createErrorChart(std::span<const QPointF> samples, const QString& title);
+
 // Writes a chart as PNG or SVG, chosen by the file's extension (.png, .svg). Needs a
 // QApplication (the offscreen platform is enough). Returns false and sets *error on failure.
 bool exportChart(QChart* chart, const QString& path, QSize size, QString* error);

@@ -2,10 +2,12 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenu>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -47,43 +49,71 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
     bar->addWidget(pauseButton_);
     bar->addWidget(clear);
     bar->addStretch(1);
-    bar->addWidget(exportButton(Plot::Energy, tr("Export energy")));
-    bar->addWidget(exportButton(Plot::Phase, tr("Export phase")));
+    // One export menu for the three plots keeps the bar narrow enough for the dock.
+    auto* exportAll = new QToolButton(this);
+    exportAll->setText(tr("&Export"));
+    exportAll->setPopupMode(QToolButton::InstantPopup);
+    auto* menu = new QMenu(exportAll);
+    const std::pair<Plot, QString> plots[] = {{Plot::Energy, tr("Energy")},
+                                              {Plot::Phase, tr("Phase space")},
+                                              {Plot::Error, tr("Local error")}};
+    for (const auto& [plot, name] : plots) {
+        for (const QString& format : {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("csv")})
+            menu->addAction(tr("%1 as %2…").arg(name, format.toUpper()), this,
+                            [this, plot = plot, format] { emit exportRequested(plot, format); });
+        menu->addSeparator();
+    }
+    exportAll->setMenu(menu);
+    bar->addWidget(exportAll);
     layout->addLayout(bar);
 
+    // Energy on top, always in sight; phase space and the error estimate share the lower half.
     auto* splitter = new QSplitter(Qt::Vertical, this);
     energyView_ = new QChartView(createEnergyChart({}, {}, tr("Energy")), splitter);
-    auto* phaseBox = new QWidget(splitter);
+    lowerTabs_ = new QTabWidget(splitter);
+    auto* phaseBox = new QWidget(lowerTabs_);
     auto* phaseLayout = new QVBoxLayout(phaseBox);
     phaseLayout->setContentsMargins(0, 0, 0, 0);
+    auto* coordinateRow = new QHBoxLayout;
+    phaseHint_ = new QLabel(tr("Click an object on the canvas to plot its phase space."), phaseBox);
+    phaseHint_->setWordWrap(true);
+    coordinateBox_ = new QComboBox(phaseBox);
+    coordinateBox_->setToolTip(tr("The coordinate plotted against its velocity"));
+    coordinateBox_->addItem(tr("x against vx"), QStringLiteral("x"));
+    coordinateBox_->addItem(tr("y against vy"), QStringLiteral("y"));
+    coordinateBox_->addItem(tr("angle against ω (boxes)"), QStringLiteral("angle"));
+    connect(coordinateBox_, &QComboBox::activated, this, [this] {
+        emit phaseCoordinateRequested(coordinateBox_->currentData().toString());
+    });
+    coordinateRow->addWidget(phaseHint_, 1);
+    coordinateRow->addWidget(coordinateBox_);
+    phaseLayout->addLayout(coordinateRow);
     phaseView_ = new QChartView(createPhaseChart({}, QStringLiteral("x"), QStringLiteral("vx"),
                                                  tr("Phase space")),
                                 phaseBox);
-    phaseHint_ = new QLabel(tr("Click an object on the canvas to plot its phase space."), phaseBox);
-    phaseHint_->setWordWrap(true);
-    phaseLayout->addWidget(phaseHint_);
     phaseLayout->addWidget(phaseView_, 1);
-    for (QChartView* view : {energyView_, phaseView_}) styleChart(view);
+    auto* errorBox = new QWidget(lowerTabs_);
+    auto* errorLayout = new QVBoxLayout(errorBox);
+    errorLayout->setContentsMargins(0, 0, 0, 0);
+    errorView_ = new QChartView(createErrorChart({}, tr("Local error estimate")), errorBox);
+    errorHint_ = new QLabel(errorBox);
+    errorHint_->setWordWrap(true);
+    errorHint_->hide();
+    errorLayout->addWidget(errorHint_);
+    errorLayout->addWidget(errorView_, 1);
+    for (QChartView* view : {energyView_, phaseView_, errorView_}) styleChart(view);
+    lowerTabs_->addTab(phaseBox, tr("P&hase space"));
+    lowerTabs_->addTab(errorBox, tr("Local e&rror"));
     splitter->addWidget(energyView_);
-    splitter->addWidget(phaseBox);
+    splitter->addWidget(lowerTabs_);
+    splitter->setStretchFactor(0, 1);
+    splitter->setStretchFactor(1, 1);
     layout->addWidget(splitter, 1);
-}
-
-QToolButton* PlotsPanel::exportButton(Plot plot, const QString& text) {
-    auto* button = new QToolButton(this);
-    button->setText(text);
-    button->setPopupMode(QToolButton::InstantPopup);
-    auto* menu = new QMenu(button);
-    for (const QString& format : {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("csv")})
-        menu->addAction(format.toUpper() + QStringLiteral("…"),
-                        this, [this, plot, format] { emit exportRequested(plot, format); });
-    button->setMenu(menu);
-    return button;
 }
 
 void PlotsPanel::styleChart(QChartView* view) {
     view->setRenderHint(QPainter::Antialiasing);
-    view->setMinimumHeight(160);
+    view->setMinimumHeight(120);
     applyPresentation(view->chart(), presentation_);
 }
 
@@ -96,11 +126,27 @@ void PlotsPanel::setEnergy(std::span<const EnergySample> samples,
 
 void PlotsPanel::setPhase(std::span<const PhaseSample> samples, const QString& coordinateName,
                           const QString& velocityName, const QString& title) {
-    phaseHint_->setVisible(coordinateName.isEmpty());
+    phaseHint_->setText(coordinateName.isEmpty()
+                            ? tr("Click an object on the canvas to plot its phase space.")
+                            : QString());
     phaseView_->setVisible(!coordinateName.isEmpty());
     if (paused_) return;
     replaceChart(phaseView_, createPhaseChart(samples, coordinateName, velocityName, title));
     styleChart(phaseView_);
+}
+
+void PlotsPanel::setError(std::span<const QPointF> samples, const QString& title,
+                          const QString& emptyText) {
+    errorHint_->setText(emptyText);
+    errorHint_->setVisible(samples.empty() && !emptyText.isEmpty());
+    if (paused_) return;
+    replaceChart(errorView_, createErrorChart(samples, title));
+    styleChart(errorView_);
+}
+
+void PlotsPanel::setPhaseCoordinate(const QString& coordinate) {
+    const int index = coordinateBox_->findData(coordinate);
+    if (index >= 0) coordinateBox_->setCurrentIndex(index);
 }
 
 void PlotsPanel::setPaused(bool paused) {

@@ -15,6 +15,8 @@
 
 QT_BEGIN_NAMESPACE
 class QChartView;
+class QComboBox;
+class QTabWidget;
 class QLabel;
 class QToolButton;
 QT_END_NAMESPACE
@@ -25,7 +27,7 @@ class PlotsPanel : public QWidget {
     Q_OBJECT
 
 public:
-    enum class Plot { Energy, Phase };
+    enum class Plot { Energy, Phase, Error };
 
     explicit PlotsPanel(QWidget* parent = nullptr);
 
@@ -36,6 +38,12 @@ public:
     void setPhase(std::span<const PhaseSample> samples, const QString& coordinateName,
                   const QString& velocityName, const QString& title);
 
+    // The live error estimate; an empty series shows why there is none (text).
+    void setError(std::span<const QPointF> samples, const QString& title, const QString& emptyText);
+
+    // Shows which coordinate the phase plot has (no signal).
+    void setPhaseCoordinate(const QString& coordinate);
+
     bool isPaused() const { return paused_; }
     void setPaused(bool paused);
     // Larger fonts and lines for presentation mode.
@@ -43,20 +51,26 @@ public:
 
     QChartView* energyView() const { return energyView_; }
     QChartView* phaseView() const { return phaseView_; }
+    QChartView* errorView() const { return errorView_; }
 
 signals:
     void clearRequested();
+    // The user chose another coordinate for the phase plot: "x", "y" or "angle".
+    void phaseCoordinateRequested(const QString& coordinate);
     void pausedChanged(bool paused);
     // format: "png", "svg" or "csv".
     void exportRequested(phasebox::ui::PlotsPanel::Plot plot, const QString& format);
 
 private:
-    QToolButton* exportButton(Plot plot, const QString& text);
     void styleChart(QChartView* view);
 
     QChartView* energyView_ = nullptr;
     QChartView* phaseView_ = nullptr;
+    QChartView* errorView_ = nullptr;
+    QLabel* errorHint_ = nullptr;
     QLabel* phaseHint_ = nullptr;
+    QComboBox* coordinateBox_ = nullptr;
+    QTabWidget* lowerTabs_ = nullptr;
     QToolButton* pauseButton_ = nullptr;
     bool paused_ = false;
     bool presentation_ = false;

@@ -1,0 +1,29 @@
+#pragma once
+// The work-precision diagram of the accuracy study: log10 of the position error against log10
+// of the CPU time, one line per integrator, each point labelled by its dt (or tolerance).
+// Lower left is better: accurate and cheap. The same chart serves the app's Accuracy dialog and
+// `phasebox-cli accuracy --plot`.
+
+#include <QString>
+
+#include <span>
+
+QT_BEGIN_NAMESPACE
+class QChart;
+QT_END_NAMESPACE
+
+namespace phasebox::ui {
+
+// One run of the study, as the chart needs it (ui/ does not know the app's record type).
+struct WorkPrecisionPoint {
+    QString integrator;  // the registry name; points of one integrator form one line, in order
+    double cpuSeconds = 0.0;
+    double error = 0.0;  // points with an error that is not finite and > 0 are left out
+    QString label;       // shown next to the point: "1/120", "tol 1e-4"
+};
+
+// Line styles follow the registry: solid explicit, dashed implicit, dotted adaptive; each
+// integrator keeps its colour in every diagram.
+QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, const QString& title);
+
+}  // namespace phasebox::ui
