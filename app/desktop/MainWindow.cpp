@@ -190,16 +190,22 @@ void MainWindow::createMenus() {
     recentMenu_ = file->addMenu(tr("Open &Recent"));
     examplesMenu_ = file->addMenu(tr("&Examples"));
     examplesMenu_->setObjectName(QStringLiteral("examplesMenu"));
-    for (const QString& path : exampleScenes()) {
-        const SceneLoadResult loaded = SceneIO::load(path);
-        const QString title = loaded.ok() && !loaded.scene->name.empty()
-                                  ? QString::fromStdString(loaded.scene->name)
-                                  : QFileInfo(path).completeBaseName();
-        QAction* a = examplesMenu_->addAction(title, this, [this, path] { openExample(path); });
-        if (loaded.ok()) a->setToolTip(QString::fromStdString(loaded.scene->description));
-        a->setData(path);
+    lessonsMenu_ = file->addMenu(tr("&Lessons"));
+    lessonsMenu_->setObjectName(QStringLiteral("lessonsMenu"));
+    for (const auto& [menu, folder] : {std::pair{examplesMenu_, QStringLiteral(":/scenes")},
+                                       std::pair{lessonsMenu_, QStringLiteral(":/lessons")}}) {
+        for (const QString& path : builtInScenes(folder)) {
+            const SceneLoadResult loaded = SceneIO::load(path);
+            const QString title = loaded.ok() && !loaded.scene->name.empty()
+                                      ? QString::fromStdString(loaded.scene->name)
+                                      : QFileInfo(path).completeBaseName();
+            QAction* a = menu->addAction(title, this, [this, path = path] { openExample(path); });
+            if (loaded.ok()) a->setToolTip(QString::fromStdString(loaded.scene->description));
+            a->setData(path);
+        }
+        menu->setToolTipsVisible(true);
+        menu->setEnabled(!menu->isEmpty());
     }
-    examplesMenu_->setToolTipsVisible(true);
     file->addSeparator();
     file->addAction(action("save"));
     file->addAction(action("saveAs"));

@@ -37,8 +37,9 @@ class SceneBrowser;
 
 class CanvasTools;
 
-// The built-in example scenes (:/scenes/*.json), by file name.
-QStringList exampleScenes();
+// The built-in scenes of a resource folder (":/scenes" for the examples, ":/lessons"), by
+// file name.
+QStringList builtInScenes(const QString& folder);
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -136,6 +137,7 @@ private:
 
     QMenu* recentMenu_ = nullptr;
     QMenu* examplesMenu_ = nullptr;
+    QMenu* lessonsMenu_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QActionGroup* toolGroup_ = nullptr;
     QLabel* statusTime_ = nullptr;

@@ -36,9 +36,9 @@ bool isSceneFile(const QString& path) {
 }
 }  // namespace
 
-QStringList exampleScenes() {
+QStringList builtInScenes(const QString& folder) {
     QStringList paths;
-    const QDir dir(QStringLiteral(":/scenes"));
+    const QDir dir(folder);
     for (const QString& name : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name))
         paths.append(dir.filePath(name));
     return paths;

@@ -18,6 +18,7 @@
 #include <QFile>
 #include <QImage>
 #include <QLineSeries>
+#include <QMenu>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -235,6 +236,21 @@ private slots:
         QVERIFY(!w.controller().estimatesErrors());
         QVERIFY(w.controller().advance(0.2));
         QVERIFY(std::isnan(w.controller().lastErrorEstimate()));
+    }
+
+    // File → Examples lists every built-in scene, and each opens with its notes.
+    void examplesMenuOpensEveryExample() {
+        MainWindow w;
+        auto* menu = w.findChild<QMenu*>("examplesMenu");
+        QVERIFY(menu);
+        const QList<QAction*> actions = menu->actions();
+        QVERIFY(actions.size() >= 11);
+        for (QAction* a : actions) {
+            a->trigger();
+            QCOMPARE(w.document().filePath(), a->data().toString());
+            QCOMPARE(QString::fromStdString(w.document().setup().name), a->text());
+            QVERIFY(!a->toolTip().isEmpty());
+        }
     }
 
     void saveAndOpenRoundTrip() {
