@@ -130,7 +130,10 @@ SceneDesc elasticGas(int count, unsigned seed) {
     s.simulation.substeps = 4;
     // Every impact must bounce, however slow (nothing rests in a gas, so nothing can jitter).
     s.simulation.solver["restitution_threshold"] = 0.0;
-    const double size = 4.0;
+    // A 4 m box, grown for large counts so the disks start 3 radii apart: packed tighter, a
+    // gas of thousands starts as one overlapping heap, not a gas.
+    const int perRow = static_cast<int>(std::ceil(std::sqrt(count)));
+    const double size = std::max(4.0, 0.4 + 0.15 * perRow);
     const Point2 normals[4] = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}};
     const Point2 points[4] = {{0, 0}, {0, size}, {0, 0}, {size, 0}};
     for (int k = 0; k < 4; ++k) {
@@ -144,7 +147,6 @@ SceneDesc elasticGas(int count, unsigned seed) {
     }
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> speed(-2.0, 2.0);
-    const int perRow = static_cast<int>(std::ceil(std::sqrt(count)));
     const double spacing = (size - 0.4) / perRow;
     for (int i = 0; i < count; ++i) {
         ParticleDesc p;

@@ -22,7 +22,8 @@ SceneDesc bigOnSmall(double ratio);
 SceneDesc ballDrop(double height, double restitution);
 // A 1 m box resting on a plane inclined by `degrees`, friction μ on both (so the pair's μ).
 SceneDesc incline(double degrees, double friction);
-// `count` disks (radius 0.05 m, e = 1, μ = 0) with random velocities in a closed 4 m box.
+// `count` disks (radius 0.05 m, e = 1, μ = 0) with random velocities in a closed box: 4 m, or
+// wider when that is needed to start the disks 3 radii apart (above ~625 disks).
 SceneDesc elasticGas(int count, unsigned seed = 1);
 // `count` touching balls in a row, the first moving into them at `speed`.
 SceneDesc newtonsCradle(int count, double speed);

@@ -132,6 +132,8 @@ private slots:
     void emptyViewShowsAxesAtOrigin();
     void renderImageMatchesRenderer();
     void overlayIsDrawn();
+    void updateRepaintsTheSurface();
+    void decorationsAreDrawn();
     void libraryScenesRender();
 };
 
@@ -465,6 +467,9 @@ void TestSceneRenderer::emptyViewShowsAxesAtOrigin() {
     QVERIFY(looksLike(image, view.toWidget(QPointF(0, 0)), RenderOptions{}.colors.axis, 0));
     view.fitToWorld();  // nothing to frame: the same default
     QCOMPARE(view.view().pixelsPerMetre(), kSize.width() / 10.0);
+    SceneView other;
+    other.resize(640, 480);  // the size a default ViewTransform assumes: framed all the same
+    QCOMPARE(other.view().pixelsPerMetre(), 64.0);
 }
 
 void TestSceneRenderer::renderImageMatchesRenderer() {
@@ -475,7 +480,14 @@ void TestSceneRenderer::renderImageMatchesRenderer() {
     view.fitToWorld();
     const QRectF framed(view.toWidget(QPointF(-2.0, 1.0)), view.toWidget(QPointF(2.7, -1.0)));
     QVERIFY2(QRectF(QPointF(0, 0), QSizeF(kSize)).contains(framed.normalized()),
-             qPrintable(QString("%1 %2 %3 %4 size %5x%6 ppm %7").arg(framed.left()).arg(framed.top()).arg(framed.right()).arg(framed.bottom()).arg(view.width()).arg(view.height()).arg(view.view().pixelsPerMetre())));
+             qPrintable(QString("%1 %2 %3 %4 size %5x%6 ppm %7")
+                            .arg(framed.left())
+                            .arg(framed.top())
+                            .arg(framed.right())
+                            .arg(framed.bottom())
+                            .arg(view.width())
+                            .arg(view.height())
+                            .arg(view.view().pixelsPerMetre())));
     QCOMPARE(view.renderImage(kSize), render(*world, view.view()));
     QCOMPARE(view.pick(view.toWidget(QPointF(0, 0))).id, std::string("ball"));
     // Twice the size: the same framing in more pixels.
@@ -499,6 +511,108 @@ void TestSceneRenderer::overlayIsDrawn() {
                    after.pixel(corner.toPoint() + QPoint(x, 0));
     QVERIFY2(changed > 20, qPrintable(QString::number(changed)));  // dashed: not every pixel
     QVERIFY(before.pixel(14, 14) != after.pixel(14, 14));          // the HUD's backdrop
+}
+
+namespace {
+struct PaintCounter : QObject {
+    int paints = 0;
+    bool eventFilter(QObject*, QEvent* event) override {
+        paints += event->type() == QEvent::Paint;
+        return false;
+    }
+};
+}  // namespace
+
+// The app repaints the canvas after a step with a plain update() on the SceneView: that must
+// reach the surface that draws.
+void TestSceneRenderer::updateRepaintsTheSurface() {
+    SceneView view;
+    view.resize(kSize);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const QList<QWidget*> surfaces = view.findChildren<QWidget*>();
+    QCOMPARE(surfaces.size(), 1);
+    PaintCounter counter;
+    surfaces.front()->installEventFilter(&counter);
+    view.update();
+    QTRY_VERIFY(counter.paints >= 1);
+}
+
+// Springs of both signs, arrows, labels, a selection and a hover, all in one picture.
+void TestSceneRenderer::decorationsAreDrawn() {
+    World world;
+    const auto particle = [&](const char* id, Vec2 at, Vec2 velocity, bool pinned = false) {
+        Particle p;
+        p.id = id;
+        p.position = at;
+        p.velocity = velocity;
+        p.radius = 0.12;
+        p.pinned = pinned;
+        return world.addParticle(p);
+    };
+    const int bob = particle("bob", {0.0, 0.5}, {0.0, 0.0});
+    const int q = particle("q", {3.0, 1.2}, {0.0, 0.0});
+    particle("fast", {-1.0, -0.3}, {2.0, 1.0});
+    particle("pin", {-1.0, 1.5}, {0.0, 0.0}, true);
+    Box crate;
+    crate.id = "crate";
+    crate.position = {1.5, 0.0};
+    crate.velocity = {1.0, 0.5};
+    const int box = world.addBox(crate);
+    Box wall;
+    wall.id = "wall";
+    wall.position = {-2.5, 0.0};
+    wall.size = {0.3, 2.0};
+    wall.isStatic = true;
+    world.addBox(wall);
+    Plane ground;
+    ground.id = "ground";
+    ground.point = {0.0, -1.0};
+    world.addPlane(ground);
+    Spring hang;  // stretched by half its rest length
+    hang.id = "hang";
+    hang.a = {SpringEnd::Kind::Anchor, -1, Vec2(0.0, 2.0)};
+    hang.b = {SpringEnd::Kind::Particle, bob, Vec2::Zero()};
+    hang.stiffness = 20.0;
+    hang.restLength = 1.0;
+    world.addSpring(hang);
+    Spring push = hang;  // compressed
+    push.id = "push";
+    push.a = {SpringEnd::Kind::Box, box, Vec2(0.5, 0.5)};
+    push.b = {SpringEnd::Kind::Particle, q, Vec2::Zero()};
+    push.restLength = 2.0;
+    world.addSpring(push);
+    world.commit();
+
+    RenderOptions options;
+    options.labels = options.velocityArrows = options.forceArrows = true;
+    options.selectedIds = {"crate"};
+    options.hoveredId = "bob";
+    const ViewTransform view({0.3, 0.4}, 110.0, {640, 480});
+    const QImage image = render(world, view, {640, 480}, options);
+    const SceneColors& c = options.colors;
+    QVERIFY(countNear(image, c.velocity, 30) > 30);
+    QVERIFY(countNear(image, c.force, 30) > 30);
+    QVERIFY(countNear(image, c.selection, 30) > 30);
+    QVERIFY(countNear(image, c.hover, 30) > 10);
+    QVERIFY(countNear(image, c.springStretched, 40) > 30);
+    QVERIFY(countNear(image, c.springCompressed, 40) > 30);
+    QVERIFY(countNear(image, c.staticBox, 4) > 200);
+    QVERIFY(countNear(image, c.pinnedParticle, 4) > 30);
+    // No labels, no arrows, no highlights: those colours are gone.
+    const QImage plain = render(world, view, {640, 480});
+    QCOMPARE(countNear(plain, c.velocity, 30), 0);
+    QCOMPARE(countNear(plain, c.selection, 30), 0);
+    QVERIFY(countNear(image, c.text, 40) > countNear(plain, c.text, 40) + 50);  // the ids
+
+    const QString dir = qEnvironmentVariable("PHASEBOX_CANVAS_PNG_DIR");
+    if (!dir.isEmpty()) {
+        QVERIFY(image.save(QDir(dir).filePath("canvas_decorations.png")));
+        options.lineWidthScale = 2.0;
+        options.fontScale = 1.6;
+        QVERIFY(render(world, view, {640, 480}, options)
+                    .save(QDir(dir).filePath("canvas_presentation.png")));
+    }
 }
 
 void TestSceneRenderer::libraryScenesRender() {

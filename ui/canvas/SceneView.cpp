@@ -24,9 +24,12 @@ namespace {
 using PaintFunction = std::function<void(QPainter&, QSize)>;
 
 // Both surfaces only paint: input goes through them to the SceneView, which navigates and
-// reports, so the two backends cannot behave differently.
+// reports, so the two backends cannot behave differently. Neither may be marked opaque: the
+// app repaints with update() on the SceneView, and Qt does not repaint an opaque child that
+// covers a parent it was asked to update (a test pins this).
 void makePassive(QWidget* surface) {
     surface->setAttribute(Qt::WA_TransparentForMouseEvents);
+    surface->setAttribute(Qt::WA_OpaquePaintEvent, false);
     surface->setFocusPolicy(Qt::NoFocus);
 }
 
@@ -34,7 +37,6 @@ class RasterSurface final : public QWidget {
 public:
     RasterSurface(PaintFunction paint, QWidget* parent)
         : QWidget(parent), paint_(std::move(paint)) {
-        setAttribute(Qt::WA_OpaquePaintEvent);  // every pixel is painted: no erase first
         makePassive(this);
     }
 
@@ -174,7 +176,6 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent) {
     setMouseTracking(true);  // hover: tools highlight what a click would pick
     // Right-drag pans; a right click without a drag is reported as worldContextMenuRequested.
     setContextMenuPolicy(Qt::PreventContextMenu);
-    setAttribute(Qt::WA_OpaquePaintEvent);
     createSurface(resolveBackend(requested_));
 }
 
@@ -245,7 +246,8 @@ ViewTransform SceneView::view() const {
 }
 
 void SceneView::syncView() const {
-    if (view_.widgetSize() == QSizeF(size())) return;
+    if (syncedSize_ == size()) return;
+    syncedSize_ = size();
     if (framing_ == Framing::Manual)
         view_.setWidgetSize(size());
     else
@@ -292,12 +294,9 @@ void SceneView::frameNow() const {
 
 void SceneView::setView(const ViewTransform& view) {
     framing_ = Framing::Manual;
-    changeView(view);
-}
-
-void SceneView::changeView(const ViewTransform& view) {
     view_ = view;
     view_.setWidgetSize(size());
+    syncedSize_ = size();
     surface_->update();
     emit viewChanged();
 }
@@ -306,6 +305,7 @@ void SceneView::fitToWorld(double marginPixels) {
     framing_ = Framing::World;
     fitMargin_ = marginPixels;
     frameNow();
+    syncedSize_ = size();
     surface_->update();
     emit viewChanged();
 }

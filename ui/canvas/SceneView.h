@@ -116,7 +116,6 @@ private:
     void paintSurface(QPainter& painter, QSize size);
     void syncView() const;
     void frameNow() const;
-    void changeView(const ViewTransform& view);
     void startPan(Qt::MouseButton button, QPointF position);
     void endPan();
     void updatePanCursor();
@@ -126,9 +125,10 @@ private:
     CanvasBackend requested_ = CanvasBackend::Auto;
     bool usingOpenGL_ = false;
 
-    // The centre and scale; its widget size follows size() lazily, since a hidden widget is
-    // resized without a resize event.
+    // The centre and scale; its widget size follows size() lazily (see syncView), since a
+    // hidden widget is resized without a resize event.
     mutable ViewTransform view_;
+    mutable QSize syncedSize_;  // the size view_ was last fitted to; invalid at first
     Framing framing_ = Framing::Default;
     double fitMargin_ = 32.0;
 
