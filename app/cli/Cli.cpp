@@ -21,6 +21,8 @@ const char* kUsage =
     "                           symplectic, force evaluations per step\n"
     "  info SCENE               objects, effects that will run, integrator, dt\n"
     "  run SCENE [OPTIONS]      simulate; see 'phasebox-cli run --help'\n"
+    "  accuracy SCENE [OPTIONS] error against CPU time per integrator and dt; see\n"
+    "                           'phasebox-cli accuracy --help'\n"
     "  scene [NAME] [FILE]      write a built-in scene (pyramid, cloth, gas, ...) as a scene\n"
     "                           file, to FILE or standard output; no NAME lists them\n"
     "\n"
@@ -60,7 +62,8 @@ int run(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     if (command == QLatin1String("info")) return infoCommand(rest, out, err);
     if (command == QLatin1String("run")) return runCommand(rest, out, err);
     if (command == QLatin1String("scene")) return sceneCommand(rest, out, err);
-    return fail(err, QStringLiteral("unknown command \"%1\"; known: integrators, info, run, scene").arg(command));
+    if (command == QLatin1String("accuracy")) return accuracyCommand(rest, out, err);
+    return fail(err, QStringLiteral("unknown command \"%1\"; known: integrators, info, run, scene, accuracy").arg(command));
 }
 
 int integratorsCommand(const QStringList& args, QTextStream& out, QTextStream& err) {

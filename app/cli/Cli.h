@@ -20,6 +20,7 @@ int integratorsCommand(const QStringList& args, QTextStream& out, QTextStream& e
 int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err);
 int runCommand(const QStringList& args, QTextStream& out, QTextStream& err);
 int sceneCommand(const QStringList& args, QTextStream& out, QTextStream& err);
+int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err);
 
 // "phasebox-cli: error: " + each line of message, on err; returns kBadInput.
 int fail(QTextStream& err, const QString& message);

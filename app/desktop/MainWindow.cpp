@@ -1,5 +1,6 @@
 #include "app/desktop/MainWindow.h"
 
+#include "app/desktop/AccuracyDialog.h"
 #include "app/desktop/CanvasTools.h"
 #include "app/document/PropertyTable.h"
 #include "app/io/SceneIO.h"
@@ -137,6 +138,9 @@ void MainWindow::createActions() {
     make("slower", tr("Slower"), QKeySequence(Qt::CTRL | Qt::Key_Down), [this] { changeSpeed(-1); });
 
     make("fit", tr("&Fit Scene"), QKeySequence(Qt::Key_F), [this] { canvas_->fitToWorld(); });
+    make("accuracyLab", tr("&Accuracy Lab…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A),
+         [this] { showAccuracyLab(); })
+        ->setToolTip(tr("Error against CPU time for every integrator, on this scene"));
     QAction* presentation = make("presentation", tr("&Presentation Mode"), QKeySequence(Qt::Key_F11),
                                  [this](bool on) { setPresentationMode(on); });
     presentation->setCheckable(true);
@@ -235,6 +239,8 @@ void MainWindow::createMenus() {
 
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     tools->addActions(toolGroup_->actions());
+    tools->addSeparator();
+    tools->addAction(action("accuracyLab"));
 
     viewMenu_ = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : docks_) viewMenu_->addAction(dock->toggleViewAction());
@@ -654,6 +660,29 @@ void MainWindow::changeSpeed(int direction) {
     controller_.setSpeed(speeds[static_cast<std::size_t>(index)]);
     parameters_->setSpeed(controller_.speed());
     updateStatus();
+}
+
+AccuracyDialog* MainWindow::accuracyDialog() {
+    if (!accuracy_) {
+        accuracy_ = new AccuracyDialog(this);
+        connect(accuracy_, &AccuracyDialog::applyRequested, this,
+                [this](const QString& integrator, double dt, double tolerance) {
+                    SimulationDesc s = document_.setup().simulation;
+                    s.integrator = integrator.toStdString();
+                    s.dt = dt;
+                    s.tolerance = tolerance;
+                    applySimulation(s);
+                    statusMessage_->setText(tr("Applied %1 at dt %2 s").arg(integrator).arg(dt, 0, 'g', 4));
+                });
+    }
+    return accuracy_;
+}
+
+void MainWindow::showAccuracyLab() {
+    AccuracyDialog* dialog = accuracyDialog();
+    if (!dialog->study().isRunning()) dialog->setScene(document_.setup());
+    dialog->show();
+    dialog->raise();
 }
 
 void MainWindow::setPresentationMode(bool on) {

@@ -36,6 +36,7 @@ class SceneBrowser;
 }  // namespace ui
 
 class CanvasTools;
+class AccuracyDialog;
 
 // The built-in scenes of a resource folder (":/scenes" for the examples, ":/lessons"), by
 // file name.
@@ -71,6 +72,9 @@ public:
     // Writes a plot as PNG, SVG or CSV, chosen by the file's extension.
     bool exportPlot(ui::PlotsPanel::Plot plot, const QString& path, QString* error);
     bool exportCanvas(const QString& path, QString* error);
+    // The accuracy lab (created on first use).
+    AccuracyDialog* accuracyDialog();
+    void showAccuracyLab();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -132,7 +136,8 @@ private:
     ui::PropertiesPanel* properties_ = nullptr;
     ui::SceneBrowser* browser_ = nullptr;
     ui::PlotsPanel* plots_ = nullptr;
-    QTextBrowser* notes_ = nullptr;  // the scene's name and description: what to try
+    QTextBrowser* notes_ = nullptr;
+    AccuracyDialog* accuracy_ = nullptr;  // the scene's name and description: what to try
     QList<QDockWidget*> docks_;
 
     QMenu* recentMenu_ = nullptr;

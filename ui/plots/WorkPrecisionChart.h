@@ -18,8 +18,10 @@ namespace phasebox::ui {
 struct WorkPrecisionPoint {
     QString integrator;  // the registry name; points of one integrator form one line, in order
     double cpuSeconds = 0.0;
-    double error = 0.0;  // points with an error that is not finite and > 0 are left out
-    QString label;       // shown next to the point: "1/120", "tol 1e-4"
+    // Points whose error is not finite and > 0 are left out (log axis); the legend counts
+    // the diverged ones (error +∞).
+    double error = 0.0;
+    QString label;  // shown next to the point: "1/120", "tol 1e-4"
 };
 
 // Line styles follow the registry: solid explicit, dashed implicit, dotted adaptive; each

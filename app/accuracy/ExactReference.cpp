@@ -1,0 +1,319 @@
+#include "app/accuracy/ExactReference.h"
+
+#include "physics/core/World.h"
+#include "physics/scene/SceneDesc.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace phasebox {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// Relative tolerance for "this vector lies along that axis": the along-axis closed form is
+// exact only when the motion never leaves the axis, and a scene whose numbers merely come close
+// (a velocity typed to six digits) must fall back to rk45 rather than be judged against a
+// slightly wrong "exact" answer.
+constexpr double kAlongAxis = 1e-12;
+
+bool alongAxis(const Vec2& v, const Vec2& axis) {
+    return std::abs(cross(v, axis)) <= kAlongAxis * std::max(1.0, v.norm());
+}
+
+}  // namespace
+
+// y = x − f/ω² obeys y'' + γ·y' + ω²·y = 0, so y = e^{−αt}·(y₀·C(t) + B·S(t)) with α = γ/2,
+// B = v₀ + α·y₀ and (C, S) = (cos βt, sin βt / β), (cosh κt, sinh κt / κ) or (1, t) for
+// β² = ω² − α² positive, negative or zero. S(t) → t as β → 0, so the cases join smoothly.
+double LinearMotion::at(double t) const {
+    if (omega2 == 0.0) {
+        if (gamma == 0.0) return x0 + v0 * t + 0.5 * force * t * t;
+        // Velocity relaxes to the terminal f/γ; expm1 keeps small γ·t accurate.
+        const double terminal = force / gamma;
+        return x0 + terminal * t - (v0 - terminal) * std::expm1(-gamma * t) / gamma;
+    }
+    const double equilibrium = force / omega2;
+    const double alpha = 0.5 * gamma;
+    const double y0 = x0 - equilibrium;
+    const double B = v0 + alpha * y0;
+    const double beta2 = omega2 - alpha * alpha;
+    double y = 0.0;
+    if (beta2 > 0.0) {
+        const double beta = std::sqrt(beta2);
+        y = std::exp(-alpha * t) * (y0 * std::cos(beta * t) + B * std::sin(beta * t) / beta);
+    } else if (beta2 < 0.0) {
+        // Over-damped: e^{−αt}·cosh(κt) written as exponentials that cannot overflow (κ < α).
+        const double kappa = std::sqrt(-beta2);
+        const double slow = std::exp((kappa - alpha) * t), fast = std::exp(-(kappa + alpha) * t);
+        const double c = 0.5 * (slow + fast);
+        const double s = kappa * t < 1.0 ? std::exp(-alpha * t) * std::sinh(kappa * t) / kappa
+                                         : 0.5 * (slow - fast) / kappa;
+        y = y0 * c + B * s;
+    } else {
+        y = std::exp(-alpha * t) * (y0 + B * t);
+    }
+    return equilibrium + y;
+}
+
+double LinearMotion::lowerBound(double T) const {
+    double lowest = std::min(at(0.0), at(T));
+    if (omega2 == 0.0) {
+        // Velocity v(t) = terminal + (v₀ − terminal)·e^{−γt} (or v₀ + f·t) changes sign at most
+        // once: the extremum is there.
+        double tStar = -1.0;
+        if (gamma == 0.0 && force != 0.0) tStar = -v0 / force;
+        if (gamma > 0.0 && force != 0.0 && v0 != force / gamma) {
+            const double ratio = -(force / gamma) / (v0 - force / gamma);
+            if (ratio > 0.0) tStar = -std::log(ratio) / gamma;
+        }
+        if (tStar > 0.0 && tStar < T) lowest = std::min(lowest, at(tStar));
+        return lowest;
+    }
+    const double equilibrium = force / omega2;
+    const double alpha = 0.5 * gamma;
+    const double y0 = x0 - equilibrium;
+    const double B = v0 + alpha * y0;
+    const double beta2 = omega2 - alpha * alpha;
+    if (beta2 > 0.0) {
+        // |y| ≤ e^{−αt}·√(y₀² + (B/β)²) ≤ √(y₀² + (B/β)²): exact when undamped.
+        return equilibrium - std::hypot(y0, B / std::sqrt(beta2));
+    }
+    // Critical or over-damped: y has at most one extremum; find it.
+    double tStar = -1.0;
+    if (beta2 == 0.0) {
+        if (B != 0.0 && alpha > 0.0) tStar = 1.0 / alpha - y0 / B;
+    } else {
+        const double kappa = std::sqrt(-beta2);
+        const double r1 = -alpha + kappa, r2 = -alpha - kappa;
+        const double c1 = (v0 - r2 * y0) / (r1 - r2), c2 = y0 - c1;
+        const double ratio = c1 * r1 != 0.0 ? -(c2 * r2) / (c1 * r1) : -1.0;
+        if (ratio > 0.0) tStar = std::log(ratio) / (r1 - r2);
+    }
+    if (tStar > 0.0 && tStar < T) lowest = std::min(lowest, at(tStar));
+    return lowest;
+}
+
+std::optional<KeplerMotion> KeplerMotion::fromState(const Vec2& centre, const Vec2& position,
+                                                    const Vec2& velocity, double mu) {
+    const Vec2 r = position - centre;
+    const double radius = r.norm(), speed2 = velocity.squaredNorm();
+    if (!(radius > 0.0) || !(mu > 0.0)) return std::nullopt;
+    const double h = cross(r, velocity);
+    // A radial orbit falls into the centre (a singularity the integrators cannot pass either).
+    if (std::abs(h) <= 1e-10 * radius * std::sqrt(speed2)) return std::nullopt;
+    const Vec2 eccentricity = ((speed2 - mu / radius) * r - r.dot(velocity) * velocity) / mu;
+    KeplerMotion k;
+    k.centre = centre;
+    k.e = eccentricity.norm();
+    // Near e = 1 both anomaly equations degenerate; a parabola is left to rk45.
+    if (std::abs(k.e - 1.0) < 1e-6) return std::nullopt;
+    if (k.e < 1e-13) k.e = 0.0;  // circular: the periapsis is wherever we start
+    k.periapsis = k.e > 0.0 ? Vec2(eccentricity / k.e) : Vec2(r / radius);
+    k.normal = h > 0.0 ? perp(k.periapsis) : Vec2(-perp(k.periapsis));
+    const double x0 = r.dot(k.periapsis), y0 = r.dot(k.normal);
+    const double semiMajor = 1.0 / (2.0 / radius - speed2 / mu);  // vis-viva; < 0: hyperbola
+    k.hyperbolic = k.e > 1.0;
+    k.a = std::abs(semiMajor);
+    k.meanMotion = std::sqrt(mu / (k.a * k.a * k.a));
+    if (!k.hyperbolic) {
+        k.b = k.a * std::sqrt(1.0 - k.e * k.e);
+        const double E0 = std::atan2(y0 / k.b, x0 / k.a + k.e);
+        k.meanAnomaly0 = E0 - k.e * std::sin(E0);
+    } else {
+        k.b = k.a * std::sqrt(k.e * k.e - 1.0);
+        const double H0 = std::asinh(y0 / k.b);
+        k.meanAnomaly0 = k.e * std::sinh(H0) - H0;
+    }
+    return k;
+}
+
+Vec2 KeplerMotion::at(double t) const {
+    if (!hyperbolic) {
+        // Kepler's equation E − e·sin E = M by Newton's method, with M reduced to [−π, π] so
+        // that many revolutions lose no accuracy; starting from π for eccentric orbits avoids
+        // Newton's overshoot near the periapsis.
+        const double M = std::remainder(meanAnomaly0 + meanMotion * t, kTwoPi);
+        double E = e < 0.8 ? M : (M >= 0.0 ? std::numbers::pi : -std::numbers::pi);
+        for (int i = 0; i < 100; ++i) {
+            const double dE = (E - e * std::sin(E) - M) / (1.0 - e * std::cos(E));
+            E -= dE;
+            if (std::abs(dE) <= 1e-15 * std::max(1.0, std::abs(E))) break;
+        }
+        return centre + a * (std::cos(E) - e) * periapsis + b * std::sin(E) * normal;
+    }
+    // Hyperbolic: e·sinh H − H = M.
+    const double M = meanAnomaly0 + meanMotion * t;
+    double H = std::asinh(M / e);
+    for (int i = 0; i < 200; ++i) {
+        const double dH = (e * std::sinh(H) - H - M) / (e * std::cosh(H) - 1.0);
+        H -= dH;
+        if (std::abs(dH) <= 1e-15 * std::max(1.0, std::abs(H))) break;
+    }
+    return centre + a * (e - std::cosh(H)) * periapsis + b * std::sinh(H) * normal;
+}
+
+Vec ExactReference::positions(double t) const {
+    Vec q = Vec::Zero(dimension_);
+    for (const Coordinate& c : coordinates_) q[c.dof] = c.motion.at(t);
+    for (const AxisMotion& a : axes_) q.segment<2>(a.dof) = a.anchor + a.s.at(t) * a.axis;
+    for (const Orbit& o : orbits_) q.segment<2>(o.dof) = o.orbit.at(t);
+    return q;
+}
+
+std::optional<ExactReference> findExactReference(const SceneDesc& scene, const World& world,
+                                                 double endTime) {
+    // Contacts act as impulses, not smooth forces: no closed form survives them.
+    if (world.contacts()) return std::nullopt;
+    for (const auto& effect : world.effects()) {
+        const std::string& name = effect->name();
+        if (name != "gravity" && name != "drag" && name != "wind" && name != "springs" &&
+            name != "newtonian_gravity")
+            return std::nullopt;
+    }
+    const EffectsDesc& fx = scene.effects;
+    const Vec& q = world.positions();
+    const Vec& u = world.velocities();
+    ExactReference ref;
+    ref.dimension_ = world.dimension();
+    const auto coordinate = [&](int dof, double omega2, double gamma, double force) {
+        ref.coordinates_.push_back({dof, {omega2, gamma, force, q[dof], u[dof]}});
+    };
+
+    if (world.findEffect("newtonian_gravity")) {
+        // Kepler: one fixed attractor and nothing else, so every body moves on its own conic.
+        if (world.effects().size() != 1 || !fx.newtonianGravity) return std::nullopt;
+        const NewtonianGravityDesc& ng = *fx.newtonianGravity;
+        if (ng.mutual || ng.softening != 0.0 || ng.attractors.size() != 1) return std::nullopt;
+        const double mu = ng.G * ng.attractors[0].mass;
+        const Vec2 centre(ng.attractors[0].position[0], ng.attractors[0].position[1]);
+        ref.kind_ = mu != 0.0 ? "Kepler orbit" : "free motion";
+        const auto body = [&](int dof) {
+            if (mu == 0.0) {
+                coordinate(dof, 0.0, 0.0, 0.0);
+                coordinate(dof + 1, 0.0, 0.0, 0.0);
+                return true;
+            }
+            const auto orbit =
+                KeplerMotion::fromState(centre, q.segment<2>(dof), u.segment<2>(dof), mu);
+            if (orbit) ref.orbits_.push_back({dof, *orbit});
+            return orbit.has_value();
+        };
+        for (const Particle& p : world.particles())
+            if (p.dof >= 0 && !body(p.dof)) return std::nullopt;
+        for (const Box& b : world.boxes()) {
+            if (b.dof < 0) continue;
+            if (!body(b.dof)) return std::nullopt;
+            coordinate(b.dof + 2, 0.0, 0.0, 0.0);  // no torque about the centre: θ = θ₀ + ω₀t
+        }
+        return ref;
+    }
+
+    const Vec2 g = fx.gravity ? Vec2(fx.gravity->g[0], fx.gravity->g[1]) : Vec2::Zero();
+    const DragDesc drag = fx.drag ? *fx.drag : DragDesc{};
+    if (drag.quadratic != 0.0) return std::nullopt;
+    const Vec2 windVelocity =
+        fx.wind ? Vec2(fx.wind->velocity[0], fx.wind->velocity[1]) : Vec2::Zero();
+    const double windDrag = fx.wind ? fx.wind->drag : 0.0;
+
+    // Each dynamic particle may hang on springs whose other end is fixed; any spring touching
+    // a dynamic box or joining two moving particles couples bodies and ends the search.
+    struct Anchored {
+        const Spring* spring;
+        Vec2 anchor;
+    };
+    const auto& particles = world.particles();
+    const auto& boxes = world.boxes();
+    std::vector<std::vector<Anchored>> springsOf(particles.size());
+    const auto fixedPoint = [&](const SpringEnd& end) -> std::optional<Vec2> {
+        switch (end.kind) {
+            case SpringEnd::Kind::Anchor:
+                return end.point;
+            case SpringEnd::Kind::Particle:
+                if (particles[end.index].pinned) return particles[end.index].position;
+                return std::nullopt;
+            case SpringEnd::Kind::Box: {
+                const Box& b = boxes[end.index];
+                if (b.isStatic) return Vec2(b.position + rotation(b.angle) * end.point);
+                return std::nullopt;
+            }
+        }
+        return std::nullopt;
+    };
+    const auto movingParticle = [&](const SpringEnd& end) {
+        return end.kind == SpringEnd::Kind::Particle && !particles[end.index].pinned ? end.index
+                                                                                     : -1;
+    };
+    for (const Spring& s : world.springs()) {
+        const std::optional<Vec2> fixedA = fixedPoint(s.a), fixedB = fixedPoint(s.b);
+        if (fixedA && fixedB) continue;  // moves nothing
+        const int pa = movingParticle(s.a), pb = movingParticle(s.b);
+        if (pa >= 0 && fixedB)
+            springsOf[pa].push_back({&s, *fixedB});
+        else if (pb >= 0 && fixedA)
+            springsOf[pb].push_back({&s, *fixedA});
+        else
+            return std::nullopt;
+    }
+
+    bool anySpring = false, damped = drag.linear > 0.0 || drag.angular > 0.0 || windDrag > 0.0;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const Particle& p = particles[i];
+        if (p.dof < 0) continue;
+        const double m = p.mass;
+        const Vec2 force = g + (windDrag / m) * windVelocity;  // per unit mass
+        const double gamma = (drag.linear + windDrag) / m;
+        const std::vector<Anchored>& springs = springsOf[i];
+        anySpring = anySpring || !springs.empty();
+        const bool linear2d = std::all_of(springs.begin(), springs.end(), [](const Anchored& a) {
+            return a.spring->restLength == 0.0 && a.spring->damping == 0.0;
+        });
+        if (linear2d) {
+            // Σ −kᵢ·(x − aᵢ) = −K·(x − c) with K = Σkᵢ, c = Σkᵢ·aᵢ/K: one isotropic oscillator.
+            double K = 0.0;
+            Vec2 weighted = Vec2::Zero();
+            for (const Anchored& a : springs) {
+                K += a.spring->stiffness;
+                weighted += a.spring->stiffness * a.anchor;
+            }
+            for (int k = 0; k < 2; ++k)
+                coordinate(p.dof + k, K / m, gamma, force[k] + weighted[k] / m);
+            continue;
+        }
+        // A rest length or axial damping is linear only along the spring's axis: demand that
+        // the particle starts on it, moves along it, is pushed along it, and (with a rest
+        // length) never reaches the anchor, where the force would turn round.
+        if (springs.size() != 1) return std::nullopt;
+        const Spring& s = *springs.front().spring;
+        const Vec2 anchor = springs.front().anchor;
+        const Vec2 offset = q.segment<2>(p.dof) - anchor;
+        const double length = offset.norm();
+        if (!(length > 0.0)) return std::nullopt;
+        const Vec2 axis = offset / length;
+        const Vec2 v0 = u.segment<2>(p.dof);
+        if (!alongAxis(v0, axis) || !alongAxis(force, axis)) return std::nullopt;
+        const double k = s.stiffness / m;
+        const LinearMotion along{k, gamma + s.damping / m, force.dot(axis) + k * s.restLength,
+                                 length, v0.dot(axis)};
+        if (s.restLength != 0.0 && !(along.lowerBound(endTime) > 0.0)) return std::nullopt;
+        damped = damped || s.damping > 0.0;
+        ref.axes_.push_back({p.dof, anchor, axis, along});
+    }
+    for (const Box& b : boxes) {
+        if (b.dof < 0) continue;
+        for (int k = 0; k < 2; ++k) coordinate(b.dof + k, 0.0, drag.linear / b.mass, g[k]);
+        coordinate(b.dof + 2, 0.0, drag.angular / b.inertia, 0.0);
+    }
+
+    if (anySpring)
+        ref.kind_ = damped ? "damped harmonic oscillator" : "harmonic oscillator";
+    else if (g != Vec2::Zero())
+        ref.kind_ = damped ? "free fall with linear drag" : "free fall";
+    else
+        ref.kind_ = damped ? "motion with linear drag" : "free motion";
+    return ref;
+}
+
+}  // namespace phasebox

@@ -1,0 +1,92 @@
+#pragma once
+// Closed-form solutions for the scenes whose motion Phasebox knows exactly, used as the
+// reference of the accuracy study: linear oscillators (particles on springs to fixed points,
+// undamped or damped, in 2D when the force is linear and along the spring's axis otherwise),
+// free fall (with linear drag and wind, or none), and Kepler orbits around one fixed attractor.
+//
+// Exactness is claimed only when the world's equations of motion are exactly those of the
+// closed form: anything else (a coupling spring, quadratic drag, a contact, a spring with a
+// rest length swinging sideways) makes findExactReference() answer nullopt and the study falls
+// back to a tight rk45 run.
+
+#include "physics/core/Types.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace phasebox {
+
+class World;
+struct SceneDesc;
+
+// x'' + γ·x' + ω²·x = f with x(0) = x0, x'(0) = v0: one coordinate of a damped oscillator
+// (ω² > 0) or of free motion under a constant force and linear drag (ω² = 0).
+struct LinearMotion {
+    double omega2 = 0.0;
+    double gamma = 0.0;
+    double force = 0.0;
+    double x0 = 0.0;
+    double v0 = 0.0;
+
+    double at(double t) const;
+    // A lower bound of x(t) over [0, T] (exact for the undamped oscillator and for the
+    // over-damped and critical cases, the envelope for the under-damped one).
+    double lowerBound(double T) const;
+};
+
+// A Kepler orbit (elliptic or hyperbolic) of a body around a fixed centre, from its elements.
+struct KeplerMotion {
+    Vec2 centre{0.0, 0.0};
+    Vec2 periapsis{1.0, 0.0};  // unit vector towards the periapsis (P)
+    Vec2 normal{0.0, 1.0};     // P turned by 90° in the direction of motion (Q)
+    double a = 1.0;            // semi-major axis, |a| for a hyperbola
+    double b = 1.0;            // semi-minor axis (ellipse) or a·√(e² − 1) (hyperbola)
+    double e = 0.0;
+    double meanMotion = 1.0;  // √(μ/|a|³)
+    double meanAnomaly0 = 0.0;
+    bool hyperbolic = false;
+
+    // Elements from the position relative to the centre and the velocity; nullopt for the
+    // cases not handled here (radial and near-parabolic orbits, a body at the centre).
+    static std::optional<KeplerMotion> fromState(const Vec2& centre, const Vec2& position,
+                                                 const Vec2& velocity, double mu);
+    Vec2 at(double t) const;
+};
+
+class ExactReference {
+public:
+    // What the reference is, for people: "harmonic oscillator", "Kepler orbit", ….
+    const std::string& kind() const { return kind_; }
+    // Every position coordinate of the world's state (its layout) at time t.
+    Vec positions(double t) const;
+
+private:
+    friend std::optional<ExactReference> findExactReference(const SceneDesc&, const World&, double);
+    struct Coordinate {
+        int dof;
+        LinearMotion motion;
+    };
+    // A particle moving on a fixed line through the anchor of its spring: x = anchor + s·axis.
+    struct AxisMotion {
+        int dof;
+        Vec2 anchor, axis;
+        LinearMotion s;
+    };
+    struct Orbit {
+        int dof;
+        KeplerMotion orbit;
+    };
+    std::string kind_;
+    int dimension_ = 0;
+    std::vector<Coordinate> coordinates_;
+    std::vector<AxisMotion> axes_;
+    std::vector<Orbit> orbits_;
+};
+
+// The closed form of the scene's motion up to endTime, or nullopt when there is none that is
+// exact for this world. `world` is the scene built by buildWorld(scene), at t = 0.
+std::optional<ExactReference> findExactReference(const SceneDesc& scene, const World& world,
+                                                 double endTime);
+
+}  // namespace phasebox

@@ -1,0 +1,371 @@
+#include "app/desktop/AccuracyDialog.h"
+
+#include "app/io/NumberFormat.h"
+#include "physics/integrators/Integrator.h"
+#include "ui/plots/Charts.h"
+#include "ui/plots/WorkPrecisionChart.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMenu>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QTextStream>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+namespace phasebox {
+
+namespace {
+// "1/120" when dt is the inverse of a whole number (as the default list is), else the number.
+QString formatDt(double dt) {
+    const double inverse = 1.0 / dt;
+    if (std::abs(inverse - std::round(inverse)) < 1e-9 * inverse)
+        return QStringLiteral("1/%1").arg(static_cast<long long>(std::llround(inverse)));
+    return QString::number(dt, 'g', 4);
+}
+
+QString formatError(double e) {
+    if (std::isinf(e)) return QObject::tr("diverged");
+    if (std::isnan(e)) return QStringLiteral("–");
+    return QString::number(e, 'e', 2);
+}
+
+const IntegratorInfo* infoOf(const std::string& name) {
+    for (const IntegratorInfo& info : integratorRegistry())
+        if (info.name == name) return &info;
+    return nullptr;
+}
+}  // namespace
+
+AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
+    setWindowTitle(tr("Accuracy Lab — what accuracy costs in time"));
+    setObjectName(QStringLiteral("accuracyDialog"));
+    resize(1200, 800);
+
+    // Choices: which methods, which steps, how long.
+    integrators_ = new QListWidget(this);
+    for (const IntegratorInfo& info : integratorRegistry()) {
+        auto* item = new QListWidgetItem(QString::fromUtf8(info.label.data(), static_cast<int>(info.label.size())),
+                                         integrators_);
+        item->setData(Qt::UserRole, QString::fromUtf8(info.name.data(), static_cast<int>(info.name.size())));
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setCheckState(Qt::Checked);
+    }
+    integrators_->setMaximumWidth(220);
+    dts_ = new QLineEdit(this);
+    dts_->setToolTip(tr("Step sizes, separated by commas; fractions such as 1/120 are fine. The "
+                        "adaptive methods sweep tolerances at the first dt instead."));
+    duration_ = new QLineEdit(this);
+    duration_->setToolTip(tr("Simulated seconds each run lasts; errors are measured at the end."));
+    runButton_ = new QPushButton(tr("&Run"), this);
+    runButton_->setDefault(true);
+    cancelButton_ = new QPushButton(tr("&Cancel"), this);
+    cancelButton_->setEnabled(false);
+    progress_ = new QProgressBar(this);
+    auto* exportButton = new QPushButton(tr("&Export"), this);
+    auto* exportMenu = new QMenu(exportButton);
+    for (const QString& format : {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("csv")})
+        exportMenu->addAction(format.toUpper() + QStringLiteral("…"), this,
+                              [this, format] { exportInteractively(format); });
+    exportButton->setMenu(exportMenu);
+
+    auto* form = new QFormLayout;
+    form->addRow(tr("&dt list:"), dts_);
+    form->addRow(tr("D&uration [s]:"), duration_);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(runButton_);
+    buttons->addWidget(cancelButton_);
+    buttons->addWidget(progress_, 1);
+    buttons->addWidget(exportButton);
+    form->addRow(buttons);
+
+    // "Cheapest settings for an error of …"
+    target_ = new QLineEdit(QStringLiteral("1e-4"), this);
+    target_->setToolTip(tr("The largest position error you accept at the end time, in metres"));
+    cheapest_ = new QLabel(this);
+    cheapest_->setWordWrap(true);
+    apply_ = new QPushButton(tr("&Apply to the scene"), this);
+    apply_->setEnabled(false);
+    auto* cheapRow = new QHBoxLayout;
+    cheapRow->addWidget(new QLabel(tr("Cheapest settings for an error of"), this));
+    cheapRow->addWidget(target_);
+    cheapRow->addWidget(new QLabel(tr("m:"), this));
+    cheapRow->addWidget(cheapest_, 1);
+    cheapRow->addWidget(apply_);
+
+    summary_ = new QLabel(this);
+    summary_->setWordWrap(true);
+    chart_ = new QChartView(ui::createWorkPrecisionChart({}, tr("Work-precision diagram")), this);
+    chart_->setRenderHint(QPainter::Antialiasing);
+    chart_->setMinimumHeight(300);
+    table_ = new QTableWidget(this);
+    table_->setColumnCount(9);
+    table_->setHorizontalHeaderLabels({tr("integrator"), tr("dt"), tr("tolerance"), tr("steps"),
+                                       tr("force evals"), tr("CPU [s]"), tr("position error [m]"),
+                                       tr("energy drift [J]"), tr("order")});
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    orders_ = new QTableWidget(this);
+    orders_->setColumnCount(3);
+    orders_->setHorizontalHeaderLabels({tr("integrator"), tr("observed order"), tr("theory")});
+    orders_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    orders_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+
+    auto* top = new QHBoxLayout;
+    top->addWidget(integrators_);
+    auto* topRight = new QVBoxLayout;
+    topRight->addLayout(form);
+    topRight->addWidget(summary_);
+    topRight->addLayout(cheapRow);
+    top->addLayout(topRight, 1);
+    auto* tables = new QSplitter(Qt::Horizontal, this);
+    tables->addWidget(table_);
+    tables->addWidget(orders_);
+    tables->setStretchFactor(0, 3);
+    tables->setStretchFactor(1, 1);
+    auto* body = new QSplitter(Qt::Vertical, this);
+    body->addWidget(chart_);
+    body->addWidget(tables);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(body, 1);
+
+    connect(runButton_, &QPushButton::clicked, this, &AccuracyDialog::run);
+    connect(cancelButton_, &QPushButton::clicked, this, &AccuracyDialog::cancel);
+    connect(&study_, &AccuracyStudy::progress, this, [this](int done, int total) {
+        progress_->setMaximum(total);
+        progress_->setValue(done);
+    });
+    connect(&study_, &AccuracyStudy::finished, this, &AccuracyDialog::onFinished);
+    connect(target_, &QLineEdit::textChanged, this, &AccuracyDialog::updateCheapest);
+    connect(apply_, &QPushButton::clicked, this, [this] {
+        if (!chosen_) return;
+        emit applyRequested(QString::fromStdString(chosen_->integrator), chosen_->dt,
+                            chosen_->tolerance.value_or(scene_.simulation.tolerance));
+    });
+}
+
+void AccuracyDialog::setScene(const SceneDesc& scene) {
+    scene_ = scene;
+    QStringList dts;
+    for (double dt : defaultAccuracyDts(scene.simulation.dt)) dts << formatDt(dt);
+    dts_->setText(dts.join(QStringLiteral(", ")));
+    // Long scenes make long studies: 60 runs of the whole duration. A few seconds show the
+    // orders as well.
+    duration_->setText(QString::number(std::min(scene.simulation.duration, 5.0), 'g', 6));
+    summary_->setText(tr("Scene: %1. Press Run: every checked method runs the scene at every dt "
+                         "on a copy; the open scene is not touched.")
+                          .arg(QString::fromStdString(scene.name).toHtmlEscaped()));
+}
+
+bool AccuracyDialog::run() {
+    AccuracyOptions options;
+    for (int i = 0; i < integrators_->count(); ++i)
+        if (integrators_->item(i)->checkState() == Qt::Checked)
+            options.integrators.push_back(integrators_->item(i)->data(Qt::UserRole).toString().toStdString());
+    if (options.integrators.empty()) {
+        summary_->setText(tr("Check at least one integrator."));
+        return false;
+    }
+    for (const QString& part : dts_->text().split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const QString text = part.trimmed();
+        bool ok = false;
+        double value = 0.0;
+        if (text.contains(QLatin1Char('/'))) {
+            bool okA = false, okB = false;
+            const double a = text.section(QLatin1Char('/'), 0, 0).toDouble(&okA);
+            const double b = text.section(QLatin1Char('/'), 1, 1).toDouble(&okB);
+            ok = okA && okB && b != 0.0;
+            value = ok ? a / b : 0.0;
+        } else {
+            value = text.toDouble(&ok);
+        }
+        if (!ok || !(value > 0.0) || value > 1.0) {
+            summary_->setText(tr("dt list: \"%1\" is not a step in (0, 1] s.").arg(text.toHtmlEscaped()));
+            return false;
+        }
+        options.dts.push_back(value);
+    }
+    bool ok = false;
+    options.duration = duration_->text().toDouble(&ok);
+    if (!ok || !(options.duration > 0.0) || options.duration > 1e5) {
+        summary_->setText(tr("Duration: a number of seconds > 0, please."));
+        return false;
+    }
+    if (!study_.start(scene_, options)) return false;
+    runButton_->setEnabled(false);
+    cancelButton_->setEnabled(true);
+    progress_->setValue(0);
+    summary_->setText(tr("Running…"));
+    return true;
+}
+
+void AccuracyDialog::cancel() { study_.cancel(); }
+
+void AccuracyDialog::onFinished() {
+    runButton_->setEnabled(true);
+    cancelButton_->setEnabled(false);
+    const AccuracyResult& result = study_.result();
+    if (!result.error.empty() && result.records.empty()) {
+        summary_->setText(tr("The study could not run: %1").arg(QString::fromStdString(result.error)));
+        return;
+    }
+    std::vector<ui::WorkPrecisionPoint> points;
+    for (const AccuracyRecord& r : result.records)
+        points.push_back({QString::fromStdString(r.integrator), r.cpuSeconds, r.positionError,
+                          r.tolerance ? QStringLiteral("tol %1").arg(*r.tolerance, 0, 'g', 1) : formatDt(r.dt)});
+    QChart* old = chart_->chart();
+    chart_->setChart(ui::createWorkPrecisionChart(
+        points, tr("%1: error at t = %2 s against CPU time").arg(QString::fromStdString(scene_.name)).arg(result.endTime)));
+    delete old;
+    fillTable(result);
+    summary_->setText(summaryText());
+    updateCheapest();
+}
+
+QString AccuracyDialog::summaryText() const {
+    const AccuracyResult& result = study_.result();
+    QString text = tr("Reference: %1. %2 runs%3.")
+                       .arg(QString::fromStdString(result.reference))
+                       .arg(result.records.size())
+                       .arg(result.cancelled ? tr(" (cancelled)") : QString());
+    if (result.contacts)
+        text += QLatin1Char(' ') + tr("This scene has contacts: contact events make every method "
+                                      "first-order, so compare drift and distance from the "
+                                      "reference, not orders.");
+    return text;
+}
+
+std::optional<double> AccuracyDialog::observedOrder(const std::vector<AccuracyRecord>& records,
+                                                    const std::string& integrator) {
+    std::vector<double> orders;
+    for (const AccuracyRecord& r : records)
+        if (r.integrator == integrator && r.order && std::isfinite(*r.order)) orders.push_back(*r.order);
+    if (orders.empty()) return std::nullopt;
+    std::sort(orders.begin(), orders.end());
+    return orders[orders.size() / 2];
+}
+
+void AccuracyDialog::fillTable(const AccuracyResult& result) {
+    table_->setRowCount(static_cast<int>(result.records.size()));
+    int row = 0;
+    for (const AccuracyRecord& r : result.records) {
+        const QStringList cells = {
+            QString::fromStdString(r.integrator),
+            formatDt(r.dt),
+            r.tolerance ? QString::number(*r.tolerance, 'g', 2) : QString(),
+            QString::number(r.steps),
+            QString::number(r.forceEvals),
+            QString::number(r.cpuSeconds, 'g', 3),
+            formatError(r.positionError),
+            QString::number(r.energyDrift, 'e', 2),
+            r.order ? QString::number(*r.order, 'f', 2) : QString()};
+        for (int c = 0; c < cells.size(); ++c) table_->setItem(row, c, new QTableWidgetItem(cells[c]));
+        ++row;
+    }
+    orders_->setRowCount(0);
+    std::vector<std::string> seen;
+    for (const AccuracyRecord& r : result.records) {
+        if (std::find(seen.begin(), seen.end(), r.integrator) != seen.end()) continue;
+        seen.push_back(r.integrator);
+        const IntegratorInfo* info = infoOf(r.integrator);
+        const auto order = observedOrder(result.records, r.integrator);
+        const int at = orders_->rowCount();
+        orders_->insertRow(at);
+        orders_->setItem(at, 0, new QTableWidgetItem(QString::fromStdString(r.integrator)));
+        orders_->setItem(at, 1, new QTableWidgetItem(order ? QString::number(*order, 'f', 2)
+                                                           : (result.contacts ? tr("contacts") : tr("–"))));
+        orders_->setItem(at, 2, new QTableWidgetItem(info ? QString::number(info->order) : QString()));
+    }
+}
+
+std::optional<AccuracyRecord> AccuracyDialog::cheapestFor(double targetError) const {
+    std::optional<AccuracyRecord> best;
+    for (const AccuracyRecord& r : study_.result().records) {
+        if (r.diverged || !(r.positionError <= targetError)) continue;
+        if (!best || r.cpuSeconds < best->cpuSeconds) best = r;
+    }
+    return best;
+}
+
+void AccuracyDialog::updateCheapest() {
+    bool ok = false;
+    const double target = target_->text().toDouble(&ok);
+    chosen_.reset();
+    apply_->setEnabled(false);
+    if (!ok || !(target > 0.0)) {
+        cheapest_->setText(tr("type an error such as 1e-4"));
+        return;
+    }
+    if (study_.result().records.empty()) {
+        cheapest_->setText(tr("run the study first"));
+        return;
+    }
+    chosen_ = cheapestFor(target);
+    if (!chosen_) {
+        cheapest_->setText(tr("no run reached it: try smaller steps or a higher-order method"));
+        return;
+    }
+    cheapest_->setText(tr("<b>%1</b> at dt %2%3: error %4 m in %5 s of CPU")
+                           .arg(QString::fromStdString(chosen_->integrator), formatDt(chosen_->dt),
+                                chosen_->tolerance ? tr(", tolerance %1").arg(*chosen_->tolerance, 0, 'g', 2) : QString(),
+                                formatError(chosen_->positionError))
+                           .arg(chosen_->cpuSeconds, 0, 'g', 3));
+    apply_->setEnabled(true);
+}
+
+bool AccuracyDialog::exportTo(const QString& path, QString* error) const {
+    if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) {
+        QSaveFile file(path);
+        if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
+            if (error) *error = tr("cannot write %1: %2").arg(path, file.errorString());
+            return false;
+        }
+        QTextStream out(&file);
+        out << "integrator,dt,steps,force_evals,cpu_seconds,position_error,energy_drift,order,tolerance\n";
+        for (const AccuracyRecord& r : study_.result().records)
+            out << QString::fromStdString(r.integrator) << ',' << formatNumber(r.dt) << ',' << r.steps << ','
+                << r.forceEvals << ',' << formatNumber(r.cpuSeconds) << ',' << formatNumber(r.positionError) << ','
+                << formatNumber(r.energyDrift) << ',' << (r.order ? formatNumber(*r.order) : QString()) << ','
+                << (r.tolerance ? formatNumber(*r.tolerance) : QString()) << '\n';
+        out.flush();
+        if (!file.commit()) {
+            if (error) *error = tr("cannot write %1: %2").arg(path, file.errorString());
+            return false;
+        }
+        return true;
+    }
+    std::vector<ui::WorkPrecisionPoint> points;
+    for (const AccuracyRecord& r : study_.result().records)
+        points.push_back({QString::fromStdString(r.integrator), r.cpuSeconds, r.positionError,
+                          r.tolerance ? QStringLiteral("tol %1").arg(*r.tolerance, 0, 'g', 1) : formatDt(r.dt)});
+    std::unique_ptr<QChart> chart(ui::createWorkPrecisionChart(
+        points, tr("%1: error against CPU time").arg(QString::fromStdString(scene_.name))));
+    return ui::exportChart(chart.get(), path, QSize(1400, 900), error);
+}
+
+void AccuracyDialog::exportInteractively(const QString& format) {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export"), QStringLiteral("accuracy.") + format,
+                                                      format.toUpper() + QStringLiteral(" (*.") + format + QLatin1Char(')'));
+    if (path.isEmpty()) return;
+    QString error;
+    if (!exportTo(path, &error)) QMessageBox::warning(this, tr("Export failed"), error);
+}
+
+}  // namespace phasebox

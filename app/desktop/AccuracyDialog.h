@@ -1,0 +1,77 @@
+#pragma once
+// The accuracy lab (Tools → Accuracy Lab): runs the AccuracyStudy on the open scene's setup in
+// a worker thread and shows what accuracy costs in time — the work-precision diagram, the
+// table of runs, each method's observed order against theory — and answers "what is the
+// cheapest way to an error of …?", which can be applied to the scene.
+
+#include "app/accuracy/AccuracyStudy.h"
+
+#include <QDialog>
+
+#include <optional>
+
+QT_BEGIN_NAMESPACE
+class QChartView;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+QT_END_NAMESPACE
+
+namespace phasebox {
+
+class AccuracyDialog : public QDialog {
+    Q_OBJECT
+
+public:
+    explicit AccuracyDialog(QWidget* parent = nullptr);
+
+    // The scene the next study runs on (a copy is taken when it starts).
+    void setScene(const SceneDesc& scene);
+    // Starts a study with the dialog's choices; false when one is running or the choices are
+    // invalid (the reason is shown).
+    bool run();
+    void cancel();
+    AccuracyStudy& study() { return study_; }
+
+    // The cheapest finished run whose error is at most target (least CPU time), if any.
+    std::optional<AccuracyRecord> cheapestFor(double targetError) const;
+    // The observed order of each integrator (median of its records' orders), for the table.
+    static std::optional<double> observedOrder(const std::vector<AccuracyRecord>& records,
+                                               const std::string& integrator);
+
+    bool exportTo(const QString& path, QString* error) const;  // .png, .svg or .csv
+    QString summaryText() const;
+
+signals:
+    // "Apply" on the cheapest settings: the main window changes the scene's integrator and dt
+    // (and tolerance for the adaptive methods).
+    void applyRequested(const QString& integrator, double dt, double tolerance);
+
+private:
+    void onFinished();
+    void updateCheapest();
+    void fillTable(const AccuracyResult& result);
+    void exportInteractively(const QString& format);
+
+    SceneDesc scene_;
+    AccuracyStudy study_;
+    QListWidget* integrators_ = nullptr;
+    QLineEdit* dts_ = nullptr;
+    QLineEdit* duration_ = nullptr;
+    QPushButton* runButton_ = nullptr;
+    QPushButton* cancelButton_ = nullptr;
+    QProgressBar* progress_ = nullptr;
+    QChartView* chart_ = nullptr;
+    QTableWidget* table_ = nullptr;
+    QTableWidget* orders_ = nullptr;
+    QLabel* summary_ = nullptr;
+    QLineEdit* target_ = nullptr;
+    QLabel* cheapest_ = nullptr;
+    QPushButton* apply_ = nullptr;
+    std::optional<AccuracyRecord> chosen_;
+};
+
+}  // namespace phasebox
