@@ -114,6 +114,7 @@ int runDesktop(QApplication& app) {
     }
     if (options.presentation) window.setPresentationMode(true);
     window.show();
+    window.offerRecovery();
     return app.exec();
 }
 

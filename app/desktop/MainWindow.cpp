@@ -2,6 +2,7 @@
 
 #include "app/desktop/AccuracyDialog.h"
 #include "app/desktop/CanvasTools.h"
+#include "app/document/Autosave.h"
 #include "app/document/PropertyTable.h"
 #include "app/io/SceneIO.h"
 #include "physics/core/World.h"
@@ -16,7 +17,9 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QDir>
 #include <QDockWidget>
+#include <QLocale>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenu>
@@ -75,11 +78,40 @@ MainWindow::MainWindow(QWidget* parent)
 
     connectDocument();
     readSettings();
+    autosave_ = std::make_unique<Autosave>(document_);
+    connect(autosave_.get(), &Autosave::autosaveFailed, this, [this](const QString& message) {
+        statusMessage_->setText(tr("Autosave failed: %1").arg(message));
+    });
     sincePlots_.start();
     document_.newScene();
 }
 
 MainWindow::~MainWindow() = default;
+
+void MainWindow::offerRecovery() {
+    const auto recovery = Autosave::findRecovery(autosave_->recoveryDir());
+    if (!recovery) return;
+    const QString from = recovery->originalPath.isEmpty() ? tr("an unsaved scene")
+                                                          : QDir::toNativeSeparators(recovery->originalPath);
+    const auto answer = QMessageBox::question(
+        this, tr("Recover the last scene?"),
+        tr("Phasebox did not close properly last time. An autosave of %1 from %2 is available. "
+           "Open it?")
+            .arg(from, QLocale().toString(recovery->savedAt.toLocalTime(), QLocale::ShortFormat)),
+        QMessageBox::Open | QMessageBox::Discard, QMessageBox::Open);
+    if (answer == QMessageBox::Open) {
+        const SceneLoadResult loaded = SceneIO::load(recovery->recoveryFile);
+        QString error;
+        if (loaded.ok() && document_.loadFromDesc(*loaded.scene, recovery->originalPath, &error)) {
+            statusMessage_->setText(tr("Recovered from the autosave: save it to keep it."));
+            return;
+        }
+        QMessageBox::warning(this, tr("Could not recover"),
+                             loaded.ok() ? error : loaded.errorText());
+        return;  // the recovery file stays for another try
+    }
+    Autosave::removeRecovery(autosave_->recoveryDir());
+}
 
 QAction* MainWindow::action(const QString& name) const {
     return findChild<QAction*>(name, Qt::FindDirectChildrenOnly);

@@ -14,6 +14,7 @@
 #include <QMainWindow>
 #include <QStringList>
 
+#include <memory>
 #include <set>
 
 QT_BEGIN_NAMESPACE
@@ -37,6 +38,7 @@ class SceneBrowser;
 
 class CanvasTools;
 class AccuracyDialog;
+class Autosave;
 
 // The built-in scenes of a resource folder (":/scenes" for the examples, ":/lessons"), by
 // file name.
@@ -68,6 +70,9 @@ public:
     // Brings every view up to date at once (plots included), for pictures and tests.
     void refreshNow();
     void setPresentationMode(bool on);
+    // After a crash: offers the scene autosaved by the last session (if any) and opens it.
+    void offerRecovery();
+    Autosave* autosave() const { return autosave_.get(); }
 
     // Writes a plot as PNG, SVG or CSV, chosen by the file's extension.
     bool exportPlot(ui::PlotsPanel::Plot plot, const QString& path, QString* error);
@@ -137,7 +142,8 @@ private:
     ui::SceneBrowser* browser_ = nullptr;
     ui::PlotsPanel* plots_ = nullptr;
     QTextBrowser* notes_ = nullptr;
-    AccuracyDialog* accuracy_ = nullptr;  // the scene's name and description: what to try
+    AccuracyDialog* accuracy_ = nullptr;
+    std::unique_ptr<Autosave> autosave_;  // the open scene, every minute, for crash recovery  // the scene's name and description: what to try
     QList<QDockWidget*> docks_;
 
     QMenu* recentMenu_ = nullptr;

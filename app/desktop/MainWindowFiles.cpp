@@ -2,6 +2,7 @@
 
 #include "app/desktop/MainWindow.h"
 
+#include "app/document/Autosave.h"
 #include "app/io/SceneIO.h"
 #include "ui/canvas/SceneView.h"
 #include "ui/plots/Charts.h"
@@ -268,6 +269,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     }
     controller_.pause();
     writeSettings();
+    autosave_->discard();  // a clean exit: nothing to recover next time
     event->accept();
 }
 

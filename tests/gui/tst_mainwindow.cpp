@@ -5,6 +5,7 @@
 #include "app/desktop/CanvasTools.h"
 #include "app/desktop/DesktopOptions.h"
 #include "app/desktop/MainWindow.h"
+#include "app/document/Autosave.h"
 #include "app/io/SceneIO.h"
 #include "physics/core/World.h"
 #include "ui/canvas/SceneView.h"
@@ -251,6 +252,33 @@ private slots:
             QCOMPARE(QString::fromStdString(w.document().setup().name), a->text());
             QVERIFY(!a->toolTip().isEmpty());
         }
+    }
+
+    // The open scene is autosaved; a window that goes away without closing (a crash) leaves
+    // the recovery file, with the scene's own path, and a clean close removes it.
+    void autosaveKeepsTheSceneForRecovery() {
+        QString dir;
+        QByteArray edited;
+        {
+            MainWindow w;
+            QVERIFY(w.openFile(kDemoScene, true));
+            dir = w.autosave()->recoveryDir();
+            ParticleDesc p;
+            p.position = {0.5, 3.0};
+            QVERIFY(w.document().addObject(p));
+            edited = serialized(w);
+            QVERIFY(w.autosave()->autosaveNow());
+        }  // destroyed without closeEvent, as a crash would leave it
+        const auto recovery = Autosave::findRecovery(dir);
+        QVERIFY(recovery.has_value());
+        QCOMPARE(recovery->originalPath, kDemoScene);
+        const SceneLoadResult loaded = SceneIO::load(recovery->recoveryFile);
+        QVERIFY(loaded.ok());
+        QCOMPARE(SceneIO::serialize(*loaded.scene), edited);
+        MainWindow w;
+        w.show();
+        QVERIFY(w.close());  // unmodified: no prompt; a clean exit discards the autosave
+        QVERIFY(!Autosave::findRecovery(dir).has_value());
     }
 
     void saveAndOpenRoundTrip() {
