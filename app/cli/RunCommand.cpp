@@ -120,7 +120,9 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
             o.dt = d;
         } else if (a == QLatin1String("--duration")) {
             if (!(error = number(a, v, d)).isEmpty()) return error;
-            if (!(d > 0.0)) return QStringLiteral("--duration: must be > 0 (got %1)").arg(v);
+            if (!(d > 0.0 && d <= SceneLimits::kMaxDuration))
+                return QStringLiteral("--duration: must be > 0 and <= %1 (got %2)")
+                    .arg(QString::number(SceneLimits::kMaxDuration, 'f', 0), v);
             o.duration = d;
         } else if (a == QLatin1String("--tolerance")) {
             if (!(error = number(a, v, d)).isEmpty()) return error;
@@ -128,7 +130,10 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
             o.tolerance = d;
         } else if (a == QLatin1String("--substeps")) {
             if (!(error = integer(a, v, n)).isEmpty()) return error;
-            if (n < 1) return QStringLiteral("--substeps: must be >= 1 (got %1)").arg(v);
+            if (n < 1 || n > SceneLimits::kMaxSubsteps)
+                return QStringLiteral("--substeps: must be >= 1 and <= %1 (got %2)")
+                    .arg(SceneLimits::kMaxSubsteps)
+                    .arg(v);
             o.substeps = n;
         } else if (a == QLatin1String("--every")) {
             if (!(error = integer(a, v, n)).isEmpty()) return error;
@@ -152,6 +157,37 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
         return QStringLiteral("--json and --csv - both write to standard output; give --csv a file");
     return {};
 }
+
+// A run longer than this is refused before it starts: at dt = 1/60 it is 190 days of simulated
+// time, and a tiny --dt with a long --duration would otherwise run for years.
+constexpr double kMaxRunSteps = 1e9;
+
+// A series of unknown length kept to at most 2·capacity samples: when full, every other sample
+// is dropped and the stride doubles, so what is kept stays spread evenly over the whole run and
+// a billion-step run costs no more memory than a million-step one. The newest sample is always
+// kept (the plots end at the end of the run).
+template <typename T>
+class BoundedSeries {
+public:
+    explicit BoundedSeries(std::size_t capacity) : capacity_(capacity) {}
+    // Whether step k (counted from 1) is due for a sample at the current stride.
+    bool due(long long k) const { return k % stride_ == 0; }
+    void push(const T& value) {
+        if (values_.size() >= 2 * capacity_) {
+            std::size_t kept = 0;
+            for (std::size_t i = 0; i < values_.size(); i += 2) values_[kept++] = values_[i];
+            values_.resize(kept);
+            stride_ *= 2;
+        }
+        values_.push_back(value);
+    }
+    const std::vector<T>& values() const { return values_; }
+
+private:
+    std::size_t capacity_;
+    long long stride_ = 1;
+    std::vector<T> values_;
+};
 
 // An object whose state is written to the CSV or plotted.
 struct Tracked {
@@ -348,26 +384,35 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     }
 
     const double dt = sim.dt;
-    const long long steps = std::max<long long>(1, static_cast<long long>(std::ceil(sim.duration / dt - 1e-9)));
+    // Checked as a double: the count of a 1e6 s run at dt = 1e-300 does not fit any integer.
+    const double stepCount = std::ceil(sim.duration / dt - 1e-9);
+    if (!(stepCount <= kMaxRunSteps))
+        return fail(err, QStringLiteral("a run of %1 s at dt = %2 s takes %3 steps; at most %4 are "
+                                        "allowed: use a larger --dt or a shorter --duration")
+                             .arg(QString::number(sim.duration, 'g', 15),
+                                  QString::number(dt, 'g', 15),
+                                  QString::number(stepCount, 'g', 3),
+                                  QString::number(kMaxRunSteps, 'g', 3)));
+    const long long steps = std::max<long long>(1, static_cast<long long>(stepCount));
     const bool plotting = !o.plotEnergy.isEmpty() || phaseObject;
-    std::vector<ui::EnergySample> energy;
-    std::vector<ui::PhaseSample> phase;
+    // The charts decimate to a few thousand points, so 2·2^16 samples lose nothing visible.
+    BoundedSeries<ui::EnergySample> energy(std::size_t(1) << 16);
+    BoundedSeries<ui::PhaseSample> phase(std::size_t(1) << 16);
     auto sample = [&] {
         if (!o.plotEnergy.isEmpty()) {
             const EnergyLedger& e = world.energy();
-            energy.push_back({world.time(), e.kinetic, e.potential, e.workNc, e.drift});
+            energy.push({world.time(), e.kinetic, e.potential, e.workNc, e.drift});
         }
-        if (phaseObject) phase.push_back(phaseOf(world, *phaseObject, phaseCoordinate));
+        if (phaseObject) phase.push(phaseOf(world, *phaseObject, phaseCoordinate));
     };
-    if (plotting) {
-        energy.reserve(static_cast<std::size_t>(steps) + 1);
-        phase.reserve(static_cast<std::size_t>(steps) + 1);
-        sample();
-    }
+    if (plotting) sample();
 
     const double initialEnergy = world.energy().initial;
-    std::vector<double> stepMs;
-    stepMs.reserve(static_cast<std::size_t>(steps));
+    // Mean and max over every step; the median over an evenly thinned sample once a run passes
+    // 2^21 steps (exact below that).
+    BoundedSeries<double> stepMs(std::size_t(1) << 20);
+    double stepMsSum = 0.0, stepMsMax = 0.0;
+    long long stepsTimed = 0;
     world.resetProfile();
     using Clock = std::chrono::steady_clock;
     const auto wallStart = Clock::now();
@@ -376,14 +421,18 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     for (long long k = 1; k <= steps; ++k) {
         const auto start = Clock::now();
         const bool ok = world.step();
-        stepMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        if (stepMs.due(k)) stepMs.push(ms);
+        stepMsSum += ms;
+        stepMsMax = std::max(stepMsMax, ms);
+        ++stepsTimed;
         if (!ok) {
             diverged = true;
             break;
         }
         done = k;
         if (!o.csv.isEmpty() && (k % o.every == 0 || k == steps)) writeCsvRow(csv.stream(), world, tracked);
-        if (plotting) sample();
+        if (plotting && (energy.due(k) || k == steps)) sample();
     }
     const double wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
 
@@ -396,25 +445,25 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
                               .arg(scene.name.empty() ? o.scene : QString::fromStdString(scene.name),
                                    QString::fromStdString(sim.integrator), QString::number(dt, 'g', 4));
     if (!o.plotEnergy.isEmpty() &&
-        !writePlot(ui::createEnergyChart(energy, {}, title), o.plotEnergy, err))
+        !writePlot(ui::createEnergyChart(energy.values(), {}, title), o.plotEnergy, err))
         status = kBadInput;
     if (phaseObject) {
         static const char* names[3][2] = {{"x [m]", "vx [m/s]"}, {"y [m]", "vy [m/s]"}, {"angle [rad]", "omega [rad/s]"}};
         const QString who = phaseObject->id + QLatin1Char(' ');
-        if (!writePlot(ui::createPhaseChart(phase, who + QLatin1String(names[phaseCoordinate][0]),
+        if (!writePlot(ui::createPhaseChart(phase.values(), who + QLatin1String(names[phaseCoordinate][0]),
                                             who + QLatin1String(names[phaseCoordinate][1]), title),
                        o.plotPhase, err))
             status = kBadInput;
     }
 
     const EnergyLedger& e = world.energy();
-    const double stepsRun = static_cast<double>(std::max<long long>(1, static_cast<long long>(stepMs.size())));
+    const double stepsRun = static_cast<double>(std::max<long long>(1, stepsTimed));
     if (o.json) {
         QJsonArray effects;
         for (const EffectCost& cost : world.effectCosts())
             effects.append(QJsonObject{{"name", QString::fromStdString(cost.name)},
                                        {"ms_per_step", cost.seconds * 1000.0 / stepsRun}});
-        const double mean = stepMs.empty() ? 0.0 : std::accumulate(stepMs.begin(), stepMs.end(), 0.0) / stepMs.size();
+        const double mean = stepsTimed == 0 ? 0.0 : stepMsSum / static_cast<double>(stepsTimed);
         QJsonObject report{
             {"integrator", QString::fromStdString(sim.integrator)},
             {"dt", dt},
@@ -422,9 +471,9 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             {"steps", static_cast<double>(done)},
             {"sim_time", world.time()},
             {"wall_seconds", wallSeconds},
-            {"step_ms", QJsonObject{{"median", median(stepMs)},
+            {"step_ms", QJsonObject{{"median", median(stepMs.values())},
                                     {"mean", mean},
-                                    {"max", stepMs.empty() ? 0.0 : *std::max_element(stepMs.begin(), stepMs.end())}}},
+                                    {"max", stepMsMax}}},
             {"energy", QJsonObject{{"initial", initialEnergy},
                                    {"kinetic", e.kinetic},
                                    {"potential", e.potential},
@@ -462,7 +511,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             << " s, " << sim.substeps << " sub-step(s)\n"
             << "ran:        " << done << " steps to t = " << formatNumber(world.time()) << " s in "
             << QString::number(wallSeconds, 'f', 3) << " s ("
-            << QString::number(median(stepMs), 'g', 3) << " ms per step, median)\n"
+            << QString::number(median(stepMs.values()), 'g', 3) << " ms per step, median)\n"
             << "energy:     initial " << QString::number(initialEnergy, 'g', 6) << " J; now kinetic "
             << QString::number(e.kinetic, 'g', 6) << ", potential " << QString::number(e.potential, 'g', 6)
             << ", work_nc " << QString::number(e.workNc, 'g', 6) << " J\n"

@@ -255,8 +255,15 @@ MoveObjectCommand::MoveObjectCommand(Document& document, const QString& id, cons
         id_ = scene.cloths[ref_.index].id;  // a node moves its cloth
     // Only the position changes, so only it needs checking: a full validateScene() at every
     // mouse move of a drag would cost more than the rebuild.
+    // The file-format bound too: a drag far off screen must not give a scene that saves but
+    // no longer loads.
+    const double limit = SceneLimits::kMaxLength;
     if (!std::isfinite(position[0]) || !std::isfinite(position[1]))
         refuse(QObject::tr("the position of %1 must be finite").arg(quoted(id_)));
+    else if (!(std::abs(position[0]) <= limit && std::abs(position[1]) <= limit))
+        refuse(QObject::tr("the position of %1 must lie within ±%2 m")
+                   .arg(quoted(id_))
+                   .arg(limit, 0, 'g'));
 }
 
 void MoveObjectCommand::place(SceneDesc& scene, const Point2& position) const {

@@ -1,12 +1,14 @@
 #include "app/io/SceneIO.h"
 
+#include "app/io/JsonText.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QJsonParseError>
 #include <QJsonValue>
+#include <QLocale>
 
 #include <algorithm>
 #include <cmath>
@@ -35,8 +37,9 @@ constexpr std::string_view kTopKeys[] = {"format",     "version", "name",      "
                                          "planes",     "springs", "cloths"};
 constexpr std::string_view kSimulationKeys[] = {
     "integrator", "dt", "substeps", "tolerance", "newton_iterations", "duration", "solver"};
-constexpr std::string_view kEffectKeys[] = {"gravity", "drag",     "newtonian_gravity",  "buoyancy",
-                                            "wind",    "flocking", "particle_collisions"};
+constexpr std::string_view kEffectKeys[] = {
+    "gravity", "drag", "newtonian_gravity", "buoyancy", "wind", "flocking", "particle_collisions",
+    "coulomb"};
 constexpr std::string_view kGravityKeys[] = {"g"};
 constexpr std::string_view kDragKeys[] = {"linear", "quadratic", "angular"};
 constexpr std::string_view kNewtonianKeys[] = {"G", "attractors", "mutual", "softening"};
@@ -46,6 +49,7 @@ constexpr std::string_view kWindKeys[] = {"velocity", "drag"};
 constexpr std::string_view kFlockingKeys[] = {"radius", "separation", "alignment", "cohesion",
                                               "max_speed"};
 constexpr std::string_view kCollisionKeys[] = {"restitution"};
+constexpr std::string_view kCoulombKeys[] = {"k", "softening"};
 constexpr std::string_view kParticleKeys[] = {
     "id", "position", "velocity", "mass", "radius", "pinned", "restitution", "friction", "charge"};
 constexpr std::string_view kBoxKeys[] = {"id",       "position",         "size",       "angle",
@@ -75,24 +79,6 @@ QString join(const QString& path, std::string_view key) {
 
 QString index(const QString& path, qsizetype i) {
     return path + QLatin1Char('[') + QString::number(i) + QLatin1Char(']');
-}
-
-// 1-based line and column of a byte offset into UTF-8 text. The column counts characters,
-// not bytes, because that is what editors show.
-std::pair<int, int> lineAndColumn(const QByteArray& text, qsizetype offset) {
-    offset = std::clamp<qsizetype>(offset, 0, text.size());
-    int line = 1;
-    int column = 1;
-    for (qsizetype i = 0; i < offset; ++i) {
-        const auto byte = static_cast<unsigned char>(text[i]);
-        if (byte == '\n') {
-            ++line;
-            column = 1;
-        } else if ((byte & 0xC0) != 0x80) {  // not a UTF-8 continuation byte
-            ++column;
-        }
-    }
-    return {line, column};
 }
 
 // Optimal string alignment distance (Levenshtein plus transposition of neighbours), ignoring
@@ -138,7 +124,7 @@ std::optional<std::string_view> misspeltKey(const QString& key, KeyList known) {
 
 QString describeVersion(double v) {
     if (std::abs(v) < 1e15) return QString::number(static_cast<qint64>(v));
-    return QString::number(v, 'g', 17);
+    return QString::number(v, 'g', QLocale::FloatingPointShortest);
 }
 
 // Collects every problem of one file as "SOURCE: PATH: what".
@@ -415,6 +401,10 @@ void readEffects(Fields& fx, EffectsDesc& out) {
     readEffect(
         fx, "particle_collisions", kCollisionKeys, out.particleCollisions,
         [](Fields& f, ParticleCollisionsDesc& d) { f.number("restitution", d.restitution); });
+    readEffect(fx, "coulomb", kCoulombKeys, out.coulomb, [](Fields& f, CoulombDesc& d) {
+        f.number("k", d.k);
+        f.number("softening", d.softening);
+    });
 }
 
 void readParticle(Fields& f, ParticleDesc& p) {
@@ -568,15 +558,17 @@ SceneLoadResult SceneIO::load(const QString& path) {
     return parse(bytes, path);
 }
 
-SceneLoadResult SceneIO::parse(const QByteArray& json, const QString& sourceName) {
+SceneLoadResult SceneIO::parse(const QByteArray& text, const QString& sourceName) {
     SceneLoadResult result;
-    QJsonParseError parseError;
-    const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
-    if (parseError.error != QJsonParseError::NoError) {
-        const auto [line, column] = lineAndColumn(json, parseError.offset);
+    // Editors on Windows start UTF-8 files with a byte order mark. Qt skips it, but the columns
+    // of the first line would then count it as a character.
+    const QByteArray json = text.startsWith("\xEF\xBB\xBF") ? text.mid(3) : text;
+    QJsonDocument document;
+    if (const auto problem = jsontext::parse(json, document)) {
+        const auto [line, column] = jsontext::lineAndColumn(json, problem->offset);
         result.errors << QStringLiteral("%1:%2:%3: %4")
                              .arg(sourceName, QString::number(line), QString::number(column),
-                                  parseError.errorString());
+                                  problem->what);
         return result;
     }
 

@@ -2,6 +2,7 @@
 
 #include <QSaveFile>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string_view>
@@ -256,6 +257,13 @@ void writeEffects(Writer& w, const EffectsDesc& fx) {
         w.field("restitution", fx.particleCollisions->restitution);
         w.endObject();
     }
+    if (fx.coulomb) {
+        w.key("coulomb");
+        w.beginObject();
+        w.field("k", fx.coulomb->k);
+        w.field("softening", fx.coulomb->softening);
+        w.endObject();
+    }
     w.endObject();
 }
 
@@ -386,8 +394,15 @@ bool SceneIO::save(const SceneDesc& scene, const QString& path, QString* error) 
         return false;
     };
     if (!file.open(QIODevice::WriteOnly)) return fail(file.errorString());
-    if (file.write(bytes) != bytes.size()) {
-        const QString reason = file.errorString();
+    if (const qint64 written = file.write(bytes); written != bytes.size()) {
+        // A full disk or a file-size limit gives a short write with no error set, and Qt's
+        // error string is then "Unknown error": say what happened instead.
+        const QString reason =
+            file.error() != QFileDevice::NoError
+                ? file.errorString()
+                : QStringLiteral("only %1 of %2 bytes could be written (is the disk full?)")
+                      .arg(std::max<qint64>(written, 0))
+                      .arg(bytes.size());
         file.cancelWriting();
         return fail(reason);
     }

@@ -203,7 +203,7 @@ void World::rebuildSpringEffect() {
 }
 
 void World::bindEffects() {
-    const EffectWorldView view{&layout_, &mass_};
+    const EffectWorldView view{&layout_, &mass_, &particles_, &boxes_};
     for (auto& effect : effects_) effect->bind(view);
     sortEffectsByChannel();
 }

@@ -12,13 +12,22 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace phasebox {
 
-// What every effect may read of the world: the layout and the per-dof masses.
+struct Particle;
+struct Box;
+
+// What every effect may read of the world: the layout and the per-dof masses, and the objects
+// themselves for the few effects that need a property the state does not hold (a disk's radius
+// for buoyancy, a charge for Coulomb, a pinned particle's fixed position). Such an effect copies
+// what it needs into arrays of its own in bind(), so the per-step loops stay on flat arrays.
 struct EffectWorldView {
     const StateLayout* layout = nullptr;
     const Vec* mass = nullptr;  // per dof: m, m for particles; m, m, I for boxes
+    const std::vector<Particle>* particles = nullptr;  // every particle, with its dof (−1: pinned)
+    const std::vector<Box>* boxes = nullptr;          // every box, with its dof (−1: static)
 };
 
 class Effect {

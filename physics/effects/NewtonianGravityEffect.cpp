@@ -1,13 +1,18 @@
 #include "physics/effects/NewtonianGravityEffect.h"
 
 #include <cmath>
+#include <limits>
 
 namespace phasebox {
 
-// Calls fn(i, j, r, GMm) for every interacting pair: body dof i against an attractor (j = −1),
-// and with mutual, particle dof i against particle dof j > i. r = p_i − p_j.
+bool NewtonianGravityEffect::usesTree() const {
+    return mutual_ && view_.layout && view_.layout->dynamicParticles > treeThreshold_;
+}
+
+// Calls fn(i, j, r, GMm) for every pair summed directly: body dof i against an attractor
+// (j = −1), and with mutualPairs, particle dof i against particle dof j > i. r = p_i − p_j.
 template <typename Fn>
-void NewtonianGravityEffect::forEachPair(const Vec& q, Fn&& fn) const {
+void NewtonianGravityEffect::forEachPair(const Vec& q, bool mutualPairs, Fn&& fn) const {
     const StateLayout& layout = *view_.layout;
     const Vec& m = *view_.mass;
     auto body = [&](int i) {
@@ -16,7 +21,7 @@ void NewtonianGravityEffect::forEachPair(const Vec& q, Fn&& fn) const {
     };
     for (int p = 0; p < layout.dynamicParticles; ++p) body(layout.particleDof(p));
     for (int b = 0; b < layout.dynamicBoxes; ++b) body(layout.boxDof(b));
-    if (!mutual_) return;
+    if (!mutualPairs) return;
     for (int a = 0; a < layout.dynamicParticles; ++a) {
         const int i = layout.particleDof(a);
         for (int b = a + 1; b < layout.dynamicParticles; ++b) {
@@ -27,7 +32,18 @@ void NewtonianGravityEffect::forEachPair(const Vec& q, Fn&& fn) const {
 }
 
 double NewtonianGravityEffect::addForces(double, const Vec& q, const Vec&, Vec& force) {
-    forEachPair(q, [&](int i, int j, const Vec2& r, double gmm) {
+    const bool tree = usesTree();
+    if (tree) {
+        const int n = view_.layout->dynamicParticles;
+        if (tree_.build(q.data(), view_.mass->data(), n, openingAngle_)) {
+            tree_.addForces(G_, softening2_, force.data());
+        } else {
+            // A non-finite position: the forces are not finite either, which the world reports
+            // as a divergence (the tree cannot sort such a body into a cell).
+            force.head(2 * n).setConstant(std::numeric_limits<double>::quiet_NaN());
+        }
+    }
+    forEachPair(q, mutual_ && !tree, [&](int i, int j, const Vec2& r, double gmm) {
         const double s2 = r.squaredNorm() + softening2_;
         if (!(s2 > 0.0)) return;
         const Vec2 f = (-gmm / (s2 * std::sqrt(s2))) * r;
@@ -39,8 +55,8 @@ double NewtonianGravityEffect::addForces(double, const Vec& q, const Vec&, Vec& 
 
 void NewtonianGravityEffect::addJacobians(double, const Vec& q, const Vec&,
                                           ForceJacobians& jac) {
-    // ∂F_i/∂p_i = −G·M·m·(I/s³ − 3·r·rᵀ/s⁵), s² = ‖r‖² + ε².
-    forEachPair(q, [&](int i, int j, const Vec2& r, double gmm) {
+    // ∂F_i/∂p_i = −G·M·m·(I/s³ − 3·r·rᵀ/s⁵), s² = ‖r‖² + ε². None for the tree's pairs.
+    forEachPair(q, mutual_ && !usesTree(), [&](int i, int j, const Vec2& r, double gmm) {
         const double s2 = r.squaredNorm() + softening2_;
         if (!(s2 > 0.0)) return;
         const double s3 = s2 * std::sqrt(s2);
@@ -55,7 +71,14 @@ void NewtonianGravityEffect::addJacobians(double, const Vec& q, const Vec&,
 
 double NewtonianGravityEffect::potentialEnergy(const Vec& q) const {
     double energy = 0.0;
-    forEachPair(q, [&](int, int, const Vec2& r, double gmm) {
+    const bool tree = usesTree();
+    if (tree) {
+        if (!tree_.build(q.data(), view_.mass->data(), view_.layout->dynamicParticles,
+                         openingAngle_))
+            return std::numeric_limits<double>::quiet_NaN();
+        energy += tree_.potentialEnergy(G_, softening2_);
+    }
+    forEachPair(q, mutual_ && !tree, [&](int, int, const Vec2& r, double gmm) {
         const double s2 = r.squaredNorm() + softening2_;
         if (s2 > 0.0) energy -= gmm / std::sqrt(s2);
     });

@@ -1,6 +1,9 @@
 #include "physics/scene/BuildWorld.h"
 
+#include "physics/effects/BuoyancyEffect.h"
+#include "physics/effects/CoulombEffect.h"
 #include "physics/effects/DragEffect.h"
+#include "physics/effects/FlockingEffect.h"
 #include "physics/effects/GravityEffect.h"
 #include "physics/effects/NewtonianGravityEffect.h"
 #include "physics/effects/WindEffect.h"
@@ -21,17 +24,28 @@ std::string summarize(const std::vector<SceneIssue>& issues) {
     return out;
 }
 
-bool isPinned(const ClothDesc& cloth, int i, int j) {
-    const int nx = cloth.resolution[0];
-    if (const auto* mode = std::get_if<std::string>(&cloth.pinned)) {
-        if (*mode == "top") return j == 0;
-        if (*mode == "top_corners") return j == 0 && (i == 0 || i == nx - 1);
-        if (*mode == "left") return i == 0;
-        return false;
-    }
-    for (const auto& node : std::get<std::vector<std::array<int, 2>>>(cloth.pinned))
-        if (node[0] == i && node[1] == j) return true;
+bool isPinned(const std::string& mode, int nx, int i, int j) {
+    if (mode == "top") return j == 0;
+    if (mode == "top_corners") return j == 0 && (i == 0 || i == nx - 1);
+    if (mode == "left") return i == 0;
     return false;
+}
+
+// Which nodes are pinned, node (i, j) at j·nx + i. An explicit list is read once: looking every
+// node up in it costs nodes × list entries, hours for a 1000 × 1000 cloth that lists its nodes
+// (a generated or hostile file can).
+std::vector<char> pinnedNodes(const ClothDesc& cloth) {
+    const int nx = cloth.resolution[0], ny = cloth.resolution[1];
+    std::vector<char> pinned(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny), 0);
+    if (const auto* mode = std::get_if<std::string>(&cloth.pinned)) {
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i)
+                pinned[static_cast<std::size_t>(j) * nx + i] = isPinned(*mode, nx, i, j);
+        return pinned;
+    }
+    for (const auto& [i, j] : std::get<std::vector<std::array<int, 2>>>(cloth.pinned))
+        if (i >= 0 && i < nx && j >= 0 && j < ny) pinned[static_cast<std::size_t>(j) * nx + i] = 1;
+    return pinned;
 }
 
 void addClothSprings(World& world, const Cloth& cloth, const ClothDesc& desc) {
@@ -69,6 +83,18 @@ void addClothSprings(World& world, const Cloth& cloth, const ClothDesc& desc) {
             addSpring(i, j, i, j + 2, k.bend);
         }
     }
+}
+
+// Coulomb's law has something to do when two particles carry a charge and one of them can move.
+bool needsCoulomb(const SceneDesc& scene) {
+    int charged = 0;
+    bool free = false;
+    for (const ParticleDesc& p : scene.particles) {
+        if (p.charge == 0.0) continue;
+        ++charged;
+        free = free || !p.pinned;
+    }
+    return charged >= 2 && free;
 }
 }  // namespace
 
@@ -112,10 +138,24 @@ BuildResult buildWorld(const SceneDesc& scene) {
             fx.newtonianGravity->G, std::move(attractors), fx.newtonianGravity->mutual,
             fx.newtonianGravity->softening));
     }
+    if (fx.buoyancy) {
+        // validateScene() has made sure gravity is there: the fluid's weight is what lifts.
+        const Vec2 g = fx.gravity ? vec(fx.gravity->g) : Vec2::Zero();
+        world.addEffect(std::make_unique<BuoyancyEffect>(
+            fx.buoyancy->fluidDensity, fx.buoyancy->surfaceY, fx.buoyancy->drag, g.norm()));
+    }
     if (fx.wind)
         world.addEffect(std::make_unique<WindEffect>(vec(fx.wind->velocity), fx.wind->drag));
-    if (fx.buoyancy) result.unsupported.push_back("buoyancy");
-    if (fx.flocking) result.unsupported.push_back("flocking");
+    if (fx.flocking) {
+        const FlockingDesc& f = *fx.flocking;
+        world.addEffect(std::make_unique<FlockingEffect>(
+            FlockingParameters{f.radius, f.separation, f.alignment, f.cohesion, f.maxSpeed}));
+    }
+    // Coulomb's law is implied by the charges, as the spring force is by springs.
+    if (needsCoulomb(scene)) {
+        const CoulombDesc coulomb = fx.coulomb.value_or(CoulombDesc{});
+        world.addEffect(std::make_unique<CoulombEffect>(coulomb.k, coulomb.softening));
+    }
     if (fx.particleCollisions) world.setParticleCollisions(true, fx.particleCollisions->restitution);
 
     // Objects. Ids map to particle or box indices for the springs.
@@ -169,6 +209,7 @@ BuildResult buildWorld(const SceneDesc& scene) {
         cloth.firstSpring = static_cast<int>(world.springs().size());
         const double nodeMass = d.mass / (static_cast<double>(cloth.nx) * cloth.ny);
         const double dx = d.size[0] / (cloth.nx - 1), dy = d.size[1] / (cloth.ny - 1);
+        const std::vector<char> pinned = pinnedNodes(d);
         for (int j = 0; j < cloth.ny; ++j) {
             for (int i = 0; i < cloth.nx; ++i) {
                 Particle p;
@@ -176,7 +217,7 @@ BuildResult buildWorld(const SceneDesc& scene) {
                 p.position = {d.origin[0] + i * dx, d.origin[1] - j * dy};
                 p.mass = nodeMass;
                 p.radius = d.radius;
-                p.pinned = isPinned(d, i, j);
+                p.pinned = pinned[static_cast<std::size_t>(j) * cloth.nx + i] != 0;
                 p.cloth = static_cast<int>(world.cloths().size());
                 ends[p.id] = {SpringEnd::Kind::Particle, world.addParticle(p), Vec2::Zero()};
             }

@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <unordered_set>
@@ -16,11 +17,21 @@ std::string defaultOr(const std::string& id, const char* prefix, std::size_t ind
 }
 
 // Shortest text that reads back as v, so that "got 1.0000001" is never printed as "got 1".
+// The exponent is written as JSON authors write it: 1e300 and 1e-12, not 1e+300 and 1e-012.
 std::string fmt(double v) {
     char buffer[32];
     const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return std::string(buffer, result.ptr);
+    std::string text(buffer, result.ptr);
+    if (const auto e = text.find('e'); e != std::string::npos) {
+        std::size_t digits = e + 1;
+        if (digits < text.size() && text[digits] == '+') text.erase(digits, 1);
+        else if (digits < text.size() && text[digits] == '-') ++digits;
+        while (digits + 1 < text.size() && text[digits] == '0') text.erase(digits, 1);
+    }
+    return text;
 }
+
+using L = SceneLimits;
 
 // Collects issues with JSON-style paths: check(path, condition, message).
 class Checker {
@@ -30,28 +41,62 @@ public:
     void fail(const std::string& path, const std::string& message) {
         out_.push_back({path, message});
     }
-    // Each numeric check first requires a finite number.
+    // Each numeric check first requires a finite number; each returns whether v passed, so
+    // that checks chain (positive, then at most the limit) and report one problem per value.
     bool finite(const std::string& path, double v) {
         if (std::isfinite(v)) return true;
         fail(path, "must be a finite number");
         return false;
     }
-    void positive(const std::string& path, double v) {
-        if (finite(path, v) && !(v > 0.0)) fail(path, "must be > 0 (got " + fmt(v) + ")");
+    bool positive(const std::string& path, double v, double max = kNoLimit) {
+        if (!finite(path, v)) return false;
+        if (!(v > 0.0)) return fails(path, "must be > 0 (got " + fmt(v) + ")");
+        return atMost(path, v, max);
     }
-    void nonNegative(const std::string& path, double v) {
-        if (finite(path, v) && v < 0.0) fail(path, "must be >= 0 (got " + fmt(v) + ")");
+    bool nonNegative(const std::string& path, double v, double max = kNoLimit) {
+        if (!finite(path, v)) return false;
+        if (v < 0.0) return fails(path, "must be >= 0 (got " + fmt(v) + ")");
+        return atMost(path, v, max);
     }
-    void unitInterval(const std::string& path, double v) {
+    bool unitInterval(const std::string& path, double v) {
         if (finite(path, v) && (v < 0.0 || v > 1.0))
-            fail(path, "must be between 0 and 1 (got " + fmt(v) + ")");
+            return fails(path, "must be between 0 and 1 (got " + fmt(v) + ")");
+        return std::isfinite(v);
     }
-    void point(const std::string& path, const Point2& p) {
-        finite(path + "[0]", p[0]);
-        finite(path + "[1]", p[1]);
+    // A signed value: finite and |v| <= limit.
+    bool magnitude(const std::string& path, double v, double limit) {
+        if (!finite(path, v)) return false;
+        if (std::abs(v) > limit)
+            return fails(path, "must be between -" + fmt(limit) + " and " + fmt(limit) + " (got " +
+                                   fmt(v) + ")");
+        return true;
+    }
+    bool atMost(const std::string& path, double v, double max) {
+        if (v > max) return fails(path, "must be <= " + fmt(max) + " (got " + fmt(v) + ")");
+        return true;
+    }
+    bool atLeast(const std::string& path, double v, double min) {
+        if (v < min) return fails(path, "must be >= " + fmt(min) + " (got " + fmt(v) + ")");
+        return true;
+    }
+    // Both coordinates finite and within ±limit (lengths by default).
+    void point(const std::string& path, const Point2& p, double limit = L::kMaxLength) {
+        magnitude(path + "[0]", p[0], limit);
+        magnitude(path + "[1]", p[1], limit);
+    }
+    // A positive mass within [kMinMass, max].
+    void mass(const std::string& path, double v, double max = L::kMaxMass) {
+        if (positive(path, v, max)) atLeast(path, v, L::kMinMass);
     }
 
+    static constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+
 private:
+    bool fails(const std::string& path, const std::string& message) {
+        fail(path, message);
+        return false;
+    }
+
     std::vector<SceneIssue>& out_;
 };
 
@@ -80,10 +125,10 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     if (check.finite("simulation.dt", sim.dt) && !(sim.dt > 0.0 && sim.dt <= 1.0))
         check.fail("simulation.dt", "must be > 0 and <= 1 (got " + fmt(sim.dt) + ")");
     if (sim.substeps < 1) check.fail("simulation.substeps", "must be an integer >= 1");
-    check.positive("simulation.tolerance", sim.tolerance);
+    check.positive("simulation.tolerance", sim.tolerance, L::kMaxCoefficient);
     if (sim.newtonIterations < 1)
         check.fail("simulation.newton_iterations", "must be an integer >= 1");
-    check.positive("simulation.duration", sim.duration);
+    check.positive("simulation.duration", sim.duration, L::kMaxDuration);
     // The contact solver's keys (engine-defined); others are ignored like any unknown key.
     for (const auto& [key, value] : sim.solver) {
         const std::string path = "simulation.solver." + key;
@@ -92,51 +137,56 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
             if (value < 0 || value > 1000 || value != std::floor(value))
                 check.fail(path, "must be an integer between 0 and 1000");
         } else if (key == "contact_hertz" || key == "push_out") {
-            check.positive(path, value);
+            check.positive(path, value, L::kMaxCoefficient);
         } else if (key == "damping_ratio" || key == "restitution_threshold" ||
                    key == "speculative_distance") {
-            check.nonNegative(path, value);
+            check.nonNegative(path, value, L::kMaxCoefficient);
         }
     }
 
     // effects
     const EffectsDesc& fx = scene.effects;
-    if (fx.gravity) check.point("effects.gravity.g", fx.gravity->g);
+    if (fx.gravity) check.point("effects.gravity.g", fx.gravity->g, L::kMaxAcceleration);
     if (fx.drag) {
-        check.nonNegative("effects.drag.linear", fx.drag->linear);
-        check.nonNegative("effects.drag.quadratic", fx.drag->quadratic);
-        check.nonNegative("effects.drag.angular", fx.drag->angular);
+        check.nonNegative("effects.drag.linear", fx.drag->linear, L::kMaxCoefficient);
+        check.nonNegative("effects.drag.quadratic", fx.drag->quadratic, L::kMaxCoefficient);
+        check.nonNegative("effects.drag.angular", fx.drag->angular, L::kMaxCoefficient);
     }
     if (fx.newtonianGravity) {
         const auto& ng = *fx.newtonianGravity;
-        check.nonNegative("effects.newtonian_gravity.G", ng.G);
-        check.nonNegative("effects.newtonian_gravity.softening", ng.softening);
+        check.nonNegative("effects.newtonian_gravity.G", ng.G, L::kMaxCoefficient);
+        check.nonNegative("effects.newtonian_gravity.softening", ng.softening, L::kMaxLength);
         for (std::size_t i = 0; i < ng.attractors.size(); ++i) {
             const std::string path = "effects.newtonian_gravity." + at("attractors", i);
             check.point(path + ".position", ng.attractors[i].position);
-            check.nonNegative(path + ".mass", ng.attractors[i].mass);
+            check.nonNegative(path + ".mass", ng.attractors[i].mass, L::kMaxAttractorMass);
         }
     }
     if (fx.buoyancy) {
-        check.positive("effects.buoyancy.fluid_density", fx.buoyancy->fluidDensity);
-        check.finite("effects.buoyancy.surface_y", fx.buoyancy->surfaceY);
-        check.nonNegative("effects.buoyancy.drag", fx.buoyancy->drag);
+        check.positive("effects.buoyancy.fluid_density", fx.buoyancy->fluidDensity, L::kMaxMass);
+        check.magnitude("effects.buoyancy.surface_y", fx.buoyancy->surfaceY, L::kMaxLength);
+        check.nonNegative("effects.buoyancy.drag", fx.buoyancy->drag, L::kMaxCoefficient);
         if (!fx.gravity) check.fail("effects.buoyancy", "needs the gravity effect");
     }
     if (fx.wind) {
-        check.point("effects.wind.velocity", fx.wind->velocity);
-        check.nonNegative("effects.wind.drag", fx.wind->drag);
+        check.point("effects.wind.velocity", fx.wind->velocity, L::kMaxSpeed);
+        check.nonNegative("effects.wind.drag", fx.wind->drag, L::kMaxCoefficient);
     }
     if (fx.flocking) {
-        check.positive("effects.flocking.radius", fx.flocking->radius);
-        check.nonNegative("effects.flocking.separation", fx.flocking->separation);
-        check.nonNegative("effects.flocking.alignment", fx.flocking->alignment);
-        check.nonNegative("effects.flocking.cohesion", fx.flocking->cohesion);
-        check.positive("effects.flocking.max_speed", fx.flocking->maxSpeed);
+        check.positive("effects.flocking.radius", fx.flocking->radius, L::kMaxLength);
+        const FlockingDesc& f = *fx.flocking;
+        check.nonNegative("effects.flocking.separation", f.separation, L::kMaxCoefficient);
+        check.nonNegative("effects.flocking.alignment", f.alignment, L::kMaxCoefficient);
+        check.nonNegative("effects.flocking.cohesion", f.cohesion, L::kMaxCoefficient);
+        check.positive("effects.flocking.max_speed", fx.flocking->maxSpeed, L::kMaxSpeed);
     }
     if (fx.particleCollisions)
         check.unitInterval("effects.particle_collisions.restitution",
                            fx.particleCollisions->restitution);
+    if (fx.coulomb) {
+        check.nonNegative("effects.coulomb.k", fx.coulomb->k, L::kMaxCoefficient);
+        check.nonNegative("effects.coulomb.softening", fx.coulomb->softening, L::kMaxLength);
+    }
 
     // Sizes: past these limits a scene is refused rather than allowed to exhaust memory or
     // hang (the limits are documented in docs/scene-format.md).
@@ -182,26 +232,29 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
         const std::string path = at("particles", i);
         claim(path, particleId(scene, i), true, p.id.empty());
         check.point(path + ".position", p.position);
-        check.point(path + ".velocity", p.velocity);
-        check.positive(path + ".mass", p.mass);
-        check.nonNegative(path + ".radius", p.radius);
+        check.point(path + ".velocity", p.velocity, L::kMaxSpeed);
+        check.mass(path + ".mass", p.mass);
+        check.nonNegative(path + ".radius", p.radius, L::kMaxLength);
         check.unitInterval(path + ".restitution", p.restitution);
-        check.nonNegative(path + ".friction", p.friction);
-        check.finite(path + ".charge", p.charge);
+        check.nonNegative(path + ".friction", p.friction, L::kMaxCoefficient);
+        check.magnitude(path + ".charge", p.charge, L::kMaxCharge);
     }
     for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
         const BoxDesc& b = scene.boxes[i];
         const std::string path = at("boxes", i);
         claim(path, boxId(scene, i), true, b.id.empty());
         check.point(path + ".position", b.position);
-        check.positive(path + ".size[0]", b.size[0]);
-        check.positive(path + ".size[1]", b.size[1]);
-        check.finite(path + ".angle", b.angle);
-        check.point(path + ".velocity", b.velocity);
-        check.finite(path + ".angular_velocity", b.angularVelocity);
-        if (b.mass) check.positive(path + ".mass", *b.mass);
-        else check.positive(path + ".density", b.density);
-        check.nonNegative(path + ".friction", b.friction);
+        for (int k = 0; k < 2; ++k) {
+            const std::string size = path + ".size[" + std::to_string(k) + "]";
+            if (check.positive(size, b.size[k], L::kMaxLength))
+                check.atLeast(size, b.size[k], L::kMinBoxSize);
+        }
+        check.magnitude(path + ".angle", b.angle, L::kMaxAngle);
+        check.point(path + ".velocity", b.velocity, L::kMaxSpeed);
+        check.magnitude(path + ".angular_velocity", b.angularVelocity, L::kMaxSpeed);
+        if (b.mass) check.mass(path + ".mass", *b.mass);
+        else check.mass(path + ".density", b.density);
+        check.nonNegative(path + ".friction", b.friction, L::kMaxCoefficient);
         check.unitInterval(path + ".restitution", b.restitution);
     }
     for (std::size_t i = 0; i < scene.planes.size(); ++i) {
@@ -210,8 +263,14 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
         claim(path, planeId(scene, i), false, p.id.empty());
         check.point(path + ".point", p.point);
         check.point(path + ".normal", p.normal);
+        // The normal is normalised on load: a length that squares to zero or to infinity would
+        // make it NaN, so its length must be representable (the bound is checked just above).
+        const double length = std::hypot(p.normal[0], p.normal[1]);
         if (p.normal[0] == 0.0 && p.normal[1] == 0.0) check.fail(path + ".normal", "must be non-zero");
-        check.nonNegative(path + ".friction", p.friction);
+        else if (std::isfinite(length) && length < L::kMinNormalLength)
+            check.fail(path + ".normal", "is too short to give a direction (length " + fmt(length) +
+                                             "; at least " + fmt(L::kMinNormalLength) + ")");
+        check.nonNegative(path + ".friction", p.friction, L::kMaxCoefficient);
         check.unitInterval(path + ".restitution", p.restitution);
     }
     for (std::size_t c = 0; c < scene.cloths.size(); ++c) {
@@ -220,16 +279,17 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
         if (cl.id.empty()) check.fail(path + ".id", "is required");
         else claim(path, cl.id, false, false);
         check.point(path + ".origin", cl.origin);
-        check.positive(path + ".size[0]", cl.size[0]);
-        check.positive(path + ".size[1]", cl.size[1]);
+        check.positive(path + ".size[0]", cl.size[0], L::kMaxLength);
+        check.positive(path + ".size[1]", cl.size[1], L::kMaxLength);
         if (cl.resolution[0] < 2) check.fail(path + ".resolution[0]", "must be an integer >= 2");
         if (cl.resolution[1] < 2) check.fail(path + ".resolution[1]", "must be an integer >= 2");
-        check.positive(path + ".mass", cl.mass);
-        check.nonNegative(path + ".stiffness.structural", cl.stiffness.structural);
-        check.nonNegative(path + ".stiffness.shear", cl.stiffness.shear);
-        check.nonNegative(path + ".stiffness.bend", cl.stiffness.bend);
-        check.nonNegative(path + ".damping", cl.damping);
-        check.nonNegative(path + ".radius", cl.radius);
+        check.mass(path + ".mass", cl.mass);
+        const ClothStiffnessDesc& k = cl.stiffness;
+        check.nonNegative(path + ".stiffness.structural", k.structural, L::kMaxCoefficient);
+        check.nonNegative(path + ".stiffness.shear", k.shear, L::kMaxCoefficient);
+        check.nonNegative(path + ".stiffness.bend", k.bend, L::kMaxCoefficient);
+        check.nonNegative(path + ".damping", cl.damping, L::kMaxCoefficient);
+        check.nonNegative(path + ".radius", cl.radius, L::kMaxLength);
         if (const auto* mode = std::get_if<std::string>(&cl.pinned)) {
             if (*mode != "top" && *mode != "top_corners" && *mode != "left" && *mode != "none")
                 check.fail(path + ".pinned", "unknown pinning \"" + *mode +
@@ -272,9 +332,9 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
         if (s.anchor) check.point(path + ".anchor", *s.anchor);
         check.point(path + ".a_point", s.aPoint);
         check.point(path + ".b_point", s.bPoint);
-        check.positive(path + ".stiffness", s.stiffness);
-        check.nonNegative(path + ".damping", s.damping);
-        if (s.restLength) check.nonNegative(path + ".rest_length", *s.restLength);
+        check.positive(path + ".stiffness", s.stiffness, L::kMaxCoefficient);
+        check.nonNegative(path + ".damping", s.damping, L::kMaxCoefficient);
+        if (s.restLength) check.nonNegative(path + ".rest_length", *s.restLength, L::kMaxLength);
     }
     return issues;
 }

@@ -79,6 +79,13 @@ struct ParticleCollisionsDesc {
     double restitution = 1.0;
 };
 
+// Coulomb's law between charged particles runs whenever two particles carry a charge (like
+// springs, it is implied by the objects); this optional entry only sets its constants.
+struct CoulombDesc {
+    double k = 8.9875517923e9;  // N·m²/C²
+    double softening = 0.0;     // ε, as for newtonian_gravity
+};
+
 // Only the effects present here are simulated (absent = not constructed, costs nothing).
 struct EffectsDesc {
     std::optional<GravityDesc> gravity;
@@ -88,6 +95,7 @@ struct EffectsDesc {
     std::optional<WindDesc> wind;
     std::optional<FlockingDesc> flocking;
     std::optional<ParticleCollisionsDesc> particleCollisions;
+    std::optional<CoulombDesc> coulomb;
 };
 
 struct ParticleDesc {
@@ -191,6 +199,23 @@ struct SceneLimits {
     static constexpr long long kMaxPlanes = 1'000;
     static constexpr int kMaxSubsteps = 10'000;
     static constexpr int kMaxNewtonIterations = 100;
+
+    // Magnitudes (docs/scene-format.md, "Limits"). A classroom scene is metres, kilograms and
+    // seconds; these bounds are a million times past that, yet keep every product the engine
+    // forms (m·v², k·x², G·M·m/r) far inside the double range, so a typo such as 1e300 is
+    // reported at its JSON path instead of surfacing as an infinity somewhere in a step.
+    static constexpr double kMaxLength = 1e6;        // m: coordinates, sizes, radii, lengths
+    static constexpr double kMaxSpeed = 1e6;         // m/s, and rad/s for angular velocities
+    static constexpr double kMaxAngle = 1e6;         // rad
+    static constexpr double kMaxAcceleration = 1e6;  // m/s²: gravity's g
+    static constexpr double kMinMass = 1e-12;        // kg: below it 1/m leaves the safe range
+    static constexpr double kMaxMass = 1e12;         // kg (kg/m² for densities)
+    static constexpr double kMaxAttractorMass = 1e30;  // kg: fixed attractors may be stars
+    static constexpr double kMinBoxSize = 1e-6;      // m: a box's moment of inertia ∝ size²
+    static constexpr double kMinNormalLength = 1e-12;
+    static constexpr double kMaxCoefficient = 1e12;  // stiffness, damping, drag, G, k, ρ, …
+    static constexpr double kMaxCharge = 1e6;        // C
+    static constexpr double kMaxDuration = 1e6;      // s: simulation.duration (11.6 days)
 };
 
 // One problem found by validateScene(): a JSON-style path and what is wrong, e.g.

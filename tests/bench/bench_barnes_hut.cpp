@@ -1,0 +1,144 @@
+// bench_barnes_hut: mutual gravity by the Barnes–Hut tree against direct summation, through the
+// world's own force evaluation (World::forces), on clustered bodies: the time of one force
+// evaluation each way, the speed-up, and the tree's error against the direct sum (relative
+// force error per body: median, 99th percentile, maximum; relative potential energy error).
+//
+//   bench_barnes_hut [--repeat N] [--json] [--quick]
+//
+// --quick measures 5,000 bodies only (the direct sum of 20,000 takes about a second).
+// With --json the table goes to stderr and stdout carries one JSON object.
+
+#include "BenchCommon.h"
+
+#include "physics/core/World.h"
+#include "physics/effects/NewtonianGravityEffect.h"
+#include "physics/scene/BuildWorld.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+namespace {
+
+using namespace phasebox;
+using namespace phasebox::bench;
+
+constexpr int kDefaultRepeat = 5;
+
+// Three Gaussian clusters of different widths and a uniform background (the same mixture as
+// tests/physics/tst_barnes_hut.cpp), G = 1, masses 0.5–2.
+SceneDesc clusteredBodies(int count) {
+    SceneDesc scene;
+    NewtonianGravityDesc ng;
+    ng.G = 1.0;
+    ng.mutual = true;
+    scene.effects.newtonianGravity = ng;
+    std::mt19937_64 rng(42);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    std::uniform_real_distribution<double> uniform(-20.0, 20.0), mass(0.5, 2.0);
+    const double centres[3][3] = {{-8.0, 3.0, 1.0}, {6.0, 5.0, 2.5}, {2.0, -7.0, 0.5}};
+    for (int i = 0; i < count; ++i) {
+        ParticleDesc p;
+        if (i % 5 == 4) {
+            p.position = {uniform(rng), uniform(rng)};
+        } else {
+            const double* c = centres[i % 3];
+            p.position = {c[0] + c[2] * normal(rng), c[1] + c[2] * normal(rng)};
+        }
+        p.mass = mass(rng);
+        p.radius = 0.0;
+        scene.particles.push_back(p);
+    }
+    return scene;
+}
+
+// Median seconds of one World::forces() call over `repeat` calls.
+double timeForces(World& world, int repeat, Eigen::VectorXd& force) {
+    const Eigen::VectorXd q = world.positions(), u = world.velocities();
+    std::vector<double> seconds;
+    for (int r = 0; r < repeat; ++r) {
+        const auto start = Clock::now();
+        world.forces(0.0, q, u, force);
+        clobber(force.data());
+        seconds.push_back(secondsBetween(start, Clock::now()));
+    }
+    return median(seconds);
+}
+
+struct Row {
+    int bodies = 0;
+    double theta = 0.0;
+    double treeSeconds = 0.0, directSeconds = 0.0;
+    double median = 0.0, p99 = 0.0, max = 0.0, potential = 0.0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const Options options =
+        parseOptions(argc, argv, "[--repeat N] [--json] [--quick]", {"--quick"});
+    const int repeat = options.repeat > 0 ? options.repeat : kDefaultRepeat;
+    std::vector<int> sizes = {5000, 20000};
+    if (options.quick) sizes.resize(1);
+    std::vector<Row> rows;
+    for (const int n : sizes) {
+        auto world = buildWorld(clusteredBodies(n)).world;
+        auto& gravity =
+            static_cast<NewtonianGravityEffect&>(*world->findEffect("newtonian_gravity"));
+        Eigen::VectorXd direct(world->dimension()), tree(world->dimension());
+        gravity.setTreeThreshold(1 << 30);
+        // The direct sum is O(N²): one call is enough at 20,000 bodies.
+        const double directSeconds = timeForces(*world, n > 10000 ? 1 : repeat, direct);
+        const double directPotential = world->potentialEnergy();
+        gravity.setTreeThreshold(NewtonianGravityEffect::kDefaultTreeThreshold);
+        for (const double theta : {0.3, 0.5, 0.7}) {
+            gravity.setOpeningAngle(theta);
+            Row row;
+            row.bodies = n;
+            row.theta = theta;
+            row.directSeconds = directSeconds;
+            row.treeSeconds = timeForces(*world, repeat, tree);
+            std::vector<double> errors;
+            for (int i = 0; i < n; ++i)
+                errors.push_back((tree.segment<2>(2 * i) - direct.segment<2>(2 * i)).norm() /
+                                 direct.segment<2>(2 * i).norm());
+            std::sort(errors.begin(), errors.end());
+            row.median = errors[errors.size() / 2];
+            row.p99 = errors[static_cast<std::size_t>(0.99 * static_cast<double>(n - 1))];
+            row.max = errors.back();
+            row.potential = std::abs(world->potentialEnergy() / directPotential - 1.0);
+            rows.push_back(row);
+        }
+    }
+    FILE* table = options.json ? stderr : stdout;
+    std::fprintf(table, "%7s %5s %12s %12s %9s %10s %10s %10s %10s\n", "bodies", "theta", "tree ms",
+                 "direct ms", "speed-up", "median", "99%", "max", "potential");
+    for (const Row& r : rows)
+        std::fprintf(table, "%7d %5.1f %12.2f %12.2f %9.1f %10.2e %10.2e %10.2e %10.2e\n", r.bodies,
+                     r.theta, 1e3 * r.treeSeconds, 1e3 * r.directSeconds,
+                     r.directSeconds / r.treeSeconds, r.median, r.p99, r.max, r.potential);
+    if (options.json) {
+        Json json;
+        json.beginObject();
+        json.value("benchmark", "barnes_hut");
+        json.beginArray("rows");
+        for (const Row& r : rows) {
+            json.beginObject();
+            json.value("bodies", r.bodies);
+            json.value("theta", r.theta);
+            json.value("tree_ms", 1e3 * r.treeSeconds);
+            json.value("direct_ms", 1e3 * r.directSeconds);
+            json.value("speedup", r.directSeconds / r.treeSeconds);
+            json.value("median_relative_error", r.median);
+            json.value("p99_relative_error", r.p99);
+            json.value("max_relative_error", r.max);
+            json.value("potential_relative_error", r.potential);
+            json.endObject();
+        }
+        json.endArray();
+        json.endObject();
+        std::printf("%s\n", json.str().c_str());
+    }
+    return 0;
+}

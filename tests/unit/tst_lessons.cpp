@@ -1,0 +1,376 @@
+// The lessons (resources/lessons/*.phasebox.json, compiled in as :/lessons/…): exactly the six
+// topics of issue #7, each with notes the app shows (what to do, what to watch, why), each
+// loading, building and running its duration with its own integrator without diverging, and
+// each lesson's claim holding: explicit Euler spirals out where RK4 stays on the orbit, RK4
+// beats midpoint at the same step and at the same cost, explicit methods blow up on the stiff
+// spring where implicit ones run, balls rebound to e²·h and crates stop after v²/(2μg), a
+// cloth folds without shear springs and folds more with its bend springs lowered, and an
+// off-centre hit spins the box with momentum and angular momentum kept. Also the scene key
+// that the Coulomb effect added.
+
+#include "app/io/SceneIO.h"
+#include "physics/scene/BuildWorld.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <string>
+
+using namespace phasebox;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kG = 9.81;
+const QString kResourceDir = QStringLiteral(":/lessons");
+const QString kDiskDir = QStringLiteral(PHASEBOX_SOURCE_DIR "/resources/lessons");
+
+const QStringList kLessons = {QStringLiteral("cloth-springs.phasebox.json"),
+                              QStringLiteral("euler-orbit-spiral.phasebox.json"),
+                              QStringLiteral("impulse-spin.phasebox.json"),
+                              QStringLiteral("midpoint-vs-rk4.phasebox.json"),
+                              QStringLiteral("restitution-friction.phasebox.json"),
+                              QStringLiteral("stiff-spring-implicit.phasebox.json")};
+
+SceneDesc load(const QString& file) {
+    const SceneLoadResult result = SceneIO::load(kResourceDir + QLatin1Char('/') + file);
+    if (!result.ok()) qFatal("%s", qPrintable(result.errorText()));
+    return *result.scene;
+}
+
+std::unique_ptr<World> build(const SceneDesc& scene, const std::string& integrator = {},
+                             double dt = 0.0) {
+    SceneDesc s = scene;
+    if (!integrator.empty()) s.simulation.integrator = integrator;
+    if (dt > 0.0) s.simulation.dt = dt;
+    return buildWorld(s).world;
+}
+
+int indexOf(const World& world, const std::string& id, bool box = false) {
+    if (box) {
+        for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
+            if (world.boxes()[i].id == id) return i;
+    } else {
+        for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
+            if (world.particles()[i].id == id) return i;
+    }
+    qFatal("no object %s", id.c_str());
+}
+
+// Steps to the end of the scene's duration; false when a step diverges.
+bool runDuration(World& world, double duration) {
+    while (world.time() < duration - 0.5 * world.settings().dt)
+        if (!world.step()) return false;
+    return true;
+}
+
+// How far a cloth has folded: the width of its bottom row, and its sharpest crease, the largest
+// turning angle between consecutive threads along any row or column (0 for a flat grid).
+struct Fold {
+    double width = 0.0, sharpest = 0.0;
+};
+Fold fold(const World& world, const Cloth& c) {
+    Fold f;
+    auto node = [&](int i, int j) { return world.particlePosition(clothNode(c, i, j)); };
+    auto turn = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& d) {
+        const Eigen::Vector2d u = b - a, v = d - b;
+        f.sharpest =
+            std::max(f.sharpest, std::abs(std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v))));
+    };
+    for (int j = 0; j < c.ny; ++j)
+        for (int i = 1; i + 1 < c.nx; ++i) turn(node(i - 1, j), node(i, j), node(i + 1, j));
+    for (int i = 0; i < c.nx; ++i)
+        for (int j = 1; j + 1 < c.ny; ++j) turn(node(i, j - 1), node(i, j), node(i, j + 1));
+    f.width = (node(c.nx - 1, c.ny - 1) - node(0, c.ny - 1)).norm();
+    return f;
+}
+
+}  // namespace
+
+class TestLessons : public QObject {
+    Q_OBJECT
+
+private slots:
+    void theSixLessonsAreCompiledInAndOnDisk();
+    void everyLessonHasNotesAndRunsItsDuration_data();
+    void everyLessonHasNotesAndRunsItsDuration();
+    void eulerSpiralsOutWhileRk4StaysOnTheOrbit();
+    void rk4BeatsMidpointAtTheSameStepAndTheSameCost();
+    void stiffSpringBlowsUpExplicitMethodsButNotImplicitOnes();
+    void ballsReboundToESquaredHAndCratesStopAfterVSquaredOverTwoMuG();
+    void clothWithoutShearOrBendSpringsDeformsMore();
+    void offCentreHitSpinsTheBoxAndKeepsAngularMomentum();
+    void coulombConstantsRoundTripThroughTheSceneFormat();
+};
+
+void TestLessons::theSixLessonsAreCompiledInAndOnDisk() {
+    const QStringList compiledIn =
+        QDir(kResourceDir).entryList({QStringLiteral("*.phasebox.json")}, QDir::Files, QDir::Name);
+    const QStringList onDisk =
+        QDir(kDiskDir).entryList({QStringLiteral("*.phasebox.json")}, QDir::Files, QDir::Name);
+    QCOMPARE(onDisk, kLessons);
+    QCOMPARE(compiledIn, onDisk);
+    for (const QString& name : onDisk) {
+        QFile a(kResourceDir + QLatin1Char('/') + name), b(kDiskDir + QLatin1Char('/') + name);
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        QVERIFY2(a.readAll() == b.readAll(),
+                 qPrintable(name + QStringLiteral(" differs; rebuild")));
+    }
+}
+
+void TestLessons::everyLessonHasNotesAndRunsItsDuration_data() {
+    QTest::addColumn<QString>("file");
+    for (const QString& file : kLessons) QTest::newRow(qPrintable(file)) << file;
+}
+
+// Notes in three parts (what to do step by step, what to watch, why) and of a lesson's length;
+// the scene builds with nothing unsupported and runs its whole duration with its integrator.
+void TestLessons::everyLessonHasNotesAndRunsItsDuration() {
+    QFETCH(QString, file);
+    const SceneDesc scene = load(file);
+    QVERIFY(QString::fromStdString(scene.name).startsWith(QStringLiteral("Lesson: ")));
+    const QString notes = QString::fromStdString(scene.description);
+    for (const char* part : {"Try this: 1)", "What to watch:", "Why:"})
+        QVERIFY2(notes.contains(QLatin1String(part)), part);
+    const qsizetype why = notes.indexOf(QStringLiteral("Why:"));
+    const auto sentences = notes.mid(why).count(QStringLiteral(". ")) + 1;
+    QVERIFY2(sentences >= 4 && sentences <= 8, qPrintable(QString::number(sentences)));
+    BuildResult built = buildWorld(scene);
+    QVERIFY(built.unsupported.empty());
+    QVERIFY2(runDuration(*built.world, scene.simulation.duration),
+             built.world->divergence() ? built.world->divergence()->message().c_str() : "");
+    QVERIFY(built.world->positions().allFinite());
+}
+
+// Explicit Euler raises a circular orbit's energy by about 3·(ω·dt)² of it per step: the
+// inner orbit (ω = 1.92 rad/s) doubles its semi-major axis a = −GM/(2E) within 20 s, the outer
+// one (0.89 rad/s) grows by more than a third. Symplectic Euler's radius wobbles by about two
+// percent and its orbits keep their size; RK4's radius stays within 1e-5.
+void TestLessons::eulerSpiralsOutWhileRk4StaysOnTheOrbit() {
+    const SceneDesc scene = load(QStringLiteral("euler-orbit-spiral.phasebox.json"));
+    const double gm = 100.0;
+    for (const char* method : {"explicit_euler", "symplectic_euler", "rk4"}) {
+        auto world = build(scene, method);
+        const int inner = indexOf(*world, "inner"), outer = indexOf(*world, "outer");
+        double worst = 0.0;
+        while (world->time() < scene.simulation.duration - 1e-9) {
+            QVERIFY(world->step());
+            worst = std::max({worst, std::abs(world->particlePosition(inner).norm() / 3.0 - 1.0),
+                              std::abs(world->particlePosition(outer).norm() / 5.0 - 1.0)});
+        }
+        auto semiMajorAxis = [&](int i) {
+            const double energy = 0.5 * world->particleVelocity(i).squaredNorm() -
+                                  gm / world->particlePosition(i).norm();
+            return -gm / (2.0 * energy);
+        };
+        const double grownInner = semiMajorAxis(inner) / 3.0 - 1.0;
+        const double grownOuter = semiMajorAxis(outer) / 5.0 - 1.0;
+        qInfo(
+            "%-16s semi-major axes grew by %.1f%% (inner) and %.1f%% (outer); radius off by "
+            "%.2e at worst",
+            method, 100.0 * grownInner, 100.0 * grownOuter, worst);
+        if (std::string(method) == "explicit_euler") {
+            QVERIFY(grownInner > 0.8 && grownInner < 1.3);
+            QVERIFY(grownOuter > 0.3 && grownOuter < 0.5);
+            QVERIFY(world->energy().drift > 0.0);
+        } else {
+            QVERIFY(worst < (std::string(method) == "rk4" ? 1e-5 : 5e-2));
+            QVERIFY(std::abs(grownInner) < 1e-3 && std::abs(grownOuter) < 1e-3);
+        }
+    }
+}
+
+// x = cos 2t exactly. At dt = 0.1 (ω·dt = 0.2) midpoint's phase runs ahead by about z³/6 per
+// step and its amplitude grows; RK4's error is ~(ω·dt)⁴ smaller. Midpoint at dt/2 costs what
+// RK4 costs at dt (4 force evaluations per 0.1 s) and is still far less accurate.
+void TestLessons::rk4BeatsMidpointAtTheSameStepAndTheSameCost() {
+    const SceneDesc scene = load(QStringLiteral("midpoint-vs-rk4.phasebox.json"));
+    QCOMPARE(scene.simulation.integrator, std::string("midpoint"));
+    auto errorOf = [&](const char* method, double dt, double* phase = nullptr) {
+        auto world = build(scene, method, dt);
+        double worst = 0.0;
+        while (world->time() < scene.simulation.duration - 1e-9) {
+            if (!world->step()) return -1.0;
+            worst = std::max(
+                worst, std::abs(world->particlePosition(0).x() - std::cos(2.0 * world->time())));
+        }
+        if (phase) {
+            const Eigen::Vector2d x = world->particlePosition(0), v = world->particleVelocity(0);
+            *phase =
+                std::remainder(std::atan2(-v.x() / 2.0, x.x()) - 2.0 * world->time(), 2.0 * kPi);
+        }
+        return worst;
+    };
+    double midpointPhase = 0.0;
+    const double midpoint = errorOf("midpoint", 0.1, &midpointPhase);
+    const double rk4 = errorOf("rk4", 0.1);
+    const double midpointHalf = errorOf("midpoint", 0.05);
+    qInfo(
+        "max |x − cos 2t| over 20 s: midpoint %.3e (phase %+.3f rad), RK4 %.3e, midpoint at "
+        "dt/2 %.3e",
+        midpoint, midpointPhase, rk4, midpointHalf);
+    QVERIFY(rk4 > 0.0 && rk4 < midpoint / 100.0);
+    QVERIFY(midpointHalf > 10.0 * rk4);
+    QVERIFY(midpointPhase > 0.2 && midpointPhase < 0.35);  // "a quarter of a radian ahead"
+}
+
+// ω·dt ≈ 17 for the bead: symplectic Euler and RK4 diverge (and are stopped); implicit Euler
+// runs but damps the soft swing (to about half in 10 s); implicit midpoint runs and keeps it.
+void TestLessons::stiffSpringBlowsUpExplicitMethodsButNotImplicitOnes() {
+    const SceneDesc scene = load(QStringLiteral("stiff-spring-implicit.phasebox.json"));
+    for (const char* method : {"symplectic_euler", "rk4"}) {
+        auto world = build(scene, method);
+        QVERIFY2(!runDuration(*world, scene.simulation.duration), method);
+        qInfo("%-17s diverged at t = %.3f s", method, world->divergence()->time);
+        QVERIFY(world->divergence()->time < 1.0);
+    }
+    // The soft swing's amplitude over the last 2 s (a period) against the initial 0.5 m.
+    auto swing = [&](const char* method) {
+        auto world = build(scene, method);
+        double amplitude = 0.0;
+        while (world->time() < scene.simulation.duration - 1e-9) {
+            if (!world->step()) return -1.0;
+            if (world->time() > scene.simulation.duration - 2.0)
+                amplitude = std::max(amplitude, std::abs(world->particlePosition(0).x() - 1.0));
+        }
+        return amplitude / 0.5;
+    };
+    const double backward = swing("implicit_euler"), midpoint = swing("implicit_midpoint");
+    qInfo("soft swing kept after 10 s: implicit Euler %.2f, implicit midpoint %.2f", backward,
+          midpoint);
+    QVERIFY(backward > 0.2 && backward < 0.7);
+    QVERIFY(midpoint > 0.9);
+}
+
+// Each ball's first rebound peaks at e²·h; each crate stops after v²/(2·μ·g).
+void TestLessons::ballsReboundToESquaredHAndCratesStopAfterVSquaredOverTwoMuG() {
+    const SceneDesc scene = load(QStringLiteral("restitution-friction.phasebox.json"));
+    auto world = build(scene);
+    const int balls = static_cast<int>(scene.particles.size());
+    std::vector<double> top(balls, -1.0);
+    std::vector<bool> bounced(balls, false), done(balls, false);
+    std::vector<double> start, stopped;
+    std::vector<int> crates;
+    for (const char* id : {"on_ice", "on_wood", "on_rubber"}) {
+        crates.push_back(indexOf(*world, id, true));
+        start.push_back(world->boxPosition(crates.back()).x());
+        stopped.push_back(-1.0);
+    }
+    while (world->time() < scene.simulation.duration - 1e-9) {
+        QVERIFY(world->step());
+        for (int i = 0; i < balls; ++i) {
+            const double vy = world->particleVelocity(i).y();
+            if (done[i]) continue;
+            bounced[i] = bounced[i] || vy > 0.0;
+            if (bounced[i]) top[i] = std::max(top[i], world->particlePosition(i).y() - 0.15);
+            done[i] = bounced[i] && vy < 0.0;
+        }
+        for (std::size_t k = 0; k < crates.size(); ++k)
+            if (stopped[k] < 0.0 && std::abs(world->boxVelocity(crates[k]).x()) < 1e-3)
+                stopped[k] = world->boxPosition(crates[k]).x() - start[k];
+    }
+    for (int i = 0; i < balls; ++i) {
+        const double e = scene.particles[i].restitution, expected = e * e * 2.0;
+        qInfo("ball e = %.1f: rebound %.3f m, e²·h = %.3f m", e, top[i], expected);
+        QVERIFY(done[i] && std::abs(top[i] - expected) < 0.02 * 2.0);
+    }
+    const double mu[] = {0.1, 0.4, 0.8};
+    for (std::size_t k = 0; k < crates.size(); ++k) {
+        const double expected = 16.0 / (2.0 * mu[k] * kG);
+        qInfo("crate μ = %.1f: stopped after %.3f m, v²/(2μg) = %.3f m", mu[k], stopped[k],
+              expected);
+        QVERIFY(stopped[k] > 0.0 && std::abs(stopped[k] - expected) < 0.03 * expected);
+    }
+}
+
+// The three cloths hang side by side from two inner nodes of their top edge: the full one keeps
+// its shape; without shear springs the mesh folds and the cloth narrows; with the bend springs
+// lowered too (to 0) it folds more: narrower still, and with sharper creases.
+void TestLessons::clothWithoutShearOrBendSpringsDeformsMore() {
+    const SceneDesc scene = load(QStringLiteral("cloth-springs.phasebox.json"));
+    QCOMPARE(scene.cloths[1].stiffness.bend, 20.0);
+    QCOMPARE(scene.cloths[2].stiffness.bend, 0.0);
+    auto world = build(scene);
+    QVERIFY(runDuration(*world, scene.simulation.duration));
+    const Cloth &full = world->cloths()[0], &noShear = world->cloths()[1],
+                &noBend = world->cloths()[2];
+    const Fold f = fold(*world, full), s = fold(*world, noShear), b = fold(*world, noBend);
+    qInfo(
+        "bottom width / sharpest crease: full %.3f m / %.3f rad, no shear %.3f m / %.3f rad, "
+        "no shear and no bend %.3f m / %.3f rad",
+        f.width, f.sharpest, s.width, s.sharpest, b.width, b.sharpest);
+    QVERIFY(std::abs(f.width - 1.2) < 0.01 && f.sharpest < 0.2);
+    QVERIFY(s.width < 0.8);
+    QVERIFY(b.width < s.width - 0.1);
+    QVERIFY(b.sharpest > 1.5 * s.sharpest);
+}
+
+// J = (1 + e)·m·v/(1 + m/M + m·d²/I), V = J/M, ω = −J·d/I (clockwise for a hit above the
+// centre); momentum and angular momentum about the point of impact are kept.
+void TestLessons::offCentreHitSpinsTheBoxAndKeepsAngularMomentum() {
+    const SceneDesc scene = load(QStringLiteral("impulse-spin.phasebox.json"));
+    auto world = build(scene);
+    const double m = 0.1, v = 20.0, M = 2.0, d = 0.15, e = 0.5;
+    const double I = M * (1.0 + 0.25) / 12.0;
+    const double J = (1.0 + e) * m * v / (1.0 + m / M + m * d * d / I);
+    const Eigen::Vector2d impact(-0.5, 0.15);
+    auto momenta = [&](Eigen::Vector2d& p) {
+        const Eigen::Vector2d x = world->particlePosition(0) - impact,
+                              u = world->particleVelocity(0);
+        const Eigen::Vector2d X = world->boxPosition(0) - impact, U = world->boxVelocity(0);
+        p = m * u + M * U;
+        return m * (x.x() * u.y() - x.y() * u.x()) + M * (X.x() * U.y() - X.y() * U.x()) +
+               I * world->boxAngularVelocity(0);
+    };
+    Eigen::Vector2d p0, p1;
+    const double l0 = momenta(p0);
+    QVERIFY(runDuration(*world, scene.simulation.duration));
+    const double l1 = momenta(p1);
+    const double omega = world->boxAngularVelocity(0);
+    qInfo(
+        "box: ω = %.4f rad/s (closed form %.4f), V = %.4f m/s (%.4f); L about the impact "
+        "point %.2e → %.2e, momentum change %.2e",
+        omega, -J * d / I, world->boxVelocity(0).x(), J / M, l0, l1, (p1 - p0).norm());
+    QVERIFY(std::abs(omega + J * d / I) < 0.02 * J * d / I);
+    QVERIFY(std::abs(world->boxVelocity(0).x() - J / M) < 0.02 * J / M);
+    QVERIFY(std::abs(l1 - l0) < 1e-3 * m * v * d);
+    QVERIFY((p1 - p0).norm() < 1e-9 * m * v);
+}
+
+// effects.coulomb {k, softening} reads, validates, writes back, and a misspelt key is an error.
+void TestLessons::coulombConstantsRoundTripThroughTheSceneFormat() {
+    const QByteArray text = R"({"format": "phasebox-scene", "version": 1,
+        "effects": {"coulomb": {"k": 2.5, "softening": 0.1}},
+        "particles": [{"position": [0, 0], "charge": 1}, {"position": [1, 0], "charge": -1}]})";
+    const SceneLoadResult loaded = SceneIO::parse(text, QStringLiteral("charges.json"));
+    QVERIFY2(loaded.ok(), qPrintable(loaded.errorText()));
+    QVERIFY(loaded.scene->effects.coulomb.has_value());
+    QCOMPARE(loaded.scene->effects.coulomb->k, 2.5);
+    QCOMPARE(loaded.scene->effects.coulomb->softening, 0.1);
+    auto world = buildWorld(*loaded.scene).world;
+    // k·q₁·q₂/√(r² + ε²) with the file's constants.
+    QVERIFY(std::abs(world->energy().potential - (-2.5 / std::sqrt(1.01))) < 1e-12);
+    const QByteArray written = SceneIO::serialize(*loaded.scene);
+    QVERIFY(written.contains("\"coulomb\""));
+    const SceneLoadResult again = SceneIO::parse(written, QStringLiteral("charges.json"));
+    QVERIFY(again.ok());
+    QCOMPARE(SceneIO::serialize(*again.scene), written);
+    const SceneLoadResult typo = SceneIO::parse(
+        R"({"format": "phasebox-scene", "version": 1, "effects": {"coulomb": {"softenning": 1}}})",
+        QStringLiteral("charges.json"));
+    QVERIFY(!typo.ok());
+    QVERIFY2(typo.errorText().contains(QStringLiteral("effects.coulomb.softenning")),
+             qPrintable(typo.errorText()));
+    const SceneLoadResult negative = SceneIO::parse(
+        R"({"format": "phasebox-scene", "version": 1, "effects": {"coulomb": {"k": -1}}})",
+        QStringLiteral("charges.json"));
+    QVERIFY(!negative.ok());
+}
+
+QTEST_GUILESS_MAIN(TestLessons)
+#include "tst_lessons.moc"
