@@ -72,6 +72,8 @@ int takeScreenshot(MainWindow& window, const DesktopOptions& options, QString* e
     if (options.runFor > 0.0 && !window.controller().advance(options.runFor)) status = 1;
     window.refreshNow();
     QApplication::processEvents();
+    if (options.presentation) window.canvas()->fitToWorld();  // the layout changed under it
+    QApplication::processEvents();
     const QPixmap picture = window.grab();
     if (picture.isNull() || !picture.save(options.screenshot, "PNG")) {
         *error = QStringLiteral("could not write %1").arg(options.screenshot);

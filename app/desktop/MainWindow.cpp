@@ -27,6 +27,7 @@
 #include <QMessageBox>
 #include <QTextBrowser>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
 
@@ -732,11 +733,18 @@ void MainWindow::setPresentationMode(bool on) {
     QApplication::setFont(font);
     if (on) {
         normalState_ = saveState();
+        // In front of a class the canvas and the plots are what matter; every other control
+        // stays on the keyboard (Simulation menu) and comes back with the layout on exit.
+        for (QDockWidget* dock : docks_)
+            if (dock->objectName() != QLatin1String("plotsDock")) dock->hide();
+        for (QToolBar* bar : findChildren<QToolBar*>()) bar->hide();
         showFullScreen();
     } else {
         showNormal();
         restoreState(normalState_);
     }
+    // The canvas changed size with the layout: frame the scene again once it has settled.
+    QTimer::singleShot(0, canvas_, [this] { canvas_->fitToWorld(); });
     updatePlots();
 }
 
