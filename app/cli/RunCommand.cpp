@@ -435,6 +435,9 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         if (plotting && (energy.due(k) || k == steps)) sample();
     }
     const double wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
+    // A runaway is confirmed a few steps after it began and the world goes back to where it
+    // began: report the steps of the state that is shown, as sim_time does.
+    if (diverged) done = world.stepCount();
 
     int status = kSuccess;
     if (!o.csv.isEmpty()) {

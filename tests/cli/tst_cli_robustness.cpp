@@ -251,6 +251,9 @@ private slots:
         QVERIFY(d.value("time").toDouble() > 0.0);
         QVERIFY(d.value("restored_time").toDouble() < d.value("time").toDouble());
         QCOMPARE(report.value("sim_time").toDouble(), d.value("restored_time").toDouble());
+        // steps and sim_time describe the same (restored) state.
+        QCOMPARE(report.value("steps").toDouble() * report.value("dt").toDouble(),
+                 report.value("sim_time").toDouble());
         const QJsonObject bob = report.value("objects").toObject().value("bob").toObject();
         for (const char* key : {"position", "velocity"})
             for (const QJsonValue v : bob.value(key).toArray())
