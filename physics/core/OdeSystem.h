@@ -11,12 +11,29 @@
 
 namespace phasebox {
 
-// Force Jacobians accumulated by the effects as triplets: K = ∂F/∂q, D = ∂F/∂u.
-// The triplet buffers keep their capacity, so refilling them each step does not allocate
+// A 2 × 2 block of a Jacobian at (row, col), row-major: the coupling of two points.
+struct JacobianBlock {
+    int row = 0, col = 0;
+    double v[4] = {0.0, 0.0, 0.0, 0.0};
+};
+
+// A two-point coupling S between points a and b (first DOFs; −1 for a fixed end): adds S at
+// (a, a) and (b, b) and −S at (a, b) and (b, a), the Jacobian of a force that depends on
+// p_a − p_b only (springs, Coulomb and gravity pairs). One record instead of four blocks.
+struct JacobianPair {
+    int a = -1, b = -1;
+    double v[4] = {0.0, 0.0, 0.0, 0.0};
+};
+
+// Force Jacobians accumulated by the effects: K = ∂F/∂q, D = ∂F/∂u, as two-point pairs (the
+// bulk of a cloth's), 2 × 2 blocks and single entries (box angles and the like); duplicates
+// add up. The buffers keep their capacity, so refilling them each step does not allocate
 // once the largest pattern has been seen.
 struct ForceJacobians {
-    std::vector<Triplet> stiffness;  // K
-    std::vector<Triplet> damping;    // D
+    std::vector<Triplet> stiffness;  // K's single entries
+    std::vector<Triplet> damping;    // D's single entries
+    std::vector<JacobianBlock> stiffnessBlocks, dampingBlocks;
+    std::vector<JacobianPair> stiffnessPairs, dampingPairs;
     bool symmetric = true;           // false when some effect adds a non-symmetric term
     // Asked for by the implicit integrators: leave out the parts of K that can make
     // M − h·D − h²·K indefinite (a compressed spring's geometric stiffness, as Choi & Ko 2002
@@ -28,18 +45,62 @@ struct ForceJacobians {
     void clear() {
         stiffness.clear();
         damping.clear();
+        stiffnessBlocks.clear();
+        dampingBlocks.clear();
+        stiffnessPairs.clear();
+        dampingPairs.clear();
         symmetric = true;
     }
+    bool empty() const { return !hasStiffness() && !hasDamping(); }
+    bool hasStiffness() const {
+        return !stiffness.empty() || !stiffnessBlocks.empty() || !stiffnessPairs.empty();
+    }
+    bool hasDamping() const { return !damping.empty() || !dampingBlocks.empty() || !dampingPairs.empty(); }
     void addStiffness(int row, int col, double value) { stiffness.emplace_back(row, col, value); }
     void addDamping(int row, int col, double value) { damping.emplace_back(row, col, value); }
-    // Adds a 2×2 block at (row, col).
-    void addStiffnessBlock(int row, int col, const Mat2& block) {
-        for (int r = 0; r < 2; ++r)
-            for (int c = 0; c < 2; ++c) addStiffness(row + r, col + c, block(r, c));
+    // Adds a 2×2 block at (row, col), scaled by sign.
+    void addStiffnessBlock(int row, int col, const Mat2& block, double sign = 1.0) {
+        stiffnessBlocks.push_back(makeBlock(row, col, block, sign));
     }
-    void addDampingBlock(int row, int col, const Mat2& block) {
-        for (int r = 0; r < 2; ++r)
-            for (int c = 0; c < 2; ++c) addDamping(row + r, col + c, block(r, c));
+    void addDampingBlock(int row, int col, const Mat2& block, double sign = 1.0) {
+        dampingBlocks.push_back(makeBlock(row, col, block, sign));
+    }
+    void addStiffnessPair(int a, int b, const Mat2& coupling) {
+        stiffnessPairs.push_back({a, b, {coupling(0, 0), coupling(0, 1), coupling(1, 0), coupling(1, 1)}});
+    }
+    void addDampingPair(int a, int b, const Mat2& coupling) {
+        dampingPairs.push_back({a, b, {coupling(0, 0), coupling(0, 1), coupling(1, 0), coupling(1, 1)}});
+    }
+    // All of K (or D) as triplets, blocks and pairs spelled out: for analysis and tests.
+    std::vector<Triplet> stiffnessTriplets() const {
+        return spelledOut(stiffness, stiffnessBlocks, stiffnessPairs);
+    }
+    std::vector<Triplet> dampingTriplets() const { return spelledOut(damping, dampingBlocks, dampingPairs); }
+    // Calls block(row, col, v, sign) for each 2 × 2 block a pair stands for.
+    template <typename Block>
+    static void forEachPairBlock(const JacobianPair& p, Block&& block) {
+        if (p.a >= 0) block(p.a, p.a, p.v, 1.0);
+        if (p.a >= 0 && p.b >= 0) {
+            block(p.a, p.b, p.v, -1.0);
+            block(p.b, p.a, p.v, -1.0);
+        }
+        if (p.b >= 0) block(p.b, p.b, p.v, 1.0);
+    }
+
+private:
+    static JacobianBlock makeBlock(int row, int col, const Mat2& m, double sign) {
+        return {row, col, {sign * m(0, 0), sign * m(0, 1), sign * m(1, 0), sign * m(1, 1)}};
+    }
+    static std::vector<Triplet> spelledOut(const std::vector<Triplet>& single,
+                                           const std::vector<JacobianBlock>& blocks,
+                                           const std::vector<JacobianPair>& pairs) {
+        std::vector<Triplet> all = single;
+        auto add = [&all](int row, int col, const double* v, double sign) {
+            for (int e = 0; e < 4; ++e) all.emplace_back(row + e / 2, col + e % 2, sign * v[e]);
+        };
+        for (const JacobianBlock& b : blocks) add(b.row, b.col, b.v, 1.0);
+        for (const JacobianPair& p : pairs) forEachPairBlock(p, add);
+        return all;
     }
 };
 
@@ -50,6 +111,9 @@ public:
     virtual int dimension() const = 0;
     virtual const Vec& inverseMass() const = 0;
     virtual const Vec& mass() const = 0;
+    // DOFs [0, pairedDofs()) are the (x, y) pairs of points, which a multigrid solver
+    // aggregates together; 0 when the system does not say.
+    virtual int pairedDofs() const { return 0; }
 
     // accel = M⁻¹·F(q, u, t). Returns the power of the non-conservative forces at (q, u, t),
     // which integrators accumulate into work_nc with their own quadrature weights.

@@ -220,6 +220,7 @@ public:
     int dimension() const override { return layout_.dimension(); }
     const Vec& inverseMass() const override { return invMass_; }
     const Vec& mass() const override { return mass_; }
+    int pairedDofs() const override { return layout_.boxBase(); }
     double acceleration(double t, const Vec& q, const Vec& u, Vec& accel) override;
     double nonConservativePower(double t, const Vec& q, const Vec& u) override;
     double forces(double t, const Vec& q, const Vec& u, Vec& force) override;

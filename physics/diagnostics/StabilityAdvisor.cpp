@@ -37,9 +37,10 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
     ForceJacobians jac;
     Vec force(n);
     world.forcesAndJacobians(world.time(), world.positions(), world.velocities(), force, jac);
-    if (n > 0 && !jac.stiffness.empty()) {
+    if (n > 0 && jac.hasStiffness()) {
         SparseMatrix k(n, n);
-        k.setFromTriplets(jac.stiffness.begin(), jac.stiffness.end());
+        const std::vector<Triplet> triplets = jac.stiffnessTriplets();
+        k.setFromTriplets(triplets.begin(), triplets.end());
         const Vec scale = world.inverseMass().cwiseSqrt();
         Vec x = Vec::Ones(n).normalized(), y(n);
         // A fixed, irregular start so no mode is missed by symmetry.

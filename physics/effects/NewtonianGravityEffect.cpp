@@ -61,11 +61,7 @@ void NewtonianGravityEffect::addJacobians(double, const Vec& q, const Vec&,
         if (!(s2 > 0.0)) return;
         const double s3 = s2 * std::sqrt(s2);
         const Mat2 k = -gmm * (Mat2::Identity() / s3 - (3.0 / (s3 * s2)) * (r * r.transpose()));
-        jac.addStiffnessBlock(i, i, k);
-        if (j < 0) return;
-        jac.addStiffnessBlock(j, j, k);
-        jac.addStiffnessBlock(i, j, -k);
-        jac.addStiffnessBlock(j, i, -k);
+        jac.addStiffnessPair(i, j, k);
     });
 }
 

@@ -106,6 +106,14 @@ void SpringEffect::addJacobians(double, const Vec& q, const Vec& u, ForceJacobia
         double transverse = valid ? 1.0 - s.restLength / g.length : 0.0;
         if (jac.definite) transverse = std::max(transverse, 0.0);
         const Mat2 ks = -s.stiffness * (transverse * (Mat2::Identity() - uut) + uut);
+        const bool particles = s.a.kind != BodyPoint::Kind::Box && s.b.kind != BodyPoint::Kind::Box;
+        if (particles) {
+            // Points without a rotation (a cloth's nodes): one two-point coupling.
+            const int a = s.a.isDynamic() ? s.a.dof : -1, b = s.b.isDynamic() ? s.b.dof : -1;
+            jac.addStiffnessPair(a, b, ks);
+            if (s.damping != 0.0) jac.addDampingPair(a, b, -s.damping * uut);  // zero if degenerate
+            continue;
+        }
         const PointJacobian ja = pointJacobian(s.a, g.ra);
         const PointJacobian jb = pointJacobian(s.b, g.rb);
         addProjected(ja, ja, ks, 1.0, addK);

@@ -12,83 +12,188 @@ void NewtonVelocitySolver::reset(int n) {
     qe_.setZero(n);
     kU_.setZero(n);
     guess_.setZero(n);
-    for (Vec* v : {&inverseDiagonal_, &residual_, &z_, &direction_, &product_}) v->setZero(n);
+    for (Vec* v : {&residual_, &z_, &direction_, &product_}) v->setZero(n);
     matrix_.resize(n, n);
-    patternSize_ = 0;  // the next assembly builds the pattern anew
+    keys_.clear();  // the next assembly builds the pattern anew
 }
 
 namespace {
-std::size_t hashPattern(const ForceJacobians& jac, int n) {
-    std::size_t h = static_cast<std::size_t>(n) * 0x9e3779b97f4a7c15ull;
-    auto mix = [&h](const std::vector<Triplet>& triplets) {
-        for (const Triplet& t : triplets) {
-            h ^= static_cast<std::size_t>(t.row()) * 0x100000001b3ull + static_cast<std::size_t>(t.col());
-            h *= 0x9e3779b97f4a7c15ull;
-        }
-        h ^= triplets.size();
-    };
-    mix(jac.stiffness);
-    mix(jac.damping);
-    return h;
-}
+long long key(int row, int col) { return (static_cast<long long>(row) << 32) | static_cast<unsigned>(col); }
 }  // namespace
+
+// The contributions, in the order keys_ and the slot tables list them: the masses, K's and
+// D's single entries, their blocks, and their pairs (each standing for up to four blocks).
+// A block takes two slots: where its (r, c) entry goes and where its second row's (r + 1, c)
+// entry goes, if the target keeps rows together (the multigrid's row-major blocks, whose
+// (r, c + 1) follows (r, c)); or its (r, c) and its second column's (r, c + 1), if the target
+// keeps columns together (matrix_, column-major, whose (r + 1, c) follows (r, c)).
+template <typename Visit>
+void NewtonVelocitySolver::forEachContribution(double c, Visit&& visit) const {
+    const double kScale = -c * c, dScale = -c;
+    for (const Triplet& t : jac_.stiffness) visit.single(t.row(), t.col(), kScale * t.value());
+    for (const Triplet& t : jac_.damping) visit.single(t.row(), t.col(), dScale * t.value());
+    for (const JacobianBlock& b : jac_.stiffnessBlocks) visit.block(key(b.row, b.col), b.row, b.col, b.v, kScale);
+    for (const JacobianBlock& b : jac_.dampingBlocks) visit.block(key(b.row, b.col), b.row, b.col, b.v, dScale);
+    for (const auto* pairs : {&jac_.stiffnessPairs, &jac_.dampingPairs}) {
+        const double scale = pairs == &jac_.stiffnessPairs ? kScale : dScale;
+        for (const JacobianPair& p : *pairs) {
+            visit.pairKey(key(p.a + 1, p.b + 1));
+            ForceJacobians::forEachPairBlock(p, [&](int row, int col, const double* v, double sign) {
+                visit.block(-1, row, col, v, sign * scale);
+            });
+        }
+    }
+}
+
+bool NewtonVelocitySolver::refill(const Vec& mass, double c, Target& target) {
+    const int n = static_cast<int>(mass.size());
+    const std::size_t count = n + jac_.stiffness.size() + jac_.damping.size() +
+                              jac_.stiffnessBlocks.size() + jac_.dampingBlocks.size() +
+                              jac_.stiffnessPairs.size() + jac_.dampingPairs.size();
+    if (count != keys_.size() || target.slots.empty()) return false;
+    std::fill(target.values, target.values + target.count, 0.0);
+    struct Filler {
+        double* values;
+        const long long* keys;
+        const int* slot;
+        bool rowMajor;
+        bool ok = true;
+        void single(int row, int col, double v) {
+            ok = ok && *keys++ == key(row, col);
+            values[*slot++] += v;
+        }
+        void block(long long k, int, int, const double* v, double scale) {
+            if (k >= 0) ok = ok && *keys++ == k;
+            double* first = values + *slot++;
+            double* second = values + *slot++;
+            first[0] += scale * v[0];
+            second[0] += scale * v[rowMajor ? 2 : 1];
+            first[1] += scale * v[rowMajor ? 1 : 2];
+            second[1] += scale * v[3];
+        }
+        void pairKey(long long k) { ok = ok && *keys++ == k; }
+    } filler{target.values, keys_.data() + n, target.slots.data(), target.rowMajor};
+    for (int i = 0; i < n; ++i) target.values[*filler.slot++] += mass[i];
+    // Pattern checks and sums run in one pass; a mismatch (effects came or went) is caught
+    // before the values are used, and the caller then builds the pattern anew.
+    forEachContribution(c, filler);
+    return filler.ok;
+}
+
+void NewtonVelocitySolver::recordSlots(int n, double c, Target& target,
+                                       const std::function<int(int, int)>& place) {
+    target.slots.clear();
+    for (int i = 0; i < n; ++i) target.slots.push_back(place(i, i));
+    struct Recorder {
+        std::vector<int>& slots;
+        const std::function<int(int, int)>& place;
+        bool rowMajor;
+        void single(int row, int col, double) { slots.push_back(place(row, col)); }
+        void block(long long, int row, int col, const double*, double) {
+            slots.push_back(place(row, col));
+            slots.push_back(rowMajor ? place(row + 1, col) : place(row, col + 1));
+        }
+        void pairKey(long long) {}
+    } recorder{target.slots, place, target.rowMajor};
+    forEachContribution(c, recorder);
+}
 
 void NewtonVelocitySolver::assemble(OdeSystem& sys, double c) {
     const Vec& mass = sys.mass();
+    direct_.values = matrix_.valuePtr();
+    direct_.count = static_cast<std::size_t>(matrix_.nonZeros());
+    if (refill(mass, c, direct_)) return;
+    // A new pattern (the first step, or effects that came or went): build it and record each
+    // contribution's place in the matrix's values, so the next steps only add into them.
     const int n = static_cast<int>(mass.size());
-    const std::size_t total = n + jac_.stiffness.size() + jac_.damping.size();
-    const std::size_t hash = hashPattern(jac_, n);
-    if (total == patternSize_ && hash == patternHash_) {
-        double* values = matrix_.valuePtr();
-        std::fill(values, values + matrix_.nonZeros(), 0.0);
-        std::size_t k = 0;
-        for (int i = 0; i < n; ++i) values[slot_[k++]] += mass[i];
-        for (const Triplet& t : jac_.stiffness) values[slot_[k++]] -= c * c * t.value();
-        for (const Triplet& t : jac_.damping) values[slot_[k++]] -= c * t.value();
-        return;
-    }
     triplets_.clear();
-    triplets_.reserve(total);
-    for (int i = 0; i < n; ++i) triplets_.emplace_back(i, i, mass[i]);
-    for (const Triplet& t : jac_.stiffness) triplets_.emplace_back(t.row(), t.col(), -c * c * t.value());
-    for (const Triplet& t : jac_.damping) triplets_.emplace_back(t.row(), t.col(), -c * t.value());
+    keys_.clear();
+    for (int i = 0; i < n; ++i) {
+        triplets_.emplace_back(i, i, mass[i]);
+        keys_.push_back(key(i, i));
+    }
+    struct Collector {
+        std::vector<Triplet>& triplets;
+        std::vector<long long>& keys;
+        void single(int row, int col, double v) {
+            triplets.emplace_back(row, col, v);
+            keys.push_back(key(row, col));
+        }
+        void block(long long k, int row, int col, const double* v, double scale) {
+            for (int e = 0; e < 4; ++e) triplets.emplace_back(row + e / 2, col + e % 2, scale * v[e]);
+            if (k >= 0) keys.push_back(k);
+        }
+        void pairKey(long long k) { keys.push_back(k); }
+    } collector{triplets_, keys_};
+    forEachContribution(c, collector);
+    matrix_.resize(n, n);
     matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
     matrix_.makeCompressed();
-    slot_.resize(total);
-    for (std::size_t k = 0; k < total; ++k)
-        slot_[k] = static_cast<int>(&matrix_.coeffRef(triplets_[k].row(), triplets_[k].col()) -
-                                    matrix_.valuePtr());
-    patternSize_ = total;
-    patternHash_ = hash;
+    recordSlots(n, c, direct_, [this](int row, int col) {
+        return static_cast<int>(&matrix_.coeffRef(row, col) - matrix_.valuePtr());
+    });
+    direct_.values = matrix_.valuePtr();
+    direct_.count = static_cast<std::size_t>(matrix_.nonZeros());
+    iterative_.slots.clear();  // the multigrid is built anew for this pattern
     ldltAnalyzed_ = luAnalyzed_ = false;
 }
 
+bool NewtonVelocitySolver::assembleIterative(OdeSystem& sys, double c) {
+    const Vec& mass = sys.mass();
+    if (!iterative_.slots.empty()) {
+        iterative_.values = multigrid_.fineValues();
+        iterative_.count = multigrid_.fineValueCount();
+        if (refill(mass, c, iterative_)) {
+            multigrid_.refresh();
+            return true;
+        }
+    }
+    // First step of a pattern: assemble matrix_ (whose values weigh the aggregation), build
+    // the hierarchy on it, and record where each contribution goes in its blocked copy.
+    assemble(sys, c);
+    const int n = static_cast<int>(mass.size());
+    multigrid_.build(matrix_, sys.pairedDofs());
+    iterative_.rowMajor = true;
+    recordSlots(n, c, iterative_, [this](int row, int col) { return multigrid_.fineOffset(row, col); });
+    iterative_.values = multigrid_.fineValues();
+    iterative_.count = multigrid_.fineValueCount();
+    if (!refill(mass, c, iterative_)) return false;
+    multigrid_.refresh();
+    return true;
+}
+
 bool NewtonVelocitySolver::solveLinear(OdeSystem& sys, double c, bool warmStart, Result& result) {
-    if (jac_.stiffness.empty() && jac_.damping.empty()) {
+    if (jac_.empty()) {
         // No effect has a Jacobian: A = M is diagonal.
         delta_ = rhs_.cwiseProduct(sys.inverseMass());
         return true;
     }
-    assemble(sys, c);
-    if (jac_.symmetric && matrix_.rows() >= kIterativeThreshold) {
+    const int n = static_cast<int>(sys.mass().size());
+    if (jac_.symmetric && n >= kIterativeThreshold) {
+        // Large symmetric systems: conjugate gradients preconditioned by aggregation
+        // multigrid, on the multigrid's blocked copy of the matrix, assembled in place.
         // The first (Baraff & Witkin) solve is a linearisation anyway and tolerates a loose
         // residual; Newton refinements need a tight one or they could not converge.
-        const double tolerance = warmStart ? kIterativeTolerance : kRefinementTolerance;
-        const int maxIterations = std::max<int>(200, static_cast<int>(matrix_.rows() / 4));
-        if (warmStart) delta_ = guess_;
-        else delta_.setZero();
-        int iterations = 0;
-        double residual = 0.0;
-        const bool converged = conjugateGradient(tolerance, maxIterations, iterations, residual);
-        result.linearIterations += iterations;
-        result.linearResidual = residual;
-        if (converged && delta_.allFinite()) {
-            if (warmStart) guess_ = delta_;
-            return true;
+        const bool ready = assembleIterative(sys, c);
+        if (ready) {
+            const double tolerance = warmStart ? kIterativeTolerance : kRefinementTolerance;
+            const int maxIterations = std::max(200, n / 4);
+            if (warmStart) delta_ = guess_;
+            else delta_.setZero();
+            int iterations = 0;
+            double residual = 0.0;
+            const bool converged = conjugateGradient(tolerance, maxIterations, iterations, residual);
+            result.linearIterations += iterations;
+            result.linearResidual = residual;
+            if (converged && delta_.allFinite()) {
+                if (warmStart) guess_ = delta_;
+                return true;
+            }
         }
         // Not converged (an indefinite matrix despite the definite Jacobian): fall through to
         // the direct solvers below.
     }
+    assemble(sys, c);
     if (jac_.symmetric) {
         if (!ldltAnalyzed_) {
             ldlt_.analyzePattern(matrix_);
@@ -113,7 +218,7 @@ bool NewtonVelocitySolver::solveLinear(OdeSystem& sys, double c, bool warmStart,
 
 bool NewtonVelocitySolver::conjugateGradient(double tolerance, int maxIterations, int& iterations,
                                              double& residual) {
-    // Conjugate gradients preconditioned by the diagonal (Jacobi), solving matrix_·delta_ =
+    // Conjugate gradients preconditioned by a multigrid V-cycle, solving matrix_·delta_ =
     // rhs_ from the guess already in delta_. Every vector is a member sized once, so a step
     // allocates nothing. Stops when ‖r‖ ≤ tolerance·‖rhs‖.
     const double rhsNorm = rhs_.norm();
@@ -122,8 +227,7 @@ bool NewtonVelocitySolver::conjugateGradient(double tolerance, int maxIterations
         residual = 0.0;
         return true;
     }
-    inverseDiagonal_ = matrix_.diagonal().cwiseInverse();
-    residual_.noalias() = matrix_ * delta_;
+    multigrid_.multiply(delta_, residual_);  // matrix_ in the multigrid's blocked form
     residual_ = rhs_ - residual_;
     // The last step's answer is a good start while the motion is smooth; when the cloth
     // changes direction it is worse than no guess at all (measured: 231 iterations per step
@@ -132,19 +236,19 @@ bool NewtonVelocitySolver::conjugateGradient(double tolerance, int maxIterations
         delta_.setZero();
         residual_ = rhs_;
     }
-    z_ = inverseDiagonal_.cwiseProduct(residual_);
+    multigrid_.apply(residual_, z_);
     direction_ = z_;
     double rz = residual_.dot(z_);
     for (iterations = 0; iterations < maxIterations; ++iterations) {
         residual = residual_.norm() / rhsNorm;
         if (residual <= tolerance) return true;
-        product_.noalias() = matrix_ * direction_;
+        multigrid_.multiply(direction_, product_);
         const double curvature = direction_.dot(product_);
         if (!(curvature > 0.0)) return false;  // not positive definite along this direction
         const double alpha = rz / curvature;
         delta_ += alpha * direction_;
         residual_ -= alpha * product_;
-        z_ = inverseDiagonal_.cwiseProduct(residual_);
+        multigrid_.apply(residual_, z_);
         const double rzNext = residual_.dot(z_);
         direction_ = z_ + (rzNext / rz) * direction_;
         rz = rzNext;
@@ -165,9 +269,27 @@ NewtonVelocitySolver::Result NewtonVelocitySolver::solve(OdeSystem& sys, double 
     jac_.definite = true;
     result.power = sys.forcesAndJacobians(t, q0, u0, force_, jac_);
     rhs_ = c * force_;
-    if (!jac_.stiffness.empty()) {
-        kU_.setZero();  // K·u₀ straight from the triplets (duplicates add up, as in K)
+    if (jac_.hasStiffness()) {
+        kU_.setZero();  // K·u₀ straight from the entries (duplicates add up, as in K)
         for (const Triplet& t : jac_.stiffness) kU_[t.row()] += t.value() * u0[t.col()];
+        for (const JacobianBlock& b : jac_.stiffnessBlocks) {
+            kU_[b.row] += b.v[0] * u0[b.col] + b.v[1] * u0[b.col + 1];
+            kU_[b.row + 1] += b.v[2] * u0[b.col] + b.v[3] * u0[b.col + 1];
+        }
+        for (const JacobianPair& p : jac_.stiffnessPairs) {
+            // S·(u_a − u_b) at a, its negative at b (a fixed end has no velocity).
+            const double ux = (p.a >= 0 ? u0[p.a] : 0.0) - (p.b >= 0 ? u0[p.b] : 0.0);
+            const double uy = (p.a >= 0 ? u0[p.a + 1] : 0.0) - (p.b >= 0 ? u0[p.b + 1] : 0.0);
+            const double fx = p.v[0] * ux + p.v[1] * uy, fy = p.v[2] * ux + p.v[3] * uy;
+            if (p.a >= 0) {
+                kU_[p.a] += fx;
+                kU_[p.a + 1] += fy;
+            }
+            if (p.b >= 0) {
+                kU_[p.b] -= fx;
+                kU_[p.b + 1] -= fy;
+            }
+        }
         rhs_ += (c * c) * kU_;
     }
     if (!solveLinear(sys, c, true, result)) return result;

@@ -8,10 +8,13 @@
 // Baraff & Witkin 1998: (M − c·D − c²·K)·Δv = c·(F₀ + c·K·u₀). Later iterations are Newton
 // steps on the residual at the current iterate.
 
+#include "physics/integrators/AggregationMultigrid.h"
 #include "physics/integrators/Integrator.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
+
+#include <functional>
 
 namespace phasebox {
 
@@ -43,10 +46,26 @@ public:
                  int maxIterations, bool untilConverged, double relativeTolerance);
 
 private:
+    // Where the assembled values go: a value array and, per contribution, its slots in it.
+    struct Target {
+        double* values = nullptr;
+        std::size_t count = 0;
+        std::vector<int> slots;
+        bool rowMajor = false;  // the multigrid's blocks; matrix_ is column-major
+    };
+    template <typename Visit>
+    void forEachContribution(double c, Visit&& visit) const;
+    // Adds this step's M − c·D − c²·K into target's recorded slots; false if the
+    // contributions are not the recorded ones (effects came or went).
+    bool refill(const Vec& mass, double c, Target& target);
+    void recordSlots(int n, double c, Target& target, const std::function<int(int, int)>& place);
     // Assembles A = M − c·D − c²·K into matrix_. The sparsity pattern is built once and only
-    // refilled while the effects produce the same triplet structure (the usual case: springs
-    // do not come and go between steps), so a step neither allocates nor re-analyses.
+    // refilled while the effects produce the same contributions (the usual case: springs do
+    // not come and go between steps), so a step neither allocates nor re-analyses.
     void assemble(OdeSystem& sys, double c);
+    // Assembles A straight into the multigrid's fine matrix and refreshes the hierarchy
+    // (building both, and matrix_, when the pattern is new).
+    bool assembleIterative(OdeSystem& sys, double c);
     // Solves A·x = rhs_ into delta_.
     bool solveLinear(OdeSystem& sys, double c, bool warmStart, Result& result);
     bool conjugateGradient(double tolerance, int maxIterations, int& iterations, double& residual);
@@ -55,14 +74,14 @@ private:
     Vec force_, rhs_, delta_, qe_, kU_;
     SparseMatrix matrix_;
     std::vector<Triplet> triplets_;
-    std::vector<int> slot_;  // for each assembled triplet, its index in matrix_'s values
-    std::size_t patternHash_ = 0;
-    std::size_t patternSize_ = 0;
+    std::vector<long long> keys_;  // (row, col) of each contribution, in assembly order
+    Target direct_, iterative_;    // matrix_, and the multigrid's blocked copy
     bool ldltAnalyzed_ = false;
     bool luAnalyzed_ = false;
     Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
     Vec guess_;  // the last step's first update, to warm-start the next one
-    Vec inverseDiagonal_, residual_, z_, direction_, product_;  // conjugate-gradient scratch
+    Vec residual_, z_, direction_, product_;  // conjugate-gradient scratch
+    AggregationMultigrid multigrid_;          // conjugate gradients' preconditioner
     Eigen::SparseLU<SparseMatrix> lu_;
 };
 

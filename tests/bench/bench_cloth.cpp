@@ -2,7 +2,9 @@
 // symplectic Euler with the sub-steps the stability advisor says it needs to survive the same
 // stiffness, both as CPU seconds per simulated second, measured in the same run.
 //
-//   bench_cloth [--frames N] [--n N] [--stiffness K] [--json]
+//   bench_cloth [--frames N] [--n N] [--stiffness K] [--json] [--implicit-only]
+//
+// --implicit-only skips the symplectic run (for profiling the implicit step alone).
 
 #include "BenchCommon.h"
 
@@ -21,7 +23,8 @@ using namespace phasebox;
 namespace {
 
 struct Measurement {
-    double msPerFrame = 0.0;
+    double msPerFrame = 0.0;        // mean over the frames
+    double medianMsPerFrame = 0.0;  // robust against another process taking the core a while
     int substeps = 1;
     bool diverged = false;
     double cgPerStep = 0.0;
@@ -31,16 +34,23 @@ Measurement measure(SceneDesc scene, int frames) {
     auto world = buildWorld(scene).world;
     for (int k = 0; k < 3; ++k) world->step();  // warm-up: patterns analysed, caches primed
     const long long cgBefore = world->integrator().stats().linearIterations;
-    const auto start = std::chrono::steady_clock::now();
     Measurement m;
     m.substeps = scene.simulation.substeps;
-    for (int k = 0; k < frames; ++k)
-        if (!world->step()) {
+    std::vector<double> perFrame;
+    perFrame.reserve(frames);
+    double total = 0.0;
+    for (int k = 0; k < frames; ++k) {
+        const auto start = bench::Clock::now();
+        const bool ok = world->step();
+        perFrame.push_back(1000.0 * bench::secondsBetween(start, bench::Clock::now()));
+        total += perFrame.back();
+        if (!ok) {
             m.diverged = true;
             break;
         }
-    m.msPerFrame =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / frames;
+    }
+    m.msPerFrame = total / static_cast<double>(perFrame.size());
+    m.medianMsPerFrame = bench::median(perFrame);
     m.cgPerStep = static_cast<double>(world->integrator().stats().linearIterations - cgBefore) / frames;
     return m;
 }
@@ -50,12 +60,13 @@ Measurement measure(SceneDesc scene, int frames) {
 int main(int argc, char** argv) {
     int frames = 30, n = 64;
     double stiffness = 2e4;
-    bool json = false;
+    bool json = false, implicitOnly = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--n") && i + 1 < argc) n = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--stiffness") && i + 1 < argc) stiffness = std::atof(argv[++i]);
         else if (!std::strcmp(argv[i], "--json")) json = true;
+        else if (!std::strcmp(argv[i], "--implicit-only")) implicitOnly = true;
     }
 
     const SceneDesc implicitScene = scenes::cloth(n, stiffness);
@@ -68,17 +79,23 @@ int main(int argc, char** argv) {
         static_cast<int>(std::ceil(1.1 * implicitScene.simulation.dt * advice.omegaMax / 2.0));
 
     const Measurement imp = measure(implicitScene, frames);
-    const Measurement sym = measure(explicitScene, frames);
+    if (implicitOnly) explicitScene.simulation.substeps = 1;  // a token run, not reported
+    const Measurement sym = measure(explicitScene, implicitOnly ? 1 : frames);
+    if (implicitOnly) {
+        std::printf("implicit_euler %d x %d: %.2f ms per step (median %.2f), %.1f CG iterations per step\n",
+                    n, n, imp.msPerFrame, imp.medianMsPerFrame, imp.cgPerStep);
+        return 0;
+    }
     const double framesPerSecond = 1.0 / implicitScene.simulation.dt;
     const double impCost = imp.msPerFrame * framesPerSecond / 1000.0;
     const double symCost = sym.msPerFrame * framesPerSecond / 1000.0;
 
     if (json) {
-        std::printf("{\"n\": %d, \"stiffness\": %g, \"omega_max\": %g, \"implicit_ms_per_step\": %g, "
+        std::printf("{\"n\": %d, \"stiffness\": %g, \"omega_max\": %g, \"implicit_ms_per_step\": %g, \"implicit_median_ms_per_step\": %g, "
                     "\"implicit_cg_iterations_per_step\": %g, \"symplectic_substeps\": %d, "
                     "\"symplectic_ms_per_frame\": %g, \"implicit_cpu_s_per_sim_s\": %g, "
                     "\"symplectic_cpu_s_per_sim_s\": %g, \"symplectic_diverged\": %s}\n",
-                    n, stiffness, advice.omegaMax, imp.msPerFrame, imp.cgPerStep, sym.substeps,
+                    n, stiffness, advice.omegaMax, imp.msPerFrame, imp.medianMsPerFrame, imp.cgPerStep, sym.substeps,
                     sym.msPerFrame, impCost, symCost, sym.diverged ? "true" : "false");
         return 0;
     }
@@ -87,8 +104,8 @@ int main(int argc, char** argv) {
     std::printf("stiffest mode omega = %.4g rad/s (omega*dt = %.1f)\n\n", advice.omegaMax,
                 advice.omegaMax * implicitScene.simulation.dt);
     std::printf("%-34s %12s %14s\n", "", "ms/frame", "CPU s per sim s");
-    std::printf("%-34s %12.2f %14.2f   (%.0f CG iterations per step)\n", "implicit_euler, 1 step",
-                imp.msPerFrame, impCost, imp.cgPerStep);
+    std::printf("%-34s %12.2f %14.2f   (median %.2f ms; %.1f CG iterations per step)\n",
+                "implicit_euler, 1 step", imp.msPerFrame, impCost, imp.medianMsPerFrame, imp.cgPerStep);
     std::printf("%-34s %12.2f %14.2f%s\n",
                 ("symplectic_euler, " + std::to_string(sym.substeps) + " sub-steps").c_str(),
                 sym.msPerFrame, symCost, sym.diverged ? "   (diverged!)" : "");

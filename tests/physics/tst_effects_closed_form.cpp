@@ -266,8 +266,8 @@ void TestEffectsClosedForm::liftIsMinusPotentialGradientAndJacobiansMatch() {
     ForceJacobians jac;
     world->forcesAndJacobians(0.0, q, u, force, jac);
     Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n), D = Eigen::MatrixXd::Zero(n, n);
-    for (const Triplet& t : jac.stiffness) K(t.row(), t.col()) += t.value();
-    for (const Triplet& t : jac.damping) D(t.row(), t.col()) += t.value();
+    for (const Triplet& t : jac.stiffnessTriplets()) K(t.row(), t.col()) += t.value();
+    for (const Triplet& t : jac.dampingTriplets()) D(t.row(), t.col()) += t.value();
     Eigen::MatrixXd numK(n, n), numD(n, n);
     for (int j = 0; j < n; ++j) {
         Eigen::VectorXd qp = q, qm = q, vp = u, vm = u;

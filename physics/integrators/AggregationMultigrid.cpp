@@ -1,0 +1,391 @@
+#include "physics/integrators/AggregationMultigrid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace phasebox {
+
+namespace {
+
+// A coupling counts as strong when ‖A_IJ‖ ≥ θ·√(‖A_II‖·‖A_JJ‖) (Frobenius norms of the
+// node blocks). A cloth's structural and shear springs pass and its bend springs (a hundredth
+// of the structural stiffness) do not, which gives aggregates of about 3 × 3 points.
+constexpr double kStrongCoupling = 0.02;
+// Coarsening stops at this many DOFs (the level is then factorised), or when a level would
+// keep more than kMinimumShrink of the nodes of the one above. Plain aggregation loses
+// accuracy with every level a V-cycle passes through, so a factorised second level beats a
+// deeper hierarchy while it stays small: on a 64 × 64 cloth (8,064 DOFs, 924 on level 2),
+// 13 iterations per step against 28 with a third level of 144 DOFs (measured).
+constexpr int kCoarsestSize = 2000;
+constexpr double kMinimumShrink = 0.6;
+constexpr std::size_t kMaxLevels = 8;
+
+// Index of block column `col` in row `row`, which must exist.
+int findBlock(const std::vector<int>& outer, const std::vector<int>& inner, int row, int col) {
+    const auto begin = inner.begin() + outer[row], end = inner.begin() + outer[row + 1];
+    return static_cast<int>(std::lower_bound(begin, end, col) - inner.begin());
+}
+
+// Compressed rows from a list of (row, col) block positions, sorted and without duplicates.
+void compress(int rows, std::vector<std::pair<int, int>>& positions, std::vector<int>& outer,
+              std::vector<int>& inner) {
+    std::sort(positions.begin(), positions.end());
+    positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
+    outer.assign(rows + 1, 0);
+    inner.resize(positions.size());
+    for (std::size_t k = 0; k < positions.size(); ++k) {
+        ++outer[positions[k].first + 1];
+        inner[k] = positions[k].second;
+    }
+    for (int r = 0; r < rows; ++r) outer[r + 1] += outer[r];
+}
+
+// Σ_k A_k·x_(inner[k]) over the blocks [begin, end) of a row, into sum. The sum is split over
+// independent accumulators two blocks at a time: one chain of additions would make each row
+// wait on the adder's latency (measured: 0.18 against 0.07 ms per pass on a 64 × 64 cloth).
+template <int B>
+[[gnu::always_inline]] inline void rowSum(const double* values, const int* inner, int begin, int end, const double* x,
+                   double* sum) {
+    if constexpr (B == 2) {
+        // Each block row times the point's (x, y) is one two-lane product.
+        using Lanes = Eigen::Array2d;
+        using In = Eigen::Map<const Lanes>;
+        Lanes a = Lanes::Zero(), b = Lanes::Zero(), c = Lanes::Zero(), d = Lanes::Zero();
+        int k = begin;
+        for (; k + 1 < end; k += 2) {
+            const double* p = values + 4 * k;
+            const In xp(x + 2 * inner[k]), xq(x + 2 * inner[k + 1]);
+            a += In(p) * xp;
+            b += In(p + 2) * xp;
+            c += In(p + 4) * xq;
+            d += In(p + 6) * xq;
+        }
+        if (k < end) {
+            const double* p = values + 4 * k;
+            const In xp(x + 2 * inner[k]);
+            a += In(p) * xp;
+            b += In(p + 2) * xp;
+        }
+        sum[0] = (a + c).sum();
+        sum[1] = (b + d).sum();
+    } else {
+        double a = 0.0, c = 0.0;
+        int k = begin;
+        for (; k + 1 < end; k += 2) {
+            a += values[k] * x[inner[k]];
+            c += values[k + 1] * x[inner[k + 1]];
+        }
+        if (k < end) a += values[k] * x[inner[k]];
+        sum[0] = a + c;
+    }
+}
+
+// y = A·x for one row-major B × B block.
+template <int B>
+inline void blockProduct(const double* a, const double* x, double* y) {
+    for (int r = 0; r < B; ++r) {
+        y[r] = 0.0;
+        for (int c = 0; c < B; ++c) y[r] += a[r * B + c] * x[c];
+    }
+}
+
+}  // namespace
+
+void AggregationMultigrid::setup(const SparseMatrix& a, int pairedDofs, bool patternChanged) {
+    if (patternChanged || levels_.empty() || levels_[0].n != a.rows()) build(a, pairedDofs);
+    fillFine(a);
+    refresh();
+}
+
+int AggregationMultigrid::fineOffset(int row, int col) const {
+    const Level& fine = levels_[0];
+    const int B = block_;
+    return findBlock(fine.outer, fine.inner, row / B, col / B) * B * B + (row % B) * B + col % B;
+}
+
+void AggregationMultigrid::build(const SparseMatrix& a, int pairedDofs) {
+    const int n = static_cast<int>(a.rows());
+    block_ = (pairedDofs == n && n % 2 == 0) ? 2 : 1;
+    const int B = block_;
+    levels_.clear();
+    Level& fine = levels_.emplace_back();
+    fine.nodes = n / B;
+    fine.n = n;
+    const int* outer = a.outerIndexPtr();
+    const int* inner = a.innerIndexPtr();
+    // a is symmetric: column j's entries are row j's.
+    std::vector<std::pair<int, int>> positions;
+    positions.reserve(a.nonZeros() / (B * B) + n);
+    for (int j = 0; j < n; ++j)
+        for (int k = outer[j]; k < outer[j + 1]; ++k) positions.emplace_back(j / B, inner[k] / B);
+    for (int node = 0; node < fine.nodes; ++node) positions.emplace_back(node, node);
+    compress(fine.nodes, positions, fine.outer, fine.inner);
+    fineSlot_.resize(a.nonZeros());
+    for (int j = 0; j < n; ++j)
+        for (int k = outer[j]; k < outer[j + 1]; ++k)
+            fineSlot_[k] = findBlock(fine.outer, fine.inner, j / B, inner[k] / B) * B * B +
+                           (j % B) * B + inner[k] % B;
+
+    prepare(fine);
+    fillFine(a);
+    while (levels_.size() < kMaxLevels && levels_.back().n > kCoarsestSize) {
+        Level next;
+        std::vector<int> toCoarse, slot;
+        if (!coarsen(levels_.back(), next, toCoarse, slot)) break;
+        levels_.back().toCoarse = std::move(toCoarse);
+        levels_.back().galerkinSlot = std::move(slot);
+        levels_.push_back(std::move(next));
+        prepare(levels_.back());
+        galerkin(levels_.size() - 2);  // the next coarsening weighs couplings by these values
+    }
+
+    coarsestOk_ = false;
+    if (levels_.size() < 2) return;
+    // The coarsest matrix is factorised every step. Eigen's own ordering would copy and
+    // permute it on each factorisation (allocating); instead it is ordered once here
+    // (approximate minimum degree) and stored permuted, upper triangle only, which Eigen
+    // factorises as it is.
+    const Level& last = levels_.back();
+    std::vector<Triplet> full;
+    for (int row = 0; row < last.nodes; ++row)
+        for (int k = last.outer[row]; k < last.outer[row + 1]; ++k)
+            for (int e = 0; e < B * B; ++e) full.emplace_back(row * B + e / B, last.inner[k] * B + e % B, 1.0);
+    SparseMatrix pattern(last.n, last.n);
+    pattern.setFromTriplets(full.begin(), full.end());
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverseOrder;
+    Eigen::AMDOrdering<int>()(pattern, inverseOrder);
+    const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order = inverseOrder.inverse();
+    coarsestOrder_ = order.indices();  // old index → position
+    std::vector<Triplet> upper;
+    for (const Triplet& t : full) {
+        const int r = coarsestOrder_[t.row()], c = coarsestOrder_[t.col()];
+        if (r <= c) upper.emplace_back(r, c, 0.0);
+    }
+    coarsestMatrix_.resize(last.n, last.n);
+    coarsestMatrix_.setFromTriplets(upper.begin(), upper.end());
+    coarsestMatrix_.makeCompressed();
+    coarsestSlot_.resize(full.size());
+    for (std::size_t k = 0; k < full.size(); ++k) {
+        const int r = coarsestOrder_[full[k].row()], c = coarsestOrder_[full[k].col()];
+        // Entries below the diagonal are the mirror images of ones above: not stored.
+        coarsestSlot_[k] = r <= c ? static_cast<int>(&coarsestMatrix_.coeffRef(r, c) - coarsestMatrix_.valuePtr()) : -1;
+    }
+    coarsestB_.setZero(last.n);
+    coarsestX_.setZero(last.n);
+    coarsest_.analyzePattern(coarsestMatrix_);
+}
+
+bool AggregationMultigrid::coarsen(const Level& fine, Level& coarse, std::vector<int>& toCoarse,
+                                   std::vector<int>& slot) const {
+    const int B = block_;
+    const int nodes = fine.nodes;
+    if (nodes < 2) return false;
+    // Coupling strengths from the current values (those of the first step of a pattern).
+    auto norm = [&](int k) {
+        double s = 0.0;
+        for (int e = 0; e < B * B; ++e) s += fine.values[k * B * B + e] * fine.values[k * B * B + e];
+        return std::sqrt(s);
+    };
+    // The threshold halves from level to level (Vaněk, Mandel & Brezina): Galerkin sums make
+    // coarse couplings more even, and a fixed threshold would stop the coarsening early.
+    const double theta = kStrongCoupling * std::ldexp(1.0, -static_cast<int>(levels_.size() - 1));
+    std::vector<int> strongOuter(nodes + 1, 0), strongInner;
+    std::vector<double> strength;
+    for (int p = 0; p < nodes; ++p) {
+        const double self = norm(fine.diagonal[p]);
+        for (int k = fine.outer[p]; k < fine.outer[p + 1]; ++k) {
+            const int q = fine.inner[k];
+            if (q == p) continue;
+            const double s = norm(k);
+            if (s >= theta * std::sqrt(self * norm(fine.diagonal[q]))) {
+                strongInner.push_back(q);
+                strength.push_back(s);
+            }
+        }
+        strongOuter[p + 1] = static_cast<int>(strongInner.size());
+    }
+
+    // Aggregation in three passes (Vaněk, Mandel & Brezina): seeds whose whole strong
+    // neighbourhood is free; then the leftovers join their strongest seeded neighbour; then
+    // what is still free forms aggregates of its own.
+    std::vector<int> aggregate(nodes, -1);
+    int count = 0;
+    for (int p = 0; p < nodes; ++p) {
+        if (aggregate[p] >= 0 || strongOuter[p] == strongOuter[p + 1]) continue;
+        bool free = true;
+        for (int k = strongOuter[p]; k < strongOuter[p + 1]; ++k) free = free && aggregate[strongInner[k]] < 0;
+        if (!free) continue;
+        aggregate[p] = count;
+        for (int k = strongOuter[p]; k < strongOuter[p + 1]; ++k) aggregate[strongInner[k]] = count;
+        ++count;
+    }
+    const std::vector<int> seeded = aggregate;
+    for (int p = 0; p < nodes; ++p) {
+        if (aggregate[p] >= 0) continue;
+        double best = 0.0;
+        for (int k = strongOuter[p]; k < strongOuter[p + 1]; ++k)
+            if (seeded[strongInner[k]] >= 0 && strength[k] > best) {
+                best = strength[k];
+                aggregate[p] = seeded[strongInner[k]];
+            }
+    }
+    for (int p = 0; p < nodes; ++p) {
+        if (aggregate[p] >= 0) continue;
+        aggregate[p] = count;
+        for (int k = strongOuter[p]; k < strongOuter[p + 1]; ++k)
+            if (aggregate[strongInner[k]] < 0) aggregate[strongInner[k]] = count;
+        ++count;
+    }
+    if (count > kMinimumShrink * nodes) return false;
+
+    // The Galerkin product Pᵀ·A·P of a piecewise-constant P sums A's blocks into the block of
+    // their aggregates: the coarse pattern and each fine block's slot are worked out here.
+    coarse.nodes = count;
+    coarse.n = count * B;
+    std::vector<std::pair<int, int>> positions;
+    positions.reserve(fine.inner.size());
+    for (int p = 0; p < nodes; ++p)
+        for (int k = fine.outer[p]; k < fine.outer[p + 1]; ++k)
+            positions.emplace_back(aggregate[p], aggregate[fine.inner[k]]);
+    compress(count, positions, coarse.outer, coarse.inner);
+    slot.resize(fine.inner.size());
+    for (int p = 0; p < nodes; ++p)
+        for (int k = fine.outer[p]; k < fine.outer[p + 1]; ++k)
+            slot[k] = findBlock(coarse.outer, coarse.inner, aggregate[p], aggregate[fine.inner[k]]);
+    toCoarse = std::move(aggregate);
+    return true;
+}
+
+void AggregationMultigrid::prepare(Level& level) const {
+    const int BB = block_ * block_;
+    level.diagonal.resize(level.nodes);
+    for (int node = 0; node < level.nodes; ++node)
+        level.diagonal[node] = findBlock(level.outer, level.inner, node, node);
+    level.values.assign(level.inner.size() * BB, 0.0);
+    level.diagonalInverse.assign(static_cast<std::size_t>(level.nodes) * BB, 0.0);
+    level.x.setZero(level.n);
+    level.b.setZero(level.n);
+}
+
+void AggregationMultigrid::fillFine(const SparseMatrix& a) {
+    Level& fine = levels_[0];
+    std::fill(fine.values.begin(), fine.values.end(), 0.0);
+    const double* source = a.valuePtr();
+    const int count = static_cast<int>(a.nonZeros());
+    for (int k = 0; k < count; ++k) fine.values[fineSlot_[k]] = source[k];
+}
+
+void AggregationMultigrid::galerkin(std::size_t l) {
+    const int BB = block_ * block_;
+    const Level& from = levels_[l];
+    Level& to = levels_[l + 1];
+    std::fill(to.values.begin(), to.values.end(), 0.0);
+    const int blocks = static_cast<int>(from.inner.size());
+    for (int k = 0; k < blocks; ++k)
+        for (int e = 0; e < BB; ++e) to.values[from.galerkinSlot[k] * BB + e] += from.values[k * BB + e];
+}
+
+void AggregationMultigrid::refresh() {
+    const int B = block_, BB = block_ * block_;
+    for (std::size_t l = 0; l + 1 < levels_.size(); ++l) galerkin(l);
+    for (Level& l : levels_)
+        for (int node = 0; node < l.nodes; ++node) {
+            const double* d = &l.values[l.diagonal[node] * BB];
+            double* inv = &l.diagonalInverse[node * BB];
+            if (B == 1) {
+                inv[0] = 1.0 / d[0];
+            } else {
+                const double det = d[0] * d[3] - d[1] * d[2];
+                inv[0] = d[3] / det;
+                inv[1] = -d[1] / det;
+                inv[2] = -d[2] / det;
+                inv[3] = d[0] / det;
+            }
+        }
+    if (levels_.size() < 2) return;
+    const Level& last = levels_.back();
+    double* scalar = coarsestMatrix_.valuePtr();
+    std::fill(scalar, scalar + coarsestMatrix_.nonZeros(), 0.0);
+    for (std::size_t k = 0; k < coarsestSlot_.size(); ++k)
+        if (coarsestSlot_[k] >= 0) scalar[coarsestSlot_[k]] += last.values[k];
+    coarsest_.factorizeOrdered(coarsestMatrix_);
+    coarsestOk_ = coarsest_.info() == Eigen::Success;
+}
+
+template <int B>
+void AggregationMultigrid::multiplyBlocks(const Level& level, const Vec& x, Vec& y) const {
+    const double* v = level.values.data();
+    const int* outer = level.outer.data();
+    const int* inner = level.inner.data();
+    const double* xs = x.data();
+    double* ys = y.data();
+    for (int i = 0; i < level.nodes; ++i) rowSum<B>(v, inner, outer[i], outer[i + 1], xs, ys + i * B);
+}
+
+void AggregationMultigrid::multiply(const Vec& x, Vec& y) const {
+    if (block_ == 2) multiplyBlocks<2>(levels_[0], x, y);
+    else multiplyBlocks<1>(levels_[0], x, y);
+}
+
+// One V-cycle on levels_[index] with right side b, into x.
+template <int B>
+void AggregationMultigrid::cycle(std::size_t index) {
+    Level& level = levels_[index];
+    if (index + 1 == levels_.size() && index > 0 && coarsestOk_) {
+        for (int i = 0; i < level.n; ++i) coarsestB_[coarsestOrder_[i]] = level.b[i];
+        coarsestX_ = coarsest_.solve(coarsestB_);
+        for (int i = 0; i < level.n; ++i) level.x[i] = coarsestX_[coarsestOrder_[i]];
+        return;
+    }
+    constexpr int BB = B * B;
+    const int* outer = level.outer.data();
+    const int* inner = level.inner.data();
+    const int* diagonal = level.diagonal.data();
+    const double* values = level.values.data();
+    const double* inverse = level.diagonalInverse.data();
+    const double* b = level.b.data();
+    double* x = level.x.data();
+    const int nodes = level.nodes;
+
+    // Forward block Gauss–Seidel from x = 0: only the blocks left of the diagonal see a value.
+    for (int i = 0; i < nodes; ++i) {
+        double s[B], lower[B];
+        rowSum<B>(values, inner, outer[i], diagonal[i], x, lower);
+        for (int c = 0; c < B; ++c) s[c] = b[i * B + c] - lower[c];
+        blockProduct<B>(inverse + i * BB, s, x + i * B);
+    }
+    if (index + 1 < levels_.size()) {
+        // Row i's residual b − A·x is now what the blocks right of the diagonal (zero while
+        // row i was solved) contribute: summed straight into the coarse right side, Pᵀ·r.
+        Level& next = levels_[index + 1];
+        next.b.setZero();
+        double* coarseB = next.b.data();
+        const int* toCoarse = level.toCoarse.data();
+        for (int i = 0; i < nodes; ++i) {
+            double upper[B];
+            rowSum<B>(values, inner, diagonal[i] + 1, outer[i + 1], x, upper);
+            for (int c = 0; c < B; ++c) coarseB[toCoarse[i] * B + c] -= upper[c];
+        }
+        cycle<B>(index + 1);
+        const double* coarseX = next.x.data();
+        for (int i = 0; i < nodes; ++i)
+            for (int c = 0; c < B; ++c) x[i * B + c] += coarseX[toCoarse[i] * B + c];
+    }
+    // Backward block Gauss–Seidel over whole rows.
+    for (int i = nodes - 1; i >= 0; --i) {
+        double row[B], s[B], d[B];
+        rowSum<B>(values, inner, outer[i], outer[i + 1], x, row);
+        for (int c = 0; c < B; ++c) s[c] = b[i * B + c] - row[c];
+        blockProduct<B>(inverse + i * BB, s, d);
+        for (int c = 0; c < B; ++c) x[i * B + c] += d[c];
+    }
+}
+
+void AggregationMultigrid::apply(const Vec& r, Vec& z) {
+    levels_[0].b = r;
+    if (block_ == 2) cycle<2>(0);
+    else cycle<1>(0);
+    z = levels_[0].x;
+}
+
+}  // namespace phasebox
