@@ -390,10 +390,12 @@ double World::forces(double t, const Vec& q, const Vec& u, Vec& force) {
 
 double World::forcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& force,
                                  ForceJacobians& jacobians) {
-    const double power = forces(t, q, u, force);
+    ++forceEvaluations_;
+    force.setZero();
+    double power = 0.0;
     for (int i = 0; i < static_cast<int>(effects_.size()); ++i) {
         const auto start = Clock::now();
-        effects_[i]->addJacobians(t, q, u, jacobians);
+        power += effects_[i]->addForcesAndJacobians(t, q, u, force, jacobians);
         effectSeconds_[i] += secondsSince(start);
     }
     return power;

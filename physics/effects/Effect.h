@@ -65,6 +65,15 @@ public:
         (void)t, (void)q, (void)u, (void)jacobians;
     }
 
+    // Both at once, for the implicit methods: addForces then addJacobians unless the effect
+    // can share the work (a spring's length and direction serve both).
+    virtual double addForcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& force,
+                                         ForceJacobians& jacobians) {
+        const double power = addForces(t, q, u, force);
+        addJacobians(t, q, u, jacobians);
+        return power;
+    }
+
     virtual double potentialEnergy(const Vec& q) const {
         (void)q;
         return 0.0;

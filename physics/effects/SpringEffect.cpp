@@ -17,9 +17,22 @@ struct SpringGeometry {
     double rate = 0.0;        // L̇
 };
 
+// A particle end read in place (a cloth's springs are all particle to particle); others
+// through BodyPoint.
+inline void evaluateEnd(const BodyPoint& p, const Vec& q, const Vec& u, Vec2& position, Vec2& velocity,
+                        Vec2& arm) {
+    if (p.kind == BodyPoint::Kind::Particle) {
+        position = q.segment<2>(p.dof);
+        velocity = u.segment<2>(p.dof);
+        arm.setZero();
+    } else {
+        p.evaluate(q, u, position, velocity, arm);
+    }
+}
+
 bool evaluate(const SpringTerm& s, const Vec& q, const Vec& u, SpringGeometry& g) {
-    s.a.evaluate(q, u, g.pa, g.va, g.ra);
-    s.b.evaluate(q, u, g.pb, g.vb, g.rb);
+    evaluateEnd(s.a, q, u, g.pa, g.va, g.ra);
+    evaluateEnd(s.b, q, u, g.pb, g.vb, g.rb);
     const Vec2 d = g.pa - g.pb;
     g.length = d.norm();
     if (!(g.length > kMinLength)) return false;
@@ -90,49 +103,70 @@ double SpringEffect::nonConservativePower(double, const Vec& q, const Vec& u) {
     return power;
 }
 
-void SpringEffect::addJacobians(double, const Vec& q, const Vec& u, ForceJacobians& jac) {
-    // Elastic: ∂F_a/∂p_a = −k·[(1 − L₀/L)(I − ûûᵀ) + ûûᵀ]; damping along the axis:
-    // ∂F_a/∂ṗ_a = −c·ûûᵀ. The damping force's dependence on the direction û (a non-symmetric
-    // term) is left out, as in Baraff & Witkin: it only slows Newton's convergence, never
-    // changes the solution, and keeps the matrix symmetric.
-    SpringGeometry g;
+namespace {
+// Elastic: ∂F_a/∂p_a = −k·[(1 − L₀/L)(I − ûûᵀ) + ûûᵀ]; damping along the axis:
+// ∂F_a/∂ṗ_a = −c·ûûᵀ. The damping force's dependence on the direction û (a non-symmetric
+// term) is left out, as in Baraff & Witkin: it only slows Newton's convergence, never
+// changes the solution, and keeps the matrix symmetric.
+void addTermJacobians(const SpringTerm& s, const SpringGeometry& g, bool valid, ForceJacobians& jac) {
+    // A degenerate spring still writes its (zero) blocks: the sparsity pattern must not
+    // change from step to step, or the implicit solver would have to analyse it again.
+    const Mat2 uut = valid ? Mat2(g.dir * g.dir.transpose()) : Mat2::Zero();
+    double transverse = valid ? 1.0 - s.restLength / g.length : 0.0;
+    if (jac.definite) transverse = std::max(transverse, 0.0);
+    const Mat2 ks = -s.stiffness * (transverse * (Mat2::Identity() - uut) + uut);
+    if (s.a.kind != BodyPoint::Kind::Box && s.b.kind != BodyPoint::Kind::Box) {
+        // Points without a rotation (a cloth's nodes): one two-point coupling.
+        const int a = s.a.isDynamic() ? s.a.dof : -1, b = s.b.isDynamic() ? s.b.dof : -1;
+        jac.addStiffnessPair(a, b, ks);
+        if (s.damping != 0.0) jac.addDampingPair(a, b, -s.damping * uut);  // zero if degenerate
+        return;
+    }
     auto addK = [&](int r, int c, double v) { jac.addStiffness(r, c, v); };
     auto addD = [&](int r, int c, double v) { jac.addDamping(r, c, v); };
-    for (const SpringTerm& s : terms_) {
-        // A degenerate spring still writes its (zero) blocks: the sparsity pattern must not
-        // change from step to step, or the implicit solver would have to analyse it again.
-        const bool valid = evaluate(s, q, u, g);
-        const Mat2 uut = valid ? Mat2(g.dir * g.dir.transpose()) : Mat2::Zero();
-        double transverse = valid ? 1.0 - s.restLength / g.length : 0.0;
-        if (jac.definite) transverse = std::max(transverse, 0.0);
-        const Mat2 ks = -s.stiffness * (transverse * (Mat2::Identity() - uut) + uut);
-        const bool particles = s.a.kind != BodyPoint::Kind::Box && s.b.kind != BodyPoint::Kind::Box;
-        if (particles) {
-            // Points without a rotation (a cloth's nodes): one two-point coupling.
-            const int a = s.a.isDynamic() ? s.a.dof : -1, b = s.b.isDynamic() ? s.b.dof : -1;
-            jac.addStiffnessPair(a, b, ks);
-            if (s.damping != 0.0) jac.addDampingPair(a, b, -s.damping * uut);  // zero if degenerate
-            continue;
-        }
-        const PointJacobian ja = pointJacobian(s.a, g.ra);
-        const PointJacobian jb = pointJacobian(s.b, g.rb);
-        addProjected(ja, ja, ks, 1.0, addK);
-        addProjected(ja, jb, ks, -1.0, addK);
-        addProjected(jb, ja, ks, -1.0, addK);
-        addProjected(jb, jb, ks, 1.0, addK);
-        if (s.damping != 0.0) {
-            const Mat2 ds = -s.damping * uut;  // zero for a degenerate spring, same pattern
-            addProjected(ja, ja, ds, 1.0, addD);
-            addProjected(ja, jb, ds, -1.0, addD);
-            addProjected(jb, ja, ds, -1.0, addD);
-            addProjected(jb, jb, ds, 1.0, addD);
-        }
-        // A box's torque r × F also turns with the box: ∂(r × F)/∂θ = −r·F.
-        const Vec2 f = valid ? Vec2(-(s.stiffness * (g.length - s.restLength) + s.damping * g.rate) * g.dir)
-                             : Vec2::Zero();
-        if (s.a.kind == BodyPoint::Kind::Box) jac.addStiffness(s.a.dof + 2, s.a.dof + 2, -g.ra.dot(f));
-        if (s.b.kind == BodyPoint::Kind::Box) jac.addStiffness(s.b.dof + 2, s.b.dof + 2, g.rb.dot(f));
+    const PointJacobian ja = pointJacobian(s.a, g.ra);
+    const PointJacobian jb = pointJacobian(s.b, g.rb);
+    addProjected(ja, ja, ks, 1.0, addK);
+    addProjected(ja, jb, ks, -1.0, addK);
+    addProjected(jb, ja, ks, -1.0, addK);
+    addProjected(jb, jb, ks, 1.0, addK);
+    if (s.damping != 0.0) {
+        const Mat2 ds = -s.damping * uut;  // zero for a degenerate spring, same pattern
+        addProjected(ja, ja, ds, 1.0, addD);
+        addProjected(ja, jb, ds, -1.0, addD);
+        addProjected(jb, ja, ds, -1.0, addD);
+        addProjected(jb, jb, ds, 1.0, addD);
     }
+    // A box's torque r × F also turns with the box: ∂(r × F)/∂θ = −r·F.
+    const Vec2 f = valid ? Vec2(-(s.stiffness * (g.length - s.restLength) + s.damping * g.rate) * g.dir)
+                         : Vec2::Zero();
+    if (s.a.kind == BodyPoint::Kind::Box) jac.addStiffness(s.a.dof + 2, s.a.dof + 2, -g.ra.dot(f));
+    if (s.b.kind == BodyPoint::Kind::Box) jac.addStiffness(s.b.dof + 2, s.b.dof + 2, g.rb.dot(f));
+}
+}  // namespace
+
+void SpringEffect::addJacobians(double, const Vec& q, const Vec& u, ForceJacobians& jac) {
+    SpringGeometry g;
+    for (const SpringTerm& s : terms_) addTermJacobians(s, g, evaluate(s, q, u, g), jac);
+}
+
+double SpringEffect::addForcesAndJacobians(double, const Vec& q, const Vec& u, Vec& force,
+                                           ForceJacobians& jac) {
+    // One pass: each spring's geometry serves its force and its Jacobian.
+    double power = 0.0;
+    SpringGeometry g;
+    for (const SpringTerm& s : terms_) {
+        const bool valid = evaluate(s, q, u, g);
+        if (valid) {
+            const double dampingForce = s.damping * g.rate;
+            const Vec2 f = -(s.stiffness * (g.length - s.restLength) + dampingForce) * g.dir;
+            s.a.applyForce(f, g.ra, force);
+            s.b.applyForce(-f, g.rb, force);
+            power -= dampingForce * g.rate;
+        }
+        addTermJacobians(s, g, valid, jac);
+    }
+    return power;
 }
 
 double SpringEffect::potentialEnergy(const Vec& q) const {

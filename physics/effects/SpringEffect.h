@@ -27,6 +27,8 @@ public:
     double addForces(double t, const Vec& q, const Vec& u, Vec& force) override;
     double nonConservativePower(double t, const Vec& q, const Vec& u) override;
     void addJacobians(double t, const Vec& q, const Vec& u, ForceJacobians& jacobians) override;
+    double addForcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& force,
+                                 ForceJacobians& jacobians) override;
     double potentialEnergy(const Vec& q) const override;
     bool hasNonConservativePart() const override { return anyDamping_; }
 
