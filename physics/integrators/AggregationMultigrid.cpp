@@ -343,8 +343,9 @@ void AggregationMultigrid::cycle(std::size_t index) {
     const int* diagonal = level.diagonal.data();
     const double* values = level.values.data();
     const double* inverse = level.diagonalInverse.data();
-    const double* b = level.b.data();
-    double* x = level.x.data();
+    // The finest level reads the caller's right side and writes the caller's answer in place.
+    const double* b = index == 0 ? right_ : level.b.data();
+    double* x = index == 0 ? answer_ : level.x.data();
     const int nodes = level.nodes;
 
     // Forward block Gauss–Seidel from x = 0: only the blocks left of the diagonal see a value.
@@ -382,10 +383,10 @@ void AggregationMultigrid::cycle(std::size_t index) {
 }
 
 void AggregationMultigrid::apply(const Vec& r, Vec& z) {
-    levels_[0].b = r;
+    right_ = r.data();
+    answer_ = z.data();
     if (block_ == 2) cycle<2>(0);
     else cycle<1>(0);
-    z = levels_[0].x;
 }
 
 }  // namespace phasebox

@@ -74,6 +74,8 @@ private:
     template <int B> void multiplyBlocks(const Level& level, const Vec& x, Vec& y) const;
 
     int block_ = 1;
+    const double* right_ = nullptr;  // apply()'s r and z, which the finest level works on
+    double* answer_ = nullptr;
     std::vector<Level> levels_;
     std::vector<int> fineSlot_;    // scalar entry of a → index in levels_[0].values
     // The coarsest level as a scalar matrix in fill-reducing order (upper triangle), to

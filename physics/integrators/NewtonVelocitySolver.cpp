@@ -1,5 +1,7 @@
 #include "physics/integrators/NewtonVelocitySolver.h"
 
+#include <cmath>
+
 namespace phasebox {
 
 // Updates this small relative to the velocity are round-off when they stop shrinking.
@@ -239,15 +241,26 @@ bool NewtonVelocitySolver::conjugateGradient(double tolerance, int maxIterations
     multigrid_.apply(residual_, z_);
     direction_ = z_;
     double rz = residual_.dot(z_);
+    double residualSquared = residual_.squaredNorm();
+    const int n = static_cast<int>(rhs_.size());
     for (iterations = 0; iterations < maxIterations; ++iterations) {
-        residual = residual_.norm() / rhsNorm;
+        residual = std::sqrt(residualSquared) / rhsNorm;
         if (residual <= tolerance) return true;
         multigrid_.multiply(direction_, product_);
         const double curvature = direction_.dot(product_);
         if (!(curvature > 0.0)) return false;  // not positive definite along this direction
         const double alpha = rz / curvature;
-        delta_ += alpha * direction_;
-        residual_ -= alpha * product_;
+        // The two updates and the new residual's norm in one pass.
+        double* x = delta_.data();
+        double* r = residual_.data();
+        const double* p = direction_.data();
+        const double* ap = product_.data();
+        residualSquared = 0.0;
+        for (int i = 0; i < n; ++i) {
+            x[i] += alpha * p[i];
+            r[i] -= alpha * ap[i];
+            residualSquared += r[i] * r[i];
+        }
         multigrid_.apply(residual_, z_);
         const double rzNext = residual_.dot(z_);
         direction_ = z_ + (rzNext / rz) * direction_;
