@@ -285,10 +285,15 @@ void AggregationMultigrid::galerkin(std::size_t l) {
         for (int e = 0; e < BB; ++e) to.values[from.galerkinSlot[k] * BB + e] += from.values[k * BB + e];
 }
 
-void AggregationMultigrid::refresh() {
+void AggregationMultigrid::refresh(bool coarse) {
     const int B = block_, BB = block_ * block_;
-    for (std::size_t l = 0; l + 1 < levels_.size(); ++l) galerkin(l);
-    for (Level& l : levels_)
+    // Without `coarse` only the finest level follows the new values: the coarse levels and
+    // the factorisation stay as they were, a consistent older copy.
+    const std::size_t refreshed = coarse ? levels_.size() : 1;
+    if (coarse)
+        for (std::size_t l = 0; l + 1 < levels_.size(); ++l) galerkin(l);
+    for (std::size_t index = 0; index < refreshed; ++index) {
+        Level& l = levels_[index];
         for (int node = 0; node < l.nodes; ++node) {
             const double* d = &l.values[l.diagonal[node] * BB];
             double* inv = &l.diagonalInverse[node * BB];
@@ -302,7 +307,8 @@ void AggregationMultigrid::refresh() {
                 inv[3] = d[0] / det;
             }
         }
-    if (levels_.size() < 2) return;
+    }
+    if (!coarse || levels_.size() < 2) return;
     const Level& last = levels_.back();
     double* scalar = coarsestMatrix_.valuePtr();
     std::fill(scalar, scalar + coarsestMatrix_.nonZeros(), 0.0);

@@ -40,8 +40,12 @@ public:
     double* fineValues() { return levels_[0].values.data(); }
     std::size_t fineValueCount() const { return levels_[0].values.size(); }
     int fineOffset(int row, int col) const;
-    // After the fine values changed: the coarse levels' values and factorisation.
-    void refresh();
+    // After the fine values changed: the smoother's diagonal, and with coarse (the default)
+    // the coarse levels' values and factorisation. Keeping an older coarse correction is
+    // still a symmetric preconditioner, and a positive definite one while the coarse matrix
+    // has not changed by a factor near 2 (the coarse correction then over-shoots by less
+    // than the error it removes); the caller checks that conjugate gradients still converge.
+    void refresh(bool coarse = true);
     // build + copying a's values + refresh, for callers that keep their own matrix.
     void setup(const SparseMatrix& a, int pairedDofs, bool patternChanged);
 

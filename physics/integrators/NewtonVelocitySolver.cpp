@@ -17,6 +17,7 @@ void NewtonVelocitySolver::reset(int n) {
     for (Vec* v : {&residual_, &z_, &direction_, &product_}) v->setZero(n);
     matrix_.resize(n, n);
     keys_.clear();  // the next assembly builds the pattern anew
+    solvesSinceCoarse_ = iterationsAfterCoarse_ = lastIterations_ = 0;
 }
 
 namespace {
@@ -140,13 +141,14 @@ void NewtonVelocitySolver::assemble(OdeSystem& sys, double c) {
     ldltAnalyzed_ = luAnalyzed_ = false;
 }
 
-bool NewtonVelocitySolver::assembleIterative(OdeSystem& sys, double c) {
+bool NewtonVelocitySolver::assembleIterative(OdeSystem& sys, double c, bool refreshCoarse) {
     const Vec& mass = sys.mass();
     if (!iterative_.slots.empty()) {
         iterative_.values = multigrid_.fineValues();
         iterative_.count = multigrid_.fineValueCount();
         if (refill(mass, c, iterative_)) {
-            multigrid_.refresh();
+            multigrid_.refresh(refreshCoarse);
+            coarseFresh_ = refreshCoarse;
             return true;
         }
     }
@@ -161,6 +163,7 @@ bool NewtonVelocitySolver::assembleIterative(OdeSystem& sys, double c) {
     iterative_.count = multigrid_.fineValueCount();
     if (!refill(mass, c, iterative_)) return false;
     multigrid_.refresh();
+    coarseFresh_ = true;
     return true;
 }
 
@@ -176,20 +179,42 @@ bool NewtonVelocitySolver::solveLinear(OdeSystem& sys, double c, bool warmStart,
         // multigrid, on the multigrid's blocked copy of the matrix, assembled in place.
         // The first (Baraff & Witkin) solve is a linearisation anyway and tolerates a loose
         // residual; Newton refinements need a tight one or they could not converge.
-        const bool ready = assembleIterative(sys, c);
-        if (ready) {
+        // The coarse level's factorisation (about a tenth of the work of a step) is kept for
+        // up to kCoarseLag first solves while the cloth changes slowly. It is redone as soon as
+        // a solve needs more iterations than the one after the last factorisation (plus 2),
+        // and a solve that does not converge within that margin is repeated with a fresh one.
+        // Newton refinements always take a fresh one.
+        const bool lag = warmStart && ++solvesSinceCoarse_ <= kCoarseLag &&
+                         lastIterations_ <= iterationsAfterCoarse_ + 2;
+        if (assembleIterative(sys, c, !lag)) {
             const double tolerance = warmStart ? kIterativeTolerance : kRefinementTolerance;
             const int maxIterations = std::max(200, n / 4);
-            if (warmStart) delta_ = guess_;
-            else delta_.setZero();
-            int iterations = 0;
-            double residual = 0.0;
-            const bool converged = conjugateGradient(tolerance, maxIterations, iterations, residual);
-            result.linearIterations += iterations;
-            result.linearResidual = residual;
-            if (converged && delta_.allFinite()) {
-                if (warmStart) guess_ = delta_;
-                return true;
+            for (int attempt = 0; attempt < 2; ++attempt) {
+                if (attempt == 1) {
+                    if (coarseFresh_) break;
+                    multigrid_.refresh(true);
+                    coarseFresh_ = true;
+                }
+                const bool fresh = coarseFresh_;
+                if (warmStart) delta_ = guess_;
+                else delta_.setZero();
+                int iterations = 0;
+                double residual = 0.0;
+                const int cap = fresh ? maxIterations : std::min(maxIterations, 2 * iterationsAfterCoarse_ + 10);
+                const bool converged = conjugateGradient(tolerance, cap, iterations, residual);
+                result.linearIterations += iterations;
+                result.linearResidual = residual;
+                if (warmStart) {
+                    lastIterations_ = iterations;
+                    if (fresh) {
+                        iterationsAfterCoarse_ = iterations;
+                        solvesSinceCoarse_ = 0;
+                    }
+                }
+                if (converged && delta_.allFinite()) {
+                    if (warmStart) guess_ = delta_;
+                    return true;
+                }
             }
         }
         // Not converged (an indefinite matrix despite the definite Jacobian): fall through to

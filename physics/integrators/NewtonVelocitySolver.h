@@ -38,6 +38,8 @@ public:
     static constexpr int kIterativeThreshold = 2000;
     static constexpr double kIterativeTolerance = 1e-4;
     static constexpr double kRefinementTolerance = 1e-12;
+    // First solves that may reuse the multigrid's coarse factorisation before it is redone.
+    static constexpr int kCoarseLag = 3;
 
     // Solves for v. maxIterations ≥ 1; with untilConverged the loop stops early once the
     // update is below the relative tolerance, and it keeps going (up to maxIterations) while
@@ -65,7 +67,7 @@ private:
     void assemble(OdeSystem& sys, double c);
     // Assembles A straight into the multigrid's fine matrix and refreshes the hierarchy
     // (building both, and matrix_, when the pattern is new).
-    bool assembleIterative(OdeSystem& sys, double c);
+    bool assembleIterative(OdeSystem& sys, double c, bool refreshCoarse);
     // Solves A·x = rhs_ into delta_.
     bool solveLinear(OdeSystem& sys, double c, bool warmStart, Result& result);
     bool conjugateGradient(double tolerance, int maxIterations, int& iterations, double& residual);
@@ -82,6 +84,10 @@ private:
     Vec guess_;  // the last step's first update, to warm-start the next one
     Vec residual_, z_, direction_, product_;  // conjugate-gradient scratch
     AggregationMultigrid multigrid_;          // conjugate gradients' preconditioner
+    bool coarseFresh_ = false;                // its coarse level matches this matrix
+    int solvesSinceCoarse_ = 0;               // first solves since its coarse refresh
+    int iterationsAfterCoarse_ = 0;           // CG iterations of the first solve after it
+    int lastIterations_ = 0;                  // CG iterations of the last first solve
     Eigen::SparseLU<SparseMatrix> lu_;
 };
 
