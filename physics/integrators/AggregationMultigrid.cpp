@@ -40,11 +40,12 @@ void compress(int rows, std::vector<std::pair<int, int>>& positions, std::vector
     for (int r = 0; r < rows; ++r) outer[r + 1] += outer[r];
 }
 
-// Σ_k A_k·x_(inner[k]) over the blocks [begin, end) of a row, into sum. The sum is split over
+// Σ_k A_k·x_k over the blocks [begin, end) of a row, into sum; column[k] is where block k's
+// x starts (its block column times the block size, worked out once). The sum is split over
 // independent accumulators two blocks at a time: one chain of additions would make each row
 // wait on the adder's latency (measured: 0.18 against 0.07 ms per pass on a 64 × 64 cloth).
 template <int B>
-[[gnu::always_inline]] inline void rowSum(const double* values, const int* inner, int begin, int end, const double* x,
+[[gnu::always_inline]] inline void rowSum(const double* values, const int* column, int begin, int end, const double* x,
                    double* sum) {
     if constexpr (B == 2) {
         // Each block row times the point's (x, y) is one two-lane product.
@@ -54,7 +55,7 @@ template <int B>
         int k = begin;
         for (; k + 1 < end; k += 2) {
             const double* p = values + 4 * k;
-            const In xp(x + 2 * inner[k]), xq(x + 2 * inner[k + 1]);
+            const In xp(x + column[k]), xq(x + column[k + 1]);
             a += In(p) * xp;
             b += In(p + 2) * xp;
             c += In(p + 4) * xq;
@@ -62,7 +63,7 @@ template <int B>
         }
         if (k < end) {
             const double* p = values + 4 * k;
-            const In xp(x + 2 * inner[k]);
+            const In xp(x + column[k]);
             a += In(p) * xp;
             b += In(p + 2) * xp;
         }
@@ -72,10 +73,10 @@ template <int B>
         double a = 0.0, c = 0.0;
         int k = begin;
         for (; k + 1 < end; k += 2) {
-            a += values[k] * x[inner[k]];
-            c += values[k + 1] * x[inner[k + 1]];
+            a += values[k] * x[column[k]];
+            c += values[k + 1] * x[column[k + 1]];
         }
-        if (k < end) a += values[k] * x[inner[k]];
+        if (k < end) a += values[k] * x[column[k]];
         sum[0] = a + c;
     }
 }
@@ -262,6 +263,8 @@ void AggregationMultigrid::prepare(Level& level) const {
     for (int node = 0; node < level.nodes; ++node)
         level.diagonal[node] = findBlock(level.outer, level.inner, node, node);
     level.values.assign(level.inner.size() * BB, 0.0);
+    level.column.resize(level.inner.size());
+    for (std::size_t k = 0; k < level.inner.size(); ++k) level.column[k] = level.inner[k] * block_;
     level.diagonalInverse.assign(static_cast<std::size_t>(level.nodes) * BB, 0.0);
     level.x.setZero(level.n);
     level.b.setZero(level.n);
@@ -322,10 +325,10 @@ template <int B>
 void AggregationMultigrid::multiplyBlocks(const Level& level, const Vec& x, Vec& y) const {
     const double* v = level.values.data();
     const int* outer = level.outer.data();
-    const int* inner = level.inner.data();
+    const int* column = level.column.data();
     const double* xs = x.data();
     double* ys = y.data();
-    for (int i = 0; i < level.nodes; ++i) rowSum<B>(v, inner, outer[i], outer[i + 1], xs, ys + i * B);
+    for (int i = 0; i < level.nodes; ++i) rowSum<B>(v, column, outer[i], outer[i + 1], xs, ys + i * B);
 }
 
 void AggregationMultigrid::multiply(const Vec& x, Vec& y) const {
@@ -345,7 +348,7 @@ void AggregationMultigrid::cycle(std::size_t index) {
     }
     constexpr int BB = B * B;
     const int* outer = level.outer.data();
-    const int* inner = level.inner.data();
+    const int* column = level.column.data();
     const int* diagonal = level.diagonal.data();
     const double* values = level.values.data();
     const double* inverse = level.diagonalInverse.data();
@@ -357,7 +360,7 @@ void AggregationMultigrid::cycle(std::size_t index) {
     // Forward block Gauss–Seidel from x = 0: only the blocks left of the diagonal see a value.
     for (int i = 0; i < nodes; ++i) {
         double s[B], lower[B];
-        rowSum<B>(values, inner, outer[i], diagonal[i], x, lower);
+        rowSum<B>(values, column, outer[i], diagonal[i], x, lower);
         for (int c = 0; c < B; ++c) s[c] = b[i * B + c] - lower[c];
         blockProduct<B>(inverse + i * BB, s, x + i * B);
     }
@@ -370,7 +373,7 @@ void AggregationMultigrid::cycle(std::size_t index) {
         const int* toCoarse = level.toCoarse.data();
         for (int i = 0; i < nodes; ++i) {
             double upper[B];
-            rowSum<B>(values, inner, diagonal[i] + 1, outer[i + 1], x, upper);
+            rowSum<B>(values, column, diagonal[i] + 1, outer[i + 1], x, upper);
             for (int c = 0; c < B; ++c) coarseB[toCoarse[i] * B + c] -= upper[c];
         }
         cycle<B>(index + 1);
@@ -381,7 +384,7 @@ void AggregationMultigrid::cycle(std::size_t index) {
     // Backward block Gauss–Seidel over whole rows.
     for (int i = nodes - 1; i >= 0; --i) {
         double row[B], s[B], d[B];
-        rowSum<B>(values, inner, outer[i], outer[i + 1], x, row);
+        rowSum<B>(values, column, outer[i], outer[i + 1], x, row);
         for (int c = 0; c < B; ++c) s[c] = b[i * B + c] - row[c];
         blockProduct<B>(inverse + i * BB, s, d);
         for (int c = 0; c < B; ++c) x[i * B + c] += d[c];

@@ -62,6 +62,7 @@ private:
     struct Level {
         int nodes = 0, n = 0;
         std::vector<int> outer, inner, diagonal;  // diagonal: index of each row's diagonal block
+        std::vector<int> column;                  // inner × block: each block's first DOF
         std::vector<double> values;               // block² per block, row-major
         std::vector<double> diagonalInverse;      // block² per node
         std::vector<int> toCoarse;                // node → node of the next level
