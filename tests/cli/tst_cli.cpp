@@ -5,32 +5,18 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include "CliTestSupport.h"
 
 #include <cmath>
 
 namespace {
 
-struct Result {
-    int status = -1;
-    QByteArray out, err;
-};
+using Result = phasebox::testing::CliResult;
 
-Result cli(const QStringList& args) {
-    QProcess p;
-    p.start(QStringLiteral(PHASEBOX_CLI), args);
-    Result r;
-    if (!p.waitForFinished(120000)) {
-        p.kill();
-        return r;
-    }
-    r.status = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
+Result cli(const QStringList& args) { return phasebox::testing::runCli(args); }
 
 // A unit harmonic oscillator: m = 1 on a spring k = 1 to the origin, x(0) = 1.
 const char* kOscillator = R"({

@@ -10,16 +10,13 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include <chrono>
+#include "CliTestSupport.h"
+
 #include <cmath>
 
 namespace {
 
-struct Result {
-    int status = -1;
-    QByteArray out, err;
-    double seconds = 0.0;
-};
+using Result = phasebox::testing::CliResult;
 
 // The first line phasebox-cli itself wrote to standard error (Qt may warn before it, e.g.
 // about XDG_RUNTIME_DIR when a plot option brings up the GUI libraries).
@@ -29,23 +26,8 @@ QString firstMessage(const QByteArray& err) {
     return QString::fromUtf8(err);
 }
 
-// The helper of tst_cli, with a shorter timeout: nothing here may take long.
-Result cli(const QStringList& args, int timeoutMs = 60000) {
-    QProcess p;
-    const auto start = std::chrono::steady_clock::now();
-    p.start(QStringLiteral(PHASEBOX_CLI), args);
-    Result r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        return r;
-    }
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.status = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
+// With a shorter timeout than the other suites: nothing here may take long.
+Result cli(const QStringList& args, int timeoutMs = 60000) { return phasebox::testing::runCli(args, timeoutMs); }
 
 const char* kBall = R"({
   "format": "phasebox-scene", "version": 1, "name": "ball",
