@@ -212,6 +212,35 @@ SceneDesc dominoes(int count) {
     return s;
 }
 
+SceneDesc clusteredBodies(int count, unsigned seed) {
+    SceneDesc scene;
+    scene.name = name("Clustered bodies ", count);
+    scene.simulation.integrator = "symplectic_euler";
+    scene.simulation.dt = 1e-3;
+    NewtonianGravityDesc ng;
+    ng.G = 1.0;
+    ng.mutual = true;
+    ng.softening = 0.0;
+    scene.effects.newtonianGravity = ng;
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    std::uniform_real_distribution<double> uniform(-20.0, 20.0), mass(0.5, 2.0);
+    const double centres[3][3] = {{-8.0, 3.0, 1.0}, {6.0, 5.0, 2.5}, {2.0, -7.0, 0.5}};  // x, y, σ
+    for (int i = 0; i < count; ++i) {
+        ParticleDesc p;
+        if (i % 5 == 4) {
+            p.position = {uniform(rng), uniform(rng)};
+        } else {
+            const double* c = centres[i % 3];
+            p.position = {c[0] + c[2] * normal(rng), c[1] + c[2] * normal(rng)};
+        }
+        p.mass = mass(rng);
+        p.radius = 0.0;
+        scene.particles.push_back(p);
+    }
+    return scene;
+}
+
 SceneDesc cloth(int n, double structuralStiffness) {
     SceneDesc s;
     s.name = name("Cloth ", n) + "x" + std::to_string(n);

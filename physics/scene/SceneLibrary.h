@@ -32,6 +32,12 @@ SceneDesc bullet(double speed);
 // A row of `count` dominoes (0.1 × 1 m, 0.5 m apart), the first one tipped over.
 SceneDesc dominoes(int count);
 
+// `count` bodies of masses 0.5–2 kg under their mutual gravity (G = 1, no softening): three
+// Gaussian clusters of different widths and a uniform background, so that a Barnes–Hut tree
+// sees dense cores, sparse outskirts and empty cells (a uniform cloud alone is the easy case).
+// Symplectic Euler at dt = 10⁻³; the same seed gives the same bodies.
+SceneDesc clusteredBodies(int count, unsigned seed = 42);
+
 // An n × n cloth of 1 m × 1 m, 1 kg in all, pinned along its top edge, structural stiffness
 // k (shear k/10, bend k/100), under gravity, stepped by implicit Euler at dt = 1/60.
 SceneDesc cloth(int n, double structuralStiffness);

@@ -13,10 +13,10 @@
 #include "physics/core/World.h"
 #include "physics/effects/NewtonianGravityEffect.h"
 #include "physics/scene/BuildWorld.h"
+#include "physics/scene/SceneLibrary.h"
 
 #include <algorithm>
 #include <cstdio>
-#include <random>
 #include <vector>
 
 namespace {
@@ -25,33 +25,6 @@ using namespace phasebox;
 using namespace phasebox::bench;
 
 constexpr int kDefaultRepeat = 5;
-
-// Three Gaussian clusters of different widths and a uniform background (the same mixture as
-// tests/physics/tst_barnes_hut.cpp), G = 1, masses 0.5–2.
-SceneDesc clusteredBodies(int count) {
-    SceneDesc scene;
-    NewtonianGravityDesc ng;
-    ng.G = 1.0;
-    ng.mutual = true;
-    scene.effects.newtonianGravity = ng;
-    std::mt19937_64 rng(42);
-    std::normal_distribution<double> normal(0.0, 1.0);
-    std::uniform_real_distribution<double> uniform(-20.0, 20.0), mass(0.5, 2.0);
-    const double centres[3][3] = {{-8.0, 3.0, 1.0}, {6.0, 5.0, 2.5}, {2.0, -7.0, 0.5}};
-    for (int i = 0; i < count; ++i) {
-        ParticleDesc p;
-        if (i % 5 == 4) {
-            p.position = {uniform(rng), uniform(rng)};
-        } else {
-            const double* c = centres[i % 3];
-            p.position = {c[0] + c[2] * normal(rng), c[1] + c[2] * normal(rng)};
-        }
-        p.mass = mass(rng);
-        p.radius = 0.0;
-        scene.particles.push_back(p);
-    }
-    return scene;
-}
 
 // Median seconds of one World::forces() call over `repeat` calls.
 double timeForces(World& world, int repeat, Eigen::VectorXd& force) {
@@ -83,7 +56,7 @@ int main(int argc, char** argv) {
     if (options.quick) sizes.resize(1);
     std::vector<Row> rows;
     for (const int n : sizes) {
-        auto world = buildWorld(clusteredBodies(n)).world;
+        auto world = buildWorld(scenes::clusteredBodies(n)).world;
         auto& gravity =
             static_cast<NewtonianGravityEffect&>(*world->findEffect("newtonian_gravity"));
         Eigen::VectorXd direct(world->dimension()), tree(world->dimension());

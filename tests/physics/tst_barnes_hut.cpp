@@ -7,48 +7,18 @@
 
 #include "physics/effects/BarnesHutTree.h"
 #include "physics/effects/NewtonianGravityEffect.h"
+#include "physics/scene/SceneLibrary.h"
 
 #include <QTest>
 
 #include <algorithm>
 #include <limits>
-#include <random>
 #include <vector>
 
 using namespace phasebox;
 using namespace phasebox::testing;
 
 namespace {
-
-// `count` bodies of masses 0.5–2 kg: three Gaussian clusters of different widths and a
-// uniform background, so that the tree sees dense cores, sparse outskirts and empty cells
-// (a uniform cloud alone is the easy case).
-SceneDesc clusteredBodies(int count, unsigned seed) {
-    SceneDesc scene;
-    scene.simulation = simulation("symplectic_euler", 1e-3);
-    NewtonianGravityDesc ng;
-    ng.G = 1.0;
-    ng.mutual = true;
-    ng.softening = 0.0;
-    scene.effects.newtonianGravity = ng;
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<double> normal(0.0, 1.0);
-    std::uniform_real_distribution<double> uniform(-20.0, 20.0), mass(0.5, 2.0);
-    const double centres[3][3] = {{-8.0, 3.0, 1.0}, {6.0, 5.0, 2.5}, {2.0, -7.0, 0.5}};  // x, y, σ
-    for (int i = 0; i < count; ++i) {
-        ParticleDesc p;
-        if (i % 5 == 4) {
-            p.position = {uniform(rng), uniform(rng)};
-        } else {
-            const double* c = centres[i % 3];
-            p.position = {c[0] + c[2] * normal(rng), c[1] + c[2] * normal(rng)};
-        }
-        p.mass = mass(rng);
-        p.radius = 0.0;
-        scene.particles.push_back(p);
-    }
-    return scene;
-}
 
 // Relative force error of every body: ‖F_tree − F_direct‖/‖F_direct‖, sorted.
 std::vector<double> relativeErrors(const Eigen::VectorXd& tree, const Eigen::VectorXd& direct) {
@@ -77,14 +47,14 @@ private slots:
 };
 
 void TestBarnesHut::treeIsUsedExactlyAboveTheThreshold() {
-    auto at = build(clusteredBodies(NewtonianGravityEffect::kDefaultTreeThreshold, 1));
-    auto above = build(clusteredBodies(NewtonianGravityEffect::kDefaultTreeThreshold + 1, 1));
+    auto at = build(scenes::clusteredBodies(NewtonianGravityEffect::kDefaultTreeThreshold, 1));
+    auto above = build(scenes::clusteredBodies(NewtonianGravityEffect::kDefaultTreeThreshold + 1, 1));
     auto* direct = static_cast<NewtonianGravityEffect*>(at->findEffect("newtonian_gravity"));
     auto* tree = static_cast<NewtonianGravityEffect*>(above->findEffect("newtonian_gravity"));
     QVERIFY(!direct->usesTree());
     QVERIFY(tree->usesTree());
     // Without `mutual` there is nothing for a tree to do, however many particles.
-    SceneDesc attractorsOnly = clusteredBodies(2000, 1);
+    SceneDesc attractorsOnly = scenes::clusteredBodies(2000, 1);
     attractorsOnly.effects.newtonianGravity->mutual = false;
     attractorsOnly.effects.newtonianGravity->attractors.push_back({{0.0, 0.0}, 10.0});
     auto world = build(attractorsOnly);
@@ -113,7 +83,7 @@ void TestBarnesHut::forceErrorAgainstDirectSummation() {
     QFETCH(double, p99Bound);
     QFETCH(double, maxBound);
     QFETCH(double, potentialBound);
-    auto world = build(clusteredBodies(5000, 42));
+    auto world = build(scenes::clusteredBodies(5000, 42));
     auto* gravity = static_cast<NewtonianGravityEffect*>(world->findEffect("newtonian_gravity"));
     gravity->setOpeningAngle(theta);
     const Eigen::VectorXd q = world->positions(), u = world->velocities();
@@ -147,7 +117,7 @@ void TestBarnesHut::forceErrorAgainstDirectSummation() {
 }
 
 void TestBarnesHut::treeIsDeterministicAndSkipsNonFiniteBodies() {
-    const SceneDesc scene = clusteredBodies(1500, 3);
+    const SceneDesc scene = scenes::clusteredBodies(1500, 3);
     auto a = build(scene), b = build(scene);
     for (int n = 0; n < 5; ++n) QVERIFY(a->step() && b->step());
     QVERIFY(a->positions() == b->positions());
