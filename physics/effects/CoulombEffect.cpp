@@ -1,6 +1,7 @@
 #include "physics/effects/CoulombEffect.h"
 
 #include "physics/core/World.h"
+#include "physics/effects/InverseSquare.h"
 
 #include <cmath>
 
@@ -41,34 +42,22 @@ void CoulombEffect::forEachPair(const Vec& q, Fn&& fn) const {
 
 double CoulombEffect::addForces(double, const Vec& q, const Vec&, Vec& force) {
     forEachPair(q, [&](int i, int j, const Vec2& r, double kqq) {
-        const double s2 = r.squaredNorm() + softening2_;
-        if (!(s2 > 0.0)) return;
-        const Vec2 f = (kqq / (s2 * std::sqrt(s2))) * r;
-        force.segment<2>(i) += f;
-        if (j >= 0) force.segment<2>(j) -= f;
+        inverse_square::addForce(kqq, r, softening2_, i, j, force);
     });
     return 0.0;
 }
 
 void CoulombEffect::addJacobians(double, const Vec& q, const Vec&, ForceJacobians& jac) {
-    // ∂F_i/∂p_i = k·q_i·q_j·(I/s³ − 3·r·rᵀ/s⁵), s² = ‖r‖² + ε² (Newtonian gravity's with the
-    // opposite sign). Written for every pair, zero or not, so the pattern stays fixed.
+    // ∂F_i/∂p_i = k·q_i·q_j·(I/s³ − 3·r·rᵀ/s⁵), s² = ‖r‖² + ε² (inverse_square).
     forEachPair(q, [&](int i, int j, const Vec2& r, double kqq) {
-        const double s2 = r.squaredNorm() + softening2_;
-        Mat2 k = Mat2::Zero();
-        if (s2 > 0.0) {
-            const double s3 = s2 * std::sqrt(s2);
-            k = kqq * (Mat2::Identity() / s3 - (3.0 / (s3 * s2)) * (r * r.transpose()));
-        }
-        jac.addStiffnessPair(i, j, k);
+        inverse_square::addJacobian(kqq, r, softening2_, i, j, jac);
     });
 }
 
 double CoulombEffect::potentialEnergy(const Vec& q) const {
     double energy = 0.0;
     forEachPair(q, [&](int, int, const Vec2& r, double kqq) {
-        const double s2 = r.squaredNorm() + softening2_;
-        if (s2 > 0.0) energy += kqq / std::sqrt(s2);
+        energy += inverse_square::potential(kqq, r, softening2_);
     });
     return energy;
 }

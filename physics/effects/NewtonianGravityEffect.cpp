@@ -1,5 +1,7 @@
 #include "physics/effects/NewtonianGravityEffect.h"
 
+#include "physics/effects/InverseSquare.h"
+
 #include <cmath>
 #include <limits>
 
@@ -44,24 +46,17 @@ double NewtonianGravityEffect::addForces(double, const Vec& q, const Vec&, Vec& 
         }
     }
     forEachPair(q, mutual_ && !tree, [&](int i, int j, const Vec2& r, double gmm) {
-        const double s2 = r.squaredNorm() + softening2_;
-        if (!(s2 > 0.0)) return;
-        const Vec2 f = (-gmm / (s2 * std::sqrt(s2))) * r;
-        force.segment<2>(i) += f;
-        if (j >= 0) force.segment<2>(j) -= f;
+        inverse_square::addForce(-gmm, r, softening2_, i, j, force);
     });
     return 0.0;
 }
 
 void NewtonianGravityEffect::addJacobians(double, const Vec& q, const Vec&,
                                           ForceJacobians& jac) {
-    // ∂F_i/∂p_i = −G·M·m·(I/s³ − 3·r·rᵀ/s⁵), s² = ‖r‖² + ε². None for the tree's pairs.
+    // ∂F_i/∂p_i = −G·M·m·(I/s³ − 3·r·rᵀ/s⁵), s² = ‖r‖² + ε² (inverse_square). None for the
+    // tree's pairs.
     forEachPair(q, mutual_ && !usesTree(), [&](int i, int j, const Vec2& r, double gmm) {
-        const double s2 = r.squaredNorm() + softening2_;
-        if (!(s2 > 0.0)) return;
-        const double s3 = s2 * std::sqrt(s2);
-        const Mat2 k = -gmm * (Mat2::Identity() / s3 - (3.0 / (s3 * s2)) * (r * r.transpose()));
-        jac.addStiffnessPair(i, j, k);
+        inverse_square::addJacobian(-gmm, r, softening2_, i, j, jac);
     });
 }
 
@@ -75,8 +70,7 @@ double NewtonianGravityEffect::potentialEnergy(const Vec& q) const {
         energy += tree_.potentialEnergy(G_, softening2_);
     }
     forEachPair(q, mutual_ && !tree, [&](int, int, const Vec2& r, double gmm) {
-        const double s2 = r.squaredNorm() + softening2_;
-        if (s2 > 0.0) energy -= gmm / std::sqrt(s2);
+        energy += inverse_square::potential(-gmm, r, softening2_);
     });
     return energy;
 }
