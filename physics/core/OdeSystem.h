@@ -58,19 +58,11 @@ struct ForceJacobians {
     bool hasDamping() const { return !damping.empty() || !dampingBlocks.empty() || !dampingPairs.empty(); }
     void addStiffness(int row, int col, double value) { stiffness.emplace_back(row, col, value); }
     void addDamping(int row, int col, double value) { damping.emplace_back(row, col, value); }
-    // Adds a 2×2 block at (row, col), scaled by sign.
-    void addStiffnessBlock(int row, int col, const Mat2& block, double sign = 1.0) {
-        stiffnessBlocks.push_back(makeBlock(row, col, block, sign));
-    }
-    void addDampingBlock(int row, int col, const Mat2& block, double sign = 1.0) {
-        dampingBlocks.push_back(makeBlock(row, col, block, sign));
-    }
-    void addStiffnessPair(int a, int b, const Mat2& coupling) {
-        stiffnessPairs.push_back({a, b, {coupling(0, 0), coupling(0, 1), coupling(1, 0), coupling(1, 1)}});
-    }
-    void addDampingPair(int a, int b, const Mat2& coupling) {
-        dampingPairs.push_back({a, b, {coupling(0, 0), coupling(0, 1), coupling(1, 0), coupling(1, 1)}});
-    }
+    // Adds a 2×2 block at (row, col).
+    void addStiffnessBlock(int row, int col, const Mat2& block) { stiffnessBlocks.push_back(make<JacobianBlock>(row, col, block)); }
+    void addDampingBlock(int row, int col, const Mat2& block) { dampingBlocks.push_back(make<JacobianBlock>(row, col, block)); }
+    void addStiffnessPair(int a, int b, const Mat2& coupling) { stiffnessPairs.push_back(make<JacobianPair>(a, b, coupling)); }
+    void addDampingPair(int a, int b, const Mat2& coupling) { dampingPairs.push_back(make<JacobianPair>(a, b, coupling)); }
     // All of K (or D) as triplets, blocks and pairs spelled out: for analysis and tests.
     std::vector<Triplet> stiffnessTriplets() const {
         return spelledOut(stiffness, stiffnessBlocks, stiffnessPairs);
@@ -88,8 +80,9 @@ struct ForceJacobians {
     }
 
 private:
-    static JacobianBlock makeBlock(int row, int col, const Mat2& m, double sign) {
-        return {row, col, {sign * m(0, 0), sign * m(0, 1), sign * m(1, 0), sign * m(1, 1)}};
+    template <typename Record>
+    static Record make(int first, int second, const Mat2& m) {
+        return {first, second, {m(0, 0), m(0, 1), m(1, 0), m(1, 1)}};
     }
     static std::vector<Triplet> spelledOut(const std::vector<Triplet>& single,
                                            const std::vector<JacobianBlock>& blocks,

@@ -336,14 +336,15 @@ void AggregationMultigrid::multiply(const Vec& x, Vec& y) const {
     else multiplyBlocks<1>(levels_[0], x, y);
 }
 
-// One V-cycle on levels_[index] with right side b, into x.
+// One V-cycle on levels_[index] with right side b, into x (the caller's vectors on the finest
+// level, the level's own below it).
 template <int B>
-void AggregationMultigrid::cycle(std::size_t index) {
+void AggregationMultigrid::cycle(std::size_t index, const double* b, double* x) {
     Level& level = levels_[index];
     if (index + 1 == levels_.size() && index > 0 && coarsestOk_) {
-        for (int i = 0; i < level.n; ++i) coarsestB_[coarsestOrder_[i]] = level.b[i];
+        for (int i = 0; i < level.n; ++i) coarsestB_[coarsestOrder_[i]] = b[i];
         coarsestX_ = coarsest_.solve(coarsestB_);
-        for (int i = 0; i < level.n; ++i) level.x[i] = coarsestX_[coarsestOrder_[i]];
+        for (int i = 0; i < level.n; ++i) x[i] = coarsestX_[coarsestOrder_[i]];
         return;
     }
     constexpr int BB = B * B;
@@ -352,9 +353,6 @@ void AggregationMultigrid::cycle(std::size_t index) {
     const int* diagonal = level.diagonal.data();
     const double* values = level.values.data();
     const double* inverse = level.diagonalInverse.data();
-    // The finest level reads the caller's right side and writes the caller's answer in place.
-    const double* b = index == 0 ? right_ : level.b.data();
-    double* x = index == 0 ? answer_ : level.x.data();
     const int nodes = level.nodes;
 
     // Forward block Gauss–Seidel from x = 0: only the blocks left of the diagonal see a value.
@@ -376,7 +374,7 @@ void AggregationMultigrid::cycle(std::size_t index) {
             rowSum<B>(values, column, diagonal[i] + 1, outer[i + 1], x, upper);
             for (int c = 0; c < B; ++c) coarseB[toCoarse[i] * B + c] -= upper[c];
         }
-        cycle<B>(index + 1);
+        cycle<B>(index + 1, next.b.data(), next.x.data());
         const double* coarseX = next.x.data();
         for (int i = 0; i < nodes; ++i)
             for (int c = 0; c < B; ++c) x[i * B + c] += coarseX[toCoarse[i] * B + c];
@@ -392,10 +390,8 @@ void AggregationMultigrid::cycle(std::size_t index) {
 }
 
 void AggregationMultigrid::apply(const Vec& r, Vec& z) {
-    right_ = r.data();
-    answer_ = z.data();
-    if (block_ == 2) cycle<2>(0);
-    else cycle<1>(0);
+    if (block_ == 2) cycle<2>(0, r.data(), z.data());
+    else cycle<1>(0, r.data(), z.data());
 }
 
 }  // namespace phasebox

@@ -75,12 +75,10 @@ private:
     void prepare(Level& level) const;        // sizes the diagonal, values and work vectors
     void fillFine(const SparseMatrix& a);    // level 0's blocks from a
     void galerkin(std::size_t level);        // level + 1's values from level's
-    template <int B> void cycle(std::size_t level);
+    template <int B> void cycle(std::size_t level, const double* b, double* x);
     template <int B> void multiplyBlocks(const Level& level, const Vec& x, Vec& y) const;
 
     int block_ = 1;
-    const double* right_ = nullptr;  // apply()'s r and z, which the finest level works on
-    double* answer_ = nullptr;
     std::vector<Level> levels_;
     std::vector<int> fineSlot_;    // scalar entry of a → index in levels_[0].values
     // The coarsest level as a scalar matrix in fill-reducing order (upper triangle), to

@@ -184,7 +184,8 @@ bool NewtonVelocitySolver::solveLinear(OdeSystem& sys, double c, bool warmStart,
         // a solve needs more iterations than the one after the last factorisation (plus 2),
         // and a solve that does not converge within that margin is repeated with a fresh one.
         // Newton refinements always take a fresh one.
-        const bool lag = warmStart && ++solvesSinceCoarse_ <= kCoarseLag &&
+        if (warmStart) ++solvesSinceCoarse_;
+        const bool lag = warmStart && solvesSinceCoarse_ <= kCoarseLag &&
                          lastIterations_ <= iterationsAfterCoarse_ + 2;
         if (assembleIterative(sys, c, !lag)) {
             const double tolerance = warmStart ? kIterativeTolerance : kRefinementTolerance;

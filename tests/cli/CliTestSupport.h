@@ -3,6 +3,8 @@
 // suites: its exit status, standard output and error, and how long it took.
 
 #include <QByteArray>
+#include <QFile>
+#include <QTemporaryDir>
 #include <QProcess>
 #include <QStringList>
 
@@ -32,6 +34,15 @@ inline CliResult runCli(const QStringList& args, int timeoutMs = 120000) {
     r.out = p.readAllStandardOutput();
     r.err = p.readAllStandardError();
     return r;
+}
+
+// Writes text to a file called name in dir and returns its path (a scene for the command line).
+inline QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes) {
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size())
+        qFatal("cannot write %s", qPrintable(path));
+    return path;
 }
 
 }  // namespace phasebox::testing

@@ -52,13 +52,7 @@ class TestCli : public QObject {
 
     QTemporaryDir dir_;
 
-    QString write(const QString& name, const char* text) {
-        const QString path = dir_.filePath(name);
-        QFile f(path);
-        if (!f.open(QIODevice::WriteOnly)) qFatal("cannot write %s", qPrintable(path));
-        f.write(text);
-        return path;
-    }
+    QString write(const QString& name, const char* text) { return phasebox::testing::writeFile(dir_, name, text); }
 
 private slots:
     void integratorsListsAllTen() {

@@ -52,13 +52,7 @@ class TestCliRobustness : public QObject {
     QTemporaryDir dir_;
     QString ball_, stiff_;
 
-    QString write(const QString& name, const QByteArray& bytes) {
-        const QString path = dir_.filePath(name);
-        QFile f(path);
-        if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size())
-            qFatal("cannot write %s", qPrintable(path));
-        return path;
-    }
+    QString write(const QString& name, const QByteArray& bytes) { return phasebox::testing::writeFile(dir_, name, bytes); }
 
 private slots:
     void initTestCase() {

@@ -19,6 +19,22 @@ namespace phasebox::testing {
 
 inline constexpr double kPi = std::numbers::pi;
 
+// Each fixed-step method's order of accuracy from numerical analysis (not from the registry).
+struct Theory {
+    const char* name;
+    double order;
+};
+inline constexpr Theory kFixedStep[] = {
+    {"explicit_euler", 1.0},
+    {"symplectic_euler", 1.0},
+    {"midpoint", 2.0},
+    {"heun", 2.0},
+    {"rk4", 4.0},
+    {"velocity_verlet", 2.0},
+    {"implicit_euler", 1.0},
+    {"implicit_midpoint", 2.0},
+};
+
 inline SimulationDesc simulation(const std::string& integrator, double dt) {
     SimulationDesc sim;
     sim.integrator = integrator;

@@ -11,11 +11,6 @@
 using namespace phasebox;
 using namespace phasebox::testing;
 
-namespace {
-constexpr const char* kFixedStep[] = {"explicit_euler", "symplectic_euler", "midpoint", "heun",
-                                      "rk4", "velocity_verlet", "implicit_euler", "implicit_midpoint"};
-}
-
 class TestErrorEstimate : public QObject {
     Q_OBJECT
 
@@ -34,7 +29,7 @@ private slots:
     // step from a generic state compared with the exact solution over h.
     void estimateMatchesTheTrueLocalError_data() {
         QTest::addColumn<QString>("integrator");
-        for (const char* name : kFixedStep) QTest::newRow(name) << QString(name);
+        for (const Theory& t : kFixedStep) QTest::newRow(t.name) << QString(t.name);
     }
     void estimateMatchesTheTrueLocalError() {
         QFETCH(QString, integrator);
@@ -57,7 +52,7 @@ private slots:
     // whose integrators keep state between steps.
     void estimatingNeverChangesTheRun_data() {
         QTest::addColumn<QString>("integrator");
-        for (const char* name : kFixedStep) QTest::newRow(name) << QString(name);
+        for (const Theory& t : kFixedStep) QTest::newRow(t.name) << QString(t.name);
         QTest::newRow("rk45") << QStringLiteral("rk45");
         QTest::newRow("adaptive_euler") << QStringLiteral("adaptive_euler");
     }

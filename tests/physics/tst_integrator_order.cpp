@@ -14,21 +14,6 @@ using namespace phasebox::testing;
 
 namespace {
 
-// Each method's order of accuracy from numerical analysis (not from the registry).
-struct Theory {
-    const char* name;
-    double order;
-};
-constexpr Theory kFixedStep[] = {
-    {"explicit_euler", 1.0},
-    {"symplectic_euler", 1.0},
-    {"midpoint", 2.0},
-    {"heun", 2.0},
-    {"rk4", 4.0},
-    {"velocity_verlet", 2.0},
-    {"implicit_euler", 1.0},
-    {"implicit_midpoint", 2.0},
-};
 
 // Allowed distance between the observed and the theoretical order.
 constexpr double kOrderTolerance = 0.15;

@@ -27,20 +27,6 @@ using namespace phasebox::testing;
 
 namespace {
 
-struct Theory {
-    const char* name;
-    double order;
-};
-constexpr Theory kFixedStep[] = {
-    {"explicit_euler", 1.0},
-    {"symplectic_euler", 1.0},
-    {"midpoint", 2.0},
-    {"heun", 2.0},
-    {"rk4", 4.0},
-    {"velocity_verlet", 2.0},
-    {"implicit_euler", 1.0},
-    {"implicit_midpoint", 2.0},
-};
 
 std::vector<std::string> fixedStepNames() {
     std::vector<std::string> names;
