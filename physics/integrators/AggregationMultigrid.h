@@ -55,6 +55,10 @@ public:
     void apply(const Vec& r, Vec& z);
 
     int levels() const { return static_cast<int>(levels_.size()); }
+    // The coarsest level's Galerkin matrix, and x = its inverse times b by the factorisation the
+    // V-cycle uses (for tests; both allocate).
+    SparseMatrix coarsestOperator() const;
+    Vec solveCoarsest(const Vec& b);
     int coarsestSize() const { return levels_.empty() ? 0 : levels_.back().n; }
 
 private:
@@ -75,8 +79,8 @@ private:
     void prepare(Level& level) const;        // sizes the diagonal, values and work vectors
     void fillFine(const SparseMatrix& a);    // level 0's blocks from a
     void galerkin(std::size_t level);        // level + 1's values from level's
-    template <int B> void cycle(std::size_t level, const double* b, double* x);
-    template <int B> void multiplyBlocks(const Level& level, const Vec& x, Vec& y) const;
+    void cycle(std::size_t level, const double* b, double* x);
+    void coarsestSolve(const double* b, double* x);
 
     int block_ = 1;
     std::vector<Level> levels_;
@@ -92,9 +96,23 @@ private:
     class OrderedLdlt : public Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>> {
     public:
         void factorizeOrdered(const SparseMatrix& upper) { factorize_preordered<true>(upper); }
+        const SparseMatrix& factor() const { return m_matrix; }  // L, strictly lower
+        const Vec& diagonal() const { return m_diag; }           // D (vectorD() copies it)
     };
     OrderedLdlt coarsest_;
     bool coarsestOk_ = false;
+    // With 2 × 2 blocks: the factor as a block-unit L̂ (its rows, and its transpose's rows)
+    // and the inverses of the 2 × 2 blocks of D̂, so that A = L̂·D̂·L̂ᵀ.
+    struct BlockFactor {
+        std::vector<int> lowerOuter, lowerColumn, upperOuter, upperColumn;
+        std::vector<double> lower, upper, diagonalInverse;
+        std::vector<int> slot;    // entry of L → its place in lower (−1: in a diagonal block)
+        std::vector<int> intra;   // node → entry of L inside its diagonal block (−1: none)
+        std::vector<int> mirror;  // block of lower → the same block's place in upper
+        bool ready = false;
+    };
+    void blockFactor();
+    BlockFactor factor_;
 };
 
 }  // namespace phasebox

@@ -7,6 +7,7 @@
 #include "physics/core/World.h"
 #include "physics/effects/MouseSpringEffect.h"
 #include "physics/integrators/AggregationMultigrid.h"
+#include "physics/integrators/BlockSweeps.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
 
@@ -90,22 +91,44 @@ Vec smoothRightSide(int n) {
     return b;
 }
 
+// The 2 × 2 block loops come in two instruction sets (four-lane ones where the processor has
+// AVX2 and FMA): the tests that depend on them run on each set this processor has, with and
+// without single DOFs in the system.
+void addKernelRows() {
+    QTest::addColumn<bool>("wide");
+    QTest::addColumn<int>("extra");
+    const bool wideHere = blocks::setWide(true);
+    for (bool wide : {false, true}) {
+        if (wide && !wideHere) break;
+        const char* set = wide ? "four-lane" : "two-lane";
+        QTest::addRow("cloth 48 x 48, 2 x 2 blocks, %s", set) << wide << 0;
+        QTest::addRow("cloth 48 x 48 and 40 single DOFs, %s", set) << wide << 40;
+    }
+}
+
+// The current data row's matrix, with the row's kernel set switched on.
+SparseMatrix rowMatrix(int& paired) {
+    QFETCH(bool, wide);
+    QFETCH(int, extra);
+    blocks::setWide(wide);
+    const SparseMatrix a = clothMatrix(48, paired);
+    return extra > 0 ? withSingles(a, extra) : a;
+}
+
 }  // namespace
 
 class TestMultigrid : public QObject {
     Q_OBJECT
 
 private slots:
+    void cleanup() { blocks::setWide(true); }
+
     void symmetricPositiveDefinite_data() {
-        QTest::addColumn<int>("extra");
-        QTest::newRow("cloth 48 x 48, 2 x 2 blocks") << 0;
-        QTest::newRow("cloth 48 x 48 and 40 single DOFs") << 40;
+        addKernelRows();
     }
     void symmetricPositiveDefinite() {
-        QFETCH(int, extra);
         int paired = 0;
-        SparseMatrix a = clothMatrix(48, paired);
-        if (extra > 0) a = withSingles(a, extra);
+        const SparseMatrix a = rowMatrix(paired);
         AggregationMultigrid mg;
         mg.setup(a, paired, true);
         QVERIFY2(mg.levels() >= 2, "the cloth should coarsen at least once");
@@ -128,9 +151,31 @@ private slots:
         QVERIFY((y - a * x).norm() <= 1e-12 * (a * x).norm());
     }
 
+    void coarsestSolveIsExact_data() {
+        addKernelRows();
+    }
+    void coarsestSolveIsExact() {
+        // The factorised coarsest level (in 2 × 2 blocks, or scalar with single DOFs) solves
+        // its Galerkin system to round-off.
+        int paired = 0;
+        const SparseMatrix a = rowMatrix(paired);
+        AggregationMultigrid mg;
+        mg.setup(a, paired, true);
+        QVERIFY(mg.levels() >= 2);
+        const SparseMatrix coarse = mg.coarsestOperator();
+        QCOMPARE(static_cast<int>(coarse.rows()), mg.coarsestSize());
+        const Vec b = smoothRightSide(mg.coarsestSize()) + Vec::Random(mg.coarsestSize());
+        const Vec x = mg.solveCoarsest(b);
+        const double residual = (coarse * x - b).norm() / b.norm();
+        QVERIFY2(residual <= 1e-10, qPrintable(QString("relative residual %1").arg(residual)));
+    }
+
+    void agreesWithDirectSolve_data() {
+        addKernelRows();
+    }
     void agreesWithDirectSolve() {
         int paired = 0;
-        const SparseMatrix a = clothMatrix(48, paired);
+        const SparseMatrix a = rowMatrix(paired);
         const Vec b = smoothRightSide(static_cast<int>(a.rows()));
         AggregationMultigrid mg;
         mg.setup(a, paired, true);
