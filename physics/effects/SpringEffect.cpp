@@ -77,9 +77,85 @@ void SpringEffect::setTerms(std::vector<SpringTerm> terms) {
     terms_ = std::move(terms);
     anyDamping_ = false;
     for (const SpringTerm& s : terms_) anyDamping_ = anyDamping_ || s.damping != 0.0;
+    points_.clear();
+    const bool allPoints = std::none_of(terms_.begin(), terms_.end(), [](const SpringTerm& s) {
+        return s.a.kind == BodyPoint::Kind::Box || s.b.kind == BodyPoint::Kind::Box;
+    });
+    if (!allPoints) return;
+    points_.reserve(terms_.size());
+    for (const SpringTerm& s : terms_) {
+        PointSpring p;
+        p.a = s.a.isDynamic() ? s.a.dof : -1;
+        p.b = s.b.isDynamic() ? s.b.dof : -1;
+        p.fixedA = s.a.isDynamic() ? Vec2::Zero() : s.a.local;
+        p.fixedB = s.b.isDynamic() ? Vec2::Zero() : s.b.local;
+        p.stiffness = s.stiffness;
+        p.damping = s.damping;
+        p.restLength = s.restLength;
+        points_.push_back(p);
+    }
+}
+
+// The force (and Jacobian) loop for point springs: the arithmetic of the general path
+// (evaluate, addForces, addTermJacobians) in the same order, so both give the same bits;
+// without BodyPoint's dispatch and the geometry's copies it takes about two thirds of the time
+// on a 64 × 64 cloth (measured).
+template <bool WithJacobians>
+double SpringEffect::pointForces(const Vec& q, const Vec& u, Vec& force, ForceJacobians* jac) const {
+    double power = 0.0;
+    const double* qs = q.data();
+    const double* us = u.data();
+    double* fs = force.data();
+    const bool definite = WithJacobians && jac->definite;
+    for (const PointSpring& s : points_) {
+        const double pax = s.a >= 0 ? qs[s.a] : s.fixedA.x(), pay = s.a >= 0 ? qs[s.a + 1] : s.fixedA.y();
+        const double pbx = s.b >= 0 ? qs[s.b] : s.fixedB.x(), pby = s.b >= 0 ? qs[s.b + 1] : s.fixedB.y();
+        const double dx = pax - pbx, dy = pay - pby;
+        const double length = std::sqrt(dx * dx + dy * dy);
+        const bool valid = length > kMinLength;
+        double ux = 0.0, uy = 0.0;
+        if (valid) {
+            ux = dx / length;
+            uy = dy / length;
+            const double vx = (s.a >= 0 ? us[s.a] : 0.0) - (s.b >= 0 ? us[s.b] : 0.0);
+            const double vy = (s.a >= 0 ? us[s.a + 1] : 0.0) - (s.b >= 0 ? us[s.b + 1] : 0.0);
+            const double rate = ux * vx + uy * vy;
+            const double dampingForce = s.damping * rate;
+            const double magnitude = -(s.stiffness * (length - s.restLength) + dampingForce);
+            const double fx = magnitude * ux, fy = magnitude * uy;
+            if (s.a >= 0) {
+                fs[s.a] += fx;
+                fs[s.a + 1] += fy;
+            }
+            if (s.b >= 0) {
+                fs[s.b] += -fx;
+                fs[s.b + 1] += -fy;
+            }
+            power -= dampingForce * rate;
+        }
+        if constexpr (WithJacobians) {
+            // −k·[t·(I − ûûᵀ) + ûûᵀ] and −c·ûûᵀ, entry by entry as addTermJacobians has them.
+            const double xx = ux * ux, xy = ux * uy, yy = uy * uy;
+            double t = valid ? 1.0 - s.restLength / length : 0.0;
+            if (definite) t = std::max(t, 0.0);
+            const double k = -s.stiffness;
+            Mat2 ks;
+            ks << k * (t * (1.0 - xx) + xx), k * (t * (0.0 - xy) + xy), k * (t * (0.0 - xy) + xy),
+                k * (t * (1.0 - yy) + yy);
+            jac->addStiffnessPair(s.a, s.b, ks);
+            if (s.damping != 0.0) {
+                const double c = -s.damping;
+                Mat2 ds;
+                ds << c * xx, c * xy, c * xy, c * yy;
+                jac->addDampingPair(s.a, s.b, ds);
+            }
+        }
+    }
+    return power;
 }
 
 double SpringEffect::addForces(double, const Vec& q, const Vec& u, Vec& force) {
+    if (!points_.empty()) return pointForces<false>(q, u, force, nullptr);
     double power = 0.0;
     SpringGeometry g;
     for (const SpringTerm& s : terms_) {
@@ -153,6 +229,7 @@ void SpringEffect::addJacobians(double, const Vec& q, const Vec& u, ForceJacobia
 double SpringEffect::addForcesAndJacobians(double, const Vec& q, const Vec& u, Vec& force,
                                            ForceJacobians& jac) {
     // One pass: each spring's geometry serves its force and its Jacobian.
+    if (!points_.empty()) return pointForces<true>(q, u, force, &jac);
     double power = 0.0;
     SpringGeometry g;
     for (const SpringTerm& s : terms_) {
@@ -171,6 +248,15 @@ double SpringEffect::addForcesAndJacobians(double, const Vec& q, const Vec& u, V
 
 double SpringEffect::potentialEnergy(const Vec& q) const {
     double energy = 0.0;
+    if (!points_.empty()) {
+        for (const PointSpring& s : points_) {
+            const double dx = (s.a >= 0 ? q[s.a] : s.fixedA.x()) - (s.b >= 0 ? q[s.b] : s.fixedB.x());
+            const double dy = (s.a >= 0 ? q[s.a + 1] : s.fixedA.y()) - (s.b >= 0 ? q[s.b + 1] : s.fixedB.y());
+            const double stretch = std::sqrt(dx * dx + dy * dy) - s.restLength;
+            energy += 0.5 * s.stiffness * stretch * stretch;
+        }
+        return energy;
+    }
     Vec2 pa = Vec2::Zero(), pb = Vec2::Zero(), v = Vec2::Zero(), r = Vec2::Zero();
     for (const SpringTerm& s : terms_) {
         s.a.evaluate(q, q, pa, v, r);

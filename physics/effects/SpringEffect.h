@@ -37,7 +37,18 @@ public:
     double tension(std::size_t i, const Vec& q, const Vec& u) const;
 
 private:
+    // A spring between two points without rotation (particles or fixed points), read without
+    // BodyPoint's dispatch: a cloth's springs, when every spring is one.
+    struct PointSpring {
+        int a = -1, b = -1;            // first DOFs; −1 for a fixed end
+        Vec2 fixedA, fixedB;           // a fixed end's position
+        double stiffness = 0.0, damping = 0.0, restLength = 0.0;
+    };
+    template <bool WithJacobians>
+    double pointForces(const Vec& q, const Vec& u, Vec& force, ForceJacobians* jacobians) const;
+
     std::vector<SpringTerm> terms_;
+    std::vector<PointSpring> points_;  // terms_ again, when every one is point to point
     bool anyDamping_ = false;
 };
 
