@@ -1,5 +1,7 @@
 #include "physics/integrators/BlockSweeps.h"
 
+#include <atomic>
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define PHASEBOX_WIDE_KERNELS 1
 #include <immintrin.h>
@@ -98,23 +100,33 @@ const Kernels* choose(bool on) {
     return &kNarrow;
 }
 
-const Kernels* active = choose(true);
+// Chosen at first use (worker threads may get there together: all choose the same table).
+std::atomic<const Kernels*> active{nullptr};
+
+const Kernels& kernels() {
+    const Kernels* k = active.load(std::memory_order_relaxed);
+    if (!k) {
+        k = choose(true);
+        active.store(k, std::memory_order_relaxed);
+    }
+    return *k;
+}
 
 }  // namespace
 
-void multiply(const Rows& a, const double* x, double* y) { active->multiply(a, x, y); }
-void forward(const Rows& a, const double* inverse, const double* b, double* x) { active->forward(a, inverse, b, x); }
+void multiply(const Rows& a, const double* x, double* y) { kernels().multiply(a, x, y); }
+void forward(const Rows& a, const double* inverse, const double* b, double* x) { kernels().forward(a, inverse, b, x); }
 void restrictUpper(const Rows& a, const int* toCoarse, const double* x, double* coarse) {
-    active->restrictUpper(a, toCoarse, x, coarse);
+    kernels().restrictUpper(a, toCoarse, x, coarse);
 }
-void backward(const Rows& a, const double* inverse, const double* b, double* x) { active->backward(a, inverse, b, x); }
-void lowerSolve(const Rows& l, double* y) { active->lowerSolve(l, y); }
-void upperSolve(const Rows& u, const double* inverse, double* y) { active->upperSolve(u, inverse, y); }
+void backward(const Rows& a, const double* inverse, const double* b, double* x) { kernels().backward(a, inverse, b, x); }
+void lowerSolve(const Rows& l, double* y) { kernels().lowerSolve(l, y); }
+void upperSolve(const Rows& u, const double* inverse, double* y) { kernels().upperSolve(u, inverse, y); }
 
-bool wide() { return active != &kNarrow; }
+bool wide() { return &kernels() != &kNarrow; }
 
 bool setWide(bool on) {
-    active = choose(on);
+    active.store(choose(on), std::memory_order_relaxed);
     return wide();
 }
 
