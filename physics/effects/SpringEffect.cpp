@@ -62,6 +62,27 @@ PointJacobian pointJacobian(const BodyPoint& point, const Vec2& arm) {
     return pj;
 }
 
+// −k·[t·(I − ûûᵀ) + ûûᵀ], t = 1 − L₀/L (kept ≥ 0 when the caller asks for a definite
+// Jacobian), and −c·ûûᵀ: a spring's couplings, for both spring loops. A degenerate spring
+// (valid false, û = 0) gives zero blocks, which keep the pattern fixed.
+Mat2 elasticCoupling(double stiffness, double restLength, double length, double ux, double uy, bool valid,
+                     bool definite) {
+    const double xx = ux * ux, xy = ux * uy, yy = uy * uy;
+    double t = valid ? 1.0 - restLength / length : 0.0;
+    if (definite) t = std::max(t, 0.0);
+    const double k = -stiffness;
+    Mat2 m;
+    m << k * (t * (1.0 - xx) + xx), k * (t * (0.0 - xy) + xy), k * (t * (0.0 - xy) + xy), k * (t * (1.0 - yy) + yy);
+    return m;
+}
+
+Mat2 dampingCoupling(double damping, double ux, double uy) {
+    const double c = -damping;
+    Mat2 m;
+    m << c * (ux * ux), c * (ux * uy), c * (ux * uy), c * (uy * uy);
+    return m;
+}
+
 // K[x, y] += sign · J_xᵀ·S·J_y, or the damping matrix likewise.
 template <typename Add>
 void addProjected(const PointJacobian& x, const PointJacobian& y, const Mat2& s, double sign,
@@ -108,9 +129,8 @@ double SpringEffect::pointForces(const Vec& q, const Vec& u, Vec& force, ForceJa
     double* fs = force.data();
     const bool definite = WithJacobians && jac->definite;
     for (const PointSpring& s : points_) {
-        const double pax = s.a >= 0 ? qs[s.a] : s.fixedA.x(), pay = s.a >= 0 ? qs[s.a + 1] : s.fixedA.y();
-        const double pbx = s.b >= 0 ? qs[s.b] : s.fixedB.x(), pby = s.b >= 0 ? qs[s.b + 1] : s.fixedB.y();
-        const double dx = pax - pbx, dy = pay - pby;
+        double dx, dy;
+        s.separation(qs, dx, dy);
         const double length = std::sqrt(dx * dx + dy * dy);
         const bool valid = length > kMinLength;
         double ux = 0.0, uy = 0.0;
@@ -134,21 +154,8 @@ double SpringEffect::pointForces(const Vec& q, const Vec& u, Vec& force, ForceJa
             power -= dampingForce * rate;
         }
         if constexpr (WithJacobians) {
-            // −k·[t·(I − ûûᵀ) + ûûᵀ] and −c·ûûᵀ, entry by entry as addTermJacobians has them.
-            const double xx = ux * ux, xy = ux * uy, yy = uy * uy;
-            double t = valid ? 1.0 - s.restLength / length : 0.0;
-            if (definite) t = std::max(t, 0.0);
-            const double k = -s.stiffness;
-            Mat2 ks;
-            ks << k * (t * (1.0 - xx) + xx), k * (t * (0.0 - xy) + xy), k * (t * (0.0 - xy) + xy),
-                k * (t * (1.0 - yy) + yy);
-            jac->addStiffnessPair(s.a, s.b, ks);
-            if (s.damping != 0.0) {
-                const double c = -s.damping;
-                Mat2 ds;
-                ds << c * xx, c * xy, c * xy, c * yy;
-                jac->addDampingPair(s.a, s.b, ds);
-            }
+            jac->addStiffnessPair(s.a, s.b, elasticCoupling(s.stiffness, s.restLength, length, ux, uy, valid, definite));
+            if (s.damping != 0.0) jac->addDampingPair(s.a, s.b, dampingCoupling(s.damping, ux, uy));
         }
     }
     return power;
@@ -187,15 +194,13 @@ namespace {
 void addTermJacobians(const SpringTerm& s, const SpringGeometry& g, bool valid, ForceJacobians& jac) {
     // A degenerate spring still writes its (zero) blocks: the sparsity pattern must not
     // change from step to step, or the implicit solver would have to analyse it again.
-    const Mat2 uut = valid ? Mat2(g.dir * g.dir.transpose()) : Mat2::Zero();
-    double transverse = valid ? 1.0 - s.restLength / g.length : 0.0;
-    if (jac.definite) transverse = std::max(transverse, 0.0);
-    const Mat2 ks = -s.stiffness * (transverse * (Mat2::Identity() - uut) + uut);
+    const double ux = valid ? g.dir.x() : 0.0, uy = valid ? g.dir.y() : 0.0;
+    const Mat2 ks = elasticCoupling(s.stiffness, s.restLength, g.length, ux, uy, valid, jac.definite);
     if (s.a.kind != BodyPoint::Kind::Box && s.b.kind != BodyPoint::Kind::Box) {
-        // Points without a rotation (a cloth's nodes): one two-point coupling.
+        // Points without a rotation: one two-point coupling.
         const int a = s.a.isDynamic() ? s.a.dof : -1, b = s.b.isDynamic() ? s.b.dof : -1;
         jac.addStiffnessPair(a, b, ks);
-        if (s.damping != 0.0) jac.addDampingPair(a, b, -s.damping * uut);  // zero if degenerate
+        if (s.damping != 0.0) jac.addDampingPair(a, b, dampingCoupling(s.damping, ux, uy));
         return;
     }
     auto addK = [&](int r, int c, double v) { jac.addStiffness(r, c, v); };
@@ -207,7 +212,7 @@ void addTermJacobians(const SpringTerm& s, const SpringGeometry& g, bool valid, 
     addProjected(jb, ja, ks, -1.0, addK);
     addProjected(jb, jb, ks, 1.0, addK);
     if (s.damping != 0.0) {
-        const Mat2 ds = -s.damping * uut;  // zero for a degenerate spring, same pattern
+        const Mat2 ds = dampingCoupling(s.damping, ux, uy);
         addProjected(ja, ja, ds, 1.0, addD);
         addProjected(ja, jb, ds, -1.0, addD);
         addProjected(jb, ja, ds, -1.0, addD);
@@ -250,8 +255,8 @@ double SpringEffect::potentialEnergy(const Vec& q) const {
     double energy = 0.0;
     if (!points_.empty()) {
         for (const PointSpring& s : points_) {
-            const double dx = (s.a >= 0 ? q[s.a] : s.fixedA.x()) - (s.b >= 0 ? q[s.b] : s.fixedB.x());
-            const double dy = (s.a >= 0 ? q[s.a + 1] : s.fixedA.y()) - (s.b >= 0 ? q[s.b + 1] : s.fixedB.y());
+            double dx, dy;
+            s.separation(q.data(), dx, dy);
             const double stretch = std::sqrt(dx * dx + dy * dy) - s.restLength;
             energy += 0.5 * s.stiffness * stretch * stretch;
         }

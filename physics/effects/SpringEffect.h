@@ -43,6 +43,11 @@ private:
         int a = -1, b = -1;            // first DOFs; −1 for a fixed end
         Vec2 fixedA, fixedB;           // a fixed end's position
         double stiffness = 0.0, damping = 0.0, restLength = 0.0;
+        // p_a − p_b for positions q.
+        void separation(const double* q, double& dx, double& dy) const {
+            dx = (a >= 0 ? q[a] : fixedA.x()) - (b >= 0 ? q[b] : fixedB.x());
+            dy = (a >= 0 ? q[a + 1] : fixedA.y()) - (b >= 0 ? q[b + 1] : fixedB.y());
+        }
     };
     template <bool WithJacobians>
     double pointForces(const Vec& q, const Vec& u, Vec& force, ForceJacobians* jacobians) const;

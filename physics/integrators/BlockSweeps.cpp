@@ -123,11 +123,10 @@ void backward(const Rows& a, const double* inverse, const double* b, double* x) 
 void lowerSolve(const Rows& l, double* y) { kernels().lowerSolve(l, y); }
 void upperSolve(const Rows& u, const double* inverse, double* y) { kernels().upperSolve(u, inverse, y); }
 
-bool wide() { return &kernels() != &kNarrow; }
-
 bool setWide(bool on) {
-    active.store(choose(on), std::memory_order_relaxed);
-    return wide();
+    const Kernels* k = choose(on);
+    active.store(k, std::memory_order_relaxed);
+    return k != &kNarrow;
 }
 
 }  // namespace phasebox::blocks

@@ -34,8 +34,6 @@ void lowerSolve(const Rows& l, double* y);
 // and the inverses of D's 2 × 2 blocks.
 void upperSolve(const Rows& u, const double* inverse, double* y);
 
-// Whether the wide loops run (true where the processor has them, unless turned off).
-bool wide();
 // For tests: turns the wide loops off (false) or back on where the processor has them (true);
 // returns whether they now run.
 bool setWide(bool on);
