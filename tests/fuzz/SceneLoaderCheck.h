@@ -1,7 +1,7 @@
 #pragma once
 // One input of the scene-loader fuzzer, checked end to end: parse → (validate → build → a few
 // steps). Shared by the libFuzzer target (fuzz_scene_loader.cpp) and the corpus replay that
-// runs in every CI build without libFuzzer (tests/unit/tst_fuzz_corpus.cpp), so a reproducer
+// runs in every CI build without libFuzzer (tests/app/tst_fuzz_corpus.cpp), so a reproducer
 // saved in tests/fuzz/regressions/ keeps being checked by the same code that found it.
 //
 // Crashes, hangs, sanitizer reports and uncaught exceptions are what the fuzzer itself
