@@ -7,11 +7,12 @@ PHASEBOX_PACKAGES=(cmake ninja-build g++ qt6-base-dev libqt6opengl6-dev qt6-char
 
 phasebox_log() { printf '[phasebox] %s\n' "$*" >&2; }
 
-# Installs only the Debian packages that are not installed yet.
-phasebox_install_dependencies() {
+# phasebox_install_packages PACKAGE...: installs those of the given Debian packages that are
+# not installed yet (scripts/check-format.sh uses it for clang-format alone).
+phasebox_install_packages() {
     local missing=()
     local pkg
-    for pkg in "${PHASEBOX_PACKAGES[@]}" "$@"; do
+    for pkg in "$@"; do
         if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q 'install ok installed'; then
             missing+=("$pkg")
         fi
@@ -27,6 +28,11 @@ phasebox_install_dependencies() {
     export DEBIAN_FRONTEND=noninteractive
     $sudo apt-get update -q >/dev/null
     $sudo apt-get install -y -q --no-install-recommends "${missing[@]}" >/dev/null
+}
+
+# Installs only the packages of the build (and any given as arguments) not installed yet.
+phasebox_install_dependencies() {
+    phasebox_install_packages "${PHASEBOX_PACKAGES[@]}" "$@"
 }
 
 # phasebox_build PRESET [TARGET...]
