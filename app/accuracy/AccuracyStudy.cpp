@@ -289,11 +289,13 @@ std::vector<double> defaultAccuracyDts(double sceneDt) {
 }
 
 std::vector<double> defaultAccuracyTolerances(std::string_view integrator) {
-    // rk45 lands on every frame boundary, and its fifth-order steps meet a loose tolerance
-    // with steps far longer than a frame: from 1e-2 to 1e-5 it would just take one step per
-    // frame and the six points would coincide. Its sweep starts where the tolerance binds,
-    // and stays well above the reference's 1e-12, so that it is never measured against itself.
-    if (integrator == "rk45") return {1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
+    // Adaptive methods land on every frame boundary, and a high-order one (rk45) meets a loose
+    // tolerance with steps far longer than a frame: from 1e-2 to 1e-5 it would just take one
+    // step per frame and the six points would coincide. Its sweep starts where the tolerance
+    // binds, and stays well above the reference's 1e-12, so that it is never measured against
+    // itself.
+    const IntegratorInfo* info = findIntegrator(integrator);
+    if (info && info->adaptive && info->order >= 4) return {1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
     return {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
 }
 

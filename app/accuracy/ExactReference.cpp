@@ -1,6 +1,6 @@
 #include "app/accuracy/ExactReference.h"
 
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/scene/SceneDesc.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include "app/desktop/DesktopOptions.h"
 
 #include "app/desktop/MainWindow.h"
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
 
 #include <QAction>

@@ -1,7 +1,7 @@
 #include "app/sim/Recorder.h"
 
 #include "app/io/NumberFormat.h"
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 
 #include <QSaveFile>
 #include <QTextStream>

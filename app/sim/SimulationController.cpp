@@ -2,7 +2,7 @@
 
 #include "app/document/Document.h"
 #include "app/sim/Recorder.h"
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/diagnostics/StabilityAdvisor.h"
 
 #include <algorithm>

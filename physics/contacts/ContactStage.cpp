@@ -1,35 +1,35 @@
 #include "physics/contacts/ContactStage.h"
 
-#include "physics/core/World.h"
+#include "physics/core/Bodies.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace phasebox {
 
-bool ContactStage::needed(const World& world, bool particleCollisions) {
-    int dynamicBodies = 0, disks = 0, boxes = static_cast<int>(world.boxes().size());
-    for (const Particle& p : world.particles()) {
+bool ContactStage::needed(const Bodies& bodies, bool particleCollisions) {
+    int dynamicBodies = 0, disks = 0, boxes = static_cast<int>(bodies.boxes.size());
+    for (const Particle& p : bodies.particles) {
         if (p.radius <= 0.0) continue;
         ++disks;
         dynamicBodies += !p.pinned;
     }
-    for (const Box& b : world.boxes()) dynamicBodies += !b.isStatic;
+    for (const Box& b : bodies.boxes) dynamicBodies += !b.isStatic;
     if (dynamicBodies == 0) return false;
-    if (!world.planes().empty()) return true;
+    if (!bodies.planes.empty()) return true;
     if (boxes >= 2 || (boxes >= 1 && disks >= 1)) return true;
     return particleCollisions && disks >= 2;
 }
 
-void ContactStage::bind(const World& world) {
+void ContactStage::bind(const Bodies& bodies) {
     colliders_.clear();
-    const auto& particles = world.particles();
+    const auto& particles = bodies.particles;
     for (int i = 0; i < static_cast<int>(particles.size()); ++i) {
         const Particle& p = particles[i];
         if (p.radius > 0.0)
             colliders_.push_back({Collider::Kind::Disk, i, p.dof, p.friction, p.restitution});
     }
-    const auto& boxes = world.boxes();
+    const auto& boxes = bodies.boxes;
     for (int i = 0; i < static_cast<int>(boxes.size()); ++i) {
         const Box& b = boxes[i];
         colliders_.push_back({Collider::Kind::Box, i, b.dof, b.friction, b.restitution});
@@ -37,7 +37,7 @@ void ContactStage::bind(const World& world) {
     planes_.clear();
     planeFriction_.clear();
     planeRestitution_.clear();
-    for (const Plane& p : world.planes()) {
+    for (const Plane& p : bodies.planes) {
         planes_.push_back({p.point, p.normal});
         planeFriction_.push_back(p.friction);
         planeRestitution_.push_back(p.restitution);
@@ -93,7 +93,7 @@ void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB
     solver_.constraints().push_back(c);
 }
 
-void ContactStage::collide(const World& world, const Vec& q, const Vec& u, double dt,
+void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u, double dt,
                            const ContactSettings& settings) {
     // Last step's constraints, with their accumulated impulses, for warm starting.
     std::swap(previous_, solver_.constraints());
@@ -109,11 +109,11 @@ void ContactStage::collide(const World& world, const Vec& q, const Vec& u, doubl
     for (int i = 0; i < count; ++i) {
         const Collider& c = colliders_[i];
         if (c.kind == Collider::Kind::Disk) {
-            const Particle& p = world.particles()[c.object];
+            const Particle& p = bodies.particles[c.object];
             disks_[i] = {c.dof >= 0 ? Vec2(q.segment<2>(c.dof)) : p.position, p.radius};
             bounds_[i] = boundingBox(disks_[i]);
         } else {
-            const Box& b = world.boxes()[c.object];
+            const Box& b = bodies.boxes[c.object];
             boxes_[i] = c.dof >= 0 ? OrientedBox{q.segment<2>(c.dof), q[c.dof + 2], 0.5 * b.size}
                                    : OrientedBox{b.position, b.angle, 0.5 * b.size};
             bounds_[i] = boundingBox(boxes_[i]);
@@ -142,8 +142,8 @@ void ContactStage::collide(const World& world, const Vec& q, const Vec& u, doubl
         const bool diskA = a.kind == Collider::Kind::Disk, diskB = b.kind == Collider::Kind::Disk;
         if (diskA && diskB) {
             if (!particleCollisions_) continue;
-            const Particle& pa = world.particles()[a.object];
-            const Particle& pb = world.particles()[b.object];
+            const Particle& pa = bodies.particles[a.object];
+            const Particle& pb = bodies.particles[b.object];
             if (pa.cloth >= 0 && pa.cloth == pb.cloth) continue;  // no cloth self-collision
             restitution = particleRestitution_;
             if (collideDisks(disks_[i], disks_[j], margin, m))
@@ -192,7 +192,7 @@ void ContactStage::collide(const World& world, const Vec& q, const Vec& u, doubl
                 }
     }
     // Bodies' masses, now that the solver body list is complete.
-    const Vec& invMass = world.inverseMass();
+    const Vec& invMass = inverseMass;
     for (SolverBody& b : solver_.bodies()) {
         b.invMass = invMass[b.dof];
         b.invInertia = b.rotates ? invMass[b.dof + 2] : 0.0;

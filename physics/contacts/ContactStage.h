@@ -11,22 +11,22 @@
 
 namespace phasebox {
 
-class World;
+struct Bodies;
 
 class ContactStage {
 public:
-    // Whether a world needs a contact stage at all: two things that can touch, one of them
+    // Whether a world of these bodies needs a contact stage at all: two things that can touch, one of them
     // dynamic. Particle–particle pairs count only with particleCollisions.
-    static bool needed(const World& world, bool particleCollisions);
+    static bool needed(const Bodies& bodies, bool particleCollisions);
 
     ContactStage(bool particleCollisions, double particleRestitution)
         : particleCollisions_(particleCollisions), particleRestitution_(particleRestitution) {}
 
     // Rebuilds the collider list after the world's objects changed.
-    void bind(const World& world);
+    void bind(const Bodies& bodies);
 
     // Finds the contacts of the state (q, u) for a step of length dt.
-    void collide(const World& world, const Vec& q, const Vec& u, double dt,
+    void collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u, double dt,
                  const ContactSettings& settings);
 
     void solveSubstep(double h, const Vec& q0, Vec& q, Vec& u, const ContactSettings& settings,

@@ -18,11 +18,8 @@ std::string number(double v) {
 }  // namespace
 
 double stabilityBound(std::string_view integrator) {
-    if (integrator == "symplectic_euler" || integrator == "velocity_verlet") return 2.0;
-    if (integrator == "rk4") return 2.0 * std::sqrt(2.0);
-    if (integrator == "implicit_euler" || integrator == "implicit_midpoint") return kInfinity;
-    if (integrator == "adaptive_euler" || integrator == "rk45") return kInfinity;  // they adapt h
-    return 0.0;  // explicit Euler, midpoint, Heun: |R(iωh)| > 1 for every h > 0
+    const IntegratorInfo* info = findIntegrator(integrator);
+    return info ? info->stabilityBound : 0.0;
 }
 
 StabilityAdvice adviseStability(World& world, int powerIterations) {
@@ -67,7 +64,7 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
     for (const IntegratorInfo& info : integratorRegistry()) {
         if (info.adaptive) continue;
         StepLimit limit{info.name, 0.0, {}};
-        const double bound = stabilityBound(info.name);
+        const double bound = info.stabilityBound;
         if (omega == 0.0 || bound == kInfinity) {
             limit.maxDt = kInfinity;
             limit.note = omega == 0.0 ? "nothing oscillates" : "stable at any step";
@@ -82,7 +79,9 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
     }
 
     const std::string& method = settings.integrator;
-    const double bound = stabilityBound(method);
+    const IntegratorInfo& info = world.integrator().info();
+    const double bound = info.stabilityBound;
+    const auto growth = info.energyGrowth;
     const double wh = omega * advice.dt;
     if (omega > 0.0 && bound != kInfinity && wh >= bound) {
         advice.currentStable = false;
@@ -95,8 +94,7 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
                 << " sub-steps, more for a margin), or an implicit integrator.";
         else
             out << ": it gains energy at every step (its stiffest mode by a factor of about "
-                << number(method == "explicit_euler" ? 1.0 + wh * wh : 1.0 + std::pow(wh, 4) / 4.0)
-                << " per sub-step). Use symplectic_euler, velocity_verlet or an implicit integrator.";
+                << number(growth ? growth(wh) : kInfinity) << " per sub-step). Use symplectic_euler, velocity_verlet or an implicit integrator.";
         advice.message = out.str();
     } else {
         advice.message = omega > 0.0 ? method + " is stable at this step (omega*h = " + number(wh) + ")"

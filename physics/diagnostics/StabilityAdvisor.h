@@ -6,7 +6,7 @@
 // ones: symplectic Euler and velocity Verlet need ω·h < 2, RK4 ω·h < 2√2 ≈ 2.83, while
 // explicit Euler and the two-stage methods gain energy at every step size.
 
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 
 #include <string>
 #include <string_view>

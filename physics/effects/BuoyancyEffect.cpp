@@ -1,6 +1,6 @@
 #include "physics/effects/BuoyancyEffect.h"
 
-#include "physics/core/World.h"
+#include "physics/core/Bodies.h"
 
 #include <algorithm>
 #include <array>

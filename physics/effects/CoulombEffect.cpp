@@ -1,6 +1,6 @@
 #include "physics/effects/CoulombEffect.h"
 
-#include "physics/core/World.h"
+#include "physics/core/Bodies.h"
 #include "physics/effects/InverseSquare.h"
 
 #include <cmath>

@@ -1,17 +1,16 @@
 #include "physics/effects/MouseSpringEffect.h"
 
-#include "physics/core/World.h"
+#include "physics/core/Bodies.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace phasebox {
 
-MouseSpringEffect::MouseSpringEffect(const World& world, std::string objectId,
+MouseSpringEffect::MouseSpringEffect(std::string objectId,
                                      const Vec2& localPoint, const Vec2& target, double stiffness,
                                      double dampingRatio)
     : Effect("mouse_spring"),
-      world_(world),
       objectId_(std::move(objectId)),
       localPoint_(localPoint),
       target_(target),
@@ -40,13 +39,13 @@ void MouseSpringEffect::bind(const EffectWorldView& view) {
     point_ = BodyPoint{};
     effectiveMass_ = 0.0;
     const Eigen::Index size = view.mass ? view.mass->size() : 0;
-    for (const Particle& p : world_.particles()) {
+    for (const Particle& p : *view.particles) {
         if (p.id != objectId_) continue;
         if (p.dof >= 0 && p.dof + 2 <= size) point_ = BodyPoint::particle(p.dof);
         break;
     }
     if (!point_.isDynamic()) {
-        for (const Box& b : world_.boxes()) {
+        for (const Box& b : *view.boxes) {
             if (b.id != objectId_) continue;
             if (b.dof >= 0 && b.dof + 3 <= size) point_ = BodyPoint::box(b.dof, localPoint_);
             break;

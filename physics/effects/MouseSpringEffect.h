@@ -20,13 +20,11 @@
 
 namespace phasebox {
 
-class World;
-
 class MouseSpringEffect final : public Effect {
 public:
     // localPoint is the grabbed point in the box's own frame (ignored for a particle). The
-    // world must be the one the effect is added to (it owns the effect, so it outlives it).
-    MouseSpringEffect(const World& world, std::string objectId, const Vec2& localPoint,
+    // object is found by id when the world binds the effect.
+    MouseSpringEffect(std::string objectId, const Vec2& localPoint,
                       const Vec2& target, double stiffness, double dampingRatio = 1.0);
 
     // The mass the spring feels at a point at localPoint of a body (inertia 0: a particle).
@@ -55,7 +53,6 @@ private:
     bool evaluate(const Vec& q, const Vec& u, Vec2& f, Vec2& velocity, Vec2& arm) const;
     void updateDamping();
 
-    const World& world_;
     std::string objectId_;
     Vec2 localPoint_;
     Vec2 target_;

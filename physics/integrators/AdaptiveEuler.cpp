@@ -12,7 +12,8 @@ namespace phasebox::methods {
 const IntegratorInfo kAdaptiveEulerInfo{
     "adaptive_euler", "Adaptive Euler (step doubling)", 1, false, false, true,
     "2 per attempt",
-    "Explicit Euler whose step size follows the error of one step against two half steps.", 0.25};
+    "Explicit Euler whose step size follows the error of one step against two half steps.", 0.25,
+    kInfinity, nullptr, false};
 
 namespace {
 constexpr long long kMaxInternalSteps = 10'000'000;
@@ -24,7 +25,7 @@ public:
         for (Vec* v : {&a0_, &ah_, &qFull_, &uFull_, &qHalf_, &uHalf_}) v->setZero(n);
         stepper_.reset();
     }
-    bool step(OdeSystem& sys, double t, double H, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+    bool advance(OdeSystem& sys, double t, double H, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
               double& workNc) override {
         q = q0;
         u = u0;

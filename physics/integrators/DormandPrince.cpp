@@ -13,7 +13,8 @@ namespace phasebox::methods {
 
 const IntegratorInfo kDormandPrinceInfo{
     "rk45", "Dormand–Prince 5(4)", 5, false, false, true, "6 per attempt (+1 per call)",
-    "Embedded Runge–Kutta pair with error control; the reference for the accuracy lab.", 0.5};
+    "Embedded Runge–Kutta pair with error control; the reference for the accuracy lab.", 0.5,
+    kInfinity, nullptr, false};
 
 namespace {
 constexpr long long kMaxInternalSteps = 10'000'000;
@@ -47,7 +48,7 @@ public:
         stepper_.reset();
     }
 
-    bool step(OdeSystem& sys, double t, double H, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+    bool advance(OdeSystem& sys, double t, double H, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
               double& workNc) override {
         q = q0;
         u = u0;

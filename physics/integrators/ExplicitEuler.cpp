@@ -7,14 +7,15 @@ namespace phasebox::methods {
 
 const IntegratorInfo kExplicitEulerInfo{
     "explicit_euler", "Explicit Euler", 1, false, false, false, "1",
-    "Forward Euler on (x, v): first order, gains energy on every oscillation.", 0.0};
+    "Forward Euler on (x, v): first order, gains energy on every oscillation.", 0.0,
+    0.0, [](double wh) { return 1.0 + wh * wh; }, false};
 
 namespace {
 class ExplicitEuler final : public Integrator {
 public:
     const IntegratorInfo& info() const override { return kExplicitEulerInfo; }
     void reset(int n) override { a_.setZero(n); }
-    bool step(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+    bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
               double& workNc) override {
         workNc += h * sys.acceleration(t, q0, u0, a_);
         q = q0 + h * u0;

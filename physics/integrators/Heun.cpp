@@ -6,7 +6,8 @@ namespace phasebox::methods {
 
 const IntegratorInfo kHeunInfo{
     "heun", "Heun (explicit trapezoid)", 2, false, false, false, "2",
-    "Average of the slopes at the start and at an Euler-predicted end point.", 0.5};
+    "Average of the slopes at the start and at an Euler-predicted end point.", 0.5,
+    0.0, [](double wh) { return 1.0 + wh * wh * wh * wh / 4.0; }, false};
 
 namespace {
 class Heun final : public Integrator {
@@ -18,7 +19,7 @@ public:
         q2_.setZero(n);
         u2_.setZero(n);
     }
-    bool step(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+    bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
               double& workNc) override {
         const double p1 = sys.acceleration(t, q0, u0, a1_);
         q2_ = q0 + h * u0;

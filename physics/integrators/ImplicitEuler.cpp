@@ -3,7 +3,8 @@
 // makes stiff springs and cloth stable at large steps; it damps every mode, the stiffest most.
 
 #include "physics/integrators/Methods.h"
-#include "physics/integrators/NewtonVelocitySolver.h"
+
+#include "physics/linear/NewtonVelocitySolver.h"
 
 #include <algorithm>
 
@@ -12,14 +13,15 @@ namespace phasebox::methods {
 const IntegratorInfo kImplicitEulerInfo{
     "implicit_euler", "Implicit Euler", 1, true, false, false,
     "1 + Jacobian per Newton iteration",
-    "Backward Euler, Newton-linearised (Baraff & Witkin): unconditionally stable, dissipative.", 1.0};
+    "Backward Euler, Newton-linearised (Baraff & Witkin): unconditionally stable, dissipative.", 1.0,
+    kInfinity, nullptr, true};
 
 namespace {
 class ImplicitEuler final : public Integrator {
 public:
     const IntegratorInfo& info() const override { return kImplicitEulerInfo; }
     void reset(int n) override { newton_.reset(n); }
-    bool step(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+    bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
               double& workNc) override {
         const int iterations = std::max(1, settings_.newtonIterations);
         // The unknown is the end velocity, solved straight into u.

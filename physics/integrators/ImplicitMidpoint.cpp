@@ -3,14 +3,16 @@
 // round-off at any step size.
 
 #include "physics/integrators/Methods.h"
-#include "physics/integrators/NewtonVelocitySolver.h"
+
+#include "physics/linear/NewtonVelocitySolver.h"
 
 namespace phasebox::methods {
 
 const IntegratorInfo kImplicitMidpointInfo{
     "implicit_midpoint", "Implicit midpoint", 2, true, true, false,
     "1 + Jacobian per Newton iteration (to convergence)",
-    "Implicit midpoint rule: symplectic, second order, conserves a linear spring's energy.", 0.5};
+    "Implicit midpoint rule: symplectic, second order, conserves a linear spring's energy.", 0.5,
+    kInfinity, nullptr, false};
 
 namespace {
 constexpr int kMaxNewtonIterations = 50;
@@ -26,7 +28,7 @@ public:
         vm_.setZero(n);
         qm_.setZero(n);
     }
-    bool step(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+    bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
               double& workNc) override {
         // Unknown: the midpoint velocity vm, with the midpoint position q0 + h/2·vm.
         const double c = 0.5 * h;

@@ -3,6 +3,7 @@
 // (q, u) of an OdeSystem by one step h; it owns its scratch vectors, sized once by reset().
 
 #include "physics/core/OdeSystem.h"
+#include "physics/core/StateSummary.h"
 
 #include <memory>
 #include <span>
@@ -25,6 +26,14 @@ struct IntegratorInfo {
     // explicit Euler (x' = x + h·v). Contacts move positions as this method would have under
     // the contact force, so that a body resting on the ground stays put whatever the method.
     double positionWeight;
+    // Stability on the undamped oscillator x'' = −ω²·x (what the stability advisor reads):
+    // the method is stable while ω·h < stabilityBound; ∞ for the A-stable and the adaptive
+    // ones, 0 for those that gain energy at every step. For the latter, energyGrowth(ω·h) is
+    // the factor by which the oscillator's energy grows per step, |R(iωh)|².
+    double stabilityBound;
+    double (*energyGrowth)(double omegaH);
+    // The step takes newton_iterations Newton iterations (the setting matters to it).
+    bool usesNewtonIterations;
 };
 
 struct IntegratorSettings {
@@ -58,16 +67,38 @@ public:
     // the input ones and already sized, so the caller keeps the start state for free (the
     // world double-buffers its state). Returns false when the method fails (a singular linear
     // system, an adaptive step size that collapsed); q and u are then unspecified.
-    virtual bool step(OdeSystem& system, double t, double h, const Vec& q0, const Vec& u0,
-                      Vec& q, Vec& u, double& workNc) = 0;
+    // With a summary, it is filled for the end state (q, u) (core/StateSummary.h): fused into
+    // the method's last pass where that pass writes the whole state, else summed after it.
+    bool step(OdeSystem& system, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+              double& workNc, StateSummary* summary = nullptr) {
+        summary_ = summary;
+        summarized_ = false;
+        const bool ok = advance(system, t, h, q0, u0, q, u, workNc);
+        if (ok && summary && !summarized_)
+            *summary = summarizeState(system.pairedDofs(), system.mass(), q, u);
+        summary_ = nullptr;
+        return ok;
+    }
 
     void setSettings(const IntegratorSettings& settings) { settings_ = settings; }
     const IntegratorSettings& settings() const { return settings_; }
     const IntegratorStats& stats() const { return stats_; }
 
 protected:
+    // One step of the method, as step() describes it.
+    virtual bool advance(OdeSystem& system, double t, double h, const Vec& q0, const Vec& u0,
+                         Vec& q, Vec& u, double& workNc) = 0;
+    // The summary step() was asked for, or nullptr. A method that fills it in its last pass
+    // (with sweepState) calls markSummarized() so that step() does not sum the state again.
+    StateSummary* requestedSummary() const { return summary_; }
+    void markSummarized() { summarized_ = true; }
+
     IntegratorSettings settings_;
     IntegratorStats stats_;
+
+private:
+    StateSummary* summary_ = nullptr;
+    bool summarized_ = false;
 };
 
 // Every method, in the contract's order.

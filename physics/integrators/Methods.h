@@ -3,7 +3,12 @@
 
 #include "physics/integrators/Integrator.h"
 
+#include <limits>
+
 namespace phasebox::methods {
+
+// The stability bound of a method stable at any step (IntegratorInfo::stabilityBound).
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 std::unique_ptr<Integrator> makeExplicitEuler();
 std::unique_ptr<Integrator> makeSymplecticEuler();

@@ -7,7 +7,8 @@ namespace phasebox::methods {
 
 const IntegratorInfo kMidpointInfo{
     "midpoint", "Midpoint (RK2)", 2, false, false, false, "2",
-    "Explicit midpoint: a half step to estimate the slope, then a full step with it.", 0.5};
+    "Explicit midpoint: a half step to estimate the slope, then a full step with it.", 0.5,
+    0.0, [](double wh) { return 1.0 + wh * wh * wh * wh / 4.0; }, false};
 
 namespace {
 class Midpoint final : public Integrator {
@@ -18,7 +19,7 @@ public:
         qm_.setZero(n);
         um_.setZero(n);
     }
-    bool step(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+    bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
               double& workNc) override {
         sys.acceleration(t, q0, u0, a_);
         qm_ = q0 + (0.5 * h) * u0;

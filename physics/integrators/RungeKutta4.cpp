@@ -2,11 +2,14 @@
 
 #include "physics/integrators/Methods.h"
 
+#include <numbers>
+
 namespace phasebox::methods {
 
 const IntegratorInfo kRungeKutta4Info{
     "rk4", "Runge–Kutta 4", 4, false, false, false, "4",
-    "Classic fourth-order Runge–Kutta: four slopes weighted 1/6, 1/3, 1/3, 1/6.", 0.5};
+    "Classic fourth-order Runge–Kutta: four slopes weighted 1/6, 1/3, 1/3, 1/6.", 0.5,
+    2.0 * std::numbers::sqrt2, nullptr, false};
 
 namespace {
 class RungeKutta4 final : public Integrator {
@@ -15,7 +18,7 @@ public:
     void reset(int n) override {
         for (Vec* v : {&a1_, &a2_, &a3_, &a4_, &u2_, &u3_, &u4_, &qs_}) v->setZero(n);
     }
-    bool step(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+    bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
               double& workNc) override {
         // Stage slopes of x are the stage velocities (u0, u2, u3, u4), of v the accelerations.
         const double p1 = sys.acceleration(t, q0, u0, a1_);

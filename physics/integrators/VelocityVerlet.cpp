@@ -9,7 +9,8 @@ namespace phasebox::methods {
 
 const IntegratorInfo kVelocityVerletInfo{
     "velocity_verlet", "Velocity Verlet", 2, false, true, false, "2",
-    "Position from the current acceleration, velocity from the average of old and new ones.", 0.5};
+    "Position from the current acceleration, velocity from the average of old and new ones.", 0.5,
+    2.0, nullptr, false};
 
 namespace {
 class VelocityVerlet final : public Integrator {
@@ -20,7 +21,7 @@ public:
         a2_.setZero(n);
         up_.setZero(n);
     }
-    bool step(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+    bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
               double& workNc) override {
         const double p1 = sys.acceleration(t, q0, u0, a_);
         q = q0 + h * u0 + (0.5 * h * h) * a_;

@@ -2,7 +2,7 @@
 // SceneDesc → World. Constructs exactly the effects the scene lists plus what its objects
 // imply (springs → the spring effect); nothing else exists, so nothing else costs.
 
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/scene/SceneDesc.h"
 
 #include <memory>

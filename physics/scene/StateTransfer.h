@@ -6,7 +6,7 @@
 // object that exists in both worlds continues where it was, and a new one starts from its
 // setup values.
 
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/scene/SceneDesc.h"
 
 #include <string>

@@ -7,7 +7,7 @@
 #include "app/document/Document.h"
 #include "app/sim/Recorder.h"
 #include "app/sim/SimulationController.h"
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/effects/MouseSpringEffect.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/StateTransfer.h"

@@ -8,7 +8,7 @@
 #include "app/document/Document.h"
 #include "app/document/PropertyTable.h"
 #include "app/io/SceneIO.h"
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 
 #include <QFile>
 #include <QSignalSpy>

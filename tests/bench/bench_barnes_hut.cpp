@@ -10,7 +10,7 @@
 
 #include "BenchCommon.h"
 
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/effects/NewtonianGravityEffect.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"

@@ -27,7 +27,7 @@
 #include "BenchCommon.h"
 
 #include "physics/contacts/ContactStage.h"
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"
 #include "physics/scene/SceneLibrary.h"

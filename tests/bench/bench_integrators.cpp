@@ -27,7 +27,7 @@
 #include "AllocationCounter.h"
 #include "BenchCommon.h"
 
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"

@@ -6,7 +6,7 @@
 // Exit status 0 when both runs stay finite, never diverge and grow resident memory by less
 // than 1 MiB between the first and the last simulated minute; 1 otherwise.
 
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
 #include "tests/bench/BenchCommon.h"

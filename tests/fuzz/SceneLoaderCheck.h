@@ -14,7 +14,7 @@
 //     good state.
 
 #include "app/io/SceneIO.h"
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
 
 #include <QByteArray>

@@ -7,7 +7,7 @@
 #include "app/desktop/MainWindow.h"
 #include "app/document/Autosave.h"
 #include "app/io/SceneIO.h"
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
 #include "ui/panels/ParametersPanel.h"
 

@@ -3,7 +3,7 @@
 // scene description (the public way in), so the suites exercise buildWorld, the effects and
 // World::step exactly as the app and the command line do.
 
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"
 

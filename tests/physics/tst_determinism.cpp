@@ -12,7 +12,7 @@
 // order of force accumulation): the failure message prints the new value to paste in. A change
 // that nobody meant is exactly what this test is for.
 
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
 

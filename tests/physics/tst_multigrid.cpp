@@ -4,10 +4,10 @@
 // preconditioner's grow with the side), and a world whose Jacobian pattern changes mid-run.
 
 #include "../bench/AllocationCounter.h"
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/effects/MouseSpringEffect.h"
-#include "physics/integrators/AggregationMultigrid.h"
-#include "physics/integrators/BlockSweeps.h"
+#include "physics/linear/AggregationMultigrid.h"
+#include "physics/linear/BlockSweeps.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
 
@@ -293,7 +293,7 @@ private slots:
         QVERIFY(world->dimension() >= 2000);  // the iterative path
         for (int k = 0; k < 10; ++k) QVERIFY(world->step());
         const std::string grabbed = "cloth[20,39]";
-        auto spring = std::make_unique<MouseSpringEffect>(*world, grabbed, Vec2::Zero(), Vec2(0.3, -0.2), 50.0);
+        auto spring = std::make_unique<MouseSpringEffect>(grabbed, Vec2::Zero(), Vec2(0.3, -0.2), 50.0);
         const Effect* handle = spring.get();
         world->addEffect(std::move(spring));
         for (int k = 0; k < 60; ++k) QVERIFY(world->step());

@@ -1,6 +1,6 @@
 #include "ui/canvas/SceneRenderer.h"
 
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 
 #include <QFontMetricsF>
 #include <QImage>

@@ -4,7 +4,7 @@
 // exported or tested is what the user sees. Picking lives here too because it must agree with
 // the drawing (a particle drawn 3 px wide is clickable 3 px wide).
 
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "ui/canvas/ViewTransform.h"
 
 #include <QColor>

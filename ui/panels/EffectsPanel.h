@@ -3,7 +3,7 @@
 // effects a scene lists run (an absent one costs nothing), so the list is also the menu of
 // what could be added. Toggles and additions are reported as signals; the app edits the scene.
 
-#include "physics/core/World.h"  // EffectCost
+#include "physics/world/World.h"  // EffectCost
 
 #include <QHash>
 #include <QIcon>

@@ -291,7 +291,7 @@ void ParametersPanel::updateEnabledFields() {
     const QString name = integrator();
     const IntegratorInfo* info = findIntegrator(name.toStdString());
     const bool adaptive = info && info->adaptive;
-    const bool newton = name == QLatin1String("implicit_euler");
+    const bool newton = info && info->usesNewtonIterations;
     toleranceBox_->setEnabled(adaptive);
     toleranceLabel_->setEnabled(adaptive);
     newtonBox_->setEnabled(newton);

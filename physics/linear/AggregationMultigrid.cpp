@@ -1,6 +1,6 @@
-#include "physics/integrators/AggregationMultigrid.h"
+#include "physics/linear/AggregationMultigrid.h"
 
-#include "physics/integrators/BlockSweeps.h"
+#include "physics/linear/BlockSweeps.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "physics/integrators/NewtonVelocitySolver.h"
+#include "physics/linear/NewtonVelocitySolver.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "physics/integrators/BlockSweeps.h"
+#include "physics/linear/BlockSweeps.h"
 
 #include <atomic>
 
@@ -52,7 +52,7 @@ namespace twoLane {
     sum[0] = r0[0] + r0[1];
     sum[1] = r1[0] + r1[1];
 }
-#include "physics/integrators/BlockSweepLoops.inc"
+#include "physics/linear/BlockSweepLoops.inc"
 }  // namespace twoLane
 
 #ifdef PHASEBOX_WIDE_KERNELS
@@ -73,7 +73,7 @@ namespace fourLane {
     p = _mm256_add_pd(p, q);
     _mm_storeu_pd(sum, _mm_hadd_pd(_mm256_castpd256_pd128(p), _mm256_extractf128_pd(p, 1)));
 }
-#include "physics/integrators/BlockSweepLoops.inc"
+#include "physics/linear/BlockSweepLoops.inc"
 }  // namespace fourLane
 #pragma GCC pop_options
 #endif

@@ -1,0 +1,87 @@
+#pragma once
+// The object records: what a scene's particles, boxes, planes, springs and cloths are once
+// built. Cold data (ids, materials, setup values) lives here; the hot state of a dynamic
+// object is in the world's flat vectors (q, u) at the record's `dof`.
+//
+// For a dynamic object the state is authoritative and the record's position/velocity are only
+// its setup values; for a pinned particle or a static box the record's fields are the truth.
+
+#include "physics/core/Types.h"
+
+#include <string>
+#include <vector>
+
+namespace phasebox {
+
+struct Particle {
+    std::string id;
+    Vec2 position{0.0, 0.0};  // setup value; live value in the state unless pinned
+    Vec2 velocity{0.0, 0.0};
+    double mass = 1.0;
+    double radius = 0.05;
+    bool pinned = false;
+    double restitution = 0.5;
+    double friction = 0.2;
+    double charge = 0.0;
+    int cloth = -1;  // index of the cloth this node belongs to, or −1
+    int dof = -1;    // first state index, −1 when pinned
+};
+
+struct Box {
+    std::string id;
+    Vec2 position{0.0, 0.0};  // setup value; live value in the state unless static
+    double angle = 0.0;
+    Vec2 velocity{0.0, 0.0};
+    double angularVelocity = 0.0;
+    Vec2 size{1.0, 1.0};
+    double mass = 1.0;
+    double inertia = 1.0 / 6.0;
+    bool isStatic = false;
+    double friction = 0.6;
+    double restitution = 0.0;
+    int dof = -1;  // first state index, −1 when static
+};
+
+struct Plane {
+    std::string id;
+    Vec2 point{0.0, 0.0};
+    Vec2 normal{0.0, 1.0};  // unit; solid on the side opposite the normal
+    double friction = 0.5;
+    double restitution = 0.5;
+};
+
+// One end of a spring, by object index (resolved to a BodyPoint when the layout is built).
+struct SpringEnd {
+    enum class Kind { Particle, Box, Anchor };
+    Kind kind = Kind::Anchor;
+    int index = -1;           // particle or box index
+    Vec2 point{0.0, 0.0};     // box: attachment in the box frame; anchor: world point
+};
+
+struct Spring {
+    std::string id;
+    SpringEnd a, b;
+    double stiffness = 0.0;
+    double damping = 0.0;
+    double restLength = 0.0;
+    int cloth = -1;
+};
+
+struct Cloth {
+    std::string id;
+    int nx = 0, ny = 0;
+    int firstParticle = 0;  // node (i, j) is particle firstParticle + j·nx + i
+    int firstSpring = 0;
+    int springCount = 0;
+};
+
+// Every object of a world, by kind, in the order added (the scene file's order).
+struct Bodies {
+    std::vector<Particle> particles;
+    std::vector<Box> boxes;
+    std::vector<Plane> planes;
+    std::vector<Spring> springs;
+    std::vector<Cloth> cloths;
+};
+
+}  // namespace phasebox

@@ -1,0 +1,667 @@
+#include "physics/world/World.h"
+
+#include "physics/contacts/ContactStage.h"
+#include "physics/effects/SpringEffect.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace phasebox {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Times consecutive stages into a profile: each call to start() ends the stage before it.
+class StageTimer {
+public:
+    explicit StageTimer(StepProfile& profile) : profile_(profile) {}
+    ~StageTimer() { stop(); }
+    void start(StepStage stage) {
+        const auto now = Clock::now();
+        if (running_) profile_[stage_] += std::chrono::duration<double>(now - since_).count();
+        stage_ = stage;
+        since_ = now;
+        running_ = true;
+    }
+    void stop() {
+        if (running_) profile_[stage_] += secondsSince(since_);
+        running_ = false;
+    }
+
+private:
+    StepProfile& profile_;
+    StepStage stage_ = StepStage::Integrate;
+    Clock::time_point since_;
+    bool running_ = false;
+};
+}  // namespace
+
+World::World() { integrator_ = makeIntegrator(settings_.integrator); }
+World::~World() = default;
+
+// ---- objects ------------------------------------------------------------------------------
+
+int World::addParticle(const Particle& particle) {
+    storeStateInObjects();
+    bodies_.particles.push_back(particle);
+    layoutDirty_ = true;
+    return static_cast<int>(bodies_.particles.size()) - 1;
+}
+
+int World::addBox(const Box& box) {
+    storeStateInObjects();
+    bodies_.boxes.push_back(box);
+    layoutDirty_ = true;
+    return static_cast<int>(bodies_.boxes.size()) - 1;
+}
+
+int World::addPlane(const Plane& plane) {
+    bodies_.planes.push_back(plane);
+    return static_cast<int>(bodies_.planes.size()) - 1;
+}
+
+int World::addSpring(const Spring& spring) {
+    storeStateInObjects();
+    bodies_.springs.push_back(spring);
+    layoutDirty_ = true;
+    return static_cast<int>(bodies_.springs.size()) - 1;
+}
+
+int World::addCloth(const Cloth& cloth) {
+    bodies_.cloths.push_back(cloth);
+    return static_cast<int>(bodies_.cloths.size()) - 1;
+}
+
+void World::storeStateInObjects() {
+    if (layoutDirty_) return;  // the objects already hold the newest values
+    const Vec& q = q_[current_];
+    const Vec& u = u_[current_];
+    for (Particle& p : bodies_.particles) {
+        if (p.dof < 0) continue;
+        p.position = q.segment<2>(p.dof);
+        p.velocity = u.segment<2>(p.dof);
+    }
+    for (Box& b : bodies_.boxes) {
+        if (b.dof < 0) continue;
+        b.position = q.segment<2>(b.dof);
+        b.angle = q[b.dof + 2];
+        b.velocity = u.segment<2>(b.dof);
+        b.angularVelocity = u[b.dof + 2];
+    }
+}
+
+void World::commit() {
+    if (!layoutDirty_) return;
+    const bool hadLayout = committed_;
+    committed_ = true;
+
+    dynamicParticles_.clear();
+    dynamicBoxes_.clear();
+    for (int i = 0; i < static_cast<int>(bodies_.particles.size()); ++i)
+        if (!bodies_.particles[i].pinned) dynamicParticles_.push_back(i);
+    for (int i = 0; i < static_cast<int>(bodies_.boxes.size()); ++i)
+        if (!bodies_.boxes[i].isStatic) dynamicBoxes_.push_back(i);
+    layout_.dynamicParticles = static_cast<int>(dynamicParticles_.size());
+    layout_.dynamicBoxes = static_cast<int>(dynamicBoxes_.size());
+
+    const int n = layout_.dimension();
+    for (int k = 0; k < 2; ++k) {
+        q_[k].setZero(n);
+        u_[k].setZero(n);
+    }
+    current_ = 0;
+    mass_.setZero(n);
+    invMass_.setZero(n);
+    force_.setZero(n);
+    Vec& q = q_[0];
+    Vec& u = u_[0];
+    for (Particle& p : bodies_.particles) p.dof = -1;
+    for (Box& b : bodies_.boxes) b.dof = -1;
+    for (int k = 0; k < layout_.dynamicParticles; ++k) {
+        Particle& p = bodies_.particles[dynamicParticles_[k]];
+        p.dof = layout_.particleDof(k);
+        q.segment<2>(p.dof) = p.position;
+        u.segment<2>(p.dof) = p.velocity;
+        mass_.segment<2>(p.dof).setConstant(p.mass);
+    }
+    for (int k = 0; k < layout_.dynamicBoxes; ++k) {
+        Box& b = bodies_.boxes[dynamicBoxes_[k]];
+        b.dof = layout_.boxDof(k);
+        q.segment<2>(b.dof) = b.position;
+        q[b.dof + 2] = b.angle;
+        u.segment<2>(b.dof) = b.velocity;
+        u[b.dof + 2] = b.angularVelocity;
+        mass_.segment<2>(b.dof).setConstant(b.mass);
+        mass_[b.dof + 2] = b.inertia;
+    }
+    invMass_ = mass_.cwiseInverse();
+
+    rebuildSpringEffect();
+    bindEffects();
+    if (ContactStage::needed(bodies_, particleCollisions_)) {
+        if (!contacts_)
+            contacts_ = std::make_unique<ContactStage>(particleCollisions_, particleRestitution_);
+        contacts_->bind(bodies_);
+    } else {
+        contacts_.reset();
+    }
+    integrator_->reset(n);
+    layoutDirty_ = false;
+
+    // Keep the drift continuous across an edit: the edit itself is not integration error.
+    if (hadLayout) {
+        ledger_.carryOver(kineticEnergy(), potentialEnergy());
+    } else {
+        resetEnergyBaseline();
+    }
+}
+
+void World::rebuildSpringEffect() {
+    if (bodies_.springs.empty()) {
+        if (springEffect_) {
+            std::erase_if(effects_, [this](const auto& e) { return e.get() == springEffect_; });
+            springEffect_ = nullptr;
+        }
+        return;
+    }
+    if (!springEffect_) {
+        auto effect = std::make_unique<SpringEffect>();
+        springEffect_ = effect.get();
+        effects_.push_back(std::move(effect));
+    }
+    std::vector<SpringTerm> terms;
+    terms.reserve(bodies_.springs.size());
+    auto resolve = [this](const SpringEnd& end) -> BodyPoint {
+        switch (end.kind) {
+            case SpringEnd::Kind::Particle: {
+                const Particle& p = bodies_.particles[end.index];
+                return p.dof >= 0 ? BodyPoint::particle(p.dof) : BodyPoint::fixed(p.position);
+            }
+            case SpringEnd::Kind::Box: {
+                const Box& b = bodies_.boxes[end.index];
+                if (b.dof >= 0) return BodyPoint::box(b.dof, end.point);
+                return BodyPoint::fixed(b.position + rotation(b.angle) * end.point);
+            }
+            case SpringEnd::Kind::Anchor:
+                break;
+        }
+        return BodyPoint::fixed(end.point);
+    };
+    for (const Spring& s : bodies_.springs)
+        terms.push_back({resolve(s.a), resolve(s.b), s.stiffness, s.damping, s.restLength});
+    springEffect_->setTerms(std::move(terms));
+}
+
+void World::bindEffects() {
+    const EffectWorldView view{&layout_, &mass_, &bodies_.particles, &bodies_.boxes};
+    for (auto& effect : effects_) effect->bind(view);
+    sortEffectsByChannel();
+}
+
+void World::sortEffectsByChannel() {
+    forceEffects_.clear();
+    fieldEffects_.clear();
+    nonConservative_.clear();
+    for (int i = 0; i < static_cast<int>(effects_.size()); ++i) {
+        Effect& e = *effects_[i];
+        (e.isAccelerationField() ? fieldEffects_ : forceEffects_).push_back(i);
+        if (e.hasNonConservativePart()) nonConservative_.push_back(i);
+    }
+    effectSeconds_.assign(effects_.size() + 1, 0.0);  // the last: contacts
+}
+
+Vec2 World::particlePosition(int i) const {
+    const Particle& p = bodies_.particles.at(i);
+    return p.dof >= 0 && !layoutDirty_ ? Vec2(q_[current_].segment<2>(p.dof)) : p.position;
+}
+Vec2 World::particleVelocity(int i) const {
+    const Particle& p = bodies_.particles.at(i);
+    return p.dof >= 0 && !layoutDirty_ ? Vec2(u_[current_].segment<2>(p.dof)) : p.velocity;
+}
+Vec2 World::boxPosition(int i) const {
+    const Box& b = bodies_.boxes.at(i);
+    return b.dof >= 0 && !layoutDirty_ ? Vec2(q_[current_].segment<2>(b.dof)) : b.position;
+}
+double World::boxAngle(int i) const {
+    const Box& b = bodies_.boxes.at(i);
+    return b.dof >= 0 && !layoutDirty_ ? q_[current_][b.dof + 2] : b.angle;
+}
+Vec2 World::boxVelocity(int i) const {
+    const Box& b = bodies_.boxes.at(i);
+    return b.dof >= 0 && !layoutDirty_ ? Vec2(u_[current_].segment<2>(b.dof)) : b.velocity;
+}
+double World::boxAngularVelocity(int i) const {
+    const Box& b = bodies_.boxes.at(i);
+    return b.dof >= 0 && !layoutDirty_ ? u_[current_][b.dof + 2] : b.angularVelocity;
+}
+
+Vec2 World::springEndPosition(const SpringEnd& end) const {
+    switch (end.kind) {
+        case SpringEnd::Kind::Particle:
+            return particlePosition(end.index);
+        case SpringEnd::Kind::Box:
+            return boxPosition(end.index) + rotation(boxAngle(end.index)) * end.point;
+        case SpringEnd::Kind::Anchor:
+            break;
+    }
+    return end.point;
+}
+
+double World::springTension(int i) const {
+    if (!springEffect_ || layoutDirty_) return 0.0;
+    return springEffect_->tension(static_cast<std::size_t>(i), q_[current_], u_[current_]);
+}
+
+// ---- effects ------------------------------------------------------------------------------
+
+void World::addEffect(std::unique_ptr<Effect> effect) {
+    // A new effect changes the potential energy: rebuild so the drift stays continuous.
+    storeStateInObjects();
+    layoutDirty_ = true;
+    effects_.push_back(std::move(effect));
+    // The spring effect stays last so that scene effects keep their listed order.
+    if (springEffect_) {
+        auto it = std::find_if(effects_.begin(), effects_.end(),
+                               [this](const auto& e) { return e.get() == springEffect_; });
+        std::rotate(it, it + 1, effects_.end());
+    }
+    bindEffects();
+}
+
+std::unique_ptr<Effect> World::removeEffect(const Effect* effect) {
+    if (effect == springEffect_) return nullptr;
+    auto it = std::find_if(effects_.begin(), effects_.end(),
+                           [effect](const auto& e) { return e.get() == effect; });
+    if (it == effects_.end()) return nullptr;
+    // Like adding one, removing an effect changes the potential energy: rebuild.
+    storeStateInObjects();
+    layoutDirty_ = true;
+    std::unique_ptr<Effect> removed = std::move(*it);
+    effects_.erase(it);
+    bindEffects();
+    return removed;
+}
+
+void World::setTime(double t) {
+    clock_.time = t;
+    clock_.timeBase = t;
+    clock_.stepsSinceTimeBase = 0;
+}
+
+Effect* World::findEffect(const std::string& name) const {
+    for (const auto& e : effects_)
+        if (e->name() == name) return e.get();
+    return nullptr;
+}
+
+// ---- settings -----------------------------------------------------------------------------
+
+void World::setSettings(const SimulationSettings& settings) {
+    if (!findIntegrator(settings.integrator))
+        throw std::invalid_argument("unknown integrator \"" + settings.integrator +
+                                    "\"; known: " + knownIntegratorNames());
+    if (!(settings.dt > 0.0) || !(settings.dt <= 1.0))
+        throw std::invalid_argument("dt must be > 0 and <= 1");
+    if (settings.substeps < 1) throw std::invalid_argument("substeps must be >= 1");
+    if (!(settings.tolerance > 0.0) || !std::isfinite(settings.tolerance))
+        throw std::invalid_argument("tolerance must be > 0");
+    if (settings.newtonIterations < 1)
+        throw std::invalid_argument("newton_iterations must be >= 1");
+    const bool newMethod = settings.integrator != settings_.integrator;
+    if (settings.dt != settings_.dt) {
+        clock_.timeBase = clock_.time;
+        clock_.stepsSinceTimeBase = 0;
+    }
+    settings_ = settings;
+    if (newMethod) {
+        integrator_ = makeIntegrator(settings_.integrator);
+        integrator_->reset(layout_.dimension());
+    }
+    integrator_->setSettings({settings_.tolerance, settings_.newtonIterations});
+}
+
+void World::setParticleCollisions(bool enabled, double restitution) {
+    storeStateInObjects();
+    particleCollisions_ = enabled;
+    particleRestitution_ = restitution;
+    contacts_.reset();  // rebuilt with the new pair rule
+    layoutDirty_ = true;
+}
+
+void World::setIntegrator(const std::string& name) {
+    SimulationSettings s = settings_;
+    s.integrator = name;
+    setSettings(s);
+}
+
+// ---- the ODE view -------------------------------------------------------------------------
+
+double World::acceleration(double t, const Vec& q, const Vec& u, Vec& accel) {
+    ++forceEvaluations_;
+    double power = 0.0;
+    bool written = false;
+    if (!forceEffects_.empty()) {
+        force_.setZero();
+        for (int i : forceEffects_) {
+            const auto start = Clock::now();
+            power += effects_[i]->addForces(t, q, u, force_);
+            effectSeconds_[i] += secondsSince(start);
+        }
+        accel.array() = invMass_.array() * force_.array();
+        written = true;
+    }
+    for (int i : fieldEffects_) {
+        const auto start = Clock::now();
+        effects_[i]->addAccelerations(t, q, u, accel, !written);
+        effectSeconds_[i] += secondsSince(start);
+        written = true;
+    }
+    if (!written) accel.setZero();
+    return power;
+}
+
+double World::nonConservativePower(double t, const Vec& q, const Vec& u) {
+    double power = 0.0;
+    for (int i : nonConservative_) power += effects_[i]->nonConservativePower(t, q, u);
+    return power;
+}
+
+double World::forces(double t, const Vec& q, const Vec& u, Vec& force) {
+    ++forceEvaluations_;
+    force.setZero();
+    double power = 0.0;
+    for (int i = 0; i < static_cast<int>(effects_.size()); ++i) {
+        const auto start = Clock::now();
+        power += effects_[i]->addForces(t, q, u, force);
+        effectSeconds_[i] += secondsSince(start);
+    }
+    return power;
+}
+
+double World::forcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& force,
+                                 ForceJacobians& jacobians) {
+    ++forceEvaluations_;
+    force.setZero();
+    double power = 0.0;
+    for (int i = 0; i < static_cast<int>(effects_.size()); ++i) {
+        const auto start = Clock::now();
+        power += effects_[i]->addForcesAndJacobians(t, q, u, force, jacobians);
+        effectSeconds_[i] += secondsSince(start);
+    }
+    return power;
+}
+
+void World::setState(const Vec& q, const Vec& u) {
+    ensureLayout();
+    if (q.size() != layout_.dimension() || u.size() != layout_.dimension())
+        throw std::invalid_argument("state size does not match the world's layout");
+    q_[current_] = q;
+    u_[current_] = u;
+}
+
+std::string World::objectAtDof(int dof) const {
+    if (dof < 0 || dof >= layout_.dimension()) return {};
+    if (dof < layout_.boxBase()) return bodies_.particles[dynamicParticles_[dof / 2]].id;
+    return bodies_.boxes[dynamicBoxes_[(dof - layout_.boxBase()) / 3]].id;
+}
+
+// ---- stepping -----------------------------------------------------------------------------
+
+// One frame of dt, as a script of named stages (each timed into profile_, CONTRACT.md §7):
+//   collide         find contacts once per frame (broad phase, narrow phase, warm start)
+//   integrate       the smooth step: the integrator with every effect, per sub-step
+//   solve contacts  impulses on velocities and bounded position correction, per sub-step
+//   ledger          the energy ledger of the end state
+//   guard           divergence: a non-finite value or runaway energy restores a good frame
+bool World::step() {
+    ensureLayout();
+    divergence_.reset();
+    const double h = settings_.dt / settings_.substeps;
+    // With one sub-step the other state buffer keeps the frame start for free.
+    guard_.beginFrame(clock_, ledger_, q_[current_], u_[current_], settings_.substeps > 1);
+    StageTimer timer(profile_);
+    ++profile_.steps;
+    if (contacts_) {
+        timer.start(StepStage::Collide);
+        collide();
+    }
+    StateSummary summary;
+    bool summed = false;
+    for (int s = 0; s < settings_.substeps; ++s) {
+        const double t = guard_.frameStart().clock.time + s * h;
+        const int next = 1 - current_;
+        // Without contacts to move it afterwards, the last sub-step's end state is the frame's:
+        // the integrator sums it for the ledger in its last pass.
+        const bool sumHere = s + 1 == settings_.substeps && !contacts_;
+        timer.start(StepStage::Integrate);
+        const bool ok = integrate(t, h, next, sumHere ? &summary : nullptr);
+        if (ok && contacts_) {
+            timer.start(StepStage::SolveContacts);
+            solveContacts(h, next);
+        }
+        if (!ok || (settings_.substeps > 1 && !(q_[next].allFinite() && u_[next].allFinite())))
+            return failSubstep(t + h, !ok, next);
+        current_ = next;
+        summed = sumHere;
+    }
+    ++clock_.stepsSinceTimeBase;
+    clock_.time = clock_.timeBase + static_cast<double>(clock_.stepsSinceTimeBase) * settings_.dt;
+    ++clock_.stepCount;
+    timer.start(StepStage::Ledger);
+    summary = closeLedger(summed ? &summary : nullptr);
+    checkInvariants(StepStage::Ledger);
+    timer.start(StepStage::Guard);
+    const bool good = guard(summary);
+    checkInvariants(StepStage::Guard);
+    return good;
+}
+
+void World::collide() {
+    const auto start = Clock::now();
+    contacts_->collide(bodies_, invMass_, q_[current_], u_[current_], settings_.dt, settings_.contacts);
+    effectSeconds_.back() += secondsSince(start);
+}
+
+bool World::integrate(double t, double h, int next, StateSummary* summary) {
+    return integrator_->step(*this, t, h, q_[current_], u_[current_], q_[next], u_[next],
+                             ledger_.workNc, summary);
+}
+
+void World::solveContacts(double h, int next) {
+    // Contacts act after the smooth step as impulses (positions move by h·Δv); the energy
+    // they add or remove is their work, booked in work_nc.
+    const auto start = Clock::now();
+    Vec& q = q_[next];
+    Vec& u = u_[next];
+    const double before = mechanicalEnergy(q, u);
+    contacts_->solveSubstep(h, q_[current_], q, u, settings_.contacts,
+                            integrator_->info().positionWeight);
+    const double after = mechanicalEnergy(q, u);
+    effectSeconds_.back() += secondsSince(start);
+    if (std::isfinite(after)) ledger_.workNc += after - before;  // else the guard reports it
+}
+
+StateSummary World::closeLedger(const StateSummary* summed) {
+    const Vec& q = q_[current_];
+    const StateSummary summary = summed ? *summed : summarizeState(pairedDofs(), mass_, q, u_[current_]);
+    if (summary.finite) ledger_.close(summary, phasebox::potentialEnergy(effects_, q, summary.massMoment));
+    return summary;
+}
+
+bool World::guard(const StateSummary& summary) {
+    std::string what;
+    DivergenceGuard::Verdict verdict = DivergenceGuard::Verdict::RestoreFrameStart;
+    if (!summary.finite) {
+        what = "a non-finite value";
+    } else if (!std::isfinite(ledger_.drift)) {
+        what = "non-finite energy";
+    } else {
+        verdict = guard_.judge(ledger_, q_[1 - current_], u_[1 - current_]);
+        if (verdict == DivergenceGuard::Verdict::Good) return true;
+        what = "energy growing without bound";
+    }
+    Divergence d;
+    d.time = clock_.time;
+    d.objectId = summary.finite ? mostEnergeticObject() : firstNonFinite(q_[current_], u_[current_]);
+    if (d.objectId.empty()) d.objectId = mostEnergeticObject();  // energy overflowed first
+    d.what = what;
+    if (verdict == DivergenceGuard::Verdict::RestoreRunawayStart) restore(guard_.runawayStart(), false);
+    else restore(guard_.frameStart(), true);
+    d.restoredTime = clock_.time;
+    divergence_ = d;
+    return false;
+}
+
+bool World::failSubstep(double t, bool integratorFailed, int next) {
+    Divergence d;
+    d.time = t;
+    d.objectId = firstNonFinite(q_[next], u_[next]);
+    d.what = integratorFailed ? std::string(integrator_->info().name) + " failed"
+                              : std::string("a non-finite value");
+    current_ = next;  // restore() reads the frame start from the right place
+    restore(guard_.frameStart(), true);
+    d.restoredTime = clock_.time;
+    divergence_ = d;
+    return false;
+}
+
+void World::restore(const DivergenceGuard::Checkpoint& c, bool fromOtherBuffer) {
+    if (c.hasState) {
+        q_[current_] = c.q;
+        u_[current_] = c.u;
+    } else if (fromOtherBuffer) {
+        current_ = 1 - current_;
+    }
+    clock_ = c.clock;
+    ledger_ = c.ledger;
+    guard_.forgetGrowth();
+}
+
+double World::kineticEnergy() const {
+    return summarizeState(pairedDofs(), mass_, q_[current_], u_[current_]).kinetic;
+}
+
+double World::potentialEnergy() const {
+    const Vec& q = q_[current_];
+    return phasebox::potentialEnergy(effects_, q,
+                                     summarizeState(pairedDofs(), mass_, q, u_[current_]).massMoment);
+}
+
+double World::mechanicalEnergy(const Vec& q, const Vec& u) const {
+    const StateSummary summary = summarizeState(pairedDofs(), mass_, q, u);
+    return summary.kinetic + phasebox::potentialEnergy(effects_, q, summary.massMoment);
+}
+
+// ---- diagnostics --------------------------------------------------------------------------
+
+double World::estimateLocalError() {
+    ensureLayout();
+    // The estimate is not part of the run: its force evaluations and time are not booked.
+    const long long evaluations = forceEvaluations_;
+    const std::vector<double> seconds = effectSeconds_;
+    const double error = errorEstimator_.estimate(*this, *integrator_, clock_.time,
+                                                  settings_.dt / settings_.substeps,
+                                                  q_[current_], u_[current_]);
+    forceEvaluations_ = evaluations;
+    effectSeconds_ = seconds;
+    return error;
+}
+
+void World::resetEnergyBaseline() {
+    ensureLayout();
+    ledger_.rebase(kineticEnergy(), potentialEnergy());
+    // The scale against which drift is judged: every energy in the scene, and a floor of each
+    // body moving at 1 m/s so that a scene at rest at the origin still has a scale.
+    double scale = ledger_.kinetic + mass_.sum() * 0.5;
+    for (const auto& e : effects_) scale += std::abs(e->potentialEnergy(q_[current_]));
+    guard_.setEnergyScale(scale);
+}
+
+std::string World::firstNonFinite(const Vec& q, const Vec& u) const {
+    for (int i = 0; i < static_cast<int>(q.size()); ++i)
+        if (!std::isfinite(q[i]) || !std::isfinite(u[i])) return objectAtDof(i);
+    return {};
+}
+
+std::string World::mostEnergeticObject() const {
+    const Vec& u = u_[current_];
+    int best = -1;
+    double bestEnergy = -1.0;
+    for (int i = 0; i < static_cast<int>(u.size()); ++i) {
+        const double e = mass_[i] * u[i] * u[i];
+        if (e > bestEnergy) {
+            bestEnergy = e;
+            best = i;
+        }
+    }
+    return objectAtDof(best);
+}
+
+std::vector<EffectCost> World::effectCosts() const {
+    std::vector<EffectCost> costs;
+    for (std::size_t i = 0; i < effects_.size(); ++i)
+        costs.push_back({effects_[i]->name(), i < effectSeconds_.size() ? effectSeconds_[i] : 0.0});
+    if (contacts_ && effectSeconds_.size() > effects_.size())
+        costs.push_back({"contacts", effectSeconds_.back()});
+    return costs;
+}
+
+void World::resetProfile() {
+    std::fill(effectSeconds_.begin(), effectSeconds_.end(), 0.0);
+    profile_.reset();
+}
+
+// Expensive invariants (PHASEBOX_EXPENSIVE_CHECKS): after the stages that end a step, the
+// layout is consistent with the objects, the state kept is finite, and the ledger balances
+// when recomputed from scratch (which checks the summary the integrator fused into its pass).
+void World::checkInvariants([[maybe_unused]] StepStage after) const {
+#if PHASEBOX_EXPENSIVE_CHECKS
+    auto fail = [](const char* what) {
+        std::fprintf(stderr, "phasebox: invariant violated: %s\n", what);
+        std::abort();
+    };
+    const int n = layout_.dimension();
+    if (q_[current_].size() != n || u_[current_].size() != n || mass_.size() != n ||
+        invMass_.size() != n)
+        fail("state vectors do not match the layout");
+    if (layout_.dynamicParticles != static_cast<int>(dynamicParticles_.size()) ||
+        layout_.dynamicBoxes != static_cast<int>(dynamicBoxes_.size()))
+        fail("layout counts do not match the objects");
+    for (int k = 0; k < layout_.dynamicParticles; ++k)
+        if (bodies_.particles[dynamicParticles_[k]].dof != layout_.particleDof(k))
+            fail("a particle's dof does not match the layout");
+    for (int k = 0; k < layout_.dynamicBoxes; ++k)
+        if (bodies_.boxes[dynamicBoxes_[k]].dof != layout_.boxDof(k))
+            fail("a box's dof does not match the layout");
+    if (!(mass_.array() > 0.0).all() || !mass_.allFinite()) fail("a mass is not positive and finite");
+    if (after == StepStage::Guard) {
+        // Whatever the verdict, the state the world keeps is a good one.
+        if (!q_[current_].allFinite() || !u_[current_].allFinite()) fail("the kept state is not finite");
+    }
+    if (after == StepStage::Ledger && std::isfinite(ledger_.drift)) {
+        // Recomputed term by term, without the mass-moment shortcut.
+        const Vec& q = q_[current_];
+        const Vec& u = u_[current_];
+        double kinetic = 0.0;
+        for (int i = 0; i < n; ++i) kinetic += 0.5 * mass_[i] * u[i] * u[i];
+        double potential = 0.0;
+        for (const auto& e : effects_) potential += e->potentialEnergy(q);
+        const double drift = kinetic + potential - ledger_.workNc - ledger_.initial;
+        const double scale = 1.0 + std::abs(kinetic) + std::abs(potential) + std::abs(ledger_.workNc) +
+                             std::abs(ledger_.initial);
+        if (std::abs(kinetic - ledger_.kinetic) > 1e-9 * scale ||
+            std::abs(drift - ledger_.drift) > 1e-9 * scale)
+            fail("the energy ledger does not balance");
+    }
+#endif
+}
+
+}  // namespace phasebox
