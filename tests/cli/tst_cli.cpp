@@ -9,6 +9,8 @@
 #include <QTest>
 
 #include "CliTestSupport.h"
+#include "app/io/SceneIO.h"
+#include "physics/scene/SceneLibrary.h"
 
 #include <cmath>
 
@@ -207,6 +209,19 @@ private slots:
         QCOMPARE(o["sim_time"].toDouble(), 10.0);
         const QJsonObject e = o["energy"].toObject();
         QVERIFY(e["kinetic"].toDouble() + e["potential"].toDouble() <= e["initial"].toDouble() + 1e-9);
+    }
+
+    void clothBlowUpIsReported() {
+        // The 40 x 40 cloth of tests/stability/tst_cloth.cpp (stiffness 2e4, dt = 1/60) under
+        // symplectic Euler: the run stops with status 1 and names a cloth node.
+        const QString path = dir_.filePath("cloth.json");
+        QString error;
+        QVERIFY2(phasebox::SceneIO::save(phasebox::scenes::cloth(40, 2e4), path, &error),
+                 qPrintable(error));
+        const Result r = cli({"run", path, "--integrator", "symplectic_euler", "--duration", "2"});
+        QCOMPARE(r.status, 1);
+        const QString err = QString::fromUtf8(r.err);
+        QVERIFY2(err.contains("diverged at t = ") && err.contains("cloth["), qPrintable(err));
     }
 
     void badInputExitsTwo_data() {
