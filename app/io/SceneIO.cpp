@@ -1,6 +1,7 @@
 #include "app/io/SceneIO.h"
 
 #include "app/io/JsonText.h"
+#include "physics/scene/SceneSchema.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -27,43 +28,26 @@ namespace {
 // multi-gigabyte file from being read into memory.
 constexpr qint64 kMaxFileBytes = qint64(64) * 1024 * 1024;
 
-constexpr std::string_view kFormatName = "phasebox-scene";
-
-// The keys of every object the format defines, in the contract's order. Keys outside these
-// lists are ignored unless they look like a misspelling of one of them.
+// Keys outside a table are ignored unless they look like a misspelling of one of its keys.
 using KeyList = std::span<const std::string_view>;
-constexpr std::string_view kTopKeys[] = {"format",     "version", "name",      "description",
-                                         "simulation", "effects", "particles", "boxes",
-                                         "planes",     "springs", "cloths"};
-constexpr std::string_view kSimulationKeys[] = {
-    "integrator", "dt", "substeps", "tolerance", "newton_iterations", "duration", "solver"};
-constexpr std::string_view kEffectKeys[] = {
-    "gravity", "drag", "newtonian_gravity", "buoyancy", "wind", "flocking", "particle_collisions",
-    "coulomb"};
-constexpr std::string_view kGravityKeys[] = {"g"};
-constexpr std::string_view kDragKeys[] = {"linear", "quadratic", "angular"};
-constexpr std::string_view kNewtonianKeys[] = {"G", "attractors", "mutual", "softening"};
-constexpr std::string_view kAttractorKeys[] = {"position", "mass"};
-constexpr std::string_view kBuoyancyKeys[] = {"fluid_density", "surface_y", "drag"};
-constexpr std::string_view kWindKeys[] = {"velocity", "drag"};
-constexpr std::string_view kFlockingKeys[] = {"radius", "separation", "alignment", "cohesion",
-                                              "max_speed"};
-constexpr std::string_view kCollisionKeys[] = {"restitution"};
-constexpr std::string_view kCoulombKeys[] = {"k", "softening"};
-constexpr std::string_view kParticleKeys[] = {
-    "id", "position", "velocity", "mass", "radius", "pinned", "restitution", "friction", "charge"};
-constexpr std::string_view kBoxKeys[] = {"id",       "position",         "size",       "angle",
-                                         "velocity", "angular_velocity", "mass",       "density",
-                                         "static",   "friction",         "restitution"};
-constexpr std::string_view kPlaneKeys[] = {"id", "point", "normal", "friction", "restitution"};
-constexpr std::string_view kSpringKeys[] = {
-    "id", "a", "b", "anchor", "a_point", "b_point", "stiffness", "damping", "rest_length"};
-constexpr std::string_view kClothKeys[] = {"id",        "origin",  "size",   "resolution", "mass",
-                                           "stiffness", "damping", "radius", "pinned"};
-constexpr std::string_view kClothStiffnessKeys[] = {"structural", "shear", "bend"};
+namespace key = schema::key;
 
 const char* const kXY = "[x, y]";
 const char* const kWH = "[w, h]";
+
+// What the two numbers of a pair are called in messages.
+const char* pairHint(schema::Type type) {
+    switch (type) {
+        case schema::Type::Size:
+            return kWH;
+        case schema::Type::Grid:
+            return "[nx, ny]";
+        case schema::Type::Pinning:
+            return "[i, j]";
+        default:
+            return kXY;
+    }
+}
 
 QString toQString(std::string_view s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
@@ -301,13 +285,16 @@ private:
     QString path_;
 };
 
-// Reads every element of an optional array of objects with readOne(fields, desc).
-template <typename Desc, typename ReadOne>
-void readObjects(Fields& top, std::string_view key, KeyList known, std::vector<Desc>& out,
-                 ReadOne readOne) {
+template <typename D>
+void readFields(Fields& f, D& d);
+
+// Reads every element of an optional array of objects by their table.
+template <typename Desc>
+void readObjects(Fields& top, std::string_view key, std::vector<Desc>& out) {
     const QJsonValue v = top.get(key);
     QJsonArray array;
     if (v.isUndefined() || !top.reader().array(v, top.at(key), array)) return;
+    const std::vector<std::string_view> known = schema::keysOf(schema::table<Desc>());
     out.reserve(static_cast<std::size_t>(array.size()));
     for (qsizetype i = 0; i < array.size(); ++i) {
         const QString path = index(top.at(key), i);
@@ -315,38 +302,104 @@ void readObjects(Fields& top, std::string_view key, KeyList known, std::vector<D
         Desc desc;
         if (top.reader().object(array[i], path, object)) {
             Fields fields(top.reader(), object, path, known);
-            readOne(fields, desc);
+            readFields(fields, desc);
         }
         out.push_back(std::move(desc));
     }
 }
 
-void readSimulation(Fields& f, SimulationDesc& sim) {
-    f.string("integrator", sim.integrator);
-    f.number("dt", sim.dt);
-    f.integer("substeps", sim.substeps);
-    f.number("tolerance", sim.tolerance);
-    f.integer("newton_iterations", sim.newtonIterations);
-    f.number("duration", sim.duration);
-    // The solver's keys belong to the engine (SceneDesc.h lists the ones it reads); a near miss
-    // of one is a typo like any other, and the rest are kept so that they round-trip.
-    const QJsonValue solver = f.get("solver");
+// The contact solver's settings belong to the engine (schema::solverSettings() lists the ones
+// it reads); a near miss of one is a typo like any other, and the rest are kept so that they
+// round-trip.
+void readSolver(Fields& f, std::string_view key, std::map<std::string, double>& solver) {
+    const QJsonValue v = f.get(key);
     QJsonObject object;
-    if (solver.isUndefined() || !f.reader().object(solver, f.at("solver"), object)) return;
-    f.reader().checkKeys(object, f.at("solver"), kSolverKeys);
+    if (v.isUndefined() || !f.reader().object(v, f.at(key), object)) return;
+    std::vector<std::string_view> known;
+    for (const schema::SolverSetting& setting : schema::solverSettings())
+        known.push_back(setting.key);
+    f.reader().checkKeys(object, f.at(key), known);
     for (auto it = object.begin(); it != object.end(); ++it) {
         double value = 0.0;
-        if (f.reader().number(it.value(), join(f.at("solver"), it.key()), value))
-            sim.solver[it.key().toStdString()] = value;
+        if (f.reader().number(it.value(), join(f.at(key), it.key()), value))
+            solver[it.key().toStdString()] = value;
+    }
+}
+
+void readPinning(Fields& f, std::string_view key, schema::Pinning& pinned) {
+    const QJsonValue v = f.get(key);
+    if (v.isUndefined()) return;
+    Reader& r = f.reader();
+    if (v.isString()) {
+        pinned = v.toString().toStdString();
+        return;
+    }
+    if (!v.isArray()) {
+        r.fail(f.at(key), QStringLiteral("must be a string (top, top_corners, left, none) "
+                                         "or an array of [i, j] pairs"));
+        return;
+    }
+    const QJsonArray array = v.toArray();
+    std::vector<std::array<int, 2>> nodes;
+    nodes.reserve(static_cast<std::size_t>(array.size()));
+    for (qsizetype k = 0; k < array.size(); ++k) {
+        std::array<int, 2> node{0, 0};
+        r.intPair(array[k], index(f.at(key), k), node, pairHint(schema::Type::Pinning));
+        nodes.push_back(node);
+    }
+    pinned = std::move(nodes);
+}
+
+// Every field of d's table, in its order. Absent fields keep d's value, the default.
+template <typename D>
+void readFields(Fields& f, D& d) {
+    for (const schema::Field<D>& field : schema::table<D>().fields) {
+        const std::string_view key = field.key;
+        const Need need = field.need == schema::Need::Required ? Need::Required : Need::Optional;
+        if (!field.exclusiveWith.empty() && f.has(key) && f.has(field.exclusiveWith))
+            f.reader().fail(f.path(), QStringLiteral("give %1 or %2, not both")
+                                          .arg(toQString(key), toQString(field.exclusiveWith)));
+        std::visit(
+            [&]<typename V>(V D::*member) {
+                V& v = d.*member;
+                if constexpr (std::is_same_v<V, double> || std::is_same_v<V, std::string>) {
+                    if constexpr (std::is_same_v<V, double>) f.number(key, v, need);
+                    else f.string(key, v, need);
+                } else if constexpr (std::is_same_v<V, std::optional<double>>) {
+                    f.number(key, v);
+                } else if constexpr (std::is_same_v<V, std::optional<std::string>>) {
+                    f.string(key, v);
+                } else if constexpr (std::is_same_v<V, int>) {
+                    f.integer(key, v);
+                } else if constexpr (std::is_same_v<V, bool>) {
+                    f.boolean(key, v);
+                } else if constexpr (std::is_same_v<V, Point2>) {
+                    f.point(key, v, need, pairHint(field.type));
+                } else if constexpr (std::is_same_v<V, std::optional<Point2>>) {
+                    f.point(key, v);
+                } else if constexpr (std::is_same_v<V, std::array<int, 2>>) {
+                    if (const QJsonValue value = f.get(key); !value.isUndefined())
+                        f.reader().intPair(value, f.at(key), v, pairHint(field.type));
+                } else if constexpr (std::is_same_v<V, ClothStiffnessDesc>) {
+                    if (auto nested = f.object(key, schema::keysOf(schema::table<V>())))
+                        readFields(*nested, v);
+                } else if constexpr (std::is_same_v<V, std::vector<AttractorDesc>>) {
+                    readObjects(f, key, v);
+                } else if constexpr (std::is_same_v<V, schema::Pinning>) {
+                    readPinning(f, key, v);
+                } else if constexpr (std::is_same_v<V, std::map<std::string, double>>) {
+                    readSolver(f, key, v);
+                }
+            },
+            field.member);
     }
 }
 
 // An effect is present when given as an object (its fields) or as true (all defaults); false
 // and null mean absent, so that a file (or a script writing one) can switch an effect off
 // without deleting its key.
-template <typename Desc, typename ReadFields>
-void readEffect(Fields& effects, std::string_view key, KeyList known, std::optional<Desc>& out,
-                ReadFields readFields) {
+template <typename Desc>
+void readEffect(Fields& effects, std::string_view key, std::optional<Desc>& out) {
     const QJsonValue v = effects.get(key);
     if (v.isUndefined() || v.isNull() || (v.isBool() && !v.toBool())) return;
     if (v.isBool()) {
@@ -358,159 +411,26 @@ void readEffect(Fields& effects, std::string_view key, KeyList known, std::optio
         return;
     }
     Desc desc;
-    Fields fields(effects.reader(), v.toObject(), effects.at(key), known);
+    Fields fields(effects.reader(), v.toObject(), effects.at(key),
+                  schema::keysOf(schema::table<Desc>()));
     readFields(fields, desc);
     out = std::move(desc);
 }
 
-void readEffects(Fields& fx, EffectsDesc& out) {
-    readEffect(fx, "gravity", kGravityKeys, out.gravity,
-               [](Fields& f, GravityDesc& d) { f.point("g", d.g); });
-    readEffect(fx, "drag", kDragKeys, out.drag, [](Fields& f, DragDesc& d) {
-        f.number("linear", d.linear);
-        f.number("quadratic", d.quadratic);
-        f.number("angular", d.angular);
-    });
-    readEffect(fx, "newtonian_gravity", kNewtonianKeys, out.newtonianGravity,
-               [](Fields& f, NewtonianGravityDesc& d) {
-                   f.number("G", d.G);
-                   readObjects(f, "attractors", kAttractorKeys, d.attractors,
-                               [](Fields& a, AttractorDesc& attractor) {
-                                   a.point("position", attractor.position);
-                                   a.number("mass", attractor.mass);
-                               });
-                   f.boolean("mutual", d.mutual);
-                   f.number("softening", d.softening);
-               });
-    readEffect(fx, "buoyancy", kBuoyancyKeys, out.buoyancy, [](Fields& f, BuoyancyDesc& d) {
-        f.number("fluid_density", d.fluidDensity);
-        f.number("surface_y", d.surfaceY);
-        f.number("drag", d.drag);
-    });
-    readEffect(fx, "wind", kWindKeys, out.wind, [](Fields& f, WindDesc& d) {
-        f.point("velocity", d.velocity);
-        f.number("drag", d.drag);
-    });
-    readEffect(fx, "flocking", kFlockingKeys, out.flocking, [](Fields& f, FlockingDesc& d) {
-        f.number("radius", d.radius);
-        f.number("separation", d.separation);
-        f.number("alignment", d.alignment);
-        f.number("cohesion", d.cohesion);
-        f.number("max_speed", d.maxSpeed);
-    });
-    readEffect(
-        fx, "particle_collisions", kCollisionKeys, out.particleCollisions,
-        [](Fields& f, ParticleCollisionsDesc& d) { f.number("restitution", d.restitution); });
-    readEffect(fx, "coulomb", kCoulombKeys, out.coulomb, [](Fields& f, CoulombDesc& d) {
-        f.number("k", d.k);
-        f.number("softening", d.softening);
-    });
-}
-
-void readParticle(Fields& f, ParticleDesc& p) {
-    f.string("id", p.id);
-    f.point("position", p.position, Need::Required);
-    f.point("velocity", p.velocity);
-    f.number("mass", p.mass);
-    f.number("radius", p.radius);
-    f.boolean("pinned", p.pinned);
-    f.number("restitution", p.restitution);
-    f.number("friction", p.friction);
-    f.number("charge", p.charge);
-}
-
-void readBox(Fields& f, BoxDesc& b) {
-    f.string("id", b.id);
-    f.point("position", b.position, Need::Required);
-    f.point("size", b.size, Need::Required, kWH);
-    f.number("angle", b.angle);
-    f.point("velocity", b.velocity);
-    f.number("angular_velocity", b.angularVelocity);
-    // Which one the author gave is part of the scene: a file that states a density should
-    // still state a density after resizing the box and saving.
-    if (f.has("mass") && f.has("density"))
-        f.reader().fail(f.path(), QStringLiteral("give mass or density, not both"));
-    f.number("mass", b.mass);
-    f.number("density", b.density);
-    f.boolean("static", b.isStatic);
-    f.number("friction", b.friction);
-    f.number("restitution", b.restitution);
-}
-
-void readPlane(Fields& f, PlaneDesc& p) {
-    f.string("id", p.id);
-    f.point("point", p.point, Need::Required);
-    f.point("normal", p.normal, Need::Required);
-    f.number("friction", p.friction);
-    f.number("restitution", p.restitution);
-}
-
-void readSpring(Fields& f, SpringDesc& s) {
-    f.string("id", s.id);
-    f.string("a", s.a, Need::Required);
-    f.string("b", s.b);
-    f.point("anchor", s.anchor);
-    f.point("a_point", s.aPoint);
-    f.point("b_point", s.bPoint);
-    f.number("stiffness", s.stiffness, Need::Required);
-    f.number("damping", s.damping);
-    f.number("rest_length", s.restLength);
-}
-
-void readClothPinned(Fields& f, ClothDesc& c) {
-    const QJsonValue v = f.get("pinned");
-    if (v.isUndefined()) return;
-    Reader& r = f.reader();
-    if (v.isString()) {
-        c.pinned = v.toString().toStdString();
-        return;
-    }
-    if (!v.isArray()) {
-        r.fail(f.at("pinned"), QStringLiteral("must be a string (top, top_corners, left, none) "
-                                              "or an array of [i, j] pairs"));
-        return;
-    }
-    const QJsonArray array = v.toArray();
-    std::vector<std::array<int, 2>> nodes;
-    nodes.reserve(static_cast<std::size_t>(array.size()));
-    for (qsizetype k = 0; k < array.size(); ++k) {
-        std::array<int, 2> node{0, 0};
-        r.intPair(array[k], index(f.at("pinned"), k), node, "[i, j]");
-        nodes.push_back(node);
-    }
-    c.pinned = std::move(nodes);
-}
-
-void readCloth(Fields& f, ClothDesc& c) {
-    f.string("id", c.id, Need::Required);
-    f.point("origin", c.origin);
-    f.point("size", c.size, Need::Optional, kWH);
-    if (const QJsonValue v = f.get("resolution"); !v.isUndefined())
-        f.reader().intPair(v, f.at("resolution"), c.resolution, "[nx, ny]");
-    f.number("mass", c.mass);
-    if (auto stiffness = f.object("stiffness", kClothStiffnessKeys)) {
-        stiffness->number("structural", c.stiffness.structural);
-        stiffness->number("shear", c.stiffness.shear);
-        stiffness->number("bend", c.stiffness.bend);
-    }
-    f.number("damping", c.damping);
-    f.number("radius", c.radius);
-    readClothPinned(f, c);
-}
-
 // format and version decide whether the rest can be read at all; false = stop here.
 bool readHeader(Reader& r, const QJsonObject& top) {
-    const QJsonValue format = top.value(QStringLiteral("format"));
+    const QString formatKey = toQString(key::format);
+    const QJsonValue format = top.value(formatKey);
     if (format.isUndefined()) {
-        r.fail(QStringLiteral("format"), QStringLiteral("is required"));
-    } else if (format.toString() != toQString(kFormatName)) {
-        QString what = QStringLiteral("must be \"%1\"").arg(toQString(kFormatName));
+        r.fail(formatKey, QStringLiteral("is required"));
+    } else if (format.toString() != toQString(schema::kFormatName)) {
+        QString what = QStringLiteral("must be \"%1\"").arg(toQString(schema::kFormatName));
         if (format.isString()) what += QStringLiteral(" (got \"%1\")").arg(format.toString());
-        r.fail(QStringLiteral("format"), what);
+        r.fail(formatKey, what);
     }
 
-    const QJsonValue version = top.value(QStringLiteral("version"));
-    const QString path = QStringLiteral("version");
+    const QString path = toQString(key::version);
+    const QJsonValue version = top.value(path);
     const double v = version.toDouble();
     if (version.isUndefined()) {
         r.fail(path, QStringLiteral("is required"));
@@ -527,10 +447,6 @@ bool readHeader(Reader& r, const QJsonObject& top) {
     return r.clean();
 }
 
-// ---- writing ----
-
-// A JSON writer that keeps the contract's key order (QJsonObject sorts its keys) and prints
-// numbers in their shortest form that reads back as the same double.
 }  // namespace
 
 SceneLoadResult SceneIO::load(const QString& path) {
@@ -587,17 +503,19 @@ SceneLoadResult SceneIO::parse(const QByteArray& text, const QString& sourceName
     }
 
     SceneDesc scene;
-    Fields fields(r, top, QString(), kTopKeys);
-    fields.string("name", scene.name);
-    fields.string("description", scene.description);
-    if (auto simulation = fields.object("simulation", kSimulationKeys))
-        readSimulation(*simulation, scene.simulation);
-    if (auto effects = fields.object("effects", kEffectKeys)) readEffects(*effects, scene.effects);
-    readObjects(fields, "particles", kParticleKeys, scene.particles, readParticle);
-    readObjects(fields, "boxes", kBoxKeys, scene.boxes, readBox);
-    readObjects(fields, "planes", kPlaneKeys, scene.planes, readPlane);
-    readObjects(fields, "springs", kSpringKeys, scene.springs, readSpring);
-    readObjects(fields, "cloths", kClothKeys, scene.cloths, readCloth);
+    Fields fields(r, top, QString(), schema::topKeys());
+    fields.string(key::name, scene.name);
+    fields.string(key::description, scene.description);
+    if (auto simulation =
+            fields.object(key::simulation, schema::keysOf(schema::table<SimulationDesc>())))
+        readFields(*simulation, scene.simulation);
+    if (auto effects = fields.object(key::effects, schema::effectKeys())) {
+        schema::forEachEffect([&](const auto& table, auto member) {
+            readEffect(*effects, table.key, scene.effects.*member);
+        });
+    }
+    schema::forEachObjectKind(
+        [&](const auto& table, auto array) { readObjects(fields, table.key, scene.*array); });
 
     // Ranges and references are checked only on a fully read scene: after a type error the
     // description holds defaults in that place, and checking them would report made-up values.

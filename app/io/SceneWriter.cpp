@@ -1,4 +1,5 @@
 #include "app/io/SceneIO.h"
+#include "physics/scene/SceneSchema.h"
 
 #include <QSaveFile>
 
@@ -15,8 +16,6 @@
 namespace phasebox {
 
 namespace {
-
-constexpr std::string_view kFormatName = "phasebox-scene";
 
 class Writer {
 public:
@@ -83,17 +82,9 @@ public:
         key(k);
         integer(v);
     }
-    void field(std::string_view k, bool v) {
-        key(k);
-        boolean(v);
-    }
     void field(std::string_view k, const std::string& v) {
         key(k);
         string(v);
-    }
-    void field(std::string_view k, const Point2& v) {
-        key(k);
-        point(v);
     }
 
 private:
@@ -175,213 +166,77 @@ private:
     bool afterKey_ = false;
 };
 
-void writeSimulation(Writer& w, const SimulationDesc& sim) {
+// Every field of d that is present, in its table's order.
+template <typename D>
+void writeFields(Writer& w, const D& d) {
     w.beginObject();
-    w.field("integrator", sim.integrator);
-    w.field("dt", sim.dt);
-    w.field("substeps", sim.substeps);
-    w.field("tolerance", sim.tolerance);
-    w.field("newton_iterations", sim.newtonIterations);
-    w.field("duration", sim.duration);
-    if (!sim.solver.empty()) {
-        w.key("solver");
-        w.beginObject();
-        for (const auto& [name, value] : sim.solver) w.field(name, value);
-        w.endObject();
+    for (const schema::Field<D>& field : schema::table<D>().fields) {
+        if (!schema::isPresent(field, d)) continue;
+        w.key(field.key);
+        std::visit(
+            [&]<typename V>(V D::*member) {
+                const V& v = d.*member;
+                if constexpr (std::is_same_v<V, double>) w.number(v);
+                else if constexpr (std::is_same_v<V, std::optional<double>>) w.number(*v);
+                else if constexpr (std::is_same_v<V, int>) w.integer(v);
+                else if constexpr (std::is_same_v<V, bool>) w.boolean(v);
+                else if constexpr (std::is_same_v<V, std::string>) w.string(v);
+                else if constexpr (std::is_same_v<V, std::optional<std::string>>) w.string(*v);
+                else if constexpr (std::is_same_v<V, Point2>) w.point(v);
+                else if constexpr (std::is_same_v<V, std::optional<Point2>>) w.point(*v);
+                else if constexpr (std::is_same_v<V, std::array<int, 2>>) w.intPair(v);
+                else if constexpr (std::is_same_v<V, ClothStiffnessDesc>) writeFields(w, v);
+                else if constexpr (std::is_same_v<V, std::vector<AttractorDesc>>) {
+                    w.beginArray();
+                    for (const AttractorDesc& item : v) writeFields(w, item);
+                    w.endArray();
+                } else if constexpr (std::is_same_v<V, schema::Pinning>) {
+                    if (const auto* mode = std::get_if<std::string>(&v)) {
+                        w.string(*mode);
+                    } else {
+                        w.beginArray(true);
+                        for (const auto& node : std::get<std::vector<std::array<int, 2>>>(v))
+                            w.intPair(node);
+                        w.endArray();
+                    }
+                } else if constexpr (std::is_same_v<V, std::map<std::string, double>>) {
+                    w.beginObject();
+                    for (const auto& [name, value] : v) w.field(name, value);
+                    w.endObject();
+                }
+            },
+            field.member);
     }
     w.endObject();
-}
-
-void writeEffects(Writer& w, const EffectsDesc& fx) {
-    w.beginObject();
-    if (fx.gravity) {
-        w.key("gravity");
-        w.beginObject();
-        w.field("g", fx.gravity->g);
-        w.endObject();
-    }
-    if (fx.drag) {
-        w.key("drag");
-        w.beginObject();
-        w.field("linear", fx.drag->linear);
-        w.field("quadratic", fx.drag->quadratic);
-        w.field("angular", fx.drag->angular);
-        w.endObject();
-    }
-    if (fx.newtonianGravity) {
-        const NewtonianGravityDesc& ng = *fx.newtonianGravity;
-        w.key("newtonian_gravity");
-        w.beginObject();
-        w.field("G", ng.G);
-        w.key("attractors");
-        w.beginArray();
-        for (const AttractorDesc& a : ng.attractors) {
-            w.beginObject();
-            w.field("position", a.position);
-            w.field("mass", a.mass);
-            w.endObject();
-        }
-        w.endArray();
-        w.field("mutual", ng.mutual);
-        w.field("softening", ng.softening);
-        w.endObject();
-    }
-    if (fx.buoyancy) {
-        w.key("buoyancy");
-        w.beginObject();
-        w.field("fluid_density", fx.buoyancy->fluidDensity);
-        w.field("surface_y", fx.buoyancy->surfaceY);
-        w.field("drag", fx.buoyancy->drag);
-        w.endObject();
-    }
-    if (fx.wind) {
-        w.key("wind");
-        w.beginObject();
-        w.field("velocity", fx.wind->velocity);
-        w.field("drag", fx.wind->drag);
-        w.endObject();
-    }
-    if (fx.flocking) {
-        w.key("flocking");
-        w.beginObject();
-        w.field("radius", fx.flocking->radius);
-        w.field("separation", fx.flocking->separation);
-        w.field("alignment", fx.flocking->alignment);
-        w.field("cohesion", fx.flocking->cohesion);
-        w.field("max_speed", fx.flocking->maxSpeed);
-        w.endObject();
-    }
-    if (fx.particleCollisions) {
-        w.key("particle_collisions");
-        w.beginObject();
-        w.field("restitution", fx.particleCollisions->restitution);
-        w.endObject();
-    }
-    if (fx.coulomb) {
-        w.key("coulomb");
-        w.beginObject();
-        w.field("k", fx.coulomb->k);
-        w.field("softening", fx.coulomb->softening);
-        w.endObject();
-    }
-    w.endObject();
-}
-
-void writeId(Writer& w, const std::string& id) {
-    if (!id.empty()) w.field("id", id);
-}
-
-void writeParticle(Writer& w, const ParticleDesc& p) {
-    w.beginObject();
-    writeId(w, p.id);
-    w.field("position", p.position);
-    w.field("velocity", p.velocity);
-    w.field("mass", p.mass);
-    w.field("radius", p.radius);
-    w.field("pinned", p.pinned);
-    w.field("restitution", p.restitution);
-    w.field("friction", p.friction);
-    w.field("charge", p.charge);
-    w.endObject();
-}
-
-void writeBox(Writer& w, const BoxDesc& b) {
-    w.beginObject();
-    writeId(w, b.id);
-    w.field("position", b.position);
-    w.field("size", b.size);
-    w.field("angle", b.angle);
-    w.field("velocity", b.velocity);
-    w.field("angular_velocity", b.angularVelocity);
-    if (b.mass)
-        w.field("mass", *b.mass);
-    else
-        w.field("density", b.density);
-    w.field("static", b.isStatic);
-    w.field("friction", b.friction);
-    w.field("restitution", b.restitution);
-    w.endObject();
-}
-
-void writePlane(Writer& w, const PlaneDesc& p) {
-    w.beginObject();
-    writeId(w, p.id);
-    w.field("point", p.point);
-    w.field("normal", p.normal);
-    w.field("friction", p.friction);
-    w.field("restitution", p.restitution);
-    w.endObject();
-}
-
-void writeSpring(Writer& w, const SpringDesc& s) {
-    w.beginObject();
-    writeId(w, s.id);
-    w.field("a", s.a);
-    if (s.b) w.field("b", *s.b);
-    if (s.anchor) w.field("anchor", *s.anchor);
-    w.field("a_point", s.aPoint);
-    w.field("b_point", s.bPoint);
-    w.field("stiffness", s.stiffness);
-    w.field("damping", s.damping);
-    if (s.restLength) w.field("rest_length", *s.restLength);
-    w.endObject();
-}
-
-void writeCloth(Writer& w, const ClothDesc& c) {
-    w.beginObject();
-    w.field("id", c.id);
-    w.field("origin", c.origin);
-    w.field("size", c.size);
-    w.key("resolution");
-    w.intPair(c.resolution);
-    w.field("mass", c.mass);
-    w.key("stiffness");
-    w.beginObject();
-    w.field("structural", c.stiffness.structural);
-    w.field("shear", c.stiffness.shear);
-    w.field("bend", c.stiffness.bend);
-    w.endObject();
-    w.field("damping", c.damping);
-    w.field("radius", c.radius);
-    if (const auto* mode = std::get_if<std::string>(&c.pinned)) {
-        w.field("pinned", *mode);
-    } else {
-        w.key("pinned");
-        w.beginArray(true);
-        for (const auto& node : std::get<std::vector<std::array<int, 2>>>(c.pinned))
-            w.intPair(node);
-        w.endArray();
-    }
-    w.endObject();
-}
-
-template <typename Desc, typename WriteOne>
-void writeArray(Writer& w, std::string_view key, const std::vector<Desc>& items,
-                WriteOne writeOne) {
-    w.key(key);
-    w.beginArray();
-    for (const Desc& item : items) writeOne(w, item);
-    w.endArray();
 }
 
 }  // namespace
 
 QByteArray SceneIO::serialize(const SceneDesc& scene) {
+    namespace key = schema::key;
     Writer w;
     w.beginObject();
-    w.field("format", std::string(kFormatName));
-    w.field("version", SceneDesc::kFormatVersion);
-    w.field("name", scene.name);
-    w.field("description", scene.description);
-    w.key("simulation");
-    writeSimulation(w, scene.simulation);
-    w.key("effects");
-    writeEffects(w, scene.effects);
-    writeArray(w, "particles", scene.particles, writeParticle);
-    writeArray(w, "boxes", scene.boxes, writeBox);
-    writeArray(w, "planes", scene.planes, writePlane);
-    writeArray(w, "springs", scene.springs, writeSpring);
-    writeArray(w, "cloths", scene.cloths, writeCloth);
+    w.field(key::format, std::string(schema::kFormatName));
+    w.field(key::version, SceneDesc::kFormatVersion);
+    w.field(key::name, scene.name);
+    w.field(key::description, scene.description);
+    w.key(key::simulation);
+    writeFields(w, scene.simulation);
+    w.key(key::effects);
+    w.beginObject();
+    schema::forEachEffect([&](const auto& table, auto member) {
+        if (const auto& effect = scene.effects.*member) {
+            w.key(table.key);
+            writeFields(w, *effect);
+        }
+    });
+    w.endObject();
+    schema::forEachObjectKind([&](const auto& table, auto array) {
+        w.key(table.key);
+        w.beginArray();
+        for (const auto& item : scene.*array) writeFields(w, item);
+        w.endArray();
+    });
     w.endObject();
     return w.take();
 }

@@ -1,6 +1,7 @@
 #include "physics/scene/SceneDesc.h"
 
 #include "physics/integrators/Integrator.h"
+#include "physics/scene/SceneSchema.h"
 
 #include <charconv>
 #include <cmath>
@@ -79,16 +80,6 @@ public:
         if (v < min) return fails(path, "must be >= " + fmt(min) + " (got " + fmt(v) + ")");
         return true;
     }
-    // Both coordinates finite and within ±limit (lengths by default).
-    void point(const std::string& path, const Point2& p, double limit = L::kMaxLength) {
-        magnitude(path + "[0]", p[0], limit);
-        magnitude(path + "[1]", p[1], limit);
-    }
-    // A positive mass within [kMinMass, max].
-    void mass(const std::string& path, double v, double max = L::kMaxMass) {
-        if (positive(path, v, max)) atLeast(path, v, L::kMinMass);
-    }
-
     static constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
 private:
@@ -100,8 +91,117 @@ private:
     std::vector<SceneIssue>& out_;
 };
 
-std::string at(const char* array, std::size_t i) {
+std::string at(std::string_view array, std::size_t i) {
     return std::string(array) + "[" + std::to_string(i) + "]";
+}
+
+std::string join(const std::string& path, std::string_view key) {
+    return path + "." + std::string(key);
+}
+
+std::string integerText(double v) { return std::to_string(static_cast<long long>(v)); }
+
+// One number against its schema range, with the messages listed at schema::Bound.
+void checkNumber(Checker& check, const std::string& path, double v, const schema::Range& r) {
+    using schema::Bound;
+    switch (r.bound) {
+        case Bound::None:
+            break;
+        case Bound::Positive:
+            if (check.positive(path, v, r.max) && r.min > 0.0) check.atLeast(path, v, r.min);
+            break;
+        case Bound::NonNegative:
+            check.nonNegative(path, v, r.max);
+            break;
+        case Bound::Symmetric:
+            check.magnitude(path, v, r.max);
+            break;
+        case Bound::UnitInterval:
+            check.unitInterval(path, v);
+            break;
+        case Bound::PositiveUpTo:
+            if (check.finite(path, v) && !(v > 0.0 && v <= r.max))
+                check.fail(path, "must be > 0 and <= " + fmt(r.max) + " (got " + fmt(v) + ")");
+            break;
+        case Bound::IntegerAtLeast:
+            if (v < r.min) check.fail(path, "must be an integer >= " + integerText(r.min));
+            else if (v > r.max) check.fail(path, "must be <= " + integerText(r.max));
+            break;
+        case Bound::IntegerBetween:
+            if (check.finite(path, v) && (v < r.min || v > r.max || v != std::floor(v)))
+                check.fail(path, "must be an integer between " + integerText(r.min) + " and " +
+                                     integerText(r.max));
+            break;
+    }
+}
+
+void checkDirection(Checker& check, const std::string& path, const Point2& p) {
+    // The normal is normalised on load: a length that squares to zero or to infinity would
+    // make it NaN, so its length must be representable (its bound is checked before this).
+    const double length = std::hypot(p[0], p[1]);
+    if (p[0] == 0.0 && p[1] == 0.0) check.fail(path, "must be non-zero");
+    else if (std::isfinite(length) && length < L::kMinNormalLength)
+        check.fail(path, "is too short to give a direction (length " + fmt(length) +
+                             "; at least " + fmt(L::kMinNormalLength) + ")");
+}
+
+// The contact solver's settings (engine-defined); others are ignored like any unknown key.
+void checkSolver(Checker& check, const std::string& path,
+                 const std::map<std::string, double>& solver) {
+    for (const auto& [key, value] : solver) {
+        const std::string at = path + "." + key;
+        if (!check.finite(at, value)) continue;
+        for (const schema::SolverSetting& setting : schema::solverSettings())
+            if (setting.key == key) checkNumber(check, at, value, setting.range);
+    }
+}
+
+// Every field of d whose table gives a range or rule, in the table's order; arrays of nested
+// objects after the plain fields. Strings, booleans and a cloth's pinning are the callers'.
+template <typename D>
+void checkFields(Checker& check, const std::string& path, const D& d) {
+    const schema::Table<D>& table = schema::table<D>();
+    for (const bool arrays : {false, true}) {
+        for (const schema::Field<D>& f : table.fields) {
+            if ((f.type == schema::Type::ObjectArray) != arrays || !schema::isPresent(f, d))
+                continue;
+            const std::string here = join(path, f.key);
+            std::visit(
+                [&]<typename V>(V D::*member) {
+                    const V& v = d.*member;
+                    if constexpr (std::is_same_v<V, double> || std::is_same_v<V, int>) {
+                        checkNumber(check, here, v, f.range);
+                    } else if constexpr (std::is_same_v<V, std::optional<double>>) {
+                        checkNumber(check, here, *v, f.range);
+                    } else if constexpr (std::is_same_v<V, Point2> ||
+                                         std::is_same_v<V, std::optional<Point2>> ||
+                                         std::is_same_v<V, std::array<int, 2>>) {
+                        const auto& pair = [&]() -> const auto& {
+                            if constexpr (std::is_same_v<V, std::optional<Point2>>) return *v;
+                            else return v;
+                        }();
+                        for (std::size_t k = 0; k < 2; ++k)
+                            checkNumber(check, here + "[" + std::to_string(k) + "]", pair[k],
+                                        f.range);
+                        if constexpr (!std::is_same_v<V, std::array<int, 2>>)
+                            if (f.rule == schema::Rule::NonZeroDirection)
+                                checkDirection(check, here, pair);
+                    } else if constexpr (std::is_same_v<V, ClothStiffnessDesc>) {
+                        checkFields(check, here, v);
+                    } else if constexpr (std::is_same_v<V, std::vector<AttractorDesc>>) {
+                        for (std::size_t i = 0; i < v.size(); ++i)
+                            checkFields(check, at(here, i), v[i]);
+                    } else if constexpr (std::is_same_v<V, std::map<std::string, double>>) {
+                        checkSolver(check, here, v);
+                    } else if constexpr (std::is_same_v<V, std::string>) {
+                        if (f.rule == schema::Rule::KnownIntegrator && !findIntegrator(v))
+                            check.fail(here, "unknown integrator \"" + v +
+                                                 "\"; known: " + knownIntegratorNames());
+                    }
+                },
+                f.member);
+        }
+    }
 }
 }  // namespace
 
@@ -114,101 +214,39 @@ std::string clothNodeId(const std::string& clothId, int i, int j) {
 }
 
 std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
+    namespace key = schema::key;
     std::vector<SceneIssue> issues;
     Checker check(issues);
 
-    // simulation
+    // Every field against its range in the schema; what ties fields together follows.
     const SimulationDesc& sim = scene.simulation;
-    if (!findIntegrator(sim.integrator))
-        check.fail("simulation.integrator",
-                   "unknown integrator \"" + sim.integrator + "\"; known: " + knownIntegratorNames());
-    if (check.finite("simulation.dt", sim.dt) && !(sim.dt > 0.0 && sim.dt <= 1.0))
-        check.fail("simulation.dt", "must be > 0 and <= 1 (got " + fmt(sim.dt) + ")");
-    if (sim.substeps < 1) check.fail("simulation.substeps", "must be an integer >= 1");
-    check.positive("simulation.tolerance", sim.tolerance, L::kMaxCoefficient);
-    if (sim.newtonIterations < 1)
-        check.fail("simulation.newton_iterations", "must be an integer >= 1");
-    check.positive("simulation.duration", sim.duration, L::kMaxDuration);
-    // The contact solver's keys (engine-defined); others are ignored like any unknown key.
-    for (const auto& [key, value] : sim.solver) {
-        const std::string path = "simulation.solver." + key;
-        if (!check.finite(path, value)) continue;
-        if (key == "iterations" || key == "relax_iterations") {
-            if (value < 0 || value > 1000 || value != std::floor(value))
-                check.fail(path, "must be an integer between 0 and 1000");
-        } else if (key == "contact_hertz" || key == "push_out") {
-            check.positive(path, value, L::kMaxCoefficient);
-        } else if (key == "damping_ratio" || key == "restitution_threshold" ||
-                   key == "speculative_distance") {
-            check.nonNegative(path, value, L::kMaxCoefficient);
-        }
-    }
-
-    // effects
+    checkFields(check, std::string(key::simulation), sim);
     const EffectsDesc& fx = scene.effects;
-    if (fx.gravity) check.point("effects.gravity.g", fx.gravity->g, L::kMaxAcceleration);
-    if (fx.drag) {
-        check.nonNegative("effects.drag.linear", fx.drag->linear, L::kMaxCoefficient);
-        check.nonNegative("effects.drag.quadratic", fx.drag->quadratic, L::kMaxCoefficient);
-        check.nonNegative("effects.drag.angular", fx.drag->angular, L::kMaxCoefficient);
-    }
-    if (fx.newtonianGravity) {
-        const auto& ng = *fx.newtonianGravity;
-        check.nonNegative("effects.newtonian_gravity.G", ng.G, L::kMaxCoefficient);
-        check.nonNegative("effects.newtonian_gravity.softening", ng.softening, L::kMaxLength);
-        for (std::size_t i = 0; i < ng.attractors.size(); ++i) {
-            const std::string path = "effects.newtonian_gravity." + at("attractors", i);
-            check.point(path + ".position", ng.attractors[i].position);
-            check.nonNegative(path + ".mass", ng.attractors[i].mass, L::kMaxAttractorMass);
-        }
-    }
-    if (fx.buoyancy) {
-        check.positive("effects.buoyancy.fluid_density", fx.buoyancy->fluidDensity, L::kMaxMass);
-        check.magnitude("effects.buoyancy.surface_y", fx.buoyancy->surfaceY, L::kMaxLength);
-        check.nonNegative("effects.buoyancy.drag", fx.buoyancy->drag, L::kMaxCoefficient);
-        if (!fx.gravity) check.fail("effects.buoyancy", "needs the gravity effect");
-    }
-    if (fx.wind) {
-        check.point("effects.wind.velocity", fx.wind->velocity, L::kMaxSpeed);
-        check.nonNegative("effects.wind.drag", fx.wind->drag, L::kMaxCoefficient);
-    }
-    if (fx.flocking) {
-        check.positive("effects.flocking.radius", fx.flocking->radius, L::kMaxLength);
-        const FlockingDesc& f = *fx.flocking;
-        check.nonNegative("effects.flocking.separation", f.separation, L::kMaxCoefficient);
-        check.nonNegative("effects.flocking.alignment", f.alignment, L::kMaxCoefficient);
-        check.nonNegative("effects.flocking.cohesion", f.cohesion, L::kMaxCoefficient);
-        check.positive("effects.flocking.max_speed", fx.flocking->maxSpeed, L::kMaxSpeed);
-    }
-    if (fx.particleCollisions)
-        check.unitInterval("effects.particle_collisions.restitution",
-                           fx.particleCollisions->restitution);
-    if (fx.coulomb) {
-        check.nonNegative("effects.coulomb.k", fx.coulomb->k, L::kMaxCoefficient);
-        check.nonNegative("effects.coulomb.softening", fx.coulomb->softening, L::kMaxLength);
-    }
+    const std::string effects(key::effects);
+    schema::forEachEffect([&](const auto& table, auto member) {
+        const auto& effect = fx.*member;
+        if (!effect) return;
+        checkFields(check, join(effects, table.key), *effect);
+        if constexpr (std::is_same_v<std::decay_t<decltype(*effect)>, BuoyancyDesc>)
+            if (!fx.gravity) check.fail(join(effects, table.key), "needs the gravity effect");
+    });
 
     // Sizes: past these limits a scene is refused rather than allowed to exhaust memory or
     // hang (the limits are documented in docs/scene-format.md).
-    if (sim.substeps > SceneLimits::kMaxSubsteps)
-        check.fail("simulation.substeps", "must be <= " + std::to_string(SceneLimits::kMaxSubsteps));
-    if (sim.newtonIterations > SceneLimits::kMaxNewtonIterations)
-        check.fail("simulation.newton_iterations",
-                   "must be <= " + std::to_string(SceneLimits::kMaxNewtonIterations));
     long long clothNodes = 0;
     for (const ClothDesc& cl : scene.cloths)
         clothNodes += static_cast<long long>(std::max(0, cl.resolution[0])) * std::max(0, cl.resolution[1]);
     const long long particleCount = static_cast<long long>(scene.particles.size()) + clothNodes;
     if (particleCount > SceneLimits::kMaxParticles)
-        check.fail(scene.cloths.empty() ? "particles" : "cloths",
+        check.fail(std::string(scene.cloths.empty() ? key::particles : key::cloths),
                    "the scene has " + std::to_string(particleCount) + " particles (cloth nodes included); at most " +
                        std::to_string(SceneLimits::kMaxParticles) + " are allowed");
     if (static_cast<long long>(scene.boxes.size()) > SceneLimits::kMaxBoxes)
-        check.fail("boxes", "at most " + std::to_string(SceneLimits::kMaxBoxes) + " boxes are allowed");
+        check.fail(std::string(key::boxes), "at most " + std::to_string(SceneLimits::kMaxBoxes) + " boxes are allowed");
     if (static_cast<long long>(scene.springs.size()) > SceneLimits::kMaxSprings)
-        check.fail("springs", "at most " + std::to_string(SceneLimits::kMaxSprings) + " springs are allowed");
+        check.fail(std::string(key::springs), "at most " + std::to_string(SceneLimits::kMaxSprings) + " springs are allowed");
     if (static_cast<long long>(scene.planes.size()) > SceneLimits::kMaxPlanes)
-        check.fail("planes", "at most " + std::to_string(SceneLimits::kMaxPlanes) + " planes are allowed");
+        check.fail(std::string(key::planes), "at most " + std::to_string(SceneLimits::kMaxPlanes) + " planes are allowed");
     if (!issues.empty() && (particleCount > SceneLimits::kMaxParticles)) return issues;
 
     // ids: unique across the scene (cloth node ids included); springs may refer to particles,
@@ -222,84 +260,38 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
                 check.fail(path, "the default id \"" + id + "\" is already used by " + it->second +
                                      "; give this object an id");
             else
-                check.fail(path + ".id", "duplicate id \"" + id + "\" (also used by " + it->second + ")");
+                check.fail(join(path, key::id), "duplicate id \"" + id + "\" (also used by " + it->second + ")");
         }
         if (body) bodies.insert(id);
     };
 
-    for (std::size_t i = 0; i < scene.particles.size(); ++i) {
-        const ParticleDesc& p = scene.particles[i];
-        const std::string path = at("particles", i);
-        claim(path, particleId(scene, i), true, p.id.empty());
-        check.point(path + ".position", p.position);
-        check.point(path + ".velocity", p.velocity, L::kMaxSpeed);
-        check.mass(path + ".mass", p.mass);
-        check.nonNegative(path + ".radius", p.radius, L::kMaxLength);
-        check.unitInterval(path + ".restitution", p.restitution);
-        check.nonNegative(path + ".friction", p.friction, L::kMaxCoefficient);
-        check.magnitude(path + ".charge", p.charge, L::kMaxCharge);
-    }
-    for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
-        const BoxDesc& b = scene.boxes[i];
-        const std::string path = at("boxes", i);
-        claim(path, boxId(scene, i), true, b.id.empty());
-        check.point(path + ".position", b.position);
-        for (int k = 0; k < 2; ++k) {
-            const std::string size = path + ".size[" + std::to_string(k) + "]";
-            if (check.positive(size, b.size[k], L::kMaxLength))
-                check.atLeast(size, b.size[k], L::kMinBoxSize);
+    auto objects = [&](std::string_view array, const auto& items, auto idOf, bool body) {
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            const std::string path = at(array, i);
+            claim(path, idOf(scene, i), body, items[i].id.empty());
+            checkFields(check, path, items[i]);
         }
-        check.magnitude(path + ".angle", b.angle, L::kMaxAngle);
-        check.point(path + ".velocity", b.velocity, L::kMaxSpeed);
-        check.magnitude(path + ".angular_velocity", b.angularVelocity, L::kMaxSpeed);
-        if (b.mass) check.mass(path + ".mass", *b.mass);
-        else check.mass(path + ".density", b.density);
-        check.nonNegative(path + ".friction", b.friction, L::kMaxCoefficient);
-        check.unitInterval(path + ".restitution", b.restitution);
-    }
-    for (std::size_t i = 0; i < scene.planes.size(); ++i) {
-        const PlaneDesc& p = scene.planes[i];
-        const std::string path = at("planes", i);
-        claim(path, planeId(scene, i), false, p.id.empty());
-        check.point(path + ".point", p.point);
-        check.point(path + ".normal", p.normal);
-        // The normal is normalised on load: a length that squares to zero or to infinity would
-        // make it NaN, so its length must be representable (the bound is checked just above).
-        const double length = std::hypot(p.normal[0], p.normal[1]);
-        if (p.normal[0] == 0.0 && p.normal[1] == 0.0) check.fail(path + ".normal", "must be non-zero");
-        else if (std::isfinite(length) && length < L::kMinNormalLength)
-            check.fail(path + ".normal", "is too short to give a direction (length " + fmt(length) +
-                                             "; at least " + fmt(L::kMinNormalLength) + ")");
-        check.nonNegative(path + ".friction", p.friction, L::kMaxCoefficient);
-        check.unitInterval(path + ".restitution", p.restitution);
-    }
+    };
+    objects(key::particles, scene.particles, particleId, true);
+    objects(key::boxes, scene.boxes, boxId, true);
+    objects(key::planes, scene.planes, planeId, false);
     for (std::size_t c = 0; c < scene.cloths.size(); ++c) {
         const ClothDesc& cl = scene.cloths[c];
-        const std::string path = at("cloths", c);
-        if (cl.id.empty()) check.fail(path + ".id", "is required");
+        const std::string path = at(key::cloths, c);
+        if (cl.id.empty()) check.fail(join(path, key::id), "is required");
         else claim(path, cl.id, false, false);
-        check.point(path + ".origin", cl.origin);
-        check.positive(path + ".size[0]", cl.size[0], L::kMaxLength);
-        check.positive(path + ".size[1]", cl.size[1], L::kMaxLength);
-        if (cl.resolution[0] < 2) check.fail(path + ".resolution[0]", "must be an integer >= 2");
-        if (cl.resolution[1] < 2) check.fail(path + ".resolution[1]", "must be an integer >= 2");
-        check.mass(path + ".mass", cl.mass);
-        const ClothStiffnessDesc& k = cl.stiffness;
-        check.nonNegative(path + ".stiffness.structural", k.structural, L::kMaxCoefficient);
-        check.nonNegative(path + ".stiffness.shear", k.shear, L::kMaxCoefficient);
-        check.nonNegative(path + ".stiffness.bend", k.bend, L::kMaxCoefficient);
-        check.nonNegative(path + ".damping", cl.damping, L::kMaxCoefficient);
-        check.nonNegative(path + ".radius", cl.radius, L::kMaxLength);
+        checkFields(check, path, cl);
+        const std::string pinned = join(path, key::pinned);
         if (const auto* mode = std::get_if<std::string>(&cl.pinned)) {
             if (*mode != "top" && *mode != "top_corners" && *mode != "left" && *mode != "none")
-                check.fail(path + ".pinned", "unknown pinning \"" + *mode +
-                                                 "\"; known: top, top_corners, left, none");
+                check.fail(pinned, "unknown pinning \"" + *mode +
+                                       "\"; known: top, top_corners, left, none");
         } else {
             const auto& nodes = std::get<std::vector<std::array<int, 2>>>(cl.pinned);
             for (std::size_t k = 0; k < nodes.size(); ++k) {
                 const auto [i, j] = nodes[k];
                 if (i < 0 || i >= cl.resolution[0] || j < 0 || j >= cl.resolution[1])
-                    check.fail(path + ".pinned[" + std::to_string(k) + "]",
+                    check.fail(at(pinned, k),
                                "node [" + std::to_string(i) + "," + std::to_string(j) +
                                    "] is outside the " + std::to_string(cl.resolution[0]) + "x" +
                                    std::to_string(cl.resolution[1]) + " grid");
@@ -312,7 +304,7 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     }
     for (std::size_t i = 0; i < scene.springs.size(); ++i) {
         const SpringDesc& s = scene.springs[i];
-        const std::string path = at("springs", i);
+        const std::string path = at(key::springs, i);
         claim(path, springId(scene, i), false, s.id.empty());
         auto reference = [&](const std::string& where, const std::string& id) {
             if (bodies.count(id)) return;
@@ -323,18 +315,14 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
                 check.fail(where, "\"" + id + "\" is " + it->second +
                                       "; springs attach to particles, boxes and cloth nodes");
         };
-        if (s.a.empty()) check.fail(path + ".a", "is required");
-        else reference(path + ".a", s.a);
+        const std::string a = join(path, key::a), b = join(path, key::b);
+        if (s.a.empty()) check.fail(a, "is required");
+        else reference(a, s.a);
         if (s.b && s.anchor) check.fail(path, "has both b and anchor; give one");
         else if (!s.b && !s.anchor) check.fail(path, "needs either b (an object id) or anchor [x, y]");
-        if (s.b) reference(path + ".b", *s.b);
-        if (s.b && *s.b == s.a) check.fail(path + ".b", "must differ from a");
-        if (s.anchor) check.point(path + ".anchor", *s.anchor);
-        check.point(path + ".a_point", s.aPoint);
-        check.point(path + ".b_point", s.bPoint);
-        check.positive(path + ".stiffness", s.stiffness, L::kMaxCoefficient);
-        check.nonNegative(path + ".damping", s.damping, L::kMaxCoefficient);
-        if (s.restLength) check.nonNegative(path + ".rest_length", *s.restLength, L::kMaxLength);
+        if (s.b) reference(b, *s.b);
+        if (s.b && *s.b == s.a) check.fail(b, "must differ from a");
+        checkFields(check, path, s);
     }
     return issues;
 }

@@ -16,12 +16,6 @@ namespace phasebox {
 
 using Point2 = std::array<double, 2>;
 
-// The keys of simulation.solver that the contact solver reads (docs/scene-format.md).
-inline constexpr std::string_view kSolverKeys[] = {
-    "iterations",   "relax_iterations",      "contact_hertz",
-    "damping_ratio", "push_out",             "restitution_threshold",
-    "speculative_distance"};
-
 struct SimulationDesc {
     std::string integrator = "symplectic_euler";
     double dt = 1.0 / 60.0;

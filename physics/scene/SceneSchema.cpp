@@ -1,0 +1,385 @@
+#include "physics/scene/SceneSchema.h"
+
+namespace phasebox::schema {
+
+namespace {
+
+using L = SceneLimits;
+using T = Type;
+
+// The property editor's ranges: coordinates and speeds far past any classroom scene, and
+// coefficients large enough for stiff springs yet small enough for a spin box.
+constexpr double kFar = 1e6;
+constexpr double kLarge = 1e9;
+constexpr Editor kPlaces{-kFar, kFar, 3, true};      // positions, velocities, angles
+constexpr Editor kMassEditor{0.001, kLarge, 3};
+constexpr Editor kFrictionEditor{0.0, 10.0, 2};
+constexpr Editor kRestitutionEditor{0.0, 1.0, 2};
+constexpr Editor kSwitch{0.0, 1.0, 0};
+
+constexpr Range kMass = positive(L::kMaxMass, L::kMinMass);
+constexpr Range kLength = symmetric(L::kMaxLength);
+constexpr Range kSpeed = symmetric(L::kMaxSpeed);
+constexpr Range kCoefficient = nonNegative(L::kMaxCoefficient);
+
+// An object's id is written only when it has one (empty = the default by position).
+template <typename D>
+bool hasId(const D& d) {
+    return !d.id.empty();
+}
+template <typename D>
+Field<D> idField(std::string_view defaults) {
+    return {.key = key::id, .type = T::String, .member = &D::id, .label = "Id",
+            .description = defaults, .present = hasId<D>};
+}
+
+template <typename D, std::size_t N>
+Table<D> makeTable(std::string_view tableKey, std::string_view description,
+                   const Field<D> (&fields)[N], bool implied = false) {
+    return {tableKey, description, std::span<const Field<D>>(fields), implied};
+}
+
+// ---- simulation ----
+
+const Field<SimulationDesc> kSimulation[] = {
+    {.key = key::integrator, .type = T::String, .member = &SimulationDesc::integrator,
+     .label = "Integrator", .description = "one of the registered integrators (CONTRACT §3)",
+     .rule = Rule::KnownIntegrator},
+    {.key = key::dt, .type = T::Number, .member = &SimulationDesc::dt,
+     .range = {Bound::PositiveUpTo, 1.0, 0.0}, .unit = "s", .label = "Time step",
+     .description = "the frame step: the time one step advances"},
+    {.key = key::substeps, .type = T::Integer, .member = &SimulationDesc::substeps,
+     .range = {Bound::IntegerAtLeast, L::kMaxSubsteps, 1.0}, .label = "Sub-steps",
+     .description = "each step is split into this many equal sub-steps"},
+    {.key = key::tolerance, .type = T::Number, .member = &SimulationDesc::tolerance,
+     .range = positive(L::kMaxCoefficient), .label = "Tolerance",
+     .description = "local error tolerance of the adaptive integrators"},
+    {.key = key::newtonIterations, .type = T::Integer, .member = &SimulationDesc::newtonIterations,
+     .range = {Bound::IntegerAtLeast, L::kMaxNewtonIterations, 1.0}, .label = "Newton iterations",
+     .description = "Newton iterations of implicit_euler (1 = the linearised step)"},
+    {.key = key::duration, .type = T::Number, .member = &SimulationDesc::duration,
+     .range = positive(L::kMaxDuration), .unit = "s", .label = "Duration",
+     .description = "default run length of phasebox-cli run"},
+    {.key = key::solver, .type = T::NumberMap, .member = &SimulationDesc::solver,
+     .label = "Contact solver", .description = "contact solver settings, all optional",
+     .present = [](const SimulationDesc& s) { return !s.solver.empty(); }},
+};
+
+const SolverSetting kSolverSettings[] = {
+    {key::iterations, {Bound::IntegerBetween, 1000.0, 0.0}, "velocity iterations per step"},
+    {key::relaxIterations, {Bound::IntegerBetween, 1000.0, 0.0}, "relax iterations per step"},
+    {key::contactHertz, positive(L::kMaxCoefficient), "stiffness of the soft contact, in Hz"},
+    {key::dampingRatio, nonNegative(L::kMaxCoefficient), "damping ratio of the soft contact"},
+    {key::pushOut, positive(L::kMaxCoefficient), "largest speed that pushes overlaps apart"},
+    {key::restitutionThreshold, nonNegative(L::kMaxCoefficient),
+     "approach speed below which contacts do not bounce"},
+    {key::speculativeDistance, nonNegative(L::kMaxCoefficient),
+     "distance at which contacts are created before touching"},
+};
+
+// ---- effects ----
+
+const Field<GravityDesc> kGravity[] = {
+    {.key = key::g, .type = T::Point, .member = &GravityDesc::g,
+     .range = symmetric(L::kMaxAcceleration), .unit = "m/s\u00b2", .label = "g",
+     .description = "the acceleration of gravity"},
+};
+
+const Field<DragDesc> kDrag[] = {
+    {.key = key::linear, .type = T::Number, .member = &DragDesc::linear, .range = kCoefficient,
+     .unit = "N\u00b7s/m", .label = "Linear b", .description = "F = \u2212b\u00b7v"},
+    {.key = key::quadratic, .type = T::Number, .member = &DragDesc::quadratic,
+     .range = kCoefficient, .unit = "N\u00b7s\u00b2/m\u00b2", .label = "Quadratic c",
+     .description = "F = \u2212c\u00b7\u2016v\u2016\u00b7v"},
+    {.key = key::angular, .type = T::Number, .member = &DragDesc::angular, .range = kCoefficient,
+     .unit = "N\u00b7m\u00b7s", .label = "Angular \u03b2",
+     .description = "torque \u2212\u03b2\u00b7\u03c9 on boxes"},
+};
+
+const Field<AttractorDesc> kAttractor[] = {
+    {.key = key::position, .type = T::Point, .member = &AttractorDesc::position, .range = kLength,
+     .unit = "m", .label = "Position", .description = "a fixed point that attracts"},
+    {.key = key::mass, .type = T::Number, .member = &AttractorDesc::mass,
+     .range = nonNegative(L::kMaxAttractorMass), .unit = "kg", .label = "Mass",
+     .description = "the attractor's mass M"},
+};
+
+const Field<NewtonianGravityDesc> kNewtonianGravity[] = {
+    {.key = key::G, .type = T::Number, .member = &NewtonianGravityDesc::G, .range = kCoefficient,
+     .unit = "N\u00b7m\u00b2/kg\u00b2", .label = "G", .description = "the gravitational constant"},
+    {.key = key::attractors, .type = T::ObjectArray, .member = &NewtonianGravityDesc::attractors,
+     .label = "Attractors", .description = "fixed points that attract every particle"},
+    {.key = key::mutual, .type = T::Bool, .member = &NewtonianGravityDesc::mutual,
+     .label = "Mutual", .description = "also between every pair of dynamic particles"},
+    {.key = key::softening, .type = T::Number, .member = &NewtonianGravityDesc::softening,
+     .range = nonNegative(L::kMaxLength), .unit = "m", .label = "Softening \u03b5",
+     .description = "F \u221d 1/(\u2016r\u2016\u00b2+\u03b5\u00b2)"},
+};
+
+const Field<BuoyancyDesc> kBuoyancy[] = {
+    {.key = key::fluidDensity, .type = T::Number, .member = &BuoyancyDesc::fluidDensity,
+     .range = positive(L::kMaxMass), .unit = "kg/m\u00b2", .label = "Fluid density \u03c1",
+     .description = "density of the fluid below the surface"},
+    {.key = key::surfaceY, .type = T::Number, .member = &BuoyancyDesc::surfaceY,
+     .range = symmetric(L::kMaxLength), .unit = "m", .label = "Surface y",
+     .description = "height of the fluid's surface"},
+    {.key = key::drag, .type = T::Number, .member = &BuoyancyDesc::drag, .range = kCoefficient,
+     .unit = "N\u00b7s/m", .label = "Drag b_f", .description = "extra linear drag while submerged"},
+};
+
+const Field<WindDesc> kWind[] = {
+    {.key = key::velocity, .type = T::Point, .member = &WindDesc::velocity, .range = kSpeed,
+     .unit = "m/s", .label = "Velocity w", .description = "the wind's velocity"},
+    {.key = key::drag, .type = T::Number, .member = &WindDesc::drag, .range = kCoefficient,
+     .unit = "N\u00b7s/m", .label = "Drag b", .description = "F = b\u00b7(w \u2212 v)"},
+};
+
+const Field<FlockingDesc> kFlocking[] = {
+    {.key = key::radius, .type = T::Number, .member = &FlockingDesc::radius,
+     .range = positive(L::kMaxLength), .unit = "m", .label = "Radius",
+     .description = "particles closer than this steer together"},
+    {.key = key::separation, .type = T::Number, .member = &FlockingDesc::separation,
+     .range = kCoefficient, .label = "Separation", .description = "weight of steering apart"},
+    {.key = key::alignment, .type = T::Number, .member = &FlockingDesc::alignment,
+     .range = kCoefficient, .label = "Alignment", .description = "weight of matching velocity"},
+    {.key = key::cohesion, .type = T::Number, .member = &FlockingDesc::cohesion,
+     .range = kCoefficient, .label = "Cohesion", .description = "weight of steering to the centre"},
+    {.key = key::maxSpeed, .type = T::Number, .member = &FlockingDesc::maxSpeed,
+     .range = positive(L::kMaxSpeed), .unit = "m/s", .label = "Maximum speed",
+     .description = "the speed steering aims for at most"},
+};
+
+const Field<ParticleCollisionsDesc> kParticleCollisions[] = {
+    {.key = key::restitution, .type = T::Number, .member = &ParticleCollisionsDesc::restitution,
+     .range = unitInterval(), .label = "Restitution e",
+     .description = "bounce of particle-particle contacts"},
+};
+
+const Field<CoulombDesc> kCoulomb[] = {
+    {.key = key::k, .type = T::Number, .member = &CoulombDesc::k, .range = kCoefficient,
+     .unit = "N\u00b7m\u00b2/C\u00b2", .label = "k", .description = "Coulomb's constant"},
+    {.key = key::softening, .type = T::Number, .member = &CoulombDesc::softening,
+     .range = nonNegative(L::kMaxLength), .unit = "m", .label = "Softening \u03b5",
+     .description = "as for newtonian_gravity"},
+};
+
+// ---- objects ----
+
+const Field<ParticleDesc> kParticle[] = {
+    idField<ParticleDesc>("unique across the scene; default p0, p1, \u2026 by position"),
+    {.key = key::position, .type = T::Point, .member = &ParticleDesc::position, .range = kLength,
+     .unit = "m", .label = "Position", .description = "where the particle starts",
+     .need = Need::Required, .editor = kPlaces},
+    {.key = key::velocity, .type = T::Point, .member = &ParticleDesc::velocity, .range = kSpeed,
+     .unit = "m/s", .label = "Velocity", .description = "its initial velocity", .editor = kPlaces},
+    {.key = key::mass, .type = T::Number, .member = &ParticleDesc::mass, .range = kMass,
+     .unit = "kg", .label = "Mass", .description = "its mass", .editor = kMassEditor},
+    {.key = key::radius, .type = T::Number, .member = &ParticleDesc::radius,
+     .range = nonNegative(L::kMaxLength), .unit = "m", .label = "Radius",
+     .description = "radius of its disk; 0 = a point that touches nothing",
+     .editor = {0.0, kFar, 3}},
+    {.key = key::pinned, .type = T::Bool, .member = &ParticleDesc::pinned, .label = "Pinned",
+     .description = "held in place", .editor = kSwitch},
+    {.key = key::restitution, .type = T::Number, .member = &ParticleDesc::restitution,
+     .range = unitInterval(), .label = "Restitution", .description = "bounce, 0 to 1",
+     .editor = kRestitutionEditor},
+    {.key = key::friction, .type = T::Number, .member = &ParticleDesc::friction,
+     .range = kCoefficient, .label = "Friction", .description = "friction coefficient \u03bc",
+     .editor = kFrictionEditor},
+    {.key = key::charge, .type = T::Number, .member = &ParticleDesc::charge,
+     .range = symmetric(L::kMaxCharge), .unit = "C", .label = "Charge",
+     .description = "electric charge (Coulomb's law between charged particles)",
+     .editor = {-kLarge, kLarge, 3}},
+};
+
+const Field<BoxDesc> kBox[] = {
+    idField<BoxDesc>("unique across the scene; default b0, b1, \u2026 by position"),
+    {.key = key::position, .type = T::Point, .member = &BoxDesc::position, .range = kLength,
+     .unit = "m", .label = "Position", .description = "where its centre starts",
+     .need = Need::Required, .editor = kPlaces},
+    {.key = key::size, .type = T::Size, .member = &BoxDesc::size,
+     .range = positive(L::kMaxLength, L::kMinBoxSize), .unit = "m", .label = "Size",
+     .description = "width and height", .need = Need::Required, .editor = {0.001, kFar, 3}},
+    {.key = key::angle, .type = T::Number, .member = &BoxDesc::angle,
+     .range = symmetric(L::kMaxAngle), .unit = "rad", .label = "Angle",
+     .description = "its initial angle, counter-clockwise", .editor = kPlaces},
+    {.key = key::velocity, .type = T::Point, .member = &BoxDesc::velocity, .range = kSpeed,
+     .unit = "m/s", .label = "Velocity", .description = "its initial velocity", .editor = kPlaces},
+    {.key = key::angularVelocity, .type = T::Number, .member = &BoxDesc::angularVelocity,
+     .range = kSpeed, .unit = "rad/s", .label = "Angular velocity \u03c9",
+     .description = "its initial angular velocity", .editor = kPlaces},
+    // Which of mass and density the author gave is part of the scene: a file that states a
+    // density still states one after the box is resized and saved.
+    {.key = key::mass, .type = T::Number, .member = &BoxDesc::mass, .range = kMass, .unit = "kg",
+     .label = "Mass", .description = "its mass; absent = density \u00b7 w \u00b7 h",
+     .editor = kMassEditor, .exclusiveWith = key::density},
+    {.key = key::density, .type = T::Number, .member = &BoxDesc::density, .range = kMass,
+     .unit = "kg/m\u00b2", .label = "Density", .description = "mass per area, when no mass is given",
+     .present = [](const BoxDesc& b) { return !b.mass; }},
+    {.key = key::isStatic, .type = T::Bool, .member = &BoxDesc::isStatic, .label = "Static",
+     .description = "never moves", .editor = kSwitch},
+    {.key = key::friction, .type = T::Number, .member = &BoxDesc::friction, .range = kCoefficient,
+     .label = "Friction", .description = "friction coefficient \u03bc", .editor = kFrictionEditor},
+    {.key = key::restitution, .type = T::Number, .member = &BoxDesc::restitution,
+     .range = unitInterval(), .label = "Restitution", .description = "bounce, 0 to 1",
+     .editor = kRestitutionEditor},
+};
+
+const Field<PlaneDesc> kPlane[] = {
+    idField<PlaneDesc>("unique across the scene; default plane0, plane1, \u2026 by position"),
+    {.key = key::point, .type = T::Point, .member = &PlaneDesc::point, .range = kLength,
+     .unit = "m", .label = "Point", .description = "a point of the surface",
+     .need = Need::Required, .editor = {-kFar, kFar, 3}},
+    // The editor shows the normal as the surface's tilt (PropertyTable).
+    {.key = key::normal, .type = T::Point, .member = &PlaneDesc::normal, .range = kLength,
+     .label = "Normal", .description = "points out of the solid side; normalised on load",
+     .need = Need::Required, .rule = Rule::NonZeroDirection},
+    {.key = key::friction, .type = T::Number, .member = &PlaneDesc::friction,
+     .range = kCoefficient, .label = "Friction", .description = "friction coefficient \u03bc",
+     .editor = kFrictionEditor},
+    {.key = key::restitution, .type = T::Number, .member = &PlaneDesc::restitution,
+     .range = unitInterval(), .label = "Restitution", .description = "bounce, 0 to 1",
+     .editor = kRestitutionEditor},
+};
+
+const Field<SpringDesc> kSpring[] = {
+    idField<SpringDesc>("unique across the scene; default s0, s1, \u2026 by position"),
+    {.key = key::a, .type = T::IdRef, .member = &SpringDesc::a, .label = "End a",
+     .description = "the object at one end", .need = Need::Required},
+    {.key = key::b, .type = T::IdRef, .member = &SpringDesc::b, .label = "End b",
+     .description = "the object at the other end, or give anchor"},
+    {.key = key::anchor, .type = T::Point, .member = &SpringDesc::anchor, .range = kLength,
+     .unit = "m", .label = "Anchor", .description = "a fixed world point as the other end",
+     .editor = {-kFar, kFar, 3, false, 1}},
+    {.key = key::aPoint, .type = T::Point, .member = &SpringDesc::aPoint, .range = kLength,
+     .unit = "m", .label = "Point on a", .description = "attachment in a's own frame"},
+    {.key = key::bPoint, .type = T::Point, .member = &SpringDesc::bPoint, .range = kLength,
+     .unit = "m", .label = "Point on b", .description = "attachment in b's own frame"},
+    {.key = key::stiffness, .type = T::Number, .member = &SpringDesc::stiffness,
+     .range = positive(L::kMaxCoefficient), .unit = "N/m", .label = "Stiffness k",
+     .description = "force per metre of stretch", .need = Need::Required,
+     .editor = {0.001, kLarge, 3}},
+    {.key = key::damping, .type = T::Number, .member = &SpringDesc::damping,
+     .range = kCoefficient, .unit = "N\u00b7s/m", .label = "Damping c",
+     .description = "damping along the spring", .editor = {0.0, kLarge, 3}},
+    {.key = key::restLength, .type = T::Number, .member = &SpringDesc::restLength,
+     .range = nonNegative(L::kMaxLength), .unit = "m", .label = "Rest length",
+     .description = "length without force; absent = the initial distance",
+     .editor = {0.0, kFar, 3}},
+};
+
+const Field<ClothStiffnessDesc> kClothStiffness[] = {
+    {.key = key::structural, .type = T::Number, .member = &ClothStiffnessDesc::structural,
+     .range = kCoefficient, .unit = "N/m", .label = "Structural stiffness",
+     .description = "springs between neighbours in a row or column", .editor = {0.0, kLarge, 2}},
+    {.key = key::shear, .type = T::Number, .member = &ClothStiffnessDesc::shear,
+     .range = kCoefficient, .unit = "N/m", .label = "Shear stiffness",
+     .description = "springs along the diagonals", .editor = {0.0, kLarge, 2}},
+    {.key = key::bend, .type = T::Number, .member = &ClothStiffnessDesc::bend,
+     .range = kCoefficient, .unit = "N/m", .label = "Bend stiffness",
+     .description = "springs that skip a node", .editor = {0.0, kLarge, 2}},
+};
+
+const Field<ClothDesc> kCloth[] = {
+    {.key = key::id, .type = T::String, .member = &ClothDesc::id, .label = "Id",
+     .description = "names the cloth; node ids are ID[i,j]", .need = Need::Required},
+    {.key = key::origin, .type = T::Point, .member = &ClothDesc::origin, .range = kLength,
+     .unit = "m", .label = "Origin", .description = "the top-left corner", .editor = kPlaces},
+    {.key = key::size, .type = T::Size, .member = &ClothDesc::size,
+     .range = positive(L::kMaxLength), .unit = "m", .label = "Size",
+     .description = "width and height", .editor = {0.001, kFar, 3, true}},
+    {.key = key::resolution, .type = T::Grid, .member = &ClothDesc::resolution,
+     .range = {Bound::IntegerAtLeast, std::numeric_limits<double>::infinity(), 2.0},
+     .label = "Resolution", .description = "nodes across and down",
+     .editor = {2.0, 200.0, 0, true}},
+    {.key = key::mass, .type = T::Number, .member = &ClothDesc::mass, .range = kMass,
+     .unit = "kg", .label = "Mass (total)", .description = "the whole cloth's mass",
+     .editor = kMassEditor},
+    {.key = key::stiffness, .type = T::Object, .member = &ClothDesc::stiffness,
+     .label = "Stiffness", .description = "of its three kinds of springs"},
+    {.key = key::damping, .type = T::Number, .member = &ClothDesc::damping, .range = kCoefficient,
+     .unit = "N\u00b7s/m", .label = "Damping", .description = "damping of its springs",
+     .editor = {0.0, kLarge, 3}},
+    {.key = key::radius, .type = T::Number, .member = &ClothDesc::radius,
+     .range = nonNegative(L::kMaxLength), .unit = "m", .label = "Node radius",
+     .description = "radius of each node's disk", .editor = {0.0, kFar, 3}},
+    {.key = key::pinned, .type = T::Pinning, .member = &ClothDesc::pinned, .label = "Pinned",
+     .description = "top, top_corners, left, none, or a list of [i, j] nodes"},
+};
+
+constexpr std::string_view kTopKeys[] = {
+    key::format, key::version, key::name,  key::description, key::simulation, key::effects,
+    key::particles, key::boxes, key::planes, key::springs,   key::cloths};
+
+}  // namespace
+
+double Range::lowest() const {
+    switch (bound) {
+        case Bound::Symmetric:
+            return -max;
+        case Bound::Positive:
+        case Bound::IntegerAtLeast:
+        case Bound::IntegerBetween:
+            return min;
+        case Bound::NonNegative:
+        case Bound::UnitInterval:
+        case Bound::PositiveUpTo:
+            return 0.0;
+        case Bound::None:
+            break;
+    }
+    return -std::numeric_limits<double>::infinity();
+}
+
+bool Range::lowestExcluded() const {
+    return (bound == Bound::Positive && min <= 0.0) || bound == Bound::PositiveUpTo;
+}
+
+std::span<const SolverSetting> solverSettings() { return kSolverSettings; }
+std::span<const std::string_view> topKeys() { return kTopKeys; }
+
+std::span<const std::string_view> effectKeys() {
+    static const std::vector<std::string_view> keys = [] {
+        std::vector<std::string_view> out;
+        forEachEffect([&](const auto& t, auto) { out.push_back(t.key); });
+        return out;
+    }();
+    return keys;
+}
+
+#define PB_TABLE(Desc, tableKey, description, fields, ...)                                       \
+    const Table<Desc>& tableOf(std::type_identity<Desc>) {                                       \
+        static const Table<Desc> t =                                                             \
+            makeTable<Desc>(tableKey, description, fields __VA_OPT__(, ) __VA_ARGS__);          \
+        return t;                                                                                \
+    }
+
+PB_TABLE(SimulationDesc, key::simulation, "how time advances", kSimulation)
+PB_TABLE(GravityDesc, key::gravity, "Uniform gravity: F = m\u00b7g on every dynamic body", kGravity)
+PB_TABLE(DragDesc, key::drag,
+         "Air drag: F = \u2212b\u00b7v \u2212 c\u00b7\u2016v\u2016\u00b7v, torque \u2212\u03b2\u00b7\u03c9",
+         kDrag)
+PB_TABLE(NewtonianGravityDesc, key::newtonianGravity,
+         "Newtonian gravity toward attractors (and between particles if mutual)",
+         kNewtonianGravity)
+PB_TABLE(AttractorDesc, key::attractors, "fixed points of newtonian_gravity", kAttractor)
+PB_TABLE(BuoyancyDesc, key::buoyancy,
+         "Buoyancy \u03c1\u00b7A_sub\u00b7\u2016g\u2016 on the submerged part below the surface",
+         kBuoyancy)
+PB_TABLE(WindDesc, key::wind, "Wind: F = b\u00b7(w \u2212 v) on particles", kWind)
+PB_TABLE(FlockingDesc, key::flocking,
+         "Boids steering: separation, alignment, cohesion (Reynolds 1987)", kFlocking)
+PB_TABLE(ParticleCollisionsDesc, key::particleCollisions,
+         "Particle\u2013particle disk contacts", kParticleCollisions)
+// Coulomb's law runs whenever two particles carry a charge; the entry only sets its constants.
+PB_TABLE(CoulombDesc, key::coulomb, "Coulomb's law between charged particles", kCoulomb, true)
+PB_TABLE(ParticleDesc, key::particles, "point masses, drawn as disks", kParticle)
+PB_TABLE(BoxDesc, key::boxes, "rigid rectangles", kBox)
+PB_TABLE(PlaneDesc, key::planes, "static half-planes, solid opposite the normal", kPlane)
+PB_TABLE(SpringDesc, key::springs, "damped springs between two objects or an anchor", kSpring)
+PB_TABLE(ClothDesc, key::cloths, "grids of particles joined by springs", kCloth)
+PB_TABLE(ClothStiffnessDesc, key::stiffness, "a cloth's spring stiffnesses", kClothStiffness)
+
+#undef PB_TABLE
+
+}  // namespace phasebox::schema

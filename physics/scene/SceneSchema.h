@@ -1,0 +1,300 @@
+#pragma once
+// The scene format's schema: one table of fields per object kind, effect and settings section
+// (key, type, range, unit, label, one-line description, and the member of the Desc struct that
+// holds it). The JSON reader and writer (app/io), validateScene(), the property editor and the
+// effects panel walk these tables, so a scene key is spelled in this header and nowhere else,
+// and a new kind is one table here plus its physics and drawing.
+//
+// Defaults are not repeated here: they are the Desc structs' member initialisers (SceneDesc.h),
+// reached through the same member pointers from a default-made Desc. Rules that tie fields together (a spring's
+// ends, unique ids, a cloth's pinning) stay in validateScene(), which names them by these keys.
+
+#include "physics/scene/SceneDesc.h"
+
+#include <limits>
+#include <span>
+#include <string_view>
+#include <type_traits>
+#include <variant>
+
+namespace phasebox::schema {
+
+// The value of a scene file's "format" key.
+inline constexpr std::string_view kFormatName = "phasebox-scene";
+
+// Every key of scene format v1 (CONTRACT.md §1), spelled once.
+namespace key {
+// the top level
+inline constexpr std::string_view format = "format";
+inline constexpr std::string_view version = "version";
+inline constexpr std::string_view name = "name";
+inline constexpr std::string_view description = "description";
+inline constexpr std::string_view simulation = "simulation";
+inline constexpr std::string_view effects = "effects";
+inline constexpr std::string_view particles = "particles";
+inline constexpr std::string_view boxes = "boxes";
+inline constexpr std::string_view planes = "planes";
+inline constexpr std::string_view springs = "springs";
+inline constexpr std::string_view cloths = "cloths";
+// simulation, and its contact solver settings
+inline constexpr std::string_view integrator = "integrator";
+inline constexpr std::string_view dt = "dt";
+inline constexpr std::string_view substeps = "substeps";
+inline constexpr std::string_view tolerance = "tolerance";
+inline constexpr std::string_view newtonIterations = "newton_iterations";
+inline constexpr std::string_view duration = "duration";
+inline constexpr std::string_view solver = "solver";
+inline constexpr std::string_view iterations = "iterations";
+inline constexpr std::string_view relaxIterations = "relax_iterations";
+inline constexpr std::string_view contactHertz = "contact_hertz";
+inline constexpr std::string_view dampingRatio = "damping_ratio";
+inline constexpr std::string_view pushOut = "push_out";
+inline constexpr std::string_view restitutionThreshold = "restitution_threshold";
+inline constexpr std::string_view speculativeDistance = "speculative_distance";
+// effects
+inline constexpr std::string_view gravity = "gravity";
+inline constexpr std::string_view drag = "drag";
+inline constexpr std::string_view newtonianGravity = "newtonian_gravity";
+inline constexpr std::string_view buoyancy = "buoyancy";
+inline constexpr std::string_view wind = "wind";
+inline constexpr std::string_view flocking = "flocking";
+inline constexpr std::string_view particleCollisions = "particle_collisions";
+inline constexpr std::string_view coulomb = "coulomb";
+// effect fields
+inline constexpr std::string_view g = "g";
+inline constexpr std::string_view linear = "linear";
+inline constexpr std::string_view quadratic = "quadratic";
+inline constexpr std::string_view angular = "angular";
+inline constexpr std::string_view G = "G";
+inline constexpr std::string_view attractors = "attractors";
+inline constexpr std::string_view mutual = "mutual";
+inline constexpr std::string_view softening = "softening";
+inline constexpr std::string_view fluidDensity = "fluid_density";
+inline constexpr std::string_view surfaceY = "surface_y";
+inline constexpr std::string_view separation = "separation";
+inline constexpr std::string_view alignment = "alignment";
+inline constexpr std::string_view cohesion = "cohesion";
+inline constexpr std::string_view maxSpeed = "max_speed";
+inline constexpr std::string_view k = "k";
+// object fields
+inline constexpr std::string_view id = "id";
+inline constexpr std::string_view position = "position";
+inline constexpr std::string_view velocity = "velocity";
+inline constexpr std::string_view mass = "mass";
+inline constexpr std::string_view radius = "radius";
+inline constexpr std::string_view pinned = "pinned";
+inline constexpr std::string_view restitution = "restitution";
+inline constexpr std::string_view friction = "friction";
+inline constexpr std::string_view charge = "charge";
+inline constexpr std::string_view size = "size";
+inline constexpr std::string_view angle = "angle";
+inline constexpr std::string_view angularVelocity = "angular_velocity";
+inline constexpr std::string_view density = "density";
+inline constexpr std::string_view isStatic = "static";
+inline constexpr std::string_view point = "point";
+inline constexpr std::string_view normal = "normal";
+inline constexpr std::string_view a = "a";
+inline constexpr std::string_view b = "b";
+inline constexpr std::string_view anchor = "anchor";
+inline constexpr std::string_view aPoint = "a_point";
+inline constexpr std::string_view bPoint = "b_point";
+inline constexpr std::string_view stiffness = "stiffness";
+inline constexpr std::string_view damping = "damping";
+inline constexpr std::string_view restLength = "rest_length";
+inline constexpr std::string_view origin = "origin";
+inline constexpr std::string_view resolution = "resolution";
+inline constexpr std::string_view structural = "structural";
+inline constexpr std::string_view shear = "shear";
+inline constexpr std::string_view bend = "bend";
+}  // namespace key
+
+// How a value is written in JSON. Point, Size and Grid are pairs; the name says what the two
+// numbers are in messages ([x, y], [w, h], [nx, ny]) and in the property editor.
+enum class Type {
+    Number,
+    Integer,
+    Bool,
+    String,
+    IdRef,        // the id of another object, a string
+    Point,        // [x, y]
+    Size,         // [w, h]
+    Grid,         // [nx, ny], integers
+    Object,       // a nested object with its own table
+    ObjectArray,  // an array of objects with their own table
+    Pinning,      // a cloth's pinning: a mode name or a list of [i, j] nodes
+    NumberMap,    // an object of numbers by name (the contact solver's settings)
+};
+
+// A value's range, checked by validateScene() with these messages (pairs: each number):
+//   Positive      "must be > 0", then "must be <= max", then "must be >= min" when min > 0
+//   NonNegative   "must be >= 0", then "must be <= max"
+//   Symmetric     "must be between -max and max"
+//   UnitInterval  "must be between 0 and 1"
+//   PositiveUpTo  "must be > 0 and <= max" in one message
+//   IntegerAtLeast "must be an integer >= min", then "must be <= max"
+//   IntegerBetween "must be an integer between min and max"
+// Every number must be finite first ("must be a finite number").
+enum class Bound {
+    None,
+    Positive,
+    NonNegative,
+    Symmetric,
+    UnitInterval,
+    PositiveUpTo,
+    IntegerAtLeast,
+    IntegerBetween
+};
+
+struct Range {
+    Bound bound = Bound::None;
+    double max = std::numeric_limits<double>::infinity();
+    double min = 0.0;
+
+    // The smallest value allowed, and whether it is itself excluded (> rather than >=).
+    double lowest() const;
+    bool lowestExcluded() const;
+};
+
+constexpr Range positive(double max, double min = 0.0) { return {Bound::Positive, max, min}; }
+constexpr Range nonNegative(double max) { return {Bound::NonNegative, max, 0.0}; }
+constexpr Range symmetric(double max) { return {Bound::Symmetric, max, 0.0}; }
+constexpr Range unitInterval() { return {Bound::UnitInterval, 1.0, 0.0}; }
+
+// The property editor's view of a field, where it differs from the format's: a spin box range
+// that fits the classroom (the format's bounds are a million times past it), the decimals
+// shown, and whether an edit places or launches the object (it then restarts from its setup).
+// decimals < 0: not shown in the editor.
+struct Editor {
+    double min = 0.0;
+    double max = 0.0;
+    int decimals = -1;
+    bool movesObject = false;
+    // Shown after the fields of rank 0 (a spring's anchor after its stiffness).
+    int rank = 0;
+};
+
+enum class Need { Optional, Required };
+
+// Checks that involve more than the field's own range, done by validateScene().
+enum class Rule { None, NonZeroDirection, KnownIntegrator };
+
+using Pinning = std::variant<std::string, std::vector<std::array<int, 2>>>;
+
+// Where a field lives in its Desc struct.
+template <typename D>
+using Member = std::variant<double D::*, int D::*, bool D::*, std::string D::*, Point2 D::*,
+                            std::array<int, 2> D::*, std::optional<double> D::*,
+                            std::optional<std::string> D::*, std::optional<Point2> D::*,
+                            ClothStiffnessDesc D::*, std::vector<AttractorDesc> D::*,
+                            Pinning D::*, std::map<std::string, double> D::*>;
+
+template <typename D>
+struct Field {
+    std::string_view key{};
+    Type type = Type::Number;
+    Member<D> member{};
+    Range range{};
+    std::string_view unit{};         // "kg", "m/s", … ; empty for plain numbers
+    std::string_view label{};        // for people: "Mass"
+    std::string_view description{};  // one line
+    Need need = Need::Optional;
+    Editor editor{};
+    // A field given only when this holds (the writer omits, the validator and editor skip it
+    // otherwise); fields held in std::optional are present when set, ids when not empty.
+    bool (*present)(const D&) = nullptr;
+    // The key this one may not be given together with ("give mass or density, not both").
+    std::string_view exclusiveWith{};
+    Rule rule = Rule::None;
+};
+
+// One object kind, effect or section: its key in the file and its fields in the file's order.
+template <typename D>
+struct Table {
+    std::string_view key;
+    std::string_view description;
+    std::span<const Field<D>> fields;
+    // Effects only: run because of what the scene holds (the entry sets only constants), so not
+    // something a user adds from the effects menu.
+    bool implied = false;
+};
+
+// The contact solver's settings (simulation.solver): numbers by name, each with its range;
+// other names are kept so that they round-trip.
+struct SolverSetting {
+    std::string_view key;
+    Range range;
+    std::string_view description;
+};
+std::span<const SolverSetting> solverSettings();
+
+// The tables. table<D>() picks the one for D.
+const Table<SimulationDesc>& tableOf(std::type_identity<SimulationDesc>);
+const Table<GravityDesc>& tableOf(std::type_identity<GravityDesc>);
+const Table<DragDesc>& tableOf(std::type_identity<DragDesc>);
+const Table<NewtonianGravityDesc>& tableOf(std::type_identity<NewtonianGravityDesc>);
+const Table<AttractorDesc>& tableOf(std::type_identity<AttractorDesc>);
+const Table<BuoyancyDesc>& tableOf(std::type_identity<BuoyancyDesc>);
+const Table<WindDesc>& tableOf(std::type_identity<WindDesc>);
+const Table<FlockingDesc>& tableOf(std::type_identity<FlockingDesc>);
+const Table<ParticleCollisionsDesc>& tableOf(std::type_identity<ParticleCollisionsDesc>);
+const Table<CoulombDesc>& tableOf(std::type_identity<CoulombDesc>);
+const Table<ParticleDesc>& tableOf(std::type_identity<ParticleDesc>);
+const Table<BoxDesc>& tableOf(std::type_identity<BoxDesc>);
+const Table<PlaneDesc>& tableOf(std::type_identity<PlaneDesc>);
+const Table<SpringDesc>& tableOf(std::type_identity<SpringDesc>);
+const Table<ClothDesc>& tableOf(std::type_identity<ClothDesc>);
+const Table<ClothStiffnessDesc>& tableOf(std::type_identity<ClothStiffnessDesc>);
+
+template <typename D>
+const Table<D>& table() {
+    return tableOf(std::type_identity<D>{});
+}
+
+// The effects in the contract's order: fn(table<XDesc>(), &EffectsDesc::x).
+template <typename Fn>
+void forEachEffect(Fn&& fn) {
+    fn(table<GravityDesc>(), &EffectsDesc::gravity);
+    fn(table<DragDesc>(), &EffectsDesc::drag);
+    fn(table<NewtonianGravityDesc>(), &EffectsDesc::newtonianGravity);
+    fn(table<BuoyancyDesc>(), &EffectsDesc::buoyancy);
+    fn(table<WindDesc>(), &EffectsDesc::wind);
+    fn(table<FlockingDesc>(), &EffectsDesc::flocking);
+    fn(table<ParticleCollisionsDesc>(), &EffectsDesc::particleCollisions);
+    fn(table<CoulombDesc>(), &EffectsDesc::coulomb);
+}
+
+// The object arrays in the file's order: fn(table<XDesc>(), &SceneDesc::xs).
+template <typename Fn>
+void forEachObjectKind(Fn&& fn) {
+    fn(table<ParticleDesc>(), &SceneDesc::particles);
+    fn(table<BoxDesc>(), &SceneDesc::boxes);
+    fn(table<PlaneDesc>(), &SceneDesc::planes);
+    fn(table<SpringDesc>(), &SceneDesc::springs);
+    fn(table<ClothDesc>(), &SceneDesc::cloths);
+}
+
+// The keys of the top level, and of the effects object, in the file's order.
+std::span<const std::string_view> topKeys();
+std::span<const std::string_view> effectKeys();
+
+// A table's keys, for telling a misspelt key from an unknown one.
+template <typename D>
+std::vector<std::string_view> keysOf(const Table<D>& t) {
+    std::vector<std::string_view> keys;
+    for (const Field<D>& f : t.fields) keys.push_back(f.key);
+    return keys;
+}
+
+// Whether field f is given in d (see Field::present).
+template <typename D>
+bool isPresent(const Field<D>& f, const D& d) {
+    if (f.present) return f.present(d);
+    return std::visit(
+        [&]<typename T>(T D::*m) {
+            if constexpr (requires { (d.*m).has_value(); }) return (d.*m).has_value();
+            else return true;
+        },
+        f.member);
+}
+
+}  // namespace phasebox::schema
