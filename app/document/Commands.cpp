@@ -86,23 +86,15 @@ void DocumentCommand::redo() {
         setObsolete(true);  // QUndoStack::push drops it
         return;
     }
-    apply(document_.editableSetup());
-    commit();
+    commit([this](SceneDesc& scene) { apply(scene); });
 }
 
 void DocumentCommand::undo() {
-    revert(document_.editableSetup());
-    commit();
+    commit([this](SceneDesc& scene) { revert(scene); });
 }
 
-void DocumentCommand::commit() {
-    rebuildWorld(movedIds());
-}
-void DocumentCommand::rebuildWorld(const QStringList& moved) {
-    document_.setupEdited(moved);
-}
-void DocumentCommand::updateSimulation() {
-    document_.simulationEdited();
+void DocumentCommand::commit(const SetupEdit& edit) {
+    document_.commitSetupEdit(edit, movedIds());
 }
 const SceneDesc& DocumentCommand::setup() const {
     return document_.setup();
@@ -395,6 +387,10 @@ SetSimulationCommand::SetSimulationCommand(Document& document, const SimulationD
     setText(field_.isEmpty() ? QObject::tr("Change simulation settings")
                              : QObject::tr("Change %1").arg(field_));
     validate();
+}
+
+void SetSimulationCommand::commit(const SetupEdit& edit) {
+    document().commitSimulationEdit(edit);
 }
 
 bool SetSimulationCommand::mergeWith(const QUndoCommand* other) {

@@ -9,6 +9,7 @@
 // validateScene()'s words ("particles[0].mass: must be > 0 (got -1)"). A refused command that
 // is pushed anyway does nothing and marks itself obsolete, so the stack drops it.
 
+#include "app/document/Document.h"
 #include "app/document/PropertyTable.h"
 #include "physics/scene/SceneDesc.h"
 
@@ -20,8 +21,6 @@
 #include <vector>
 
 namespace phasebox {
-
-class Document;
 
 class DocumentCommand : public QUndoCommand {
 public:
@@ -39,17 +38,16 @@ protected:
     virtual void revert(SceneDesc& scene) const = 0;
     // Ids whose live state gives way to their new setup values (objects the edit placed).
     virtual QStringList movedIds() const { return {}; }
-    // After apply/revert changed the setup: rebuilds the world (the default).
-    virtual void commit();
+    // Hands apply or revert to the document, which runs it on the setup and rebuilds the
+    // world (the default; Document::commitSetupEdit).
+    virtual void commit(const SetupEdit& edit);
 
     // Runs apply() on a copy of the setup and refuses the edit if validateScene() complains;
     // subclasses call it at the end of their constructor.
     void validate();
     void refuse(const QString& message) { error_ = message; }
     const SceneDesc& setup() const;
-    // Commit helpers (the document's edit interface is open to this base class only).
-    void rebuildWorld(const QStringList& moved);
-    void updateSimulation();
+    Document& document() const { return document_; }
     // Merging: the same kind of command, made during the same interaction.
     bool sameInteraction(const DocumentCommand& other) const {
         return other.interaction_ == interaction_;
@@ -168,7 +166,7 @@ public:
 protected:
     void apply(SceneDesc& scene) const override { scene.simulation = after_; }
     void revert(SceneDesc& scene) const override { scene.simulation = before_; }
-    void commit() override { updateSimulation(); }
+    void commit(const SetupEdit& edit) override;
 
 private:
     SimulationDesc before_, after_;

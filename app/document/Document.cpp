@@ -190,7 +190,8 @@ bool Document::applySimulationSettings(const SimulationDesc& simulation, QString
     return push(new SetSimulationCommand(*this, simulation), error);
 }
 
-void Document::setupEdited(const QStringList& moved) {
+void Document::commitSetupEdit(const SetupEdit& edit, const QStringList& moved) {
+    edit(setup_);
     BuildResult built;
     try {
         built = buildWorld(setup_);
@@ -222,7 +223,8 @@ void Document::setupEdited(const QStringList& moved) {
     emit sceneEdited();
 }
 
-void Document::simulationEdited() {
+void Document::commitSimulationEdit(const SetupEdit& edit) {
+    edit(setup_);
     const SimulationDesc& sim = setup_.simulation;
     // Validated by the command; setSettings would throw (and change nothing) otherwise.
     world_->setSettings({sim.integrator, sim.dt, sim.substeps, sim.tolerance, sim.newtonIterations,

@@ -20,6 +20,7 @@
 #include <QStringList>
 #include <QUndoStack>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,6 +30,9 @@ namespace phasebox {
 class World;
 class MouseSpringEffect;
 class DocumentCommand;
+
+// A change to a scene setup, run by an undo command both ways (Commands.h).
+using SetupEdit = std::function<void(SceneDesc&)>;
 
 class Document : public QObject {
     Q_OBJECT
@@ -91,6 +95,17 @@ public:
     // (say "gravity.g" while a slider moves) make one undo step.
     bool setEffects(const EffectsDesc& effects, const QString& mergeKey, QString* error = nullptr);
 
+    // ---- for the undo commands of Commands.h, their only callers ---------------------------
+    // Everything else edits through the functions above, so that each edit can be undone.
+    // Runs edit on the setup, then rebuilds the world from it, carrying the live state over
+    // when the simulation has run (except for the objects in moved, which start from their new
+    // setup values); sceneEdited follows.
+    void commitSetupEdit(const SetupEdit& edit, const QStringList& moved);
+    // Runs edit (which changes the simulation settings only) on the setup, then applies the
+    // settings to the live world in place, which keeps its state bit for bit;
+    // simulationSettingsChanged follows.
+    void commitSimulationEdit(const SetupEdit& edit);
+
     // Ends the current interaction: the next move or property edit starts a new undo step even
     // when it touches the same object and key (call on mouse release, editing finished).
     void finishInteraction() { ++interaction_; }
@@ -122,22 +137,12 @@ signals:
     void selectionChanged();
 
 private:
-    friend class DocumentCommand;
-
     struct Grab {
         std::string id;
         Point2 localPoint{0.0, 0.0};
         Point2 target{0.0, 0.0};
         double stiffness = 0.0;
     };
-
-    // For commands: the setup to change, then one of the two below.
-    SceneDesc& editableSetup() { return setup_; }
-    // Rebuilds the world from the setup, carrying live state over when the simulation has run
-    // (except for the objects in moved, which start from their new setup values).
-    void setupEdited(const QStringList& moved);
-    // Applies the setup's simulation settings to the live world in place.
-    void simulationEdited();
 
     bool push(DocumentCommand* command, QString* error);
     void replaceScene(SceneDesc scene, std::unique_ptr<World> world, QStringList unsupported,
