@@ -269,8 +269,7 @@ void CanvasTools::finish(QPointF world) {
         case Tool::Pin: {
             if (!click || startObject_.isEmpty()) return;
             const ObjectRef ref = findObject(document_.setup(), startObject_.toStdString());
-            const QString key = ref.kind == ObjectKind::Box ? QStringLiteral("static")
-                                                             : QStringLiteral("pinned");
+            const QString key = pinPropertyKey(ref.kind);
             const auto current = propertyValue(document_.setup(), startObject_, key);
             if (!current) {
                 emit message(tr("Only particles can be pinned and boxes made static."));

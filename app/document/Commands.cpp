@@ -1,6 +1,7 @@
 #include "app/document/Commands.h"
 
 #include "app/document/Document.h"
+#include "physics/scene/SceneSchema.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,13 +66,18 @@ bool sameSimulation(const SimulationDesc& a, const SimulationDesc& b) {
 // The one field in which two settings differ, or empty when they differ in several (or none).
 QString changedField(const SimulationDesc& a, const SimulationDesc& b) {
     QStringList fields;
-    if (a.integrator != b.integrator) fields << QStringLiteral("integrator");
-    if (a.dt != b.dt) fields << QStringLiteral("dt");
-    if (a.substeps != b.substeps) fields << QStringLiteral("substeps");
-    if (a.tolerance != b.tolerance) fields << QStringLiteral("tolerance");
-    if (a.newtonIterations != b.newtonIterations) fields << QStringLiteral("newton_iterations");
-    if (a.duration != b.duration) fields << QStringLiteral("duration");
-    if (a.solver != b.solver) fields << QStringLiteral("solver");
+    for (const schema::Field<SimulationDesc>& field : schema::table<SimulationDesc>().fields) {
+        std::visit(
+            [&]<typename V>(V SimulationDesc::*member) {
+                // The settings' own types; the variant's other alternatives never occur here.
+                if constexpr (std::is_arithmetic_v<V> || std::is_same_v<V, std::string> ||
+                              std::is_same_v<V, std::map<std::string, double>>)
+                    if (a.*member != b.*member)
+                        fields << QString::fromUtf8(field.key.data(),
+                                                    static_cast<qsizetype>(field.key.size()));
+            },
+            field.member);
+    }
     return fields.size() == 1 ? fields.front() : QString();
 }
 }  // namespace

@@ -1,8 +1,11 @@
 #include "app/document/PropertyTable.h"
 
+#include "physics/scene/SceneSchema.h"
+
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <algorithm>
 #include <span>
 #include <unordered_set>
 
@@ -10,125 +13,95 @@ namespace phasebox {
 
 namespace {
 
-// The editor's range of coordinates and speeds: far past any classroom scene.
-constexpr double kFar = 1e6;
-constexpr double kLarge = 1e9;
+namespace key = schema::key;
 
-// One row of a kind's table. get/set are captureless lambdas; applies (optional) hides a row
-// that makes no sense for this object (a spring's anchor when it has a second body).
-template <typename Desc>
-struct PropertySpec {
-    const char* key;
-    const char* label;
-    const char* unit;
-    double minimum, maximum;
-    int decimals;
-    bool isBool;
-    bool movesObject;
-    double (*get)(const Desc&);
-    void (*set)(Desc&, double);
-    bool (*applies)(const Desc&) = nullptr;
-};
-
-// Accessors for a plain numeric, a boolean and an integer member.
-#define PB_NUMBER(m) \
-    [](const auto& d) { return static_cast<double>(d.m); }, [](auto& d, double v) { d.m = v; }
-#define PB_BOOL(m) \
-    [](const auto& d) { return d.m ? 1.0 : 0.0; }, [](auto& d, double v) { d.m = v != 0.0; }
-#define PB_INT(m)                                           \
-    [](const auto& d) { return static_cast<double>(d.m); }, \
-        [](auto& d, double v) { d.m = static_cast<int>(std::lround(v)); }
-
-const PropertySpec<ParticleDesc> kParticleTable[] = {
-    {"position.x", "Position x", "m", -kFar, kFar, 3, false, true, PB_NUMBER(position[0])},
-    {"position.y", "Position y", "m", -kFar, kFar, 3, false, true, PB_NUMBER(position[1])},
-    {"velocity.x", "Velocity x", "m/s", -kFar, kFar, 3, false, true, PB_NUMBER(velocity[0])},
-    {"velocity.y", "Velocity y", "m/s", -kFar, kFar, 3, false, true, PB_NUMBER(velocity[1])},
-    {"mass", "Mass", "kg", 0.001, kLarge, 3, false, false, PB_NUMBER(mass)},
-    {"radius", "Radius", "m", 0.0, kFar, 3, false, false, PB_NUMBER(radius)},
-    {"pinned", "Pinned", "", 0.0, 1.0, 0, true, false, PB_BOOL(pinned)},
-    {"restitution", "Restitution", "", 0.0, 1.0, 2, false, false, PB_NUMBER(restitution)},
-    {"friction", "Friction", "", 0.0, 10.0, 2, false, false, PB_NUMBER(friction)},
-    {"charge", "Charge", "C", -kLarge, kLarge, 3, false, false, PB_NUMBER(charge)},
-};
-
-const PropertySpec<BoxDesc> kBoxTable[] = {
-    {"position.x", "Position x", "m", -kFar, kFar, 3, false, true, PB_NUMBER(position[0])},
-    {"position.y", "Position y", "m", -kFar, kFar, 3, false, true, PB_NUMBER(position[1])},
-    {"size.w", "Width", "m", 0.001, kFar, 3, false, false, PB_NUMBER(size[0])},
-    {"size.h", "Height", "m", 0.001, kFar, 3, false, false, PB_NUMBER(size[1])},
-    {"angle", "Angle", "rad", -kFar, kFar, 3, false, true, PB_NUMBER(angle)},
-    {"velocity.x", "Velocity x", "m/s", -kFar, kFar, 3, false, true, PB_NUMBER(velocity[0])},
-    {"velocity.y", "Velocity y", "m/s", -kFar, kFar, 3, false, true, PB_NUMBER(velocity[1])},
-    {"angular_velocity", "Angular velocity \u03c9", "rad/s", -kFar, kFar, 3, false, true,
-     PB_NUMBER(angularVelocity)},
-    // A box's mass may come from its density; editing it makes the mass explicit.
-    {"mass", "Mass", "kg", 0.001, kLarge, 3, false, false,
-     [](const BoxDesc& d) { return d.resolvedMass(); }, [](BoxDesc& d, double v) { d.mass = v; }},
-    {"static", "Static", "", 0.0, 1.0, 0, true, false, PB_BOOL(isStatic)},
-    {"friction", "Friction", "", 0.0, 10.0, 2, false, false, PB_NUMBER(friction)},
-    {"restitution", "Restitution", "", 0.0, 1.0, 2, false, false, PB_NUMBER(restitution)},
-};
+QString text(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
 
 // A plane's normal is edited as the tilt of the surface: 0 = a floor (normal up), π/2 = a wall
 // facing −x. Two spin boxes for the normal's components would let it become zero.
-const PropertySpec<PlaneDesc> kPlaneTable[] = {
-    {"point.x", "Point x", "m", -kFar, kFar, 3, false, false, PB_NUMBER(point[0])},
-    {"point.y", "Point y", "m", -kFar, kFar, 3, false, false, PB_NUMBER(point[1])},
-    {"angle", "Tilt", "rad", -std::numbers::pi, std::numbers::pi, 3, false, false,
-     [](const PlaneDesc& d) { return std::atan2(-d.normal[0], d.normal[1]); },
-     [](PlaneDesc& d, double v) {
-         d.normal = {-std::sin(v), std::cos(v)};
-     }},
-    {"friction", "Friction", "", 0.0, 10.0, 2, false, false, PB_NUMBER(friction)},
-    {"restitution", "Restitution", "", 0.0, 1.0, 2, false, false, PB_NUMBER(restitution)},
-};
-
-bool hasAnchor(const SpringDesc& d) {
-    return d.anchor.has_value();
+PropertyRow tiltRow(const PlaneDesc& d) {
+    return {text(key::angle), QStringLiteral("Tilt"), QStringLiteral("rad"),
+            std::atan2(-d.normal[0], d.normal[1]), -std::numbers::pi, std::numbers::pi, 3, false};
 }
-const PropertySpec<SpringDesc> kSpringTable[] = {
-    {"stiffness", "Stiffness k", "N/m", 0.001, kLarge, 3, false, false, PB_NUMBER(stiffness)},
-    {"damping", "Damping c", "N\u00b7s/m", 0.0, kLarge, 3, false, false, PB_NUMBER(damping)},
-    // Shown as the initial distance while the scene gives none (propertiesOf fills it in).
-    {"rest_length", "Rest length", "m", 0.0, kFar, 3, false, false,
-     [](const SpringDesc& d) { return d.restLength.value_or(0.0); },
-     [](SpringDesc& d, double v) { d.restLength = v; }},
-    {"anchor.x", "Anchor x", "m", -kFar, kFar, 3, false, false,
-     [](const SpringDesc& d) { return d.anchor ? (*d.anchor)[0] : 0.0; },
-     [](SpringDesc& d, double v) {
-         if (d.anchor) (*d.anchor)[0] = v;
-     },
-     hasAnchor},
-    {"anchor.y", "Anchor y", "m", -kFar, kFar, 3, false, false,
-     [](const SpringDesc& d) { return d.anchor ? (*d.anchor)[1] : 0.0; },
-     [](SpringDesc& d, double v) {
-         if (d.anchor) (*d.anchor)[1] = v;
-     },
-     hasAnchor},
-};
 
-const PropertySpec<ClothDesc> kClothTable[] = {
-    {"origin.x", "Origin x", "m", -kFar, kFar, 3, false, true, PB_NUMBER(origin[0])},
-    {"origin.y", "Origin y", "m", -kFar, kFar, 3, false, true, PB_NUMBER(origin[1])},
-    {"size.w", "Width", "m", 0.001, kFar, 3, false, true, PB_NUMBER(size[0])},
-    {"size.h", "Height", "m", 0.001, kFar, 3, false, true, PB_NUMBER(size[1])},
-    {"resolution.x", "Columns", "", 2.0, 200.0, 0, false, true, PB_INT(resolution[0])},
-    {"resolution.y", "Rows", "", 2.0, 200.0, 0, false, true, PB_INT(resolution[1])},
-    {"mass", "Mass (total)", "kg", 0.001, kLarge, 3, false, false, PB_NUMBER(mass)},
-    {"stiffness.structural", "Structural stiffness", "N/m", 0.0, kLarge, 2, false, false,
-     PB_NUMBER(stiffness.structural)},
-    {"stiffness.shear", "Shear stiffness", "N/m", 0.0, kLarge, 2, false, false,
-     PB_NUMBER(stiffness.shear)},
-    {"stiffness.bend", "Bend stiffness", "N/m", 0.0, kLarge, 2, false, false,
-     PB_NUMBER(stiffness.bend)},
-    {"damping", "Damping", "N\u00b7s/m", 0.0, kLarge, 3, false, false, PB_NUMBER(damping)},
-    {"radius", "Node radius", "m", 0.0, kFar, 3, false, false, PB_NUMBER(radius)},
+// The names of a pair's two rows: keys "size.w", labels "Width".
+struct PairNames {
+    const char* suffix[2];
+    QString label[2];
 };
+template <typename D>
+PairNames pairNames(const schema::Field<D>& f) {
+    const QString label = text(f.label);
+    switch (f.type) {
+        case schema::Type::Size:
+            return {{".w", ".h"}, {QStringLiteral("Width"), QStringLiteral("Height")}};
+        case schema::Type::Grid:
+            return {{".x", ".y"}, {QStringLiteral("Columns"), QStringLiteral("Rows")}};
+        default:
+            return {{".x", ".y"}, {label + QStringLiteral(" x"), label + QStringLiteral(" y")}};
+    }
+}
 
-#undef PB_NUMBER
-#undef PB_BOOL
-#undef PB_INT
+// Calls fn(row, editor, set) for each property of d the editor shows, in its table's order,
+// where set(value) writes the property into d. What the editor shows of a field is in its
+// schema::Editor; a pair held in std::optional (a spring's anchor) only while it is set.
+template <typename D, typename Fn>
+void forEachProperty(D& d, Fn&& fn, const QString& prefix = {}) {
+    for (const schema::Field<D>& field : schema::table<D>().fields) {
+        const QString fieldKey = prefix + text(field.key);
+        const schema::Editor& e = field.editor;
+        if constexpr (std::is_same_v<D, PlaneDesc>) {
+            if (field.key == key::normal) {
+                fn(tiltRow(d), e, [&d](double v) { d.normal = {-std::sin(v), std::cos(v)}; });
+                continue;
+            }
+        }
+        auto row = [&](const QString& rowKey, const QString& label, double value) {
+            return PropertyRow{rowKey,     label, text(field.unit), value, e.min,
+                               e.max, e.decimals, field.type == schema::Type::Bool};
+        };
+        std::visit(
+            [&]<typename V>(V D::*member) {
+                V& v = d.*member;
+                if constexpr (std::is_same_v<V, ClothStiffnessDesc>) {
+                    forEachProperty(v, fn, fieldKey + QLatin1Char('.'));
+                } else if (e.decimals < 0) {
+                    return;
+                } else if constexpr (std::is_same_v<V, double>) {
+                    fn(row(fieldKey, text(field.label), v), e,
+                       [&v](double x) { v = x; });
+                } else if constexpr (std::is_same_v<V, std::optional<double>>) {
+                    fn(row(fieldKey, text(field.label), v.value_or(0.0)), e,
+                       [&v](double x) { v = x; });
+                } else if constexpr (std::is_same_v<V, bool>) {
+                    fn(row(fieldKey, text(field.label), v ? 1.0 : 0.0), e,
+                       [&v](double x) { v = x != 0.0; });
+                } else if constexpr (std::is_same_v<V, Point2> ||
+                                     std::is_same_v<V, std::optional<Point2>> ||
+                                     std::is_same_v<V, std::array<int, 2>>) {
+                    auto* pair = [&] {
+                        if constexpr (std::is_same_v<V, std::optional<Point2>>)
+                            return v ? &*v : nullptr;
+                        else return &v;
+                    }();
+                    if (!pair) return;
+                    const PairNames names = pairNames(field);
+                    for (std::size_t k = 0; k < 2; ++k)
+                        fn(row(fieldKey + QLatin1String(names.suffix[k]), names.label[k],
+                               static_cast<double>((*pair)[k])),
+                           e, [pair, k](double x) {
+                               using Element = std::remove_reference_t<decltype((*pair)[k])>;
+                               if constexpr (std::is_same_v<Element, int>)
+                                   (*pair)[k] = static_cast<int>(std::lround(x));
+                               else (*pair)[k] = x;
+                           });
+                }
+            },
+            field.member);
+    }
+}
 
 // The scene's array for a kind, by the desc type.
 std::vector<ParticleDesc>& array(SceneDesc& s, const ParticleDesc*) {
@@ -147,36 +120,23 @@ std::vector<ClothDesc>& array(SceneDesc& s, const ClothDesc*) {
     return s.cloths;
 }
 
-// Calls fn(table, desc) for the object at ref.
-template <typename Scene, typename Fn>
-bool visitObject(Scene& scene, ObjectRef ref, Fn&& fn) {
+// Calls fn(desc) for the object at ref.
+template <typename Fn>
+void visitObject(SceneDesc& scene, ObjectRef ref, Fn&& fn) {
     switch (ref.kind) {
         case ObjectKind::Particle:
-            fn(std::span(kParticleTable), scene.particles[ref.index]);
-            return true;
+            return fn(scene.particles[ref.index]);
         case ObjectKind::Box:
-            fn(std::span(kBoxTable), scene.boxes[ref.index]);
-            return true;
+            return fn(scene.boxes[ref.index]);
         case ObjectKind::Plane:
-            fn(std::span(kPlaneTable), scene.planes[ref.index]);
-            return true;
+            return fn(scene.planes[ref.index]);
         case ObjectKind::Spring:
-            fn(std::span(kSpringTable), scene.springs[ref.index]);
-            return true;
+            return fn(scene.springs[ref.index]);
         case ObjectKind::Cloth:
-            fn(std::span(kClothTable), scene.cloths[ref.index]);
-            return true;
+            return fn(scene.cloths[ref.index]);
         case ObjectKind::None:
             break;
     }
-    return false;
-}
-
-template <typename Table>
-typename Table::element_type* findSpec(Table table, const QString& key) {
-    for (auto& spec : table)
-        if (key == QLatin1String(spec.key)) return &spec;
-    return nullptr;
 }
 
 // Setup position of a point fixed to a body (particle, box, cloth node); nullopt if unknown.
@@ -324,20 +284,30 @@ std::optional<double> initialSpringLength(const SceneDesc& scene, const SpringDe
 }
 
 std::vector<PropertyRow> propertiesOf(const SceneDesc& scene, const QString& id) {
-    std::vector<PropertyRow> rows;
     const ObjectRef ref = findObject(scene, id.toStdString());
-    visitObject(scene, ref, [&](auto table, const auto& desc) {
-        for (const auto& spec : table) {
-            if (spec.applies && !spec.applies(desc)) continue;
-            rows.push_back({QLatin1String(spec.key), QString::fromUtf8(spec.label),
-                            QString::fromUtf8(spec.unit), spec.get(desc), spec.minimum,
-                            spec.maximum, spec.decimals, spec.isBool});
-        }
-    });
-    if (ref.kind == ObjectKind::Spring && !scene.springs[ref.index].restLength) {
-        for (PropertyRow& row : rows)
-            if (row.key == QLatin1String("rest_length"))
-                row.value = initialSpringLength(scene, scene.springs[ref.index]).value_or(0.0);
+    if (!ref.isValid()) return {};
+    std::vector<std::pair<int, PropertyRow>> ranked;
+    ObjectDesc object = objectDesc(scene, ref);
+    std::visit(
+        [&](auto& desc) {
+            forEachProperty(desc, [&](const PropertyRow& row, const schema::Editor& e, auto&&) {
+                ranked.emplace_back(e.rank, row);
+            });
+        },
+        object);
+    std::stable_sort(ranked.begin(), ranked.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<PropertyRow> rows;
+    for (auto& [rank, row] : ranked) rows.push_back(std::move(row));
+    // A number the scene leaves out shows the value it then takes: a box's mass from its
+    // density, a spring's rest length from its ends' initial distance.
+    for (PropertyRow& row : rows) {
+        if (row.key != text(schema::key::mass) && row.key != text(schema::key::restLength))
+            continue;
+        if (ref.kind == ObjectKind::Box && !scene.boxes[ref.index].mass)
+            row.value = scene.boxes[ref.index].resolvedMass();
+        if (ref.kind == ObjectKind::Spring && !scene.springs[ref.index].restLength)
+            row.value = initialSpringLength(scene, scene.springs[ref.index]).value_or(0.0);
     }
     return rows;
 }
@@ -350,23 +320,37 @@ std::optional<double> propertyValue(const SceneDesc& scene, const QString& id, c
 
 bool setPropertyValue(SceneDesc& scene, const QString& id, const QString& key, double value) {
     bool found = false;
-    visitObject(scene, findObject(scene, id.toStdString()), [&](auto table, auto& desc) {
-        const auto* spec = findSpec(table, key);
-        // "pinned" is what a box's "static" is called in the generic pin command's vocabulary.
-        if (!spec && key == QLatin1String("pinned"))
-            spec = findSpec(table, QStringLiteral("static"));
-        if (!spec || (spec->applies && !spec->applies(desc))) return;
-        spec->set(desc, value);
-        found = true;
-    });
+    const auto set = [&](const QString& target) {
+        visitObject(scene, findObject(scene, id.toStdString()), [&](auto& desc) {
+            forEachProperty(desc, [&](const PropertyRow& row, const schema::Editor&, auto&& write) {
+                if (found || row.key != target) return;
+                write(value);
+                found = true;
+            });
+        });
+    };
+    set(key);
+    // The generic pin command pins a box by making it static.
+    if (!found && key == text(schema::key::pinned)) set(text(schema::key::isStatic));
     return found;
 }
 
+QString pinPropertyKey(ObjectKind kind) {
+    return text(kind == ObjectKind::Box ? schema::key::isStatic : schema::key::pinned);
+}
+
 bool propertyMovesObject(const SceneDesc& scene, const QString& id, const QString& key) {
+    const ObjectRef ref = findObject(scene, id.toStdString());
+    if (!ref.isValid()) return false;
     bool moves = false;
-    visitObject(scene, findObject(scene, id.toStdString()), [&](auto table, const auto&) {
-        if (const auto* spec = findSpec(table, key)) moves = spec->movesObject;
-    });
+    ObjectDesc object = objectDesc(scene, ref);
+    std::visit(
+        [&](auto& desc) {
+            forEachProperty(desc, [&](const PropertyRow& row, const schema::Editor& e, auto&&) {
+                if (row.key == key) moves = e.movesObject;
+            });
+        },
+        object);
     return moves;
 }
 

@@ -67,6 +67,8 @@ std::vector<PropertyRow> propertiesOf(const SceneDesc& scene, const QString& id)
 std::optional<double> propertyValue(const SceneDesc& scene, const QString& id, const QString& key);
 // Writes one property (no range check: validateScene() judges). False for an unknown id or key.
 bool setPropertyValue(SceneDesc& scene, const QString& id, const QString& key, double value);
+// The property that pins an object in place: for a box its static flag.
+QString pinPropertyKey(ObjectKind kind);
 // True for the properties that place or launch an object (position, velocity, angle, a
 // cloth's shape): after editing one, the object starts from its setup values again instead of
 // continuing its live motion.

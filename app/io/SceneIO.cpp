@@ -66,7 +66,7 @@ QString index(const QString& path, qsizetype i) {
 }
 
 // Optimal string alignment distance (Levenshtein plus transposition of neighbours), ignoring
-// case, so that "Stifness", "stiffnes" and "stiffnses" all count as close to "stiffness".
+// case, so that "Stifness", "stiffnes" and "stiffnses" all count as close to stiffness.
 int editDistance(const QString& a, const QString& b) {
     const QString s = a.toCaseFolded();
     const QString t = b.toCaseFolded();

@@ -1,5 +1,7 @@
 #include "ui/panels/EffectsPanel.h"
 
+#include "physics/scene/SceneSchema.h"
+
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -19,51 +21,51 @@ namespace {
 enum Column { kNameColumn = 0, kCostColumn = 1 };
 constexpr int kNameRole = Qt::UserRole;
 
-// What each effect does, for tooltips: the force laws of CONTRACT.md §1.
+QString text(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+// What each row does, for tooltips: the effects' force laws from the scene schema, and the
+// stages the world runs by itself.
 QString describe(const QString& name) {
-    static const QHash<QString, QString> descriptions{
-        {QStringLiteral("gravity"),
-         EffectsPanel::tr("Uniform gravity: F = m·g on every dynamic body")},
-        {QStringLiteral("drag"), EffectsPanel::tr("Air drag: F = −b·v − c·‖v‖·v, torque −β·ω")},
-        {QStringLiteral("newtonian_gravity"),
-         EffectsPanel::tr("Newtonian gravity toward attractors (and between particles if mutual)")},
-        {QStringLiteral("buoyancy"),
-         EffectsPanel::tr("Buoyancy ρ·A_sub·‖g‖ on the submerged part below the surface")},
-        {QStringLiteral("wind"), EffectsPanel::tr("Wind: F = b·(w − v) on particles")},
-        {QStringLiteral("flocking"),
-         EffectsPanel::tr("Boids steering: separation, alignment, cohesion (Reynolds 1987)")},
-        {QStringLiteral("particle_collisions"),
-         EffectsPanel::tr("Particle–particle disk contacts")},
-        {QStringLiteral("springs"),
-         EffectsPanel::tr("Spring forces; runs because the scene holds springs")},
-        {QStringLiteral("contacts"),
-         EffectsPanel::tr("Collision detection and contact impulses; runs because the scene "
-                          "holds things that can touch")},
-        {EffectsPanel::kIntegratorRow,
-         EffectsPanel::tr("The integrator's own arithmetic: the step minus its effects and "
-                          "contacts")},
-    };
+    static const QHash<QString, QString> descriptions = [] {
+        QHash<QString, QString> out{
+            {QStringLiteral("springs"),
+             EffectsPanel::tr("Spring forces; runs because the scene holds springs")},
+            {QStringLiteral("contacts"),
+             EffectsPanel::tr("Collision detection and contact impulses; runs because the scene "
+                              "holds things that can touch")},
+            {EffectsPanel::kIntegratorRow,
+             EffectsPanel::tr("The integrator's own arithmetic: the step minus its effects and "
+                              "contacts")},
+        };
+        schema::forEachEffect([&](const auto& table, auto) {
+            if (!table.implied) out.insert(text(table.key), text(table.description));
+        });
+        return out;
+    }();
     return descriptions.value(name);
 }
 }  // namespace
 
 const QStringList& EffectsPanel::contractEffects() {
-    static const QStringList names{QStringLiteral("gravity"),
-                                   QStringLiteral("drag"),
-                                   QStringLiteral("newtonian_gravity"),
-                                   QStringLiteral("buoyancy"),
-                                   QStringLiteral("wind"),
-                                   QStringLiteral("flocking"),
-                                   QStringLiteral("particle_collisions")};
+    static const QStringList names = [] {
+        QStringList out;
+        // Effects the objects imply (Coulomb's law between charges) are not added by hand.
+        schema::forEachEffect([&](const auto& table, auto) {
+            if (!table.implied) out << text(table.key);
+        });
+        return out;
+    }();
     return names;
 }
 
 QString EffectsPanel::displayName(const QString& name) {
-    if (name == QLatin1String("newtonian_gravity")) return tr("Newtonian gravity");
-    QString text = name;
-    text.replace(QLatin1Char('_'), QLatin1Char(' '));
-    if (!text.isEmpty()) text[0] = text[0].toUpper();
-    return text;
+    if (name == text(schema::key::newtonianGravity)) return tr("Newtonian gravity");
+    QString label = name;
+    label.replace(QLatin1Char('_'), QLatin1Char(' '));
+    if (!label.isEmpty()) label[0] = label[0].toUpper();
+    return label;
 }
 
 QString EffectsPanel::formatMs(double ms) {
