@@ -1,28 +1,23 @@
 #pragma once
-// The main window in the classic Qt shape (createActions, createMenus, createDocks,
+// The main window in the classic Qt shape (createActions, createMenus, createDockWindows,
 // readSettings/writeSettings, maybeSave): the canvas in the middle, docks for Parameters,
-// Effects, Properties, Plots and the Scene list. It composes ui/ widgets and wires them to the
-// Document (what is edited), the SimulationController (what runs) and the Recorder (what is
-// plotted); it holds no physics of its own.
+// Effects, Properties, Plots, the Scene list and the scene's Notes. It only composes: each dock
+// has a presenter (presenters/) that connects its ui/ widget to the Document (what is edited),
+// the SimulationController (what runs) and the Recorder (what is plotted).
 
 #include "app/document/Document.h"
 #include "app/sim/Recorder.h"
 #include "app/sim/SimulationController.h"
 #include "ui/plots/PlotsPanel.h"
 
-#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QStringList>
 
 #include <memory>
-#include <set>
 
 QT_BEGIN_NAMESPACE
 class QAction;
-class QActionGroup;
 class QDockWidget;
-class QLabel;
-class QMenu;
 class QTextBrowser;
 QT_END_NAMESPACE
 
@@ -39,10 +34,13 @@ class SceneBrowser;
 class CanvasTools;
 class AccuracyDialog;
 class Autosave;
-
-// The built-in scenes of a resource folder (":/scenes" for the examples, ":/lessons"), by
-// file name.
-QStringList builtInScenes(const QString& folder);
+class Presenter;
+class SceneFiles;
+class CanvasPresenter;
+class ParametersPresenter;
+class PlotsPresenter;
+class SceneBrowserPresenter;
+class StatusPresenter;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -90,45 +88,20 @@ private:
     void createActions();
     void createMenus();
     void createToolBar();
-    void createDocks();
-    void connectDocument();
+    void createDockWindows();
+    QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name,
+                         Qt::DockWidgetArea area);
+    // Keeps the presenter for refreshNow() and shows its messages in the status bar.
+    template <typename P>
+    P* addPresenter(P* presenter);
     void readSettings();
     void writeSettings();
     bool maybeSave();
 
     void newScene();
-    void open();
-    bool save();
-    bool saveAs();
-    void openExample(const QString& path);
-    void addRecentFile(const QString& path);
-    void updateRecentFilesMenu();
-    void exportPlotInteractively(ui::PlotsPanel::Plot plot, const QString& format);
-    void exportCanvasInteractively();
-
-    // Views following the document.
-    void onSceneReplaced();
-    void onSceneEdited();
-    void onSimulationSettingsChanged();
-    void onSelectionChanged();
-    void onStepped();
-    void onDiverged(const QString& message);
+    void openIfSaved(const QString& path);
     void updateTitle();
-    void updateStatus();
-    void updateEffectsRows();
-    void updateProperties(bool rebuild);
-    void updatePlots();
-    void updateAdvice();
-    QString errorPlotNote() const;
-    QString defaultPhaseCoordinate(const QString& id) const;
-    void updateCanvas();
-
-    // Keyboard control of the parameters.
-    void cycleIntegrator(int direction);
-    void scaleDt(double factor);
-    void changeSubsteps(int delta);
-    void changeSpeed(int direction);
-    void applySimulation(const SimulationDesc& simulation);
+    void onDiverged(const QString& message);
 
     Document document_;
     Recorder recorder_;
@@ -141,29 +114,22 @@ private:
     ui::PropertiesPanel* properties_ = nullptr;
     ui::SceneBrowser* browser_ = nullptr;
     ui::PlotsPanel* plots_ = nullptr;
-    QTextBrowser* notes_ = nullptr;
-    AccuracyDialog* accuracy_ = nullptr;
-    std::unique_ptr<Autosave> autosave_;  // the open scene, every minute, for crash recovery  // the scene's name and description: what to try
+    QTextBrowser* notes_ = nullptr;  // the scene's name and description: what to try
     QList<QDockWidget*> docks_;
 
-    QMenu* recentMenu_ = nullptr;
-    QMenu* examplesMenu_ = nullptr;
-    QMenu* lessonsMenu_ = nullptr;
-    QMenu* viewMenu_ = nullptr;
-    QActionGroup* toolGroup_ = nullptr;
-    QLabel* statusTime_ = nullptr;
-    QLabel* statusSpeed_ = nullptr;
-    QLabel* statusCost_ = nullptr;
-    QLabel* statusError_ = nullptr;
-    QLabel* statusMessage_ = nullptr;
+    QList<Presenter*> presenters_;  // every view's, for refreshNow()
+    CanvasPresenter* canvasPresenter_ = nullptr;
+    ParametersPresenter* parametersPresenter_ = nullptr;
+    PlotsPresenter* plotsPresenter_ = nullptr;
+    SceneBrowserPresenter* browserPresenter_ = nullptr;
+    StatusPresenter* status_ = nullptr;
 
-    QStringList recentFiles_;
-    std::set<QString> switchedOffEffects_;  // shown unchecked in the Effects dock
-    QString propertiesObject_;              // the id the Properties dock shows
-    QElapsedTimer sincePlots_;
+    AccuracyDialog* accuracy_ = nullptr;
+    std::unique_ptr<Autosave> autosave_;  // the open scene, every minute, for crash recovery
+
+    SceneFiles* files_ = nullptr;
     QByteArray normalState_;  // dock layout before presentation mode
     bool presentation_ = false;
-    QString lastMessage_;
 };
 
 }  // namespace phasebox

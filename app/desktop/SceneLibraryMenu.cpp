@@ -1,0 +1,66 @@
+#include "app/desktop/SceneLibraryMenu.h"
+
+#include "app/io/SceneIO.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFileInfo>
+#include <QMenu>
+#include <QSettings>
+
+namespace phasebox {
+
+QStringList builtInScenes(const QString& folder) {
+    QStringList paths;
+    const QDir dir(folder);
+    for (const QString& name : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name))
+        paths.append(dir.filePath(name));
+    return paths;
+}
+
+void fillSceneLibraryMenu(QMenu& menu, const QString& folder,
+                          const std::function<void(const QString&)>& open) {
+    for (const QString& path : builtInScenes(folder)) {
+        const SceneLoadResult loaded = SceneIO::load(path);
+        const QString title = loaded.ok() && !loaded.scene->name.empty()
+                                  ? QString::fromStdString(loaded.scene->name)
+                                  : QFileInfo(path).completeBaseName();
+        QAction* a = menu.addAction(title, &menu, [open, path] { open(path); });
+        if (loaded.ok()) a->setToolTip(QString::fromStdString(loaded.scene->description));
+        a->setData(path);
+    }
+    menu.setToolTipsVisible(true);
+    menu.setEnabled(!menu.isEmpty());
+}
+
+RecentFiles::RecentFiles(QMenu& menu, std::function<void(const QString&)> open, QObject* parent)
+    : QObject(parent), menu_(menu), open_(std::move(open)) {
+    updateMenu();
+}
+
+void RecentFiles::add(const QString& path) {
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    paths_.removeAll(absolute);
+    paths_.prepend(absolute);
+    while (paths_.size() > kMaxFiles) paths_.removeLast();
+    updateMenu();
+}
+
+void RecentFiles::readSettings(const QSettings& settings) {
+    paths_ = settings.value(QStringLiteral("recentFiles")).toStringList();
+    updateMenu();
+}
+
+void RecentFiles::writeSettings(QSettings& settings) const {
+    settings.setValue(QStringLiteral("recentFiles"), paths_);
+}
+
+void RecentFiles::updateMenu() {
+    menu_.clear();
+    for (const QString& path : paths_)
+        menu_.addAction(QFileInfo(path).fileName(), this, [this, path] { open_(path); })
+            ->setToolTip(path);
+    menu_.setEnabled(!paths_.isEmpty());
+}
+
+}  // namespace phasebox

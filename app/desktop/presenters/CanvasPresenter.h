@@ -1,0 +1,64 @@
+#pragma once
+// The canvas in the middle: shows the document's live world with the selection highlighted and
+// a line of what runs (time, integrator, dt). The mouse's tools are CanvasTools'.
+
+#include "app/desktop/presenters/Presenter.h"
+#include "ui/canvas/SceneRenderer.h"
+
+#include <QList>
+
+#include <vector>
+
+QT_BEGIN_NAMESPACE
+class QSettings;
+QT_END_NAMESPACE
+
+namespace phasebox {
+
+class CanvasTools;
+class Document;
+class SimulationController;
+namespace ui {
+class SceneView;
+}
+
+class CanvasPresenter : public Presenter {
+    Q_OBJECT
+
+public:
+    CanvasPresenter(ui::SceneView& view, CanvasTools& tools, Document& document,
+                    SimulationController& controller, QObject* parent = nullptr);
+
+    void refresh() override;
+    // The canvas's actions: the tools (keys 1 to 7), Fit Scene, the drawing options (trails,
+    // velocity arrows, labels, grid) and the picture export.
+    void createActions(QWidget& window);
+    QList<QAction*> toolActions() const { return toolActions_; }
+    // Thicker lines and larger labels for a projector.
+    void setPresentation(bool on);
+    // The drawing options are the user's, not the scene's: they outlive the session.
+    void readSettings(const QSettings& settings);
+    void writeSettings(QSettings& settings) const;
+    // A PNG of the scene, at least 800 × 600 pixels.
+    bool exportPicture(const QString& path, QString* error) const;
+    // Asks for a file name, then exports.
+    void exportInteractively();
+
+private:
+    struct ViewOption {
+        QAction* action;
+        bool ui::RenderOptions::*member;
+        QString settingsKey;  // empty: not kept between sessions
+    };
+
+    void showSelection();
+    void setOption(bool ui::RenderOptions::*member, bool on);
+
+    ui::SceneView& view_;
+    CanvasTools& tools_;
+    Document& document_;
+    QList<QAction*> toolActions_;
+    std::vector<ViewOption> options_;
+};
+
+}  // namespace phasebox

@@ -1,0 +1,79 @@
+#include "app/desktop/presenters/EffectsPresenter.h"
+
+#include "app/document/Document.h"
+#include "app/sim/SimulationController.h"
+#include "physics/world/World.h"
+#include "ui/panels/EffectsPanel.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace phasebox {
+
+EffectsPresenter::EffectsPresenter(ui::EffectsPanel& panel, Document& document,
+                                   SimulationController& controller, QObject* parent)
+    : Presenter(parent), panel_(panel), document_(document) {
+    connect(&document_, &Document::sceneReset, this, [this] {
+        switchedOff_.clear();
+        updateRows();
+    });
+    connect(&document_, &Document::sceneEdited, this, &EffectsPresenter::updateRows);
+    connect(&controller, &SimulationController::stepped, this, &EffectsPresenter::updateCosts);
+    connect(&controller, &SimulationController::statsChanged, this, &EffectsPresenter::updateCosts);
+    connect(&panel_, &ui::EffectsPanel::effectToggled, this, &EffectsPresenter::setEnabled);
+    connect(&panel_, &ui::EffectsPanel::addEffectRequested, this, &EffectsPresenter::add);
+}
+
+void EffectsPresenter::refresh() {
+    showCosts();
+}
+
+void EffectsPresenter::setEnabled(const QString& name, bool on) {
+    QString error;
+    if (!document_.setEffectEnabled(name, on, &error)) {
+        emit message(error);
+    } else if (on) {
+        switchedOff_.erase(name);
+    } else {
+        switchedOff_.insert(name);
+    }
+    updateRows();
+}
+
+void EffectsPresenter::add(const QString& name) {
+    QString error;
+    if (!document_.addEffect(name, &error)) emit message(error);
+    switchedOff_.erase(name);
+    updateRows();
+}
+
+void EffectsPresenter::updateRows() {
+    std::vector<ui::EffectRow> rows;
+    for (const QString& name : Document::effectNames()) {
+        const bool on = document_.isEffectEnabled(name);
+        if (on || switchedOff_.count(name)) rows.push_back({name, on, true, on ? 0.0 : -1.0, {}});
+    }
+    const World& world = document_.world();
+    if (!world.springs().empty())
+        rows.push_back({QStringLiteral("springs"), true, false, 0.0,
+                        tr("Runs because the scene has springs")});
+    if (world.contacts())
+        rows.push_back({QStringLiteral("contacts"), true, false, 0.0,
+                        tr("Runs because the scene holds things that can touch")});
+    rows.push_back({ui::EffectsPanel::kIntegratorRow, true, false, 0.0,
+                    tr("The integrator's own arithmetic")});
+    panel_.setEffects(rows);
+    updateCosts();
+}
+
+void EffectsPresenter::updateCosts() {
+    if (document_.world().stepCount() > 0) showCosts();
+}
+
+void EffectsPresenter::showCosts() {
+    const World& world = document_.world();
+    panel_.setCosts(world.effectCosts(), std::max<long long>(1, world.stepCount()),
+                    world.integratorSeconds());
+}
+
+}  // namespace phasebox

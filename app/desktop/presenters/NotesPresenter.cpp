@@ -1,0 +1,25 @@
+#include "app/desktop/presenters/NotesPresenter.h"
+
+#include "app/document/Document.h"
+
+#include <QTextBrowser>
+
+namespace phasebox {
+
+NotesPresenter::NotesPresenter(QTextBrowser& notes, Document& document, QObject* parent)
+    : Presenter(parent), notes_(notes), document_(document) {
+    notes_.setOpenExternalLinks(true);
+    connect(&document_, &Document::sceneReset, this, [this] {
+        refresh();
+        if (!document_.setup().description.empty()) emit notesToRead();
+    });
+}
+
+void NotesPresenter::refresh() {
+    const SceneDesc& scene = document_.setup();
+    notes_.setHtml(QStringLiteral("<h3>%1</h3><p>%2</p>")
+                       .arg(QString::fromStdString(scene.name).toHtmlEscaped(),
+                            QString::fromStdString(scene.description).toHtmlEscaped()));
+}
+
+}  // namespace phasebox

@@ -1,0 +1,160 @@
+#include "app/desktop/presenters/ParametersPresenter.h"
+
+#include "app/document/Document.h"
+#include "app/sim/SimulationController.h"
+#include "physics/diagnostics/StabilityAdvisor.h"
+#include "physics/integrators/Integrator.h"
+#include "ui/panels/ParametersPanel.h"
+
+#include <QAction>
+#include <QSettings>
+
+#include <algorithm>
+#include <cmath>
+
+namespace phasebox {
+
+ParametersPresenter::ParametersPresenter(ui::ParametersPanel& panel, Document& document,
+                                         SimulationController& controller, QObject* parent)
+    : Presenter(parent), panel_(panel), document_(document), controller_(controller) {
+    connect(&document_, &Document::sceneReset, this, &ParametersPresenter::refresh);
+    connect(&document_, &Document::sceneEdited, this, &ParametersPresenter::updateAdvice);
+    connect(&document_, &Document::simulationSettingsChanged, this,
+            &ParametersPresenter::showSettings);
+
+    connect(&panel_, &ui::ParametersPanel::integratorChanged, this, [this](const QString& name) {
+        change([&](auto& s) { s.integrator = name.toStdString(); });
+    });
+    connect(&panel_, &ui::ParametersPanel::dtChanged, this,
+            [this](double dt) { change([&](auto& s) { s.dt = dt; }); });
+    connect(&panel_, &ui::ParametersPanel::substepsChanged, this,
+            [this](int n) { change([&](auto& s) { s.substeps = n; }); });
+    connect(&panel_, &ui::ParametersPanel::toleranceChanged, this,
+            [this](double tolerance) { change([&](auto& s) { s.tolerance = tolerance; }); });
+    connect(&panel_, &ui::ParametersPanel::newtonIterationsChanged, this,
+            [this](int n) { change([&](auto& s) { s.newtonIterations = n; }); });
+    connect(&panel_, &ui::ParametersPanel::speedChanged, this, &ParametersPresenter::setSpeed);
+}
+
+void ParametersPresenter::createActions(QWidget& window) {
+    auto add = [&](const char* name, const QString& text, QKeyCombination key, auto slot) {
+        QAction* action = addWindowAction(window, name, text, key);
+        connect(action, &QAction::triggered, this, slot);
+        return action;
+    };
+    QAction* play = add("play", tr("&Play"), Qt::Key_Space, [this] { controller_.togglePlay(); });
+    play->setCheckable(true);
+    play->setToolTip(tr("Play or pause the simulation (Space)"));
+    connect(&controller_, &SimulationController::runningChanged, play, [play](bool running) {
+        play->setChecked(running);
+        play->setText(running ? tr("&Pause") : tr("&Play"));
+    });
+    QAction* step = add("step", tr("S&tep"), Qt::Key_S, [this] { controller_.singleStep(); });
+    step->setToolTip(tr("Advance one step (S)"));
+    QAction* reset =
+        add("reset", tr("&Reset"), Qt::CTRL | Qt::Key_R, [this] { controller_.reset(); });
+    reset->setToolTip(tr("Back to the setup (Ctrl+R)"));
+    panel_.setActions(play, step, reset);
+    add("nextIntegrator", tr("Next Integrator"), Qt::Key_BracketRight,
+        [this] { cycleIntegrator(1); });
+    add("previousIntegrator", tr("Previous Integrator"), Qt::Key_BracketLeft,
+        [this] { cycleIntegrator(-1); });
+    add("doubleDt", tr("Double dt"), Qt::Key_Period, [this] { scaleDt(2.0); });
+    add("halveDt", tr("Halve dt"), Qt::Key_Comma, [this] { scaleDt(0.5); });
+    add("moreSubsteps", tr("More Sub-steps"), Qt::ALT | Qt::Key_Up, [this] { changeSubsteps(1); });
+    add("fewerSubsteps", tr("Fewer Sub-steps"), Qt::ALT | Qt::Key_Down,
+        [this] { changeSubsteps(-1); });
+    add("faster", tr("Faster"), Qt::CTRL | Qt::Key_Up, [this] { changeSpeed(1); });
+    add("slower", tr("Slower"), Qt::CTRL | Qt::Key_Down, [this] { changeSpeed(-1); });
+}
+
+void ParametersPresenter::readSettings(const QSettings& settings) {
+    setSpeed(settings.value(QStringLiteral("simulation/speed"), 1.0).toDouble());
+}
+
+void ParametersPresenter::writeSettings(QSettings& settings) const {
+    settings.setValue(QStringLiteral("simulation/speed"), controller_.speed());
+}
+
+void ParametersPresenter::refresh() {
+    panel_.setSpeed(controller_.speed());
+    showSettings();
+}
+
+void ParametersPresenter::showSettings() {
+    panel_.setSimulation(document_.setup().simulation);
+    updateAdvice();
+}
+
+void ParametersPresenter::updateAdvice() {
+    const StabilityAdvice advice = adviseStability(document_.world(), 200);
+    if (advice.omegaMax <= 0.0)
+        panel_.setAdvice({}, false);
+    else
+        panel_.setAdvice(QString::fromStdString(advice.message), !advice.currentStable);
+}
+
+bool ParametersPresenter::change(const std::function<void(SimulationDesc&)>& edit) {
+    SimulationDesc simulation = document_.setup().simulation;
+    edit(simulation);
+    QString error;
+    const bool ok = document_.applySimulationSettings(simulation, &error);
+    if (!ok) {
+        emit message(error);
+        panel_.setSimulation(document_.setup().simulation);
+    }
+    document_.finishInteraction();
+    return ok;
+}
+
+void ParametersPresenter::cycleIntegrator(int direction) {
+    const auto& registry = integratorRegistry();
+    const std::string current = document_.setup().simulation.integrator;
+    const auto it = std::find_if(registry.begin(), registry.end(),
+                                 [&](const auto& info) { return info.name == current; });
+    const int n = static_cast<int>(registry.size());
+    const int index = it == registry.end() ? 0 : static_cast<int>(it - registry.begin());
+    const std::string next(registry[static_cast<std::size_t>((index + direction + n) % n)].name);
+    if (change([&](auto& s) { s.integrator = next; }))
+        emit message(tr("Integrator: %1").arg(QString::fromStdString(next)));
+}
+
+void ParametersPresenter::scaleDt(double factor) {
+    const double dt = std::clamp(document_.setup().simulation.dt * factor, 1e-5, 1.0);
+    if (change([&](auto& s) { s.dt = dt; })) emit message(tr("dt = %1 s").arg(dt, 0, 'g', 4));
+}
+
+void ParametersPresenter::changeSubsteps(int delta) {
+    const int substeps = std::clamp(document_.setup().simulation.substeps + delta, 1, 1000);
+    if (change([&](auto& s) { s.substeps = substeps; }))
+        emit message(tr("%1 sub-steps").arg(substeps));
+}
+
+void ParametersPresenter::applyStudyChoice(const QString& integrator, double dt, double tolerance) {
+    const bool ok = change([&](auto& s) {
+        s.integrator = integrator.toStdString();
+        s.dt = dt;
+        s.tolerance = tolerance;
+    });
+    if (ok) emit message(tr("Applied %1 at dt %2 s").arg(integrator).arg(dt, 0, 'g', 4));
+}
+
+void ParametersPresenter::changeSpeed(int direction) {
+    const auto& speeds = ui::ParametersPanel::speeds();
+    const double current = controller_.speed();
+    const auto nearest =
+        std::min_element(speeds.begin(), speeds.end(), [current](double a, double b) {
+            return std::abs(std::log(a / current)) < std::abs(std::log(b / current));
+        });
+    const int index = std::clamp(static_cast<int>(nearest - speeds.begin()) + direction, 0,
+                                 static_cast<int>(speeds.size()) - 1);
+    setSpeed(speeds[static_cast<std::size_t>(index)]);
+}
+
+void ParametersPresenter::setSpeed(double factor) {
+    controller_.setSpeed(factor);
+    panel_.setSpeed(controller_.speed());
+    emit speedChanged(controller_.speed());
+}
+
+}  // namespace phasebox

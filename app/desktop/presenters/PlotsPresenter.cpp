@@ -1,0 +1,200 @@
+#include "app/desktop/presenters/PlotsPresenter.h"
+
+#include "app/document/Document.h"
+#include "app/sim/Recorder.h"
+#include "app/sim/SimulationController.h"
+#include "physics/world/World.h"
+#include "ui/plots/Charts.h"
+
+#include <QChart>
+#include <QDir>
+#include <QFileDialog>
+#include <QMenu>
+#include <QMessageBox>
+#include <QStandardPaths>
+
+#include <cmath>
+#include <memory>
+#include <utility>
+
+namespace phasebox {
+
+PlotsPresenter::PlotsPresenter(ui::PlotsPanel& panel, Document& document,
+                               SimulationController& controller, Recorder& recorder,
+                               QObject* parent)
+    : Presenter(parent),
+      panel_(panel),
+      document_(document),
+      controller_(controller),
+      recorder_(recorder) {
+    connect(&document_, &Document::sceneReset, this, [this] {
+        recorder_.clear();
+        recorder_.record(document_.world());
+    });
+    connect(&document_, &Document::selectionChanged, this, &PlotsPresenter::followSelection);
+    connect(&controller_, &SimulationController::stepped, this, [this] {
+        if (sinceRefresh_.elapsed() >= kPlotIntervalMs) refresh();
+    });
+    connect(&panel_, &ui::PlotsPanel::clearRequested, &recorder_, &Recorder::clear);
+    connect(&panel_, &ui::PlotsPanel::phaseCoordinateRequested, this,
+            &PlotsPresenter::choosePhaseCoordinate);
+    connect(&panel_, &ui::PlotsPanel::exportRequested, this, &PlotsPresenter::exportInteractively);
+    connect(&panel_, &ui::PlotsPanel::pausedChanged, this, [this](bool paused) {
+        if (!paused) refresh();
+    });
+    sinceRefresh_.start();
+}
+
+QString PlotsPresenter::energyTitle() const {
+    const SimulationDesc& s = document_.setup().simulation;
+    return tr("Energy (%1, dt %2 s)")
+        .arg(QString::fromStdString(s.integrator))
+        .arg(s.dt, 0, 'g', 4);
+}
+
+QString PlotsPresenter::errorTitle() const {
+    const SimulationDesc& s = document_.setup().simulation;
+    return tr("Local error per step (%1, dt %2 s)")
+        .arg(QString::fromStdString(s.integrator))
+        .arg(s.dt / s.substeps, 0, 'g', 4);
+}
+
+QString PlotsPresenter::errorNote() const {
+    if (!controller_.estimatesErrors()) return tr("The live error estimate is off (View menu).");
+    if (controller_.msPerStep() > SimulationController::kMaxEstimateStepMs)
+        return tr("No live error estimate: a step takes %1 ms, and the estimate would cost three "
+                  "more.")
+            .arg(controller_.msPerStep(), 0, 'g', 3);
+    return tr("Press Play: the error one step makes is estimated as the simulation runs.");
+}
+
+void PlotsPresenter::refresh() {
+    sinceRefresh_.restart();
+    panel_.setEnergy(recorder_.energySamples(), recorder_.markers(), energyTitle());
+    panel_.setError(recorder_.errorSamples(), errorTitle(), errorNote());
+    const QString object = recorder_.phaseObject();
+    if (object.isEmpty()) {
+        panel_.setPhase({}, {}, {}, tr("Phase space"));
+        return;
+    }
+    const QString coordinate = object + QLatin1Char('.') + recorder_.phaseCoordinate();
+    panel_.setPhase(recorder_.phaseSamples(), coordinate,
+                    object + QLatin1Char('.') + recorder_.phaseVelocityName(),
+                    tr("Phase space of %1").arg(coordinate));
+}
+
+// The phase plot follows the first selected particle, box or cloth node.
+void PlotsPresenter::followSelection() {
+    const QStringList selection = document_.selection();
+    const QString first = selection.isEmpty() ? QString() : selection.first();
+    const ObjectRef ref = findObject(document_.setup(), first.toStdString());
+    const bool isNode = first.contains(QLatin1Char('['));
+    if (ref.kind == ObjectKind::Particle || ref.kind == ObjectKind::Box || isNode) {
+        const QString coordinate = defaultPhaseCoordinate(first);
+        recorder_.setPhaseTarget(first, coordinate);
+        panel_.setPhaseCoordinate(coordinate);
+        recorder_.record(document_.world());
+    }
+    refresh();
+}
+
+QString PlotsPresenter::defaultPhaseCoordinate(const QString& id) const {
+    // The coordinate that moves: the larger live velocity component, or at rest the direction
+    // gravity will move it.
+    const World& w = document_.world();
+    const std::string name = id.toStdString();
+    Vec2 v = Vec2::Zero();
+    for (std::size_t i = 0; i < w.particles().size(); ++i)
+        if (w.particles()[i].id == name) v = w.particleVelocity(static_cast<int>(i));
+    for (std::size_t i = 0; i < w.boxes().size(); ++i)
+        if (w.boxes()[i].id == name) v = w.boxVelocity(static_cast<int>(i));
+    if (v.squaredNorm() == 0.0) {
+        const auto& gravity = document_.setup().effects.gravity;
+        if (gravity) v = Vec2(gravity->g[0], gravity->g[1]);
+    }
+    return std::abs(v.y()) > std::abs(v.x()) ? QStringLiteral("y") : QStringLiteral("x");
+}
+
+void PlotsPresenter::choosePhaseCoordinate(const QString& coordinate) {
+    const QString object = recorder_.phaseObject();
+    const ObjectRef ref = findObject(document_.setup(), object.toStdString());
+    if (object.isEmpty() || (coordinate == QLatin1String("angle") && ref.kind != ObjectKind::Box)) {
+        emit message(object.isEmpty() ? tr("Click an object first.")
+                                      : tr("Only boxes have an angle."));
+        panel_.setPhaseCoordinate(recorder_.phaseCoordinate());
+        return;
+    }
+    recorder_.setPhaseTarget(object, coordinate);
+    recorder_.record(document_.world());
+    refresh();
+}
+
+bool PlotsPresenter::exportPlot(ui::PlotsPanel::Plot plot, const QString& path,
+                                QString* error) const {
+    using Plot = ui::PlotsPanel::Plot;
+    if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) {
+        switch (plot) {
+            case Plot::Energy:
+                return recorder_.writeEnergyCsv(path, error);
+            case Plot::Phase:
+                return recorder_.writePhaseCsv(path, error);
+            case Plot::Error:
+                return recorder_.writeErrorCsv(path, error);
+        }
+    }
+    // The picture is made from the recorded samples in a chart of its own, not grabbed from
+    // the screen, so it is complete even while the plots are paused or the dock is hidden.
+    std::unique_ptr<QChart> chart;
+    if (plot == Plot::Energy) {
+        chart.reset(
+            ui::createEnergyChart(recorder_.energySamples(), recorder_.markers(), energyTitle()));
+    } else if (plot == Plot::Error) {
+        chart.reset(ui::createErrorChart(recorder_.errorSamples(), errorTitle()));
+    } else {
+        const QString object = recorder_.phaseObject();
+        if (object.isEmpty()) {
+            if (error) *error = tr("no object chosen for the phase plot: click one on the canvas");
+            return false;
+        }
+        const QString coordinate = object + QLatin1Char('.') + recorder_.phaseCoordinate();
+        const QString integrator = QString::fromStdString(document_.setup().simulation.integrator);
+        chart.reset(ui::createPhaseChart(recorder_.phaseSamples(), coordinate,
+                                         object + QLatin1Char('.') + recorder_.phaseVelocityName(),
+                                         tr("Phase space of %1 (%2)").arg(coordinate, integrator)));
+    }
+    return ui::exportChart(chart.get(), path, QSize(1200, 800), error);
+}
+
+void PlotsPresenter::addExportActions(QMenu& menu) {
+    using Plot = ui::PlotsPanel::Plot;
+    for (const auto& [plot, name] :
+         {std::pair{Plot::Energy, tr("Energy Plot")}, std::pair{Plot::Phase, tr("Phase Plot")},
+          std::pair{Plot::Error, tr("Error Plot")}})
+        for (const QString& format :
+             {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("csv")})
+            menu.addAction(tr("%1 as %2…").arg(name, format.toUpper()), this,
+                           [this, plot = plot, format] { exportInteractively(plot, format); });
+}
+
+void PlotsPresenter::setPresentation(bool on) {
+    panel_.setPresentation(on);
+    refresh();
+}
+
+void PlotsPresenter::exportInteractively(ui::PlotsPanel::Plot plot, const QString& format) {
+    const QString base = plot == ui::PlotsPanel::Plot::Energy  ? QStringLiteral("energy")
+                         : plot == ui::PlotsPanel::Plot::Phase ? QStringLiteral("phase")
+                                                               : QStringLiteral("error");
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+    const QString path = QFileDialog::getSaveFileName(
+        panel_.window(), tr("Export Plot"), QDir(dir).filePath(base + QLatin1Char('.') + format),
+        format.toUpper() + QStringLiteral(" (*.") + format + QLatin1Char(')'));
+    if (path.isEmpty()) return;
+    QString error;
+    if (!exportPlot(plot, path, &error))
+        QMessageBox::warning(panel_.window(), tr("Export failed"), error);
+    else
+        emit message(tr("Wrote %1").arg(QDir::toNativeSeparators(path)));
+}
+
+}  // namespace phasebox

@@ -1,0 +1,60 @@
+#include "app/desktop/presenters/PropertiesPresenter.h"
+
+#include "app/document/Document.h"
+#include "app/document/PropertyTable.h"
+#include "app/sim/SimulationController.h"
+#include "ui/panels/PropertiesPanel.h"
+
+#include <vector>
+
+namespace phasebox {
+
+PropertiesPresenter::PropertiesPresenter(ui::PropertiesPanel& panel, Document& document,
+                                         SimulationController& controller, QObject* parent)
+    : Presenter(parent), panel_(panel), document_(document) {
+    connect(&document_, &Document::sceneReset, this, [this] { update(true); });
+    connect(&document_, &Document::sceneEdited, this, [this] { update(true); });
+    connect(&document_, &Document::selectionChanged, this, [this] {
+        update(true);
+        if (panel_.hasObject()) emit objectShown();
+    });
+    connect(&controller, &SimulationController::stepped, this, &PropertiesPresenter::refresh);
+    connect(&panel_, &ui::PropertiesPanel::propertyEdited, this, &PropertiesPresenter::edit);
+}
+
+void PropertiesPresenter::update(bool rebuild) {
+    const QStringList selection = document_.selection();
+    const SceneDesc& setup = document_.setup();
+    const ObjectRef ref =
+        findObject(setup, selection.size() == 1 ? selection.first().toStdString() : std::string());
+    if (!ref.isValid()) {
+        shownId_.clear();
+        panel_.clearObject();
+        return;
+    }
+    const QString id = QString::fromStdString(objectId(setup, ref));  // a cloth node: its cloth
+    std::vector<ui::PropertyField> fields;
+    for (const PropertyRow& row : propertiesOf(setup, id))
+        fields.push_back({row.key, row.label, row.unit, row.value, row.minimum, row.maximum,
+                          row.decimals, row.isBool});
+    if (rebuild || id != shownId_) {
+        shownId_ = id;
+        panel_.setObject(objectKindName(ref.kind) + QStringLiteral(" ") + id, fields);
+    } else {
+        panel_.updateValues(fields);
+    }
+}
+
+void PropertiesPresenter::edit(const QString& key, double value) {
+    QString error;
+    const bool ok = key == QLatin1String("pinned") || key == QLatin1String("static")
+                        ? document_.setPinned(shownId_, value != 0.0, &error)
+                        : document_.setProperty(shownId_, key, value, &error);
+    if (ok)
+        panel_.clearError();
+    else
+        panel_.showError(error);
+    document_.finishInteraction();
+}
+
+}  // namespace phasebox

@@ -1,0 +1,61 @@
+#include "app/desktop/presenters/StatusPresenter.h"
+
+#include "app/document/Document.h"
+#include "app/sim/SimulationController.h"
+#include "physics/world/World.h"
+
+#include <QLabel>
+#include <QStatusBar>
+
+#include <cmath>
+
+namespace phasebox {
+
+StatusPresenter::StatusPresenter(QStatusBar& bar, Document& document,
+                                 SimulationController& controller, QObject* parent)
+    : Presenter(parent), document_(document), controller_(controller) {
+    message_ = new QLabel(&bar);
+    message_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    bar.addWidget(message_, 1);
+    error_ = new QLabel(&bar);
+    error_->setToolTip(
+        tr("Step doubling at the current state: the error one step of this "
+           "method makes now. Raise dt and watch it grow."));
+    time_ = new QLabel(&bar);
+    speed_ = new QLabel(&bar);
+    cost_ = new QLabel(&bar);
+    for (QLabel* label : {error_, time_, speed_, cost_}) bar.addPermanentWidget(label);
+
+    connect(&document_, &Document::sceneReset, this, &StatusPresenter::reportUnsupportedEffects);
+    connect(&document_, &Document::sceneEdited, this, &StatusPresenter::reportUnsupportedEffects);
+    connect(&document_, &Document::simulationSettingsChanged, this, &StatusPresenter::refresh);
+    connect(&controller_, &SimulationController::stepped, this, &StatusPresenter::refresh);
+    connect(&controller_, &SimulationController::statsChanged, this, &StatusPresenter::refresh);
+    connect(&controller_, &SimulationController::runningChanged, this, &StatusPresenter::refresh);
+}
+
+void StatusPresenter::showMessage(const QString& text) {
+    message_->setText(text);
+}
+
+void StatusPresenter::reportUnsupportedEffects() {
+    refresh();
+    const QStringList unsupported = document_.unsupportedEffects();
+    if (!unsupported.isEmpty())
+        showMessage(tr("Not simulated yet by this version: %1")
+                        .arg(unsupported.join(QStringLiteral(", "))));
+}
+
+void StatusPresenter::refresh() {
+    const double error = controller_.lastErrorEstimate();
+    error_->setText(std::isfinite(error) ? tr("local error ≈ %1 m").arg(error, 0, 'g', 2)
+                                         : QString());
+    time_->setText(tr("t = %1 s").arg(document_.world().time(), 0, 'g', 4));
+    speed_->setText(controller_.isRunning() ? tr("real-time factor %1 (speed %2×)")
+                                                  .arg(controller_.realTimeFactor(), 0, 'f', 2)
+                                                  .arg(controller_.speed())
+                                            : tr("paused (speed %1×)").arg(controller_.speed()));
+    cost_->setText(tr("%1 ms per step").arg(controller_.msPerStep(), 0, 'g', 3));
+}
+
+}  // namespace phasebox
