@@ -7,6 +7,7 @@
 #include "physics/effects/GravityEffect.h"
 #include "physics/effects/NewtonianGravityEffect.h"
 #include "physics/effects/WindEffect.h"
+#include "physics/scene/SceneSchema.h"
 
 #include <unordered_map>
 
@@ -100,17 +101,18 @@ bool needsCoulomb(const SceneDesc& scene) {
 
 ContactSettings contactSettings(const std::map<std::string, double>& solver) {
     ContactSettings settings;
-    auto take = [&](const char* key, auto& field) {
-        if (const auto it = solver.find(key); it != solver.end())
+    auto take = [&](std::string_view key, auto& field) {
+        if (const auto it = solver.find(std::string(key)); it != solver.end())
             field = static_cast<std::remove_reference_t<decltype(field)>>(it->second);
     };
-    take("iterations", settings.iterations);
-    take("relax_iterations", settings.relaxIterations);
-    take("contact_hertz", settings.hertz);
-    take("damping_ratio", settings.dampingRatio);
-    take("push_out", settings.pushOut);
-    take("restitution_threshold", settings.restitutionThreshold);
-    take("speculative_distance", settings.speculativeDistance);
+    namespace key = schema::key;
+    take(key::iterations, settings.iterations);
+    take(key::relaxIterations, settings.relaxIterations);
+    take(key::contactHertz, settings.hertz);
+    take(key::dampingRatio, settings.dampingRatio);
+    take(key::pushOut, settings.pushOut);
+    take(key::restitutionThreshold, settings.restitutionThreshold);
+    take(key::speculativeDistance, settings.speculativeDistance);
     return settings;
 }
 
