@@ -291,6 +291,25 @@ private slots:
         QVERIFY(!panel.findChild<QToolButton*>("addEffect")->isEnabled());
     }
 
+    // The step profile under the effects: one row per stage, in order, "–" for a stage that
+    // has not run; a second profile updates the rows in place.
+    void stageCostsShowTheStepProfile() {
+        EffectsPanel panel;
+        auto* stages = panel.findChild<QTreeWidget*>("stages");
+        QVERIFY(stages);
+        panel.setStageCosts({{"integrate", 0.5}, {"collide", -1.0}, {"solve contacts", 1.25}});
+        QCOMPARE(stages->topLevelItemCount(), 3);
+        QCOMPARE(stages->topLevelItem(2)->text(0), QString("Solve contacts"));
+        QCOMPARE(panel.stageCostText("integrate"), QString("0.500 ms"));
+        QCOMPARE(panel.stageCostText("collide"), QString("–"));
+        QCOMPARE(panel.stageCostText("guard"), QString());
+        QTreeWidgetItem* first = stages->topLevelItem(0);
+        panel.setStageCosts({{"integrate", 0.02}, {"collide", 0.0}});
+        QCOMPARE(stages->topLevelItem(0), first);
+        QCOMPARE(stages->topLevelItemCount(), 2);
+        QCOMPARE(panel.stageCostText("integrate"), QString("20.0 µs"));
+    }
+
     void costsFromTheWorldProfile() {
         EffectsPanel panel;
         panel.setEffects(sampleEffects());

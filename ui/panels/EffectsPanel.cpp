@@ -136,6 +136,7 @@ EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
     layout->addWidget(tree_, 1);
+    layout->addWidget(createStageView());
     layout->addLayout(bottom);
     setMinimumWidth(220);
 
@@ -310,6 +311,52 @@ QString EffectsPanel::costText(const QString& name) const {
 
 QString EffectsPanel::totalText() const {
     return total_->text();
+}
+
+QTreeWidget* EffectsPanel::createStageView() {
+    stages_ = new QTreeWidget;
+    stages_->setObjectName(QStringLiteral("stages"));
+    stages_->setHeaderLabels({tr("Stage of the step"), tr("per step")});
+    stages_->headerItem()->setTextAlignment(kCostColumn, Qt::AlignRight | Qt::AlignVCenter);
+    stages_->setToolTip(tr("Where a step's time goes, stage by stage, in the order they run"));
+    stages_->setRootIsDecorated(false);
+    stages_->setSelectionMode(QAbstractItemView::NoSelection);
+    stages_->setFocusPolicy(Qt::NoFocus);
+    stages_->header()->setStretchLastSection(false);
+    stages_->header()->setSectionResizeMode(kNameColumn, QHeaderView::Stretch);
+    stages_->header()->setSectionResizeMode(kCostColumn, QHeaderView::Fixed);
+    stages_->header()->resizeSection(kCostColumn, tree_->header()->sectionSize(kCostColumn));
+    stages_->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    stages_->hide();  // until the first profile
+    return stages_;
+}
+
+void EffectsPanel::setStageCosts(const std::vector<StageCost>& stages) {
+    while (stages_->topLevelItemCount() > static_cast<int>(stages.size()))
+        delete stages_->takeTopLevelItem(stages_->topLevelItemCount() - 1);
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+        QTreeWidgetItem* item = stages_->topLevelItem(static_cast<int>(i));
+        if (!item) {
+            item = new QTreeWidgetItem(stages_);
+            item->setTextAlignment(kCostColumn, Qt::AlignRight | Qt::AlignVCenter);
+        }
+        item->setText(kNameColumn, displayName(stages[i].name));
+        item->setData(kNameColumn, Qt::UserRole, stages[i].name);
+        item->setText(kCostColumn, formatMs(stages[i].msPerStep));
+    }
+    // Tall enough for every row: the list is short and should never scroll.
+    const int rows = stages_->topLevelItemCount();
+    const int rowHeight = rows > 0 ? stages_->sizeHintForRow(0) : 0;
+    stages_->setFixedHeight(stages_->header()->sizeHint().height() + rows * rowHeight +
+                            2 * stages_->frameWidth());
+    stages_->setVisible(rows > 0);
+}
+
+QString EffectsPanel::stageCostText(const QString& stage) const {
+    for (int i = 0; i < stages_->topLevelItemCount(); ++i)
+        if (stages_->topLevelItem(i)->data(kNameColumn, Qt::UserRole).toString() == stage)
+            return stages_->topLevelItem(i)->text(kCostColumn);
+    return {};
 }
 
 }  // namespace phasebox::ui

@@ -36,6 +36,13 @@ struct EffectRow {
     QString tooltip;
 };
 
+// One stage of the world's step (World::stepProfile(): integrate, collide, solve contacts, …)
+// and its mean cost.
+struct StageCost {
+    QString name;
+    double msPerStep = 0.0;  // negative or NaN: the stage has not run, shown as "–"
+};
+
 class EffectsPanel : public QWidget {
     Q_OBJECT
 public:
@@ -57,6 +64,10 @@ public:
     // One row's cost in ms per step; the total becomes the sum of the rows.
     void setCost(const QString& name, double msPerStep);
 
+    // The step profile under the effects: each stage of the world's step in the order it runs,
+    // the coarse view of which the effect rows are the finer one. Rows are updated in place.
+    void setStageCosts(const std::vector<StageCost>& stages);
+    QString stageCostText(const QString& stage) const;  // empty for an unknown stage
     QStringList effectNames() const;     // the rows' names, in order
     QStringList addableEffects() const;  // CONTRACT §1 effects not in the rows
     bool isEnabled(const QString& name) const;
@@ -81,7 +92,10 @@ private:
     void updateTotal(double totalMs);
     void onItemChanged(QTreeWidgetItem* item, int column);
 
+    QTreeWidget* createStageView();
+
     QTreeWidget* tree_ = nullptr;
+    QTreeWidget* stages_ = nullptr;  // the step profile, one row per stage
     QToolButton* addButton_ = nullptr;
     QMenu* addMenu_ = nullptr;
     QLabel* total_ = nullptr;

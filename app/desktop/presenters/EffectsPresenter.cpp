@@ -74,6 +74,14 @@ void EffectsPresenter::showCosts() {
     const World& world = document_.world();
     panel_.setCosts(world.effectCosts(), std::max<long long>(1, world.stepCount()),
                     world.integratorSeconds());
+    const StepProfile& profile = world.stepProfile();
+    std::vector<ui::StageCost> stages;
+    for (int i = 0; i < StepProfile::kStageCount; ++i) {
+        const std::string_view name = StepProfile::kStageNames[static_cast<std::size_t>(i)];
+        stages.push_back({QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())),
+                          profile.ran(i) ? profile.msPerStep(i) : -1.0});
+    }
+    panel_.setStageCosts(stages);
 }
 
 }  // namespace phasebox

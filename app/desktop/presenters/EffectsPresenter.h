@@ -1,7 +1,8 @@
 #pragma once
 // The Effects dock: the effects the scene lists (a check box each, switched on and off as undo
 // steps), the stages the world runs because of what the scene holds (springs, contacts), and
-// what each costs per step while the simulation runs.
+// what each costs per step while the simulation runs, with the step profile (World::stepProfile):
+// the cost of each stage of the step.
 
 #include "app/desktop/presenters/Presenter.h"
 
