@@ -24,6 +24,11 @@ namespace phasebox::cli {
 
 namespace {
 
+QString stageName(int stage) {
+    const std::string_view name = StepProfile::kStageNames[stage];
+    return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+}
+
 const char* kRunUsage =
     "usage: phasebox-cli run SCENE [--integrator NAME] [--dt S] [--substeps N] [--duration S]\n"
     "                              [--tolerance T] [--csv FILE] [--every K] [--track ID,ID...]\n"
@@ -466,6 +471,15 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         for (const EffectCost& cost : world.effectCosts())
             effects.append(QJsonObject{{"name", QString::fromStdString(cost.name)},
                                        {"ms_per_step", cost.seconds * 1000.0 / stepsRun}});
+        // The named stages of the step in the order they run (CONTRACT.md §7); a stage the
+        // scene never needs (collide, with nothing to touch) is left out.
+        QJsonArray stages;
+        const StepProfile& profile = world.stepProfile();
+        for (int i = 0; i < StepProfile::kStageCount; ++i)
+            if (profile.ran(i))
+                stages.append(QJsonObject{
+                    {"name", stageName(i)},
+                    {"ms_per_step", profile.msPerStep(i)}});
         const double mean = stepsTimed == 0 ? 0.0 : stepMsSum / static_cast<double>(stepsTimed);
         QJsonObject report{
             {"integrator", QString::fromStdString(sim.integrator)},
@@ -477,6 +491,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             {"step_ms", QJsonObject{{"median", median(stepMs.values())},
                                     {"mean", mean},
                                     {"max", stepMsMax}}},
+            {"stages", stages},
             {"energy", QJsonObject{{"initial", initialEnergy},
                                    {"kinetic", e.kinetic},
                                    {"potential", e.potential},
@@ -525,6 +540,12 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         for (const EffectCost& cost : world.effectCosts())
             out << " " << QString::fromStdString(cost.name) << " "
                 << QString::number(cost.seconds * 1000.0 / stepsRun, 'g', 3) << " ms/step;";
+        out << "\nstages:    ";
+        const StepProfile& profile = world.stepProfile();
+        for (int i = 0; i < StepProfile::kStageCount; ++i)
+            if (profile.ran(i))
+                out << " " << stageName(i)
+                    << " " << QString::number(profile.msPerStep(i), 'g', 3) << " ms/step;";
         out << "\n";
         for (const Tracked& t : tracked) {
             const ui::PhaseSample x = phaseOf(world, t, 0), y = phaseOf(world, t, 1);

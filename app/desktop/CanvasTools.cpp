@@ -2,7 +2,7 @@
 
 #include "app/document/Document.h"
 #include "app/document/PropertyTable.h"
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/effects/MouseSpringEffect.h"
 #include "ui/canvas/SceneView.h"
 

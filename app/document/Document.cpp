@@ -2,7 +2,7 @@
 
 #include "app/document/Commands.h"
 #include "app/io/SceneIO.h"
-#include "physics/core/World.h"
+#include "physics/world/World.h"
 #include "physics/effects/MouseSpringEffect.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/StateTransfer.h"
@@ -323,7 +323,7 @@ bool Document::grab(const QString& id, const Point2& localPoint, const Point2& t
 
 void Document::attachGrab() {
     if (!grab_) return;
-    auto spring = std::make_unique<MouseSpringEffect>(*world_, grab_->id, vec(grab_->localPoint),
+    auto spring = std::make_unique<MouseSpringEffect>(grab_->id, vec(grab_->localPoint),
                                                       vec(grab_->target), grab_->stiffness);
     mouseSpring_ = spring.get();
     world_->addEffect(std::move(spring));

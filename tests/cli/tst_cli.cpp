@@ -114,6 +114,44 @@ private slots:
         QVERIFY(o["energy"].toObject()["work_nc"].toDouble() < 0.0);
     }
 
+    void runJsonReportsTheStagesOfTheStep_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("stages");
+        // Nothing can touch on the oscillator: no collide, no contact solve.
+        QTest::newRow("oscillator") << QString("oscillator") << QStringList{"integrate", "ledger", "guard"};
+        QTest::newRow("box pyramid")
+            << QString("pyramid")
+            << QStringList{"integrate", "collide", "solve contacts", "ledger", "guard"};
+    }
+
+    void runJsonReportsTheStagesOfTheStep() {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, stages);
+        const QString path =
+            scene == "oscillator"
+                ? write("oscillator.json", kOscillator)
+                : QStringLiteral(PHASEBOX_SOURCE_DIR "/resources/scenes/box-pyramid.phasebox.json");
+        const Result r = cli({"run", path, "--json", "--duration", "2"});
+        QCOMPARE(r.status, 0);
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QStringList names;
+        double sum = 0.0;
+        for (const QJsonValue& s : o["stages"].toArray()) {
+            names << s.toObject()["name"].toString();
+            const double ms = s.toObject()["ms_per_step"].toDouble();
+            QVERIFY(ms >= 0.0);
+            sum += ms;
+        }
+        // In the order they run (CONTRACT.md §7).
+        QCOMPARE(names, stages);
+        // Their sum is the mean step, less only the clock reads around World::step(). On the
+        // oscillator a step is a microsecond, where those reads are a tenth of it: allow 20%
+        // and a microsecond.
+        const double mean = o["step_ms"].toObject()["mean"].toDouble();
+        QVERIFY2(std::abs(sum - mean) <= 0.2 * mean + 1e-3,
+                 qPrintable(QString("stages %1 ms, mean step %2 ms").arg(sum).arg(mean)));
+    }
+
     void runMatchesTheExactOscillator() {
         // rk4 at dt = 0.01 over half a period: x(π) = −1 to ~1e-9.
         const Result r = cli({"run", write("osc.json", kOscillator), "--json"});
