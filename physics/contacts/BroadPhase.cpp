@@ -5,45 +5,119 @@
 
 namespace phasebox {
 
-void BroadPhase::findPairs(const std::vector<Aabb>& boxes,
-                           std::vector<std::pair<int, int>>& pairs) {
-    pairs.clear();
-    const int count = static_cast<int>(boxes.size());
-    const auto lowerX = [&boxes](int i) { return boxes[i].lower.x(); };
+namespace {
 
-    if (order_.size() != boxes.size()) {
-        // A changed count means the old order names other boxes (or missing ones): start over
-        // with a full sort, since insertion sort on an unsorted list is quadratic.
-        order_.resize(boxes.size());
-        std::iota(order_.begin(), order_.end(), 0);
-        std::sort(order_.begin(), order_.end(),
-                  [&](int i, int j) { return lowerX(i) < lowerX(j); });
-    } else {
-        // Bodies move a little per step, so each box is at most a few places out of order.
-        for (int k = 1; k < count; ++k) {
-            const int box = order_[k];
-            const double x = lowerX(box);
-            int slot = k;
-            while (slot > 0 && lowerX(order_[slot - 1]) > x) {
-                order_[slot] = order_[slot - 1];
-                --slot;
-            }
-            order_[slot] = box;
+// The sweep switches axis only when the other one is clearly better: near-square scenes would
+// otherwise flip back and forth, paying a full sort each time.
+constexpr double kAxisSwitchRatio = 1.5;
+
+// Insertion sort moves each box past the boxes it overtook since the last call. Beyond this
+// many moves per box on average the order is scrambled and a full sort is cheaper.
+constexpr long long kRepairMovesPerBox = 8;
+
+}  // namespace
+
+void BroadPhase::sortOrder(const std::vector<Aabb>& boxes, bool fresh) {
+    const int count = static_cast<int>(boxes.size());
+    const int axis = axis_;
+    const auto lower = [&boxes, axis](int i) { return boxes[i].lower[axis]; };
+    const auto fullSort = [&] {
+        std::sort(order_.begin(), order_.end(), [&](int i, int j) { return lower(i) < lower(j); });
+    };
+    if (fresh) {
+        fullSort();
+        return;
+    }
+    // Bodies move a little per step, so each box is at most a few places out of order.
+    const long long budget = kRepairMovesPerBox * count + 64;
+    long long moves = 0;
+    for (int k = 1; k < count; ++k) {
+        const int box = order_[k];
+        const double x = lower(box);
+        int slot = k;
+        while (slot > 0 && lower(order_[slot - 1]) > x) {
+            order_[slot] = order_[slot - 1];
+            --slot;
+        }
+        order_[slot] = box;
+        moves += k - slot;
+        if (moves > budget) {
+            fullSort();  // still a permutation: the repair only moved entries
+            return;
         }
     }
+}
 
-    // The boxes that overlap box i along x and start no earlier than it are those that follow
-    // it in the order up to the first one starting beyond its upper x; the y test decides.
+void BroadPhase::findPairs(const std::vector<Aabb>& boxes,
+                           std::vector<std::pair<int, int>>& pairs, const PairCap& cap) {
+    pairs.clear();
+    candidatesVisited_ = 0;
+    const int count = static_cast<int>(boxes.size());
+
+    // The axis of larger spread of the centres (variance, about the mean).
+    Vec2 mean = Vec2::Zero();
+    for (const Aabb& b : boxes) mean += 0.5 * (b.lower + b.upper);
+    if (count > 0) mean /= count;
+    Vec2 spread = Vec2::Zero();
+    for (const Aabb& b : boxes) spread += (0.5 * (b.lower + b.upper) - mean).cwiseAbs2();
+    const int other = 1 - axis_;
+    const bool switchAxis = spread[other] > kAxisSwitchRatio * spread[axis_];
+    if (switchAxis) axis_ = other;
+
+    // A changed count means the old order names other boxes (or missing ones): start over with
+    // a full sort, since insertion sort on an unsorted list is quadratic. So does a new axis.
+    const bool fresh = order_.size() != boxes.size() || switchAxis;
+    if (order_.size() != boxes.size()) {
+        order_.resize(boxes.size());
+        std::iota(order_.begin(), order_.end(), 0);
+    }
+    sortOrder(boxes, fresh);
+
+    const bool capped = cap.limited != nullptr;
+    if (capped) {
+        pairCount_.assign(boxes.size(), 0);
+        nearCount_.assign(boxes.size(), 0);
+    }
+    const int axis = axis_, cross = 1 - axis_;
+
+    // The boxes that overlap box i along the axis and start no earlier than it are those that
+    // follow it in the order up to the first one starting beyond its upper bound; the other
+    // axis decides.
     for (int k = 0; k < count; ++k) {
         const int i = order_[k];
         const Aabb& box = boxes[i];
-        const double upperX = box.upper.x();
-        for (int l = k + 1; l < count; ++l) {
+        const double upper = box.upper[axis];
+        const bool limitedI = capped && (*cap.limited)[i];
+        const double sizeI = limitedI ? (*cap.size)[i] : 0.0;
+        int l = k + 1;
+        for (; l < count; ++l) {
             const int j = order_[l];
-            const Aabb& other = boxes[j];
-            if (other.lower.x() > upperX) break;
-            if (box.overlaps(other)) pairs.emplace_back(std::min(i, j), std::max(i, j));
+            const Aabb& o = boxes[j];
+            if (o.lower[axis] > upper) break;
+            if (o.lower[cross] > box.upper[cross] || box.lower[cross] > o.upper[cross]) continue;
+            if (limitedI && (*cap.limited)[j]) {
+                if (cap.perBox == 0) continue;
+                // Overlapping shapes (centres closer than the sum of the sizes; the boxes are
+                // grown symmetrically, so their centres are the shapes') and near ones have
+                // caps of their own, so that the overlapping ones of a pile cannot use up the
+                // places of a contact about to be made. Each side counts the other when the
+                // other is at least half its size.
+                const double sizeJ = (*cap.size)[j];
+                const Vec2 twiceOffset = (o.lower + o.upper) - (box.lower + box.upper);
+                const double twiceReach = 2.0 * (sizeI + sizeJ);
+                const bool overlapping = twiceOffset.squaredNorm() < twiceReach * twiceReach;
+                std::vector<int>& taken = overlapping ? pairCount_ : nearCount_;
+                const int limit = overlapping ? cap.perBox : cap.nearPerBox;
+                const bool countsForI = sizeJ >= 0.5 * sizeI;
+                const bool countsForJ = sizeI >= 0.5 * sizeJ;
+                if ((countsForI && taken[i] >= limit) || (countsForJ && taken[j] >= limit))
+                    continue;
+                taken[i] += countsForI;
+                taken[j] += countsForJ;
+            }
+            pairs.emplace_back(std::min(i, j), std::max(i, j));
         }
+        candidatesVisited_ += l - (k + 1);
     }
     std::sort(pairs.begin(), pairs.end());
 }

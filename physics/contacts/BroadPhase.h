@@ -1,8 +1,17 @@
 #pragma once
-// Broad phase: which pairs of bounding boxes overlap. Sweep and prune along x: the order of
-// the boxes by their lower x is kept from call to call and repaired by insertion sort, which is
-// nearly linear when bodies move a little per step. Planes are not in it (they are infinite;
-// the world tests them against every body).
+// Broad phase: which pairs of bounding boxes overlap. Sweep and prune along one axis, chosen
+// per call as the axis along which the box centres spread more: a vertical column swept along
+// x would have every box overlap every other along the sweep axis (quadratic), swept along y it
+// costs what a row costs along x. The order of the boxes by their lower bound on that axis is
+// kept from call to call and repaired by insertion sort, which is nearly linear when bodies
+// move a little per step; a full sort takes over when the axis changes or the repair grows
+// long (an exploding pile scrambles the order). Planes are not in it (they are infinite; the
+// world tests them against every body).
+//
+// Rejected: a uniform grid (one cell size cannot serve a 100 m ground box and 5 cm disks) and
+// a dynamic AABB tree (more code and state than the scenes here need). Known limit: boxes that
+// spread along both axes in two thin lines (a cross, an L) still overlap along either axis in
+// one of the lines.
 
 #include "physics/contacts/Geometry.h"
 
@@ -11,15 +20,47 @@
 
 namespace phasebox {
 
+// An optional bound on the pairs a box may take part in, for piles: a body in a pile needs a
+// handful of neighbours, not the thousands whose boxes overlap when many bodies share one
+// point. Only pairs of two limited boxes are capped. Pairs whose shapes overlap (centre
+// distance below the sum of the sizes) count against perBox: a resting disk overlaps at most
+// six equal ones, so it binds only in a pathological pile. Pairs that are only near (the
+// speculative margin, a fast body's swept box) count against nearPerBox, so that a pile's
+// overlaps cannot crowd out a contact about to be made. A partner counts against box i's caps
+// when its size is at least half of i's, so a large disk among small ones keeps all of its
+// (many, legitimate) small neighbours while each small one counts the large one.
+// perBox 0 leaves out every pair of two limited boxes (disks when particles do not collide).
+struct PairCap {
+    const std::vector<unsigned char>* limited = nullptr;  // per box; null: no cap at all
+    // Per box: the radius of the shape it bounds, centred on the box (grown symmetrically).
+    const std::vector<double>* size = nullptr;
+    int perBox = 0;
+    int nearPerBox = 0;
+};
+
 class BroadPhase {
 public:
     // Fills pairs with every (i, j), i < j, whose boxes overlap, sorted by (i, j) so that the
-    // result does not depend on the sweep's internal order. Allocation-free once the buffers
-    // have grown to the scene's size.
-    void findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs);
+    // result does not depend on the sweep's internal order. With a cap, a pair of two limited
+    // boxes is left out when either box has already reached its cap in the sweep's order (which
+    // is deterministic). Allocation-free once the buffers have grown to the scene's size.
+    void findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs,
+                   const PairCap& cap = {});
+
+    // The sweep axis of the last call (0 = x, 1 = y) and how many candidate boxes it visited
+    // along that axis (the sweep's work; equal to the pair count only when the other axis
+    // rejects nothing).
+    int axis() const { return axis_; }
+    long long candidatesVisited() const { return candidatesVisited_; }
 
 private:
-    std::vector<int> order_;  // indices sorted by lower x, kept between calls
+    void sortOrder(const std::vector<Aabb>& boxes, bool fresh);
+
+    std::vector<int> order_;  // indices sorted by lower bound on axis_, kept between calls
+    std::vector<int> pairCount_;  // per box: overlapping capped partners taken in this call
+    std::vector<int> nearCount_;  // per box: near capped partners taken in this call
+    int axis_ = 0;
+    long long candidatesVisited_ = 0;
 };
 
 }  // namespace phasebox

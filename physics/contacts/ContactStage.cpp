@@ -46,6 +46,16 @@ void ContactStage::bind(const Bodies& bodies) {
     boxes_.assign(colliders_.size(), OrientedBox{Vec2::Zero(), 0.0, Vec2::Zero()});
     bounds_.resize(colliders_.size());
     bodyOfCollider_.assign(colliders_.size(), -1);
+    // Pairs of disks: capped per disk when particles collide (dynamic disks; a pinned one
+    // meets only dynamic ones, a linear number), left out entirely when they do not.
+    pairLimited_.assign(colliders_.size(), 0);
+    pairSize_.assign(colliders_.size(), 0.0);
+    for (int i = 0; i < static_cast<int>(colliders_.size()); ++i) {
+        const Collider& c = colliders_[i];
+        if (c.kind != Collider::Kind::Disk) continue;
+        pairLimited_[i] = !particleCollisions_ || c.dof >= 0;
+        pairSize_[i] = particles[c.object].radius;
+    }
     previous_.clear();
     solver_.constraints().clear();
 }
@@ -130,7 +140,10 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
     }
 
     Manifold m;
-    broadPhase_.findPairs(bounds_, pairs_);
+    const bool capDisks = particleCollisions_;  // else no disk pair is wanted at all
+    broadPhase_.findPairs(bounds_, pairs_,
+                          {&pairLimited_, &pairSize_, capDisks ? kParticlePairCap : 0,
+                           capDisks ? kParticleNearPairCap : 0});
     for (const auto& [i, j] : pairs_) {
         const Collider& a = colliders_[i];
         const Collider& b = colliders_[j];
@@ -146,7 +159,12 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
             const Particle& pb = bodies.particles[b.object];
             if (pa.cloth >= 0 && pa.cloth == pb.cloth) continue;  // no cloth self-collision
             restitution = particleRestitution_;
-            if (collideDisks(disks_[i], disks_[j], margin, m))
+            // Disks started at one point: a direction per pair (computed only then).
+            const Vec2 whenCoincident =
+                coincident(disks_[i].center, disks_[j].center)
+                    ? coincidentNormal(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j))
+                    : Vec2(0.0, 1.0);
+            if (collideDisks(disks_[i], disks_[j], margin, m, whenCoincident))
                 addConstraint(key, i, j, m, friction, restitution, q);
         } else if (!diskA && !diskB) {
             if (collideBoxes(boxes_[i], boxes_[j], margin, m))

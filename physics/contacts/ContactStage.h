@@ -37,6 +37,15 @@ public:
     const std::vector<ContactConstraint>& contacts() const { return solver_.constraints(); }
     int pointCount() const;
 
+    // The most overlapping particle–particle pairs a disk takes part in (partners at least
+    // half its radius; see PairCap). A disk in a pile overlaps at most six; thousands started
+    // at one point would otherwise make a quadratic number of contacts (3,000: 4.5 million).
+    static constexpr int kParticlePairCap = 16;
+    // And the most near ones (within the speculative margin or a swept box, not overlapping):
+    // about six at rest, a few dozen for a fast disk entering a dense pile.
+    static constexpr int kParticleNearPairCap = 32;
+    const BroadPhase& broadPhase() const { return broadPhase_; }
+
 private:
     struct Collider {
         enum class Kind : unsigned char { Disk, Box } kind;
@@ -58,6 +67,8 @@ private:
     std::vector<Aabb> bounds_;
     std::vector<double> sweep_;       // per collider: how far it can move in this step
     std::vector<std::pair<int, int>> pairs_;
+    std::vector<unsigned char> pairLimited_;  // per collider: disk pairs capped (PairCap)
+    std::vector<double> pairSize_;            // per collider: disk radius, for the cap
     std::vector<HalfPlane> planes_;
     std::vector<double> planeFriction_, planeRestitution_;
     std::vector<int> bodyOfCollider_;  // solver body index in this step, −1 none yet

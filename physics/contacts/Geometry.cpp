@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace phasebox {
 
@@ -113,12 +114,27 @@ Aabb boundingBox(const OrientedBox& box) {
     return {box.center - extent, box.center + extent};
 }
 
-bool collideDisks(const Disk& a, const Disk& b, double margin, Manifold& m) {
+Vec2 coincidentNormal(std::uint32_t a, std::uint32_t b) {
+    // SplitMix64's finaliser on the packed pair: nearby indices land far apart on the circle.
+    std::uint64_t z = (static_cast<std::uint64_t>(a) << 32 | b) + 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    z ^= z >> 31;
+    const double angle = 2.0 * std::numbers::pi * (static_cast<double>(z >> 11) * 0x1.0p-53);
+    return {std::cos(angle), std::sin(angle)};
+}
+
+bool coincident(const Vec2& a, const Vec2& b) {
+    return !((b - a).norm() > kMinLength);
+}
+
+bool collideDisks(const Disk& a, const Disk& b, double margin, Manifold& m,
+                  const Vec2& whenCoincident) {
     m.pointCount = 0;
     const Vec2 d = b.center - a.center;
     const double distance = d.norm();
-    // Coincident centres give no direction; any unit normal is as right as another.
-    const Vec2 normal = distance > kMinLength ? Vec2(d / distance) : Vec2(0.0, 1.0);
+    // Coincident centres give no direction: the caller's (the pair's) fallback.
+    const Vec2 normal = distance > kMinLength ? Vec2(d / distance) : whenCoincident;
     const double separation = distance - a.radius - b.radius;
     if (!(separation < margin)) return false;
     m.normal = normal;

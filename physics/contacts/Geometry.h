@@ -57,8 +57,18 @@ struct Manifold {
 Aabb boundingBox(const Disk& disk);
 Aabb boundingBox(const OrientedBox& box);
 
+// A unit direction for a pair of shapes whose centres coincide, where geometry gives none:
+// spread over the circle by a hash of the pair's indices, so that a pile of bodies started at
+// one point is pushed apart in every direction (one shared fallback would line them all up
+// along it) and the same pair gets the same normal in every run and every step.
+Vec2 coincidentNormal(std::uint32_t a, std::uint32_t b);
+// Whether two centres are too close for their difference to give a direction.
+bool coincident(const Vec2& a, const Vec2& b);
+
 // Each returns true and fills the manifold when at least one point has separation < margin.
-bool collideDisks(const Disk& a, const Disk& b, double margin, Manifold& m);
+// Disks whose centres coincide use whenCoincident as the normal.
+bool collideDisks(const Disk& a, const Disk& b, double margin, Manifold& m,
+                  const Vec2& whenCoincident = Vec2(0.0, 1.0));
 bool collidePlaneDisk(const HalfPlane& a, const Disk& b, double margin, Manifold& m);
 bool collideBoxDisk(const OrientedBox& a, const Disk& b, double margin, Manifold& m);
 bool collidePlaneBox(const HalfPlane& a, const OrientedBox& b, double margin, Manifold& m);

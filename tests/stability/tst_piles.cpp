@@ -1,0 +1,242 @@
+// Pathological piles (issue 15), at the format's defaults (dt 1/60, one sub-step, symplectic
+// Euler): thousands of disks started at one point must cost a bounded number of contacts and
+// come apart along finite, reproducible normals; a column must cost the broad phase what a
+// row costs. Wall-time ratios are bench_piles' business; here the work is counted.
+
+#include "physics/contacts/BroadPhase.h"
+#include "physics/contacts/ContactStage.h"
+#include "physics/scene/BuildWorld.h"
+#include "physics/scene/SceneDesc.h"
+#include "physics/world/World.h"
+
+#include "../bench/AllocationCounter.h"
+
+#include <QElapsedTimer>
+#include <QTest>
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+using namespace phasebox;
+
+namespace {
+
+// `count` disks of the default radius (5 cm) all at the origin, particle collisions on, no
+// gravity, nothing else.
+SceneDesc pileAtPoint(int count) {
+    SceneDesc s;
+    s.effects.particleCollisions = ParticleCollisionsDesc{};
+    for (int i = 0; i < count; ++i) s.particles.push_back(ParticleDesc{});
+    return s;
+}
+
+// `count` disks 0.12 m apart along y (a column) or x (a row): only the broad phase's grown
+// boxes (5 cm radius + 2 cm speculative distance) reach the neighbours.
+SceneDesc line(int count, bool vertical) {
+    SceneDesc s;
+    s.effects.particleCollisions = ParticleCollisionsDesc{};
+    for (int i = 0; i < count; ++i) {
+        ParticleDesc p;
+        p.position = vertical ? Point2{0.0, 0.12 * i} : Point2{0.12 * i, 0.0};
+        s.particles.push_back(p);
+    }
+    return s;
+}
+
+using Pairs = std::vector<std::pair<int, int>>;
+
+Pairs bruteForce(const std::vector<Aabb>& boxes) {
+    Pairs pairs;
+    for (int i = 0; i < static_cast<int>(boxes.size()); ++i)
+        for (int j = i + 1; j < static_cast<int>(boxes.size()); ++j)
+            if (boxes[i].overlaps(boxes[j])) pairs.emplace_back(i, j);
+    return pairs;
+}
+
+}  // namespace
+
+class TestPiles : public QObject {
+    Q_OBJECT
+
+private slots:
+    void pileAtOnePointIsBounded();
+    void coincidentCentresGiveReproducibleNormals();
+    void columnCostsWhatARowCosts();
+    void sweepAxisFollowsTheSpread();
+    void cappedPairsAllocateNothingOnceWarm();
+};
+
+void TestPiles::pileAtOnePointIsBounded() {
+    // 3,000 disks at one point. Before the cap each step made all 4.5 million pairs
+    // (22–35 s and 3.3 GB per simulated second); now 1.3 s and 61 MB on an idle machine. The time
+    // bound leaves room for a loaded two-core CI runner and still fails the quadratic code.
+    constexpr int kCount = 3000;
+    constexpr double kSecondsBound = 4.5;
+    auto world = buildWorld(pileAtPoint(kCount)).world;
+    QVERIFY(world->contacts() != nullptr);
+    const long long pairBound =
+        (ContactStage::kParticlePairCap + ContactStage::kParticleNearPairCap) * kCount / 2;
+    long long mostPoints = 0;
+    QElapsedTimer timer;
+    timer.start();
+    for (int step = 0; step < 60; ++step) {
+        QVERIFY2(world->step(), "the world reported divergence");
+        const ContactStage& stage = *world->contacts();
+        // Equal disks: each pair counts against both disks' caps (overlapping or near).
+        QVERIFY2(static_cast<long long>(stage.contacts().size()) <= pairBound,
+                 qPrintable(QStringLiteral("step %1: %2 constraints")
+                                .arg(step)
+                                .arg(stage.contacts().size())));
+        QVERIFY(stage.pointCount() <= pairBound);
+        mostPoints = std::max<long long>(mostPoints, stage.pointCount());
+    }
+    const double seconds = timer.nsecsElapsed() * 1e-9;
+
+    const Vec& q = world->positions();
+    const Vec& u = world->velocities();
+    QVERIFY(q.allFinite());
+    QVERIFY(u.allFinite());
+    double fastest = 0.0, farthest = 0.0;
+    for (int i = 0; i < kCount; ++i) {
+        fastest = std::max(fastest, world->particleVelocity(i).norm());
+        farthest = std::max(farthest, world->particlePosition(i).norm());
+    }
+    qInfo("3,000 disks at one point, 60 steps: %.2f s, at most %lld contact points (bound %lld), "
+          "fastest %.2f m/s, farthest %.2f m",
+          seconds, mostPoints, pairBound, fastest, farthest);
+    QVERIFY2(seconds < kSecondsBound, qPrintable(QString::number(seconds)));
+    // The pile comes apart (it does not stay a point, nor a line along one shared normal),
+    // and no disk is flung off with the energy of thousands of overlaps (about 10 m/s now).
+    QVERIFY2(farthest > 0.2, qPrintable(QString::number(farthest)));
+    QVERIFY2(fastest < 25.0, qPrintable(QString::number(fastest)));
+}
+
+void TestPiles::coincidentCentresGiveReproducibleNormals() {
+    // The narrow phase: a pair's fallback normal is a unit vector that depends only on the
+    // pair, and different pairs point different ways (one shared fallback would stack a pile
+    // up in a line along it).
+    const Disk a{{1.0, 2.0}, 0.05}, b{{1.0, 2.0}, 0.05};
+    Manifold first, second;
+    QVERIFY(collideDisks(a, b, 0.0, first, coincidentNormal(3, 7)));
+    QVERIFY(collideDisks(a, b, 0.0, second, coincidentNormal(3, 7)));
+    QVERIFY(first.normal.allFinite() && first.points[0].position.allFinite());
+    QCOMPARE(first.normal.norm(), 1.0);
+    QCOMPARE(first.normal, second.normal);
+    QCOMPARE(first.points[0].separation, -0.1);
+    QVERIFY(coincident(a.center, b.center));
+    QVERIFY((coincidentNormal(3, 7) - coincidentNormal(3, 8)).norm() > 1e-3);
+    QVERIFY((coincidentNormal(3, 7) - coincidentNormal(7, 3)).norm() > 1e-3);
+
+    // The whole step: two runs of a small pile at a point end in identical, finite states in
+    // which no two disks share a centre.
+    const auto run = [] {
+        auto world = buildWorld(pileAtPoint(40)).world;
+        for (int step = 0; step < 30; ++step) world->step();
+        return std::make_pair(Vec(world->positions()), Vec(world->velocities()));
+    };
+    const auto [q1, u1] = run();
+    const auto [q2, u2] = run();
+    QVERIFY(q1.allFinite() && u1.allFinite());
+    QVERIFY(q1 == q2);
+    QVERIFY(u1 == u2);
+    for (int i = 0; i < 40; ++i)
+        for (int j = i + 1; j < 40; ++j)
+            QVERIFY((q1.segment<2>(2 * i) - q1.segment<2>(2 * j)).norm() > 1e-3);
+}
+
+void TestPiles::columnCostsWhatARowCosts() {
+    // The broad phase's work for 20,000 disks in a column against the same disks in a row:
+    // the candidates it visits along its sweep axis. Sweeping a column along x visits every
+    // pair (2·10⁸); along y, about one neighbour per disk, as a row along x.
+    constexpr int kCount = 20000;
+    long long visited[2] = {0, 0}, pairs[2] = {0, 0};
+    int axis[2] = {-1, -1};
+    for (const bool vertical : {false, true}) {
+        auto world = buildWorld(line(kCount, vertical)).world;
+        for (int step = 0; step < 2; ++step) QVERIFY(world->step());
+        const BroadPhase& broadPhase = world->contacts()->broadPhase();
+        visited[vertical] = broadPhase.candidatesVisited();
+        axis[vertical] = broadPhase.axis();
+        pairs[vertical] = static_cast<long long>(world->contacts()->contacts().size());
+    }
+    qInfo("20,000 disks: row visits %lld candidates (axis %d), column %lld (axis %d); "
+          "constraints %lld and %lld",
+          visited[0], axis[0], visited[1], axis[1], pairs[0], pairs[1]);
+    QCOMPARE(axis[0], 0);
+    QCOMPARE(axis[1], 1);
+    QVERIFY(visited[0] > 0);
+    QVERIFY2(visited[1] <= 2 * visited[0], qPrintable(QString::number(visited[1])));
+    QVERIFY(visited[1] <= 2LL * kCount);
+}
+
+void TestPiles::sweepAxisFollowsTheSpread() {
+    // Exact on either axis, through a switch of axis and back (each a full re-sort), with and
+    // without a cap large enough never to bind.
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 300; ++i) {
+        const Vec2 c(0.01 * (i % 7), 0.3 * i);  // a column, a little wobbly
+        boxes.push_back({c - Vec2(0.2, 0.2), c + Vec2(0.2, 0.2)});
+    }
+    std::vector<unsigned char> limited(boxes.size(), 1);
+    std::vector<double> size(boxes.size(), 0.2);
+    BroadPhase broadPhase;
+    Pairs pairs;
+    for (int round = 0; round < 4; ++round) {
+        broadPhase.findPairs(boxes, pairs);
+        QCOMPARE(pairs, bruteForce(boxes));
+        QCOMPARE(broadPhase.axis(), round % 2 == 0 ? 1 : 0);
+        broadPhase.findPairs(boxes, pairs, {&limited, &size, 100, 100});
+        QCOMPARE(pairs, bruteForce(boxes));
+        for (Aabb& b : boxes) {  // turn the column into a row and back
+            b.lower = Vec2(b.lower.y(), b.lower.x());
+            b.upper = Vec2(b.upper.y(), b.upper.x());
+        }
+    }
+
+    // A cap that binds: identical boxes, every one overlapping every other; each box keeps at
+    // most perBox partners, and the unlimited box (a static ground) keeps all of them.
+    std::vector<Aabb> pile(200, Aabb{{0.0, 0.0}, {1.0, 1.0}});
+    pile.push_back({{-5.0, -5.0}, {5.0, 0.5}});
+    std::vector<unsigned char> pileLimited(pile.size(), 1);
+    pileLimited.back() = 0;
+    std::vector<double> pileSize(pile.size(), 0.5);
+    pileSize.back() = 5.0;
+    broadPhase.findPairs(pile, pairs, {&pileLimited, &pileSize, 8, 8});
+    std::vector<int> partners(pile.size(), 0);
+    for (const auto& [i, j] : pairs) {
+        ++partners[i];
+        ++partners[j];
+    }
+    QCOMPARE(partners.back(), 200);
+    for (int i = 0; i < 200; ++i) QVERIFY(partners[i] >= 1 && partners[i] <= 8 + 8 + 1);
+}
+
+void TestPiles::cappedPairsAllocateNothingOnceWarm() {
+    using namespace phasebox::bench;
+    std::vector<Aabb> boxes(2000, Aabb{{0.0, 0.0}, {0.1, 0.1}});
+    std::vector<unsigned char> limited(boxes.size(), 1);
+    std::vector<double> size(boxes.size(), 0.05);
+    BroadPhase broadPhase;
+    Pairs pairs;
+    const auto step = [&](int k) {
+        for (int i = 0; i < static_cast<int>(boxes.size()); ++i) {  // spread out, then back
+            const double shift = (k % 2 ? 0.0 : 0.001) * i;
+            boxes[i] = {{shift, 0.5 * shift}, {shift + 0.1, 0.5 * shift + 0.1}};
+        }
+        broadPhase.findPairs(boxes, pairs, {&limited, &size, 16, 32});
+    };
+    step(0);  // the buffers grow to both states
+    step(1);
+    const std::size_t capped = pairs.size();
+    startCountingAllocations();
+    for (int k = 0; k < 10; ++k) step(k);
+    const AllocationCounts counts = stopCountingAllocations();
+    QVERIFY(capped <= (16 + 32) * boxes.size() / 2);
+    if (!kCountsAllocations)
+        qInfo("allocations are not counted under AddressSanitizer; the release build checks them");
+    QCOMPARE(counts.total(), 0LL);
+}
+
+QTEST_APPLESS_MAIN(TestPiles)
+#include "tst_piles.moc"
