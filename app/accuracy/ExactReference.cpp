@@ -1,11 +1,13 @@
 #include "app/accuracy/ExactReference.h"
 
+#include "physics/core/EffectNames.h"
 #include "physics/world/World.h"
 #include "physics/scene/SceneDesc.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace phasebox {
 
@@ -169,8 +171,9 @@ std::optional<ExactReference> findExactReference(const SceneDesc& scene, const W
     if (world.contacts()) return std::nullopt;
     for (const auto& effect : world.effects()) {
         const std::string& name = effect->name();
-        if (name != "gravity" && name != "drag" && name != "wind" && name != "springs" &&
-            name != "newtonian_gravity")
+        if (name != effectName::gravity && name != effectName::drag &&
+            name != effectName::wind && name != effectName::springs &&
+            name != effectName::newtonianGravity)
             return std::nullopt;
     }
     const EffectsDesc& fx = scene.effects;
@@ -182,7 +185,7 @@ std::optional<ExactReference> findExactReference(const SceneDesc& scene, const W
         ref.coordinates_.push_back({dof, {omega2, gamma, force, q[dof], u[dof]}});
     };
 
-    if (world.findEffect("newtonian_gravity")) {
+    if (world.findEffect(std::string(effectName::newtonianGravity))) {
         // Kepler: one fixed attractor and nothing else, so every body moves on its own conic.
         if (world.effects().size() != 1 || !fx.newtonianGravity) return std::nullopt;
         const NewtonianGravityDesc& ng = *fx.newtonianGravity;

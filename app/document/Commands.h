@@ -118,7 +118,7 @@ private:
     Point2 from_{0.0, 0.0}, to_{0.0, 0.0};
 };
 
-// Sets one property (a key of PropertyTable.h: "mass", "size.w", "velocity.x", …) of one
+// Sets one property (a key of PropertyTable.h: `mass`, `size.w`, `velocity.x`, …) of one
 // object. Consecutive edits of the same property of the same object merge.
 class SetPropertyCommand final : public DocumentCommand {
 public:
@@ -170,7 +170,7 @@ protected:
 
 private:
     SimulationDesc before_, after_;
-    QString field_;  // the one field that changed ("integrator", "dt", …); empty for several
+    QString field_;  // the one field that changed (`integrator`, `dt`, …); empty for several
 };
 
 // Replaces the effects (switching one on or off, or changing its parameters). Consecutive

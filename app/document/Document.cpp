@@ -5,39 +5,36 @@
 #include "physics/world/World.h"
 #include "physics/effects/MouseSpringEffect.h"
 #include "physics/scene/BuildWorld.h"
+#include "physics/scene/SceneSchema.h"
 #include "physics/scene/StateTransfer.h"
 
 #include <QtGlobal>
 
 #include <cmath>
 #include <numbers>
+#include <string_view>
 #include <type_traits>
 #include <unordered_set>
 
 namespace phasebox {
 
 namespace {
-// The effects by scene-format name, paired with the same member of a second EffectsDesc
-// (the remembered parameters): fn(std::optional<XDesc>& a, std::optional<XDesc>& b).
+QString keyText(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+// The effects a user switches on and off, by scene-format name (the schema's effect tables but
+// those the objects imply), paired with the same member of a second EffectsDesc (the
+// remembered parameters): fn(std::optional<XDesc>& a, std::optional<XDesc>& b).
 template <typename Fn>
 bool visitEffect(EffectsDesc& a, EffectsDesc& b, const QString& name, Fn&& fn) {
-    if (name == QLatin1String("gravity"))
-        fn(a.gravity, b.gravity);
-    else if (name == QLatin1String("drag"))
-        fn(a.drag, b.drag);
-    else if (name == QLatin1String("newtonian_gravity"))
-        fn(a.newtonianGravity, b.newtonianGravity);
-    else if (name == QLatin1String("buoyancy"))
-        fn(a.buoyancy, b.buoyancy);
-    else if (name == QLatin1String("wind"))
-        fn(a.wind, b.wind);
-    else if (name == QLatin1String("flocking"))
-        fn(a.flocking, b.flocking);
-    else if (name == QLatin1String("particle_collisions"))
-        fn(a.particleCollisions, b.particleCollisions);
-    else
-        return false;
-    return true;
+    bool found = false;
+    schema::forEachEffect([&](const auto& table, auto member) {
+        if (found || table.implied || name != keyText(table.key)) return;
+        fn(a.*member, b.*member);
+        found = true;
+    });
+    return found;
 }
 
 QString sceneErrorText(const SceneError& e) {
@@ -235,13 +232,11 @@ void Document::commitSimulationEdit(const SetupEdit& edit) {
 // ---- effects ---------------------------------------------------------------------------------
 
 QStringList Document::effectNames() {
-    return {QStringLiteral("gravity"),
-            QStringLiteral("drag"),
-            QStringLiteral("newtonian_gravity"),
-            QStringLiteral("buoyancy"),
-            QStringLiteral("wind"),
-            QStringLiteral("flocking"),
-            QStringLiteral("particle_collisions")};
+    QStringList names;
+    schema::forEachEffect([&](const auto& table, auto) {
+        if (!table.implied) names << keyText(table.key);
+    });
+    return names;
 }
 
 bool Document::isEffectEnabled(const QString& name) const {

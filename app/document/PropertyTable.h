@@ -52,7 +52,7 @@ void assignDefaultIds(SceneDesc& scene);
 std::optional<double> initialSpringLength(const SceneDesc& scene, const SpringDesc& spring);
 
 struct PropertyRow {
-    QString key;    // "mass", "size.w", "stiffness.shear", …
+    QString key;    // `mass`, `size.w`, `stiffness.shear`, …
     QString label;  // for people: "Mass"
     QString unit;   // "kg", "m", "N/m", … ; empty for plain numbers
     double value = 0.0;

@@ -87,9 +87,9 @@ int editDistance(const QString& a, const QString& b) {
 }
 
 // The known key that an unknown one is most likely a misspelling of, or nothing. Within two
-// edits, but not a complete replacement of the known key: "x" is two edits from "id" and
+// edits, but not a complete replacement of the known key: `x` is two edits from `id` and
 // shares nothing with it, and without that rule every short key would be rejected next to the
-// short keys "id", "a" and "b".
+// short keys `id`, `a` and `b`.
 std::optional<std::string_view> misspeltKey(const QString& key, KeyList known) {
     constexpr int kMaxEdits = 2;
     std::optional<std::string_view> best;

@@ -10,7 +10,7 @@
 namespace phasebox {
 
 BuoyancyEffect::BuoyancyEffect(double fluidDensity, double surfaceY, double drag, double gravity)
-    : Effect("buoyancy"),
+    : Effect(effectName::buoyancy),
       density_(fluidDensity),
       surfaceY_(surfaceY),
       drag_(drag),

@@ -22,7 +22,7 @@ public:
     static constexpr double kCoulombConstant = 8.9875517923e9;
 
     explicit CoulombEffect(double k = kCoulombConstant, double softening = 0.0)
-        : Effect("coulomb"), k_(k), softening2_(softening * softening) {}
+        : Effect(effectName::coulomb), k_(k), softening2_(softening * softening) {}
 
     double addForces(double t, const Vec& q, const Vec& u, Vec& force) override;
     void addJacobians(double t, const Vec& q, const Vec& u, ForceJacobians& jacobians) override;

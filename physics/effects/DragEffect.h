@@ -9,7 +9,7 @@ namespace phasebox {
 class DragEffect final : public Effect {
 public:
     DragEffect(double linear, double quadratic, double angular)
-        : Effect("drag"), linear_(linear), quadratic_(quadratic), angular_(angular) {}
+        : Effect(effectName::drag), linear_(linear), quadratic_(quadratic), angular_(angular) {}
 
     double addForces(double t, const Vec& q, const Vec& u, Vec& force) override;
     double nonConservativePower(double t, const Vec& q, const Vec& u) override;

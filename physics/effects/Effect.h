@@ -6,6 +6,7 @@
 // a non-conservative one reports its power F·v so that its work enters work_nc. An effect
 // may be both (a damped spring: elastic potential plus damping power).
 
+#include "physics/core/EffectNames.h"
 #include "physics/core/Layout.h"
 #include "physics/core/OdeSystem.h"
 #include "physics/core/Types.h"
@@ -32,7 +33,7 @@ struct EffectWorldView {
 
 class Effect {
 public:
-    explicit Effect(std::string name) : name_(std::move(name)) {}
+    explicit Effect(std::string_view name) : name_(name) {}
     virtual ~Effect() = default;
     Effect(const Effect&) = delete;
     Effect& operator=(const Effect&) = delete;

@@ -47,7 +47,7 @@ struct FlockingParameters {
 class FlockingEffect final : public Effect {
 public:
     explicit FlockingEffect(const FlockingParameters& parameters)
-        : Effect("flocking"), parameters_(parameters) {}
+        : Effect(effectName::flocking), parameters_(parameters) {}
 
     double addForces(double t, const Vec& q, const Vec& u, Vec& force) override;
     double nonConservativePower(double t, const Vec& q, const Vec& u) override;

@@ -8,7 +8,7 @@ namespace phasebox {
 
 class GravityEffect final : public Effect {
 public:
-    explicit GravityEffect(const Vec2& g) : Effect("gravity"), g_(g) {}
+    explicit GravityEffect(const Vec2& g) : Effect(effectName::gravity), g_(g) {}
 
     double addForces(double t, const Vec& q, const Vec& u, Vec& force) override;
     double potentialEnergy(const Vec& q) const override;

@@ -31,7 +31,7 @@ class NewtonianGravityEffect final : public Effect {
 public:
     NewtonianGravityEffect(double G, std::vector<Attractor> attractors, bool mutual,
                            double softening)
-        : Effect("newtonian_gravity"),
+        : Effect(effectName::newtonianGravity),
           G_(G),
           attractors_(std::move(attractors)),
           mutual_(mutual),

@@ -19,7 +19,7 @@ struct SpringTerm {
 
 class SpringEffect final : public Effect {
 public:
-    SpringEffect() : Effect("springs") {}
+    SpringEffect() : Effect(effectName::springs) {}
 
     void setTerms(std::vector<SpringTerm> terms);
     const std::vector<SpringTerm>& terms() const { return terms_; }

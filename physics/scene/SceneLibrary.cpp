@@ -1,5 +1,7 @@
 #include "physics/scene/SceneLibrary.h"
 
+#include "physics/scene/SceneSchema.h"
+
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -129,7 +131,7 @@ SceneDesc elasticGas(int count, unsigned seed) {
     s.effects.particleCollisions = ParticleCollisionsDesc{1.0};
     s.simulation.substeps = 4;
     // Every impact must bounce, however slow (nothing rests in a gas, so nothing can jitter).
-    s.simulation.solver["restitution_threshold"] = 0.0;
+    s.simulation.solver[std::string(schema::key::restitutionThreshold)] = 0.0;
     // A 4 m box, grown for large counts so the disks start 3 radii apart: packed tighter, a
     // gas of thousands starts as one overlapping heap, not a gas.
     const int perRow = static_cast<int>(std::ceil(std::sqrt(count)));
@@ -167,7 +169,7 @@ SceneDesc newtonsCradle(int count, double speed) {
     s.effects.gravity.reset();
     s.effects.particleCollisions = ParticleCollisionsDesc{1.0};
     // A cradle swings slowly: every impact must bounce, not only those above 1 m/s.
-    s.simulation.solver["restitution_threshold"] = 0.01;
+    s.simulation.solver[std::string(schema::key::restitutionThreshold)] = 0.01;
     for (int i = 0; i < count; ++i) {
         ParticleDesc p;
         p.id = name("ball", i);

@@ -2,13 +2,16 @@
 // The scene format's schema: one table of fields per object kind, effect and settings section
 // (key, type, range, unit, label, one-line description, and the member of the Desc struct that
 // holds it). The JSON reader and writer (app/io), validateScene(), the property editor and the
-// effects panel walk these tables, so a scene key is spelled in this header and nowhere else,
-// and a new kind is one table here plus its physics and drawing.
+// effects panel walk these tables, so a scene key is spelled in this header and nowhere else
+// (the effects' keys are the names the effects give themselves, spelled in
+// physics/core/EffectNames.h, which this header uses), and a new kind is one table here plus
+// its physics and drawing.
 //
 // Defaults are not repeated here: they are the Desc structs' member initialisers (SceneDesc.h),
 // reached through the same member pointers from a default-made Desc. Rules that tie fields together (a spring's
 // ends, unique ids, a cloth's pinning) stay in validateScene(), which names them by these keys.
 
+#include "physics/core/EffectNames.h"
 #include "physics/scene/SceneDesc.h"
 
 #include <limits>
@@ -34,7 +37,8 @@ inline constexpr std::string_view effects = "effects";
 inline constexpr std::string_view particles = "particles";
 inline constexpr std::string_view boxes = "boxes";
 inline constexpr std::string_view planes = "planes";
-inline constexpr std::string_view springs = "springs";
+// the array that implies the spring effect, which is named after it
+inline constexpr std::string_view springs = effectName::springs;
 inline constexpr std::string_view cloths = "cloths";
 // simulation, and its contact solver settings
 inline constexpr std::string_view integrator = "integrator";
@@ -51,15 +55,16 @@ inline constexpr std::string_view dampingRatio = "damping_ratio";
 inline constexpr std::string_view pushOut = "push_out";
 inline constexpr std::string_view restitutionThreshold = "restitution_threshold";
 inline constexpr std::string_view speculativeDistance = "speculative_distance";
-// effects
-inline constexpr std::string_view gravity = "gravity";
-inline constexpr std::string_view drag = "drag";
-inline constexpr std::string_view newtonianGravity = "newtonian_gravity";
-inline constexpr std::string_view buoyancy = "buoyancy";
-inline constexpr std::string_view wind = "wind";
-inline constexpr std::string_view flocking = "flocking";
+// effects: the names the engine's effects give themselves (physics/core/EffectNames.h), and
+// particle_collisions, which switches on a contact pair kind rather than adding an effect
+inline constexpr std::string_view gravity = effectName::gravity;
+inline constexpr std::string_view drag = effectName::drag;
+inline constexpr std::string_view newtonianGravity = effectName::newtonianGravity;
+inline constexpr std::string_view buoyancy = effectName::buoyancy;
+inline constexpr std::string_view wind = effectName::wind;
+inline constexpr std::string_view flocking = effectName::flocking;
 inline constexpr std::string_view particleCollisions = "particle_collisions";
-inline constexpr std::string_view coulomb = "coulomb";
+inline constexpr std::string_view coulomb = effectName::coulomb;
 // effect fields
 inline constexpr std::string_view g = "g";
 inline constexpr std::string_view linear = "linear";

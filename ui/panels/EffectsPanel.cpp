@@ -1,5 +1,6 @@
 #include "ui/panels/EffectsPanel.h"
 
+#include "physics/core/EffectNames.h"
 #include "physics/scene/SceneSchema.h"
 
 #include <QHBoxLayout>
@@ -30,7 +31,7 @@ QString text(std::string_view s) {
 QString describe(const QString& name) {
     static const QHash<QString, QString> descriptions = [] {
         QHash<QString, QString> out{
-            {QStringLiteral("springs"),
+            {text(effectName::springs),
              EffectsPanel::tr("Spring forces; runs because the scene holds springs")},
             {QStringLiteral("contacts"),
              EffectsPanel::tr("Collision detection and contact impulses; runs because the scene "

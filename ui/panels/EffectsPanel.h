@@ -25,8 +25,8 @@ QT_END_NAMESPACE
 namespace phasebox::ui {
 
 struct EffectRow {
-    // The scene-format key ("gravity", "newtonian_gravity") or a world stage ("springs",
-    // "contacts", "integrator"), as World::effectCosts() and --json name them.
+    // The scene-format key of an effect (gravity, newtonian_gravity, …) or a world stage
+    // (springs, contacts, integrator), as World::effectCosts() and --json name them.
     QString name;
     bool enabled = true;
     // false: a stage the world runs because of what the scene holds (springs, contacts) or
@@ -77,7 +77,7 @@ public:
 
     // The effects of CONTRACT.md §1, in its order.
     static const QStringList& contractEffects();
-    // "newtonian_gravity" → "Newtonian gravity".
+    // The row name for people: newtonian_gravity → "Newtonian gravity".
     static QString displayName(const QString& name);
     // "1.23", "0.0123", "123": three significant digits, "–" when not running.
     static QString formatMs(double ms);

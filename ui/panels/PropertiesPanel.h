@@ -71,7 +71,7 @@ private:
 };
 
 struct PropertyField {
-    QString key;    // what propertyEdited reports, e.g. "mass", "position.x"
+    QString key;    // what propertyEdited reports, e.g. `mass`, `position.x`
     QString label;  // for people; may hold a mnemonic: "&Mass"
     QString unit;   // shown as the suffix: "kg", "N/m"; empty for none
     double value = 0.0;

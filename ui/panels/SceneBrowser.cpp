@@ -1,5 +1,7 @@
 #include "ui/panels/SceneBrowser.h"
 
+#include "physics/scene/SceneSchema.h"
+
 #include <QHash>
 #include <QHeaderView>
 #include <QKeyEvent>
@@ -12,6 +14,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <string_view>
 #include <variant>
 
 namespace phasebox::ui {
@@ -19,7 +22,7 @@ namespace phasebox::ui {
 namespace {
 enum Column { kIdColumn = 0, kSummaryColumn = 1 };
 constexpr int kIdRole = Qt::UserRole;         // object rows: the id
-constexpr int kGroupRole = Qt::UserRole + 1;  // group rows: "particles", "boxes", …
+constexpr int kGroupRole = Qt::UserRole + 1;  // group rows: the scene array's key
 
 // Three significant digits with the exponent as a person writes it: 0.05, 1e6, 2.5e-3.
 QString num(double value) {
@@ -39,6 +42,10 @@ QString point(const Point2& p) {
 
 QString qs(const std::string& text) {
     return QString::fromStdString(text);
+}
+
+QString qs(std::string_view text) {
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
 }
 }  // namespace
 
@@ -160,23 +167,23 @@ void SceneBrowser::setScene(const SceneDesc& scene) {
         group->setExpanded(expanded.value(key, true));
     };
     addKind(
-        QStringLiteral("particles"), tr("Particles"), scene.particles.size(),
+        qs(schema::key::particles), tr("Particles"), scene.particles.size(),
         [&](std::size_t i) { return qs(particleId(scene, i)); },
         [&](std::size_t i) { return particleSummary(scene.particles[i]); });
     addKind(
-        QStringLiteral("boxes"), tr("Boxes"), scene.boxes.size(),
+        qs(schema::key::boxes), tr("Boxes"), scene.boxes.size(),
         [&](std::size_t i) { return qs(boxId(scene, i)); },
         [&](std::size_t i) { return boxSummary(scene.boxes[i]); });
     addKind(
-        QStringLiteral("planes"), tr("Planes"), scene.planes.size(),
+        qs(schema::key::planes), tr("Planes"), scene.planes.size(),
         [&](std::size_t i) { return qs(planeId(scene, i)); },
         [&](std::size_t i) { return planeSummary(scene.planes[i]); });
     addKind(
-        QStringLiteral("springs"), tr("Springs"), scene.springs.size(),
+        qs(schema::key::springs), tr("Springs"), scene.springs.size(),
         [&](std::size_t i) { return qs(springId(scene, i)); },
         [&](std::size_t i) { return springSummary(scene.springs[i]); });
     addKind(
-        QStringLiteral("cloths"), tr("Cloths"), scene.cloths.size(),
+        qs(schema::key::cloths), tr("Cloths"), scene.cloths.size(),
         [&](std::size_t i) { return qs(scene.cloths[i].id); },
         [&](std::size_t i) { return clothSummary(scene.cloths[i]); });
 

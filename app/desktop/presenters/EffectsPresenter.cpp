@@ -2,13 +2,21 @@
 
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
+#include "physics/core/EffectNames.h"
 #include "physics/world/World.h"
 #include "ui/panels/EffectsPanel.h"
 
 #include <algorithm>
+#include <string_view>
 #include <vector>
 
 namespace phasebox {
+
+namespace {
+QString qs(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+}  // namespace
 
 EffectsPresenter::EffectsPresenter(ui::EffectsPanel& panel, Document& document,
                                    SimulationController& controller, QObject* parent)
@@ -55,7 +63,7 @@ void EffectsPresenter::updateRows() {
     }
     const World& world = document_.world();
     if (!world.springs().empty())
-        rows.push_back({QStringLiteral("springs"), true, false, 0.0,
+        rows.push_back({qs(effectName::springs), true, false, 0.0,
                         tr("Runs because the scene has springs")});
     if (world.contacts())
         rows.push_back({QStringLiteral("contacts"), true, false, 0.0,

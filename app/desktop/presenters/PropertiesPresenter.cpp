@@ -47,7 +47,10 @@ void PropertiesPresenter::update(bool rebuild) {
 
 void PropertiesPresenter::edit(const QString& key, double value) {
     QString error;
-    const bool ok = key == QLatin1String("pinned") || key == QLatin1String("static")
+    // The row that pins the object (a particle's pinned, a box's static) goes through the pin
+    // command, like the pin tool.
+    const ObjectKind kind = findObject(document_.setup(), shownId_.toStdString()).kind;
+    const bool ok = key == pinPropertyKey(kind)
                         ? document_.setPinned(shownId_, value != 0.0, &error)
                         : document_.setProperty(shownId_, key, value, &error);
     if (ok)
