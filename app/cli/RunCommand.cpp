@@ -34,7 +34,8 @@ const char* kRunUsage =
     "                              [--tolerance T] [--csv FILE] [--every K] [--track ID,ID...]\n"
     "                              [--json] [--plot-energy FILE] [--plot-phase ID.COORD FILE]\n"
     "\n"
-    "  --csv FILE        time series: t,kinetic,potential,work_nc,drift and per tracked object\n"
+    "  --csv FILE        time series: t,kinetic,potential,work_nc,drift,correction,\n"
+    "                    constraint_error and per tracked object\n"
     "                    ID.x,ID.y,ID.vx,ID.vy (boxes also ID.angle, ID.omega); '-' = stdout\n"
     "  --every K         one CSV row every K steps (and at t = 0 and the end); default 1\n"
     "  --track IDS       objects in the CSV; default every particle and box not in a cloth\n"
@@ -252,7 +253,8 @@ private:
 };
 
 void writeCsvHeader(QTextStream& s, const std::vector<Tracked>& tracked) {
-    s << "t,kinetic,potential,work_nc,drift";
+    // CONTRACT §4 and §6; constraint_error is 0 until the scene format has joints.
+    s << "t,kinetic,potential,work_nc,drift,correction,constraint_error";
     for (const Tracked& t : tracked) {
         const QStringList cols = t.isBox ? QStringList{"x", "y", "angle", "vx", "vy", "omega"}
                                          : QStringList{"x", "y", "vx", "vy"};
@@ -264,7 +266,8 @@ void writeCsvHeader(QTextStream& s, const std::vector<Tracked>& tracked) {
 void writeCsvRow(QTextStream& s, const World& world, const std::vector<Tracked>& tracked) {
     const EnergyLedger& e = world.energy();
     s << formatNumber(world.time()) << ',' << formatNumber(e.kinetic) << ',' << formatNumber(e.potential)
-      << ',' << formatNumber(e.workNc) << ',' << formatNumber(e.drift);
+      << ',' << formatNumber(e.workNc) << ',' << formatNumber(e.drift) << ','
+      << formatNumber(e.correction) << ",0";
     for (const Tracked& t : tracked) {
         if (t.isBox) {
             const Vec2 p = world.boxPosition(t.index), v = world.boxVelocity(t.index);
@@ -497,6 +500,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
                                    {"potential", e.potential},
                                    {"work_nc", e.workNc},
                                    {"drift", e.drift},
+                                   {"correction", e.correction},
                                    {"max_abs_drift", e.maxAbsDrift}}},
             {"diverged", diverged},
             {"effects", effects},
@@ -532,7 +536,8 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             << QString::number(median(stepMs.values()), 'g', 3) << " ms per step, median)\n"
             << "energy:     initial " << QString::number(initialEnergy, 'g', 6) << " J; now kinetic "
             << QString::number(e.kinetic, 'g', 6) << ", potential " << QString::number(e.potential, 'g', 6)
-            << ", work_nc " << QString::number(e.workNc, 'g', 6) << " J\n"
+            << ", work_nc " << QString::number(e.workNc, 'g', 6) << ", correction "
+            << QString::number(e.correction, 'g', 6) << " J\n"
             << "drift:      " << QString::number(e.drift, 'g', 3) << " J (largest |drift| "
             << QString::number(e.maxAbsDrift, 'g', 3) << " J)\n";
         out << "effects:   ";

@@ -20,8 +20,8 @@ Vec2 pointVelocity(const SolverBody* b, const Vec2& r) {
 // Moves a body as a positional impulse would, without changing its velocity.
 void shiftBody(SolverBody* b, const Vec2& r, const Vec2& impulse) {
     if (!b) return;
-    b->positionShift += b->invMass * impulse;
-    b->angleShift += b->invInertia * cross(r, impulse);
+    b->timeShift += b->invMass * impulse;
+    b->angleTimeShift += b->invInertia * cross(r, impulse);
 }
 
 void applyImpulse(SolverBody* b, const Vec2& r, const Vec2& impulse) {
@@ -75,31 +75,32 @@ void ContactSolver::prepare() {
             p.tangentMass = kt > 0.0 ? 1.0 / kt : 0.0;
         }
     }
-    smoothV_.resize(bodies_.size());
-    smoothW_.resize(bodies_.size());
-    bounceV_.resize(bodies_.size());
-    bounceW_.resize(bodies_.size());
 }
 
-void ContactSolver::loadBodies(const Vec& positions, const Vec& u) {
+void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
     for (SolverBody& b : bodies_) {
-        b.positionShift.setZero();
-        b.angleShift = 0.0;
-        b.v = u.segment<2>(b.dof);
-        b.dp = positions.segment<2>(b.dof) - b.collidePosition;
+        b.v0 = b.v = u0.segment<2>(b.dof);
+        b.smoothDv = u.segment<2>(b.dof) - b.v0;
+        b.startOffset = q0.segment<2>(b.dof) - b.collidePosition;
+        b.shift = b.path = b.timeShift = b.pushOut = b.bounceDv = Vec2::Zero();
+        b.angleShift = b.anglePath = b.angleTimeShift = b.pushOutAngle = b.bounceDw = 0.0;
         if (b.rotates) {
-            b.w = u[b.dof + 2];
-            b.dAngle = positions[b.dof + 2] - b.collideAngle;
+            b.w0 = b.w = u0[b.dof + 2];
+            b.smoothDw = u[b.dof + 2] - b.w0;
+            b.startAngle = q0[b.dof + 2] - b.collideAngle;
         }
     }
 }
 
 void ContactSolver::updateSeparations() {
-    // Bodies hold still while the solver iterates (positions move once per sub-step), so each
-    // point's separation is computed once per phase, not once per iteration: the rotations
+    // Bodies hold still while the solver iterates (positions move once per inner sub-step), so
+    // each point's separation is computed once per phase, not once per iteration: the rotations
     // alone (a sine and a cosine per body and point) were a quarter of the solver's time.
-    for (SolverBody& b : bodies_)
-        b.dRotation = b.rotates ? rotation(b.dAngle) : Mat2::Identity();
+    for (SolverBody& b : bodies_) {
+        b.dp = b.startOffset + b.path + b.timeShift;
+        b.dRotation =
+            b.rotates ? rotation(b.startAngle + b.anglePath + b.angleTimeShift) : Mat2::Identity();
+    }
     for (ContactConstraint& c : constraints_) {
         const SolverBody* a = c.bodyA >= 0 ? &bodies_[c.bodyA] : nullptr;
         const SolverBody* b = c.bodyB >= 0 ? &bodies_[c.bodyB] : nullptr;
@@ -131,10 +132,13 @@ void ContactSolver::warmStart() {
 }
 
 void ContactSolver::bounce(double h, const ContactSettings& settings) {
-    // Passes on the current velocities until no contact that meets within this sub-step
+    // Passes on the current velocities until no contact that meets within this inner sub-step
     // approaches faster than the threshold: v_n ← −e·v_n. Each application conserves energy
-    // when e = 1 whatever else touches the bodies, and the passes let a row of touching balls
-    // hand an impact on ball by ball (Newton's cradle).
+    // exactly when e = 1 whatever else touches the bodies, and the passes let a row of touching
+    // balls hand an impact on ball by ball (Newton's cradle). Bouncing in the inner sub-steps
+    // puts the impact within 1/kInnerRate s of its true time whatever the frame: the velocity
+    // reflected is the one of the impact, not the end of a long step's (a ball dropped 1 m at
+    // dt = 1 s would otherwise leave at 9.8 m/s and climb far above where it fell from).
     for (ContactConstraint& c : constraints_)
         for (int k = 0; k < c.pointCount; ++k) c.points[k].shifted = false;
     for (int pass = 0; pass < kMaxCollisionPasses; ++pass) {
@@ -147,7 +151,11 @@ void ContactSolver::bounce(double h, const ContactSettings& settings) {
                 ContactPoint& p = c.points[k];
                 const double s = p.separation;
                 const double vn = c.normal.dot(pointVelocity(b, p.anchorB) - pointVelocity(a, p.anchorA));
-                if (vn >= -settings.restitutionThreshold || s + h * vn > 0.0) continue;
+                // The threshold keeps resting contact quiet (gravity presses a box on the floor
+                // at g·h per sub-step); it shrinks with 1 − e, so that e = 1 is exactly elastic
+                // however slow the collision, as the lecture's e = 1 means.
+                const double threshold = settings.restitutionThreshold * (1.0 - c.restitution);
+                if (vn >= -threshold || vn >= 0.0 || s + h * vn > 0.0) continue;
                 const double lambda = -p.normalMass * (1.0 + c.restitution) * vn;
                 applyImpulse(a, p.anchorA, -lambda * c.normal);
                 applyImpulse(b, p.anchorB, lambda * c.normal);
@@ -280,59 +288,90 @@ void ContactSolver::solve(double h, bool useBias, const ContactSettings& setting
     }
 }
 
-void ContactSolver::solveSubstep(double h, const Vec& q0, Vec& q, Vec& u,
-                                 const ContactSettings& settings, double positionWeight) {
+int ContactSolver::innerSubsteps(double h, const ContactSettings& settings) {
+    if (settings.substeps > 0) return settings.substeps;
+    // At least kInnerRate sub-steps per second whatever the frame: a soft contact's stiffness
+    // is bounded by a quarter of the sub-step rate, and a stack sags by load/(m·ω²), so the
+    // rate is what holds a tower. The world's own sub-steps count towards it.
+    const int n = static_cast<int>(std::ceil(h * kInnerRate - 1e-9));
+    return std::clamp(n, 1, kMaxInnerSubsteps);
+}
+
+void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+                              const ContactSettings& settings, double positionWeight) {
     if (constraints_.empty()) return;
-    // Each contact's softness for this sub-step (its stiffness multiplier: see prepare()).
-    const double hertz = std::min(settings.hertz, 0.25 / h);
+    const int n = innerSubsteps(h, settings);
+    const double hi = h / n;
+    // Each contact's softness for the inner sub-step (its stiffness multiplier: see prepare()).
+    const double hertz = std::min(settings.hertz, 0.25 / hi);
     softness_.resize(constraints_.size());
     for (std::size_t i = 0; i < constraints_.size(); ++i)
-        softness_[i] = makeSoft(constraints_[i].stiffness * hertz, settings.dampingRatio, h);
-
-    loadBodies(q0, u);
-    updateSeparations();
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-        smoothV_[i] = bodies_[i].v;
-        smoothW_[i] = bodies_[i].w;
-    }
-    warmStart();
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-        bounceV_[i] = bodies_[i].v;
-        bounceW_[i] = bodies_[i].w;
-    }
-    bounce(h, settings);
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-        bounceV_[i] = bodies_[i].v - bounceV_[i];
-        bounceW_[i] = bodies_[i].w - bounceW_[i];
-    }
-    for (int it = 0; it < settings.iterations; ++it) solve(h, true, settings);
-
-    // Positions move by h·Δv: the contact impulses act as if applied before the position
-    // update of the sub-step.
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-        SolverBody& b = bodies_[i];
-        q.segment<2>(b.dof) += h * (b.v - smoothV_[i]) + b.positionShift;
-        if (b.rotates) q[b.dof + 2] += h * (b.w - smoothW_[i]) + b.angleShift;
-        b.dp = q.segment<2>(b.dof) - b.collidePosition;
-        if (b.rotates) b.dAngle = q[b.dof + 2] - b.collideAngle;
-    }
-    updateSeparations();
-    for (int it = 0; it < settings.relaxIterations; ++it) solve(h, false, settings);
-
-    // What is left after relax is the contact force's own impulse (bounces apart: those act at
-    // the instant of impact). The integrator would have moved a body by positionWeight·h·Δv
-    // under such a force, not by h·Δv; moving it by the difference keeps a resting body still
-    // under every method (the soft push-out, removed from the velocity by relax, still moves it
-    // by its whole h·Δv: that is its purpose).
-    const double excess = 1.0 - positionWeight;
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-        const SolverBody& b = bodies_[i];
-        if (excess != 0.0) {
-            q.segment<2>(b.dof) -= excess * h * (b.v - smoothV_[i] - bounceV_[i]);
-            if (b.rotates) q[b.dof + 2] -= excess * h * (b.w - smoothW_[i] - bounceW_[i]);
+        softness_[i] = makeSoft(constraints_[i].stiffness * hertz, settings.dampingRatio, hi);
+    // The smooth step's velocity change is spread evenly over the inner sub-steps (the
+    // smooth forces held constant over the step); its position change is the integrator's, and
+    // the solver adds to it only what the contact impulses change.
+    loadBodies(q0, u0, u);
+    for (int i = 1; i <= n; ++i) {
+        const double f = double(i) / n;
+        for (SolverBody& b : bodies_) {
+            b.v += b.smoothDv / n;
+            b.w += b.smoothDw / n;
+            b.pushV = b.v;  // before the bounces
+            b.pushW = b.w;
         }
+        updateSeparations();
+        bounce(hi, settings);
+        for (SolverBody& b : bodies_) {
+            b.bounceDv += b.v - b.pushV;
+            b.bounceDw += b.w - b.pushW;
+        }
+        updateSeparations();
+        warmStart();
+        for (int it = 0; it < settings.iterations; ++it) solve(hi, true, settings);
+        for (SolverBody& b : bodies_) {
+            // Contact-induced velocity, bounces included: what the impulses added to the
+            // smooth path, which the integrator's positions do not know of.
+            b.shift += hi * (b.v - (b.v0 + f * b.smoothDv));
+            b.path += hi * b.v;
+            if (b.rotates) {
+                b.angleShift += hi * (b.w - (b.w0 + f * b.smoothDw));
+                b.anglePath += hi * b.w;
+            }
+            b.pushV = b.v;
+            b.pushW = b.w;
+        }
+        updateSeparations();
+        for (int it = 0; it < settings.relaxIterations; ++it) solve(hi, false, settings);
+        for (SolverBody& b : bodies_) {
+            // What relax removed is the push-out's velocity: its displacement is the position
+            // correction (the energy ledger's `correction`).
+            b.pushOut += hi * (b.pushV - b.v);
+            if (b.rotates) b.pushOutAngle += hi * (b.pushW - b.w);
+        }
+    }
+
+    // A force held over the step moves a body by positionWeight·h·Δv under the user's method;
+    // inner sub-stepping moved it by (n + 1)/(2n)·h·Δv. Moving it by the difference keeps a
+    // resting body still whatever the integrator (the push-out, removed from the velocity by
+    // relax, keeps its whole displacement: that is its purpose; a bounce acts at the instant
+    // of impact, not as a force over the step).
+    const double excess = positionWeight - (n + 1.0) / (2.0 * n);
+    for (SolverBody& b : bodies_) {
+        const Vec2 dv = b.v - (b.v0 + b.smoothDv + b.bounceDv);
+        q.segment<2>(b.dof) += b.shift + excess * h * dv + b.timeShift;
         u.segment<2>(b.dof) = b.v;
-        if (b.rotates) u[b.dof + 2] = b.w;
+        if (b.rotates) {
+            const double dw = b.w - (b.w0 + b.smoothDw + b.bounceDw);
+            q[b.dof + 2] += b.angleShift + excess * h * dw + b.angleTimeShift;
+            u[b.dof + 2] = b.w;
+        }
+    }
+}
+
+void ContactSolver::addPushOut(Vec& q, double scale) const {
+    for (const SolverBody& b : bodies_) {
+        q.segment<2>(b.dof) += scale * b.pushOut;
+        if (b.rotates) q[b.dof + 2] += scale * b.pushOutAngle;
     }
 }
 

@@ -29,30 +29,45 @@
 namespace phasebox {
 
 struct ContactSettings {
-    int iterations = 4;                 // soft solve iterations per sub-step
-    int relaxIterations = 1;            // bias-free iterations per sub-step
+    int substeps = 0;                   // inner sub-steps per step; 0 = the solver's choice
+    int iterations = 4;                 // soft solve iterations per inner sub-step
+    int relaxIterations = 1;            // bias-free iterations per inner sub-step
     double hertz = 60.0;                // contact stiffness (capped at a quarter of 1/h)
     double dampingRatio = 10.0;
     double pushOut = 3.0;               // m/s: the fastest overlap is removed
-    double restitutionThreshold = 1.0;  // m/s: slower impacts do not bounce (no jitter at rest)
+    double restitutionThreshold = 1.0;  // m/s, times 1 − e: slower impacts do not bounce
     double speculativeDistance = 0.02;  // m: contacts are made this far ahead of touching
 };
 
-// A body as the solver sees it: its velocity, and where it was when contacts were found.
+// A body as the solver sees it during one step.
 struct SolverBody {
     int dof = -1;  // first state index
     bool rotates = false;
     double invMass = 0.0;
     double invInertia = 0.0;
-    Vec2 v = Vec2::Zero();
+    Vec2 v = Vec2::Zero();  // the current velocity
     double w = 0.0;
-    Vec2 collidePosition = Vec2::Zero();
+    Vec2 collidePosition = Vec2::Zero();  // where the contacts were found
     double collideAngle = 0.0;
-    Vec2 dp = Vec2::Zero();  // displacement since the contacts were found
-    double dAngle = 0.0;
-    Mat2 dRotation = Mat2::Identity();  // R(dAngle), once per solver phase
-    Vec2 positionShift = Vec2::Zero();  // this sub-step's time-of-impact correction
+    // The step: velocity at its start, the smooth step's velocity change, and the start's
+    // offset from where the contacts were found.
+    Vec2 v0 = Vec2::Zero(), smoothDv = Vec2::Zero(), startOffset = Vec2::Zero();
+    double w0 = 0.0, smoothDw = 0.0, startAngle = 0.0;
+    // The solver's own path through the inner sub-steps (Σ h·v), where separations are measured.
+    Vec2 path = Vec2::Zero();
+    double anglePath = 0.0;
+    Vec2 bounceDv = Vec2::Zero();  // the bounces' velocity change so far (instant, at impact)
+    double bounceDw = 0.0;
+    Vec2 shift = Vec2::Zero();  // displacement by the contact impulses so far
     double angleShift = 0.0;
+    Vec2 timeShift = Vec2::Zero();  // a bounce's time-of-impact correction
+    double angleTimeShift = 0.0;
+    Vec2 pushV = Vec2::Zero();  // velocity before the bounces, then before relax
+    double pushW = 0.0;
+    Vec2 pushOut = Vec2::Zero();  // the position correction (push-out) of this step
+    double pushOutAngle = 0.0;
+    Vec2 dp = Vec2::Zero();  // displacement since the contacts were found
+    Mat2 dRotation = Mat2::Identity();  // R(Δθ), once per solver phase
     int contactCount = 0;  // constraints this step
 };
 
@@ -89,30 +104,39 @@ public:
     // Computes effective masses; call after the constraints and bodies are set for a step.
     void prepare();
 
-    // One sub-step: q0 is the state at its start, (q, u) after the smooth step; on return
-    // (q, u) satisfy the contacts.
+    // One step of h: (q0, u0) is the state at its start, (q, u) after the smooth step; on
+    // return (q, u) satisfy the contacts. The solver takes its own inner sub-steps
+    // (innerSubsteps()): per inner sub-step the smooth velocity change, warm start, soft solve,
+    // positions, relax.
     // positionWeight: the integrator's IntegratorInfo::positionWeight.
-    void solveSubstep(double h, const Vec& q0, Vec& q, Vec& u, const ContactSettings& settings,
-                      double positionWeight);
+    void solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+                   const ContactSettings& settings, double positionWeight);
+    // Adds scale times the last step's position correction (push-out) to q.
+    void addPushOut(Vec& q, double scale) const;
+
+    // Inner sub-steps per step of h: at least kInnerRate per second (settings.substeps > 0
+    // overrides).
+    static constexpr double kInnerRate = 240.0;
+    static constexpr int kMaxInnerSubsteps = 64;
+    static int innerSubsteps(double h, const ContactSettings& settings);
 
 private:
     struct Softness {
         double biasRate, massScale, impulseScale;
     };
-    void loadBodies(const Vec& positions, const Vec& u);
+    void loadBodies(const Vec& q0, const Vec& u0, const Vec& u);
     void warmStart();
     void bounce(double h, const ContactSettings& settings);
     static Softness makeSoft(double hertz, double zeta, double h);
     bool solveBlock(ContactConstraint& c, SolverBody* a, SolverBody* b, const double bias[2],
                     const double compliance[2]);
     void solve(double h, bool useBias, const ContactSettings& settings);
+    // Separations with the bodies where the solver's path has taken them.
     void updateSeparations();
 
     std::vector<SolverBody> bodies_;
     std::vector<ContactConstraint> constraints_;
     std::vector<Softness> softness_;  // per constraint, for the current sub-step length
-    std::vector<Vec2> smoothV_, bounceV_;  // per body: after the smooth step; the bounces' Δv
-    std::vector<double> smoothW_, bounceW_;
 };
 
 }  // namespace phasebox

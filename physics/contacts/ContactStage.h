@@ -25,14 +25,19 @@ public:
     // Rebuilds the collider list after the world's objects changed.
     void bind(const Bodies& bodies);
 
-    // Finds the contacts of the state (q, u) for a step of length dt.
-    void collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u, double dt,
-                 const ContactSettings& settings);
+    // Finds the contacts of the state (q, u) for a frame of length dt. uNext is the velocity
+    // after the frame's first smooth sub-step, which is frameFraction of the frame: bounds grow by
+    // how far each body can move in the frame, so that fast bodies find what lies ahead.
+    void collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u,
+                 const Vec& uNext, double frameFraction, double dt, const ContactSettings& settings);
 
-    void solveSubstep(double h, const Vec& q0, Vec& q, Vec& u, const ContactSettings& settings,
-                      double positionWeight) {
-        solver_.solveSubstep(h, q0, q, u, settings, positionWeight);
+    // One step of h after the smooth step (ContactSolver::solveStep).
+    void solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+                   const ContactSettings& settings, double positionWeight) {
+        solver_.solveStep(h, q0, u0, q, u, settings, positionWeight);
     }
+    // Adds scale times the last step's position correction to q.
+    void addPushOut(Vec& q, double scale) const { solver_.addPushOut(q, scale); }
 
     const std::vector<ContactConstraint>& contacts() const { return solver_.constraints(); }
     int pointCount() const;

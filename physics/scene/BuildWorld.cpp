@@ -106,6 +106,7 @@ ContactSettings contactSettings(const std::map<std::string, double>& solver) {
             field = static_cast<std::remove_reference_t<decltype(field)>>(it->second);
     };
     namespace key = schema::key;
+    take(key::substeps, settings.substeps);
     take(key::iterations, settings.iterations);
     take(key::relaxIterations, settings.relaxIterations);
     take(key::contactHertz, settings.hertz);

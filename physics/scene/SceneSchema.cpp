@@ -66,8 +66,10 @@ const Field<SimulationDesc> kSimulation[] = {
 };
 
 const SolverSetting kSolverSettings[] = {
-    {key::iterations, {Bound::IntegerBetween, 1000.0, 0.0}, "velocity iterations per step"},
-    {key::relaxIterations, {Bound::IntegerBetween, 1000.0, 0.0}, "relax iterations per step"},
+    {key::substeps, {Bound::IntegerBetween, 64.0, 0.0},
+     "inner sub-steps of the contact solver per step; 0: the solver's choice"},
+    {key::iterations, {Bound::IntegerBetween, 1000.0, 0.0}, "soft velocity iterations per inner sub-step"},
+    {key::relaxIterations, {Bound::IntegerBetween, 1000.0, 0.0}, "relax iterations per inner sub-step"},
     {key::contactHertz, positive(L::kMaxCoefficient), "stiffness of the soft contact, in Hz"},
     {key::dampingRatio, nonNegative(L::kMaxCoefficient), "damping ratio of the soft contact"},
     {key::pushOut, positive(L::kMaxCoefficient), "largest speed that pushes overlaps apart"},

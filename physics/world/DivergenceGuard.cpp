@@ -1,5 +1,6 @@
 #include "physics/world/DivergenceGuard.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -49,7 +50,8 @@ void DivergenceGuard::beginFrame(const SimulationClock& clock, const EnergyLedge
 
 DivergenceGuard::Verdict DivergenceGuard::judge(const EnergyLedger& ledger, const Vec& frameStartQ,
                                                 const Vec& frameStartU) {
-    const double drift = ledger.drift;
+    // Energy a solver creates runs away like energy an integrator creates: both count.
+    const double drift = std::max(ledger.drift, ledger.correction);
     if (!std::isfinite(drift)) return Verdict::RestoreFrameStart;
     // The growth rule measures against the scene's own energy, not against work_nc: in a
     // damped blow-up the damping's work explodes as fast as the drift and would hide it.

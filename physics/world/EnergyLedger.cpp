@@ -7,7 +7,7 @@ namespace phasebox {
 void EnergyLedger::close(const StateSummary& state, double potentialEnergy) {
     kinetic = state.kinetic;
     potential = potentialEnergy;
-    drift = kinetic + potential - workNc - initial;
+    drift = kinetic + potential - workNc - correction - initial;
     if (std::abs(drift) > maxAbsDrift) maxAbsDrift = std::abs(drift);
 }
 
@@ -21,7 +21,7 @@ void EnergyLedger::rebase(double kineticEnergy, double potentialEnergy) {
 void EnergyLedger::carryOver(double kineticEnergy, double potentialEnergy) {
     kinetic = kineticEnergy;
     potential = potentialEnergy;
-    initial = kinetic + potential - workNc - drift;
+    initial = kinetic + potential - workNc - correction - drift;
 }
 
 double potentialEnergy(const std::vector<std::unique_ptr<Effect>>& effects, const Vec& q,

@@ -416,8 +416,9 @@ std::string World::objectAtDof(int dof) const {
 // ---- stepping -----------------------------------------------------------------------------
 
 // One frame of dt, as a script of named stages (each timed into profile_, CONTRACT.md §7):
-//   collide         find contacts once per frame (broad phase, narrow phase, warm start)
 //   integrate       the smooth step: the integrator with every effect, per sub-step
+//   collide         find contacts once per frame, after the first smooth sub-step (broad
+//                   phase over how far each body can move, narrow phase, warm start)
 //   solve contacts  impulses on velocities and bounded position correction, per sub-step
 //   ledger          the energy ledger of the end state
 //   guard           divergence: a non-finite value or runaway energy restores a good frame
@@ -429,10 +430,6 @@ bool World::step() {
     guard_.beginFrame(clock_, ledger_, q_[current_], u_[current_], settings_.substeps > 1);
     StageTimer timer(profile_);
     ++profile_.steps;
-    if (contacts_) {
-        timer.start(StepStage::Collide);
-        collide();
-    }
     StateSummary summary;
     bool summed = false;
     for (int s = 0; s < settings_.substeps; ++s) {
@@ -443,6 +440,11 @@ bool World::step() {
         const bool sumHere = s + 1 == settings_.substeps && !contacts_;
         timer.start(StepStage::Integrate);
         const bool ok = integrate(t, h, next, sumHere ? &summary : nullptr);
+        if (ok && contacts_ && s == 0) {
+            // Once per frame, after the first smooth step shows where the bodies are heading.
+            timer.start(StepStage::Collide);
+            collide(next);
+        }
         if (ok && contacts_) {
             timer.start(StepStage::SolveContacts);
             solveContacts(h, next);
@@ -464,9 +466,10 @@ bool World::step() {
     return good;
 }
 
-void World::collide() {
+void World::collide(int next) {
     const auto start = Clock::now();
-    contacts_->collide(bodies_, invMass_, q_[current_], u_[current_], settings_.dt, settings_.contacts);
+    contacts_->collide(bodies_, invMass_, q_[current_], u_[current_], u_[next],
+                       1.0 / settings_.substeps, settings_.dt, settings_.contacts);
     effectSeconds_.back() += secondsSince(start);
 }
 
@@ -476,17 +479,24 @@ bool World::integrate(double t, double h, int next, StateSummary* summary) {
 }
 
 void World::solveContacts(double h, int next) {
-    // Contacts act after the smooth step as impulses (positions move by h·Δv); the energy
-    // they add or remove is their work, booked in work_nc.
+    // Contacts act after the smooth step as impulses and a bounded position correction. The
+    // energy the impulses change is physical work (friction, restitution losses, the normal
+    // force), booked in work_nc; the energy of the push-out that removes overlap is the
+    // solver's, booked in correction (CONTRACT.md §6).
     const auto start = Clock::now();
     Vec& q = q_[next];
     Vec& u = u_[next];
     const double before = mechanicalEnergy(q, u);
-    contacts_->solveSubstep(h, q_[current_], q, u, settings_.contacts,
-                            integrator_->info().positionWeight);
+    contacts_->solveStep(h, q_[current_], u_[current_], q, u, settings_.contacts,
+                         integrator_->info().positionWeight);
     const double after = mechanicalEnergy(q, u);
+    withoutPushOut_ = q;
+    contacts_->addPushOut(withoutPushOut_, -1.0);
+    const double unpushed = mechanicalEnergy(withoutPushOut_, u);
     effectSeconds_.back() += secondsSince(start);
-    if (std::isfinite(after)) ledger_.workNc += after - before;  // else the guard reports it
+    if (!std::isfinite(after)) return;  // the guard reports it
+    ledger_.workNc += unpushed - before;
+    ledger_.correction += after - unpushed;
 }
 
 StateSummary World::closeLedger(const StateSummary* summed) {
@@ -654,9 +664,9 @@ void World::checkInvariants([[maybe_unused]] StepStage after) const {
         for (int i = 0; i < n; ++i) kinetic += 0.5 * mass_[i] * u[i] * u[i];
         double potential = 0.0;
         for (const auto& e : effects_) potential += e->potentialEnergy(q);
-        const double drift = kinetic + potential - ledger_.workNc - ledger_.initial;
+        const double drift = kinetic + potential - ledger_.workNc - ledger_.correction - ledger_.initial;
         const double scale = 1.0 + std::abs(kinetic) + std::abs(potential) + std::abs(ledger_.workNc) +
-                             std::abs(ledger_.initial);
+                             std::abs(ledger_.correction) + std::abs(ledger_.initial);
         if (std::abs(kinetic - ledger_.kinetic) > 1e-9 * scale ||
             std::abs(drift - ledger_.drift) > 1e-9 * scale)
             fail("the energy ledger does not balance");

@@ -167,7 +167,7 @@ private:
     void bindEffects();
 
     // The stages of step(), in the order they run.
-    void collide();
+    void collide(int next);
     bool integrate(double t, double h, int next, StateSummary* summary);
     void solveContacts(double h, int next);
     StateSummary closeLedger(const StateSummary* summed);
@@ -208,6 +208,7 @@ private:
     Vec q_[2], u_[2];
     int current_ = 0;
     Vec mass_, invMass_, force_;
+    Vec withoutPushOut_;  // scratch: the state less the contacts' push-out, for the ledger
 
     SimulationClock clock_;
     long long forceEvaluations_ = 0;

@@ -94,7 +94,7 @@ private slots:
         QCOMPARE(o["sim_time"].toDouble(), 1.0);
         QCOMPARE(o["diverged"].toBool(), false);
         for (const char* key : {"median", "mean", "max"}) QVERIFY(o["step_ms"].toObject().contains(key));
-        for (const char* key : {"initial", "kinetic", "potential", "work_nc", "drift", "max_abs_drift"})
+        for (const char* key : {"initial", "kinetic", "potential", "work_nc", "drift", "max_abs_drift", "correction"})
             QVERIFY(o["energy"].toObject().contains(key));
         QStringList effects;
         for (const QJsonValue& e : o["effects"].toArray()) {
@@ -181,16 +181,16 @@ private slots:
         QFile f(csv);
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
-        QCOMPARE(lines.first(), QString("t,kinetic,potential,work_nc,drift,p.x,p.y,p.vx,p.vy,"
+        QCOMPARE(lines.first(), QString("t,kinetic,potential,work_nc,drift,correction,constraint_error,p.x,p.y,p.vx,p.vy,"
                                         "crate.x,crate.y,crate.angle,crate.vx,crate.vy,crate.omega"));
         // 50 steps: t = 0, every 7th step (7 … 49), and the end (50).
         QCOMPARE(lines.size(), 1 + 1 + 7 + 1);
         QCOMPARE(lines[1].split(',').first(), QString("0"));
         QCOMPARE(lines.last().split(',').first().toDouble(), 1.0);
-        QCOMPARE(lines[2].split(',').size(), 15);
+        QCOMPARE(lines[2].split(',').size(), 17);
         // The first row holds the initial state exactly.
-        QCOMPARE(lines[1].split(',')[7].toDouble(), 1.0);   // p.vx
-        QCOMPARE(lines[1].split(',')[8].toDouble(), 2.0);   // p.vy
+        QCOMPARE(lines[1].split(',')[9].toDouble(), 1.0);    // p.vx
+        QCOMPARE(lines[1].split(',')[10].toDouble(), 2.0);   // p.vy
     }
 
     void csvTrackChoosesObjects() {
@@ -199,11 +199,11 @@ private slots:
         const QString header = QString::fromUtf8(r.out).section('\n', 0, 0);
         // A node id holds a comma, so its columns are quoted (RFC 4180) and the header still has
         // one field per value of a row.
-        QCOMPARE(header, QString("t,kinetic,potential,work_nc,drift,\"flag[1,1].x\",\"flag[1,1].y\","
+        QCOMPARE(header, QString("t,kinetic,potential,work_nc,drift,correction,constraint_error,\"flag[1,1].x\",\"flag[1,1].y\","
                                  "\"flag[1,1].vx\",\"flag[1,1].vy\",crate.x,crate.y,crate.angle,"
                                  "crate.vx,crate.vy,crate.omega"));
         const QString firstRow = QString::fromUtf8(r.out).section('\n', 1, 1);
-        QCOMPARE(firstRow.count(','), 5 + 4 + 6 - 1);
+        QCOMPARE(firstRow.count(','), 7 + 4 + 6 - 1);
         const Result bad = cli({"run", write("mixed.json", kMixed), "--track", "nobody"});
         QCOMPARE(bad.status, 2);
         QVERIFY(bad.err.contains("unknown object id \"nobody\""));
