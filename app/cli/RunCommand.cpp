@@ -409,7 +409,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     auto sample = [&] {
         if (!o.plotEnergy.isEmpty()) {
             const EnergyLedger& e = world.energy();
-            energy.push({world.time(), e.kinetic, e.potential, e.workNc, e.drift});
+            energy.push({world.time(), e.kinetic, e.potential, e.workNc, e.drift, e.correction});
         }
         if (phaseObject) phase.push(phaseOf(world, *phaseObject, phaseCoordinate));
     };

@@ -96,7 +96,7 @@ void Recorder::record(const World& world) {
     if (calls_++ % stride_ != 0) return;
 
     const EnergyLedger& e = world.energy();
-    energy_.push_back({t, e.kinetic, e.potential, e.workNc, e.drift});
+    energy_.push_back({t, e.kinetic, e.potential, e.workNc, e.drift, e.correction});
     ui::PhaseSample sample;
     if (samplePhase(world, sample)) {
         phase_.push_back(sample);
@@ -174,12 +174,13 @@ bool Recorder::samplePhase(const World& world, ui::PhaseSample& sample) {
 }
 
 bool Recorder::writeEnergyCsv(const QString& path, QString* error) const {
-    return writeCsv(path, error, QStringLiteral("t,kinetic,potential,work_nc,drift"),
+    return writeCsv(path, error, QStringLiteral("t,kinetic,potential,work_nc,drift,correction"),
                     [&](QTextStream& out) {
                         for (const ui::EnergySample& s : energy_)
                             out << formatNumber(s.t) << ',' << formatNumber(s.kinetic) << ','
                                 << formatNumber(s.potential) << ',' << formatNumber(s.workNc) << ','
-                                << formatNumber(s.drift) << '\n';
+                                << formatNumber(s.drift) << ',' << formatNumber(s.correction)
+                                << '\n';
                     });
 }
 

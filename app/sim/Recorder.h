@@ -58,7 +58,8 @@ public:
     // Steps per recorded sample (1 until the first halving).
     long long stride() const { return stride_; }
 
-    // CSV (CONTRACT.md §4): header t,kinetic,potential,work_nc,drift, one row per sample.
+    // CSV (CONTRACT.md §4, §6): header t,kinetic,potential,work_nc,drift,correction, one row
+    // per sample (the CLI's columns, without its constraint_error).
     bool writeEnergyCsv(const QString& path, QString* error) const;
     // Header t,ID.COORD,ID.VELOCITY (e.g. t,ball.x,ball.vx).
     bool writePhaseCsv(const QString& path, QString* error) const;

@@ -321,9 +321,9 @@ void TestController::recorderWritesTheContractsCsv() {
     QVERIFY2(recorder.writeEnergyCsv(path, &error), qPrintable(error));
     const QStringList lines = readLines(path);
     QCOMPARE(lines.size(), 31);
-    QCOMPARE(lines[0], QStringLiteral("t,kinetic,potential,work_nc,drift"));
+    QCOMPARE(lines[0], QStringLiteral("t,kinetic,potential,work_nc,drift,correction"));
     const QStringList first = lines[1].split(QLatin1Char(','));
-    QCOMPARE(first.size(), 5);
+    QCOMPARE(first.size(), 6);
     QCOMPARE(first[0].toDouble(), 0.01);
     // work_nc is the damping's (negative) work, read back exactly.
     const QStringList last = lines.last().split(QLatin1Char(','));

@@ -338,7 +338,7 @@ private slots:
             QVERIFY(csv.open(QIODevice::ReadOnly));
             const QList<QByteArray> lines = csv.readAll().split('\n');
             QVERIFY2(lines.size() > 55, qPrintable(base));
-            if (plot == ui::PlotsPanel::Plot::Energy) QCOMPARE(lines[0], QByteArray("t,kinetic,potential,work_nc,drift"));
+            if (plot == ui::PlotsPanel::Plot::Energy) QCOMPARE(lines[0], QByteArray("t,kinetic,potential,work_nc,drift,correction"));
             else QVERIFY(lines[0].startsWith("t,"));
             QCOMPARE(lines[1].count(','), lines[0].count(','));
         }

@@ -4,6 +4,7 @@
 #include <QFileInfo>
 #include <QGraphicsScene>
 #include <QImage>
+#include <QLegend>
 #include <QLineSeries>
 #include <QLogValueAxis>
 #include <QPainter>
@@ -43,12 +44,13 @@ void fitAxis(QValueAxis* axis, double lo, double hi) {
 }
 
 QLineSeries* addSeries(QChart* chart, const QVector<QPointF>& points, const QString& name,
-                       const QColor& color, qreal width = 2.0) {
+                       const QColor& color, qreal width = 2.0, Qt::PenStyle style = Qt::SolidLine) {
     auto* series = new QLineSeries(chart);
     series->setName(name);
     series->replace(decimate(points));
     QPen pen(color);
     pen.setWidthF(width);
+    pen.setStyle(style);
     series->setPen(pen);
     chart->addSeries(series);
     return series;
@@ -74,10 +76,12 @@ QChart* newChart(const QString& title) {
 }  // namespace
 
 QColor energyColor(int series) {
+    // Correction is orange beside drift's red: both are a solver's, not physics', and the
+    // dash keeps them apart where they overlap.
     static const QColor colors[] = {QColor(0x1f, 0x77, 0xb4), QColor(0x2c, 0xa0, 0x2c),
                                     QColor(0x20, 0x20, 0x20), QColor(0x94, 0x67, 0xbd),
-                                    QColor(0xd6, 0x27, 0x28)};
-    return colors[std::clamp(series, 0, 4)];
+                                    QColor(0xd6, 0x27, 0x28), QColor(0xff, 0x7f, 0x0e)};
+    return colors[std::clamp(series, 0, 5)];
 }
 
 QVector<QPointF> decimate(const QVector<QPointF>& points, int maxPoints) {
@@ -103,18 +107,36 @@ QVector<QPointF> decimate(const QVector<QPointF>& points, int maxPoints) {
 
 QChart* createEnergyChart(std::span<const EnergySample> samples,
                           std::span<const PlotMarker> markers, const QString& title) {
+    // The ledger's lines in the order of CONTRACT §6 (correction after drift). Correction is
+    // dashed: it is not energy the bodies hold but what the push-out put in or took out.
+    struct Line {
+        const char* name;
+        double (*value)(const EnergySample&);
+        qreal width;
+        Qt::PenStyle style;
+    };
+    static constexpr Line lines[] = {
+        {"kinetic", [](const EnergySample& e) { return e.kinetic; }, 1.8, Qt::SolidLine},
+        {"potential", [](const EnergySample& e) { return e.potential; }, 1.8, Qt::SolidLine},
+        {"total", [](const EnergySample& e) { return e.kinetic + e.potential; }, 2.5,
+         Qt::SolidLine},
+        {"work_nc", [](const EnergySample& e) { return e.workNc; }, 1.8, Qt::SolidLine},
+        {"drift", [](const EnergySample& e) { return e.drift; }, 1.8, Qt::SolidLine},
+        {"correction", [](const EnergySample& e) { return e.correction; }, 2.0, Qt::DashLine},
+    };
+    constexpr int kLines = static_cast<int>(std::size(lines));
     QChart* chart = newChart(title);
-    QVector<QPointF> series[5];
+    QVector<QPointF> series[kLines];
     for (auto& s : series) s.reserve(static_cast<qsizetype>(samples.size()));
     double tMin = 0.0, tMax = 0.0;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const EnergySample& e : samples) {
-        const double values[5] = {e.kinetic, e.potential, e.kinetic + e.potential, e.workNc, e.drift};
-        for (int k = 0; k < 5; ++k) {
-            series[k].push_back({e.t, values[k]});
-            if (std::isfinite(values[k])) {
-                lo = std::min(lo, values[k]);
-                hi = std::max(hi, values[k]);
+        for (int k = 0; k < kLines; ++k) {
+            const double v = lines[k].value(e);
+            series[k].push_back({e.t, v});
+            if (std::isfinite(v)) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
             }
         }
     }
@@ -122,22 +144,20 @@ QChart* createEnergyChart(std::span<const EnergySample> samples,
         tMin = samples.front().t;
         tMax = samples.back().t;
     }
-    static const char* names[5] = {"kinetic", "potential", "total", "work_nc", "drift"};
-    for (int k = 0; k < 5; ++k)
-        addSeries(chart, series[k], QString::fromLatin1(names[k]), energyColor(k), k == 2 ? 2.5 : 1.8);
+    for (int k = 0; k < kLines; ++k)
+        addSeries(chart, series[k], QString::fromLatin1(lines[k].name), energyColor(k),
+                  lines[k].width, lines[k].style);
+    // The legend draws each line's own pen, so correction is dashed there too.
+    chart->legend()->setMarkerShape(QLegend::MarkerShapeFromSeries);
     auto* x = new QValueAxis;
     x->setTitleText(QStringLiteral("time [s]"));
     auto* y = new QValueAxis;
     y->setTitleText(QStringLiteral("energy [J]"));
     fitTimeAxis(x, tMin, tMax);
     fitAxis(y, lo, hi);
-    for (const PlotMarker& m : markers) {
-        auto* line = addSeries(chart, {{m.t, y->min()}, {m.t, y->max()}}, m.label,
-                               QColor(0x80, 0x80, 0x80), 1.2);
-        QPen pen = line->pen();
-        pen.setStyle(Qt::DashLine);
-        line->setPen(pen);
-    }
+    for (const PlotMarker& m : markers)
+        addSeries(chart, {{m.t, y->min()}, {m.t, y->max()}}, m.label, QColor(0x80, 0x80, 0x80), 1.2,
+                  Qt::DashLine);
     attach(chart, x, y);
     return chart;
 }

@@ -23,6 +23,7 @@ struct EnergySample {
     double potential = 0.0;
     double workNc = 0.0;
     double drift = 0.0;
+    double correction = 0.0;  // position correction's energy, apart from work_nc (CONTRACT §6)
 };
 
 // A labelled vertical marker, e.g. where the integrator or dt changed.
@@ -43,7 +44,8 @@ inline constexpr int kMaxPlotPoints = 4000;
 // in order, so spikes survive. Series shorter than maxPoints are returned as they are.
 QVector<QPointF> decimate(const QVector<QPointF>& points, int maxPoints = kMaxPlotPoints);
 
-// The energy plot: kinetic, potential, total, work_nc and drift against time, with markers.
+// The energy plot: kinetic, potential, total, work_nc, drift and correction (dashed) against
+// time, with markers.
 QChart* createEnergyChart(std::span<const EnergySample> samples,
                           std::span<const PlotMarker> markers, const QString& title);
 
@@ -60,6 +62,7 @@ QChart* createErrorChart(std::span<const QPointF> samples, const QString& title)
 bool exportChart(QChart* chart, const QString& path, QSize size, QString* error);
 
 // The series colours, shared with the app's legends.
-QColor energyColor(int series);  // 0 kinetic, 1 potential, 2 total, 3 work_nc, 4 drift
+// 0 kinetic, 1 potential, 2 total, 3 work_nc, 4 drift, 5 correction.
+QColor energyColor(int series);
 
 }  // namespace phasebox::ui

@@ -3,8 +3,12 @@
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
+#include <QEvent>
+#include <QFontMetricsF>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLegend>
+#include <QLegendMarker>
 #include <QMenu>
 #include <QSplitter>
 #include <QTabWidget>
@@ -29,6 +33,23 @@ void applyPresentation(QChart* chart, bool presentation) {
     QFont legend = chart->legend()->font();
     legend.setPointSizeF(legend.pointSizeF() * 1.4);
     chart->legend()->setFont(legend);
+}
+
+// A legend along the bottom is a single row, and Qt cuts its labels to "kine…" when the row
+// is wider than the view (six energy lines in a narrow dock). Then the legend goes down the
+// right side, where every name fits whole, at the cost of some plot width.
+void fitLegend(QChartView* view) {
+    QLegend* legend = view->chart()->legend();
+    if (!legend->isVisible()) return;
+    const QFontMetricsF metrics(legend->font());
+    qreal row = 0.0;
+    for (const QLegendMarker* marker : legend->markers()) {
+        // Label, marker (a line 1.5 font heights long) and the gaps around them.
+        if (marker->isVisible())
+            row += metrics.horizontalAdvance(marker->label()) + 3.0 * metrics.height();
+    }
+    const qreal margins = 4.0 * metrics.height();  // the chart's and the legend's own
+    legend->setAlignment(row + margins <= view->width() ? Qt::AlignBottom : Qt::AlignRight);
 }
 }  // namespace
 
@@ -101,7 +122,10 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
     errorHint_->hide();
     errorLayout->addWidget(errorHint_);
     errorLayout->addWidget(errorView_, 1);
-    for (QChartView* view : {energyView_, phaseView_, errorView_}) styleChart(view);
+    for (QChartView* view : {energyView_, phaseView_, errorView_}) {
+        styleChart(view);
+        view->installEventFilter(this);
+    }
     lowerTabs_->addTab(phaseBox, tr("P&hase space"));
     lowerTabs_->addTab(errorBox, tr("Local e&rror"));
     splitter->addWidget(energyView_);
@@ -115,6 +139,16 @@ void PlotsPanel::styleChart(QChartView* view) {
     view->setRenderHint(QPainter::Antialiasing);
     view->setMinimumHeight(120);
     applyPresentation(view->chart(), presentation_);
+    fitLegend(view);
+}
+
+bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
+    // Plots are rebuilt only while running and not paused: the legend follows the dock's
+    // width here.
+    if (event->type() == QEvent::Resize)
+        for (QChartView* view : {energyView_, phaseView_, errorView_})
+            if (watched == view) fitLegend(view);
+    return QWidget::eventFilter(watched, event);
 }
 
 void PlotsPanel::setEnergy(std::span<const EnergySample> samples,

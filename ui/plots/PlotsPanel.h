@@ -61,6 +61,9 @@ signals:
     // format: "png", "svg" or "csv".
     void exportRequested(phasebox::ui::PlotsPanel::Plot plot, const QString& format);
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void styleChart(QChartView* view);
 
