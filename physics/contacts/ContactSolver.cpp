@@ -10,25 +10,6 @@ namespace {
 constexpr int kMaxCollisionPasses = 32;
 
 Vec2 tangentOf(const Vec2& n) { return {n.y(), -n.x()}; }
-
-// Velocity of a body's point with arm r (zero for a static body).
-Vec2 pointVelocity(const SolverBody* b, const Vec2& r) {
-    if (!b) return Vec2::Zero();
-    return b->v + b->w * perp(r);
-}
-
-// Moves a body as a positional impulse would, without changing its velocity.
-void shiftBody(SolverBody* b, const Vec2& r, const Vec2& impulse) {
-    if (!b) return;
-    b->timeShift += b->invMass * impulse;
-    b->angleTimeShift += b->invInertia * cross(r, impulse);
-}
-
-void applyImpulse(SolverBody* b, const Vec2& r, const Vec2& impulse) {
-    if (!b) return;
-    b->v += b->invMass * impulse;
-    b->w += b->invInertia * cross(r, impulse);
-}
 }  // namespace
 
 // Soft constraint coefficients (Box2D v3's b2MakeSoft): a spring-damper of frequency ω and
@@ -78,60 +59,159 @@ void ContactSolver::prepare() {
 }
 
 void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
-    for (SolverBody& b : bodies_) {
-        b.v0 = b.v = u0.segment<2>(b.dof);
+    const std::size_t count = bodies_.size();
+    state_.resize(count + 1);
+    motion_.resize(count + 1);
+    state_[count] = {0.0, 0.0, 0.0, 0.0, 0.0};  // the static world
+    motion_[count] = {0.0, 0.0, 1.0, 0.0};
+    for (std::size_t i = 0; i < count; ++i) {
+        SolverBody& b = bodies_[i];
+        b.v0 = u0.segment<2>(b.dof);
         b.smoothDv = u.segment<2>(b.dof) - b.v0;
         b.startOffset = q0.segment<2>(b.dof) - b.collidePosition;
         b.shift = b.path = b.timeShift = b.pushOut = b.bounceDv = Vec2::Zero();
         b.angleShift = b.anglePath = b.angleTimeShift = b.pushOutAngle = b.bounceDw = 0.0;
         if (b.rotates) {
-            b.w0 = b.w = u0[b.dof + 2];
+            b.w0 = u0[b.dof + 2];
             b.smoothDw = u[b.dof + 2] - b.w0;
             b.startAngle = q0[b.dof + 2] - b.collideAngle;
         }
+        state_[i] = {b.v0.x(), b.v0.y(), b.w0, b.invMass, b.invInertia};
     }
+}
+
+void ContactSolver::buildRows(double hertz, double zeta, double h) {
+    // What does not change within the step, once: the rows' masses, the block's K and its
+    // conditioning, the softness (each contact's stiffness multiplier: see prepare()).
+    const int world = static_cast<int>(bodies_.size());
+    rows_.resize(constraints_.size());
+    bouncing_.clear();
+    for (std::size_t i = 0; i < constraints_.size(); ++i) {
+        const ContactConstraint& c = constraints_[i];
+        Row& row = rows_[i];
+        row.a = c.bodyA >= 0 ? c.bodyA : world;
+        row.b = c.bodyB >= 0 ? c.bodyB : world;
+        row.pointCount = c.pointCount;
+        row.nx = c.normal.x();
+        row.ny = c.normal.y();
+        row.friction = c.friction;
+        const Softness soft = makeSoft(c.stiffness * hertz, zeta, h);
+        row.biasRate = soft.biasRate;
+        row.massScale = soft.massScale;
+        row.impulseScale = soft.impulseScale;
+        for (int k = 0; k < c.pointCount; ++k) {
+            const ContactPoint& p = c.points[k];
+            RowPoint& r = row.p[k];
+            r.rAx = p.anchorA.x();
+            r.rAy = p.anchorA.y();
+            r.rBx = p.anchorB.x();
+            r.rBy = p.anchorB.y();
+            r.baseSeparation = p.baseSeparation;
+            r.separation = p.baseSeparation;
+            r.normalMass = p.normalMass;
+            r.tangentMass = p.tangentMass;
+            // Converged, the soft update −m·s·(v_n + b) − r·λ = 0 is v_n + b + (r/(s·m))·λ = 0.
+            r.compliance = soft.impulseScale / (soft.massScale * p.normalMass);
+            r.normalImpulse = p.normalImpulse;
+            r.tangentImpulse = p.tangentImpulse;
+        }
+        row.blockable = false;
+        row.k11 = row.k12 = row.k22 = 0.0;
+        if (c.pointCount == 2) {
+            const Vec2& n = c.normal;
+            const BodyState& a = state_[row.a];
+            const BodyState& b = state_[row.b];
+            const double mA = a.invMass, iA = a.invInertia;
+            const double mB = b.invMass, iB = b.invInertia;
+            const double rn1A = cross(c.points[0].anchorA, n), rn1B = cross(c.points[0].anchorB, n);
+            const double rn2A = cross(c.points[1].anchorA, n), rn2B = cross(c.points[1].anchorB, n);
+            row.k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+            row.k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+            row.k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+            // Nearly coincident points make K singular: the sequential solve handles them.
+            row.blockable = !(row.k11 * row.k11 >= 1000.0 * (row.k11 * row.k22 - row.k12 * row.k12));
+        }
+        if (c.restitution != 0.0) bouncing_.push_back(static_cast<int>(i));
+    }
+    shifted_.resize(2 * rows_.size());
 }
 
 void ContactSolver::updateSeparations() {
     // Bodies hold still while the solver iterates (positions move once per inner sub-step), so
     // each point's separation is computed once per phase, not once per iteration: the rotations
     // alone (a sine and a cosine per body and point) were a quarter of the solver's time.
-    for (SolverBody& b : bodies_) {
-        b.dp = b.startOffset + b.path + b.timeShift;
-        b.dRotation =
-            b.rotates ? rotation(b.startAngle + b.anglePath + b.angleTimeShift) : Mat2::Identity();
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        const SolverBody& b = bodies_[i];
+        const Vec2 dp = b.startOffset + b.path + b.timeShift;
+        BodyMotion& m = motion_[i];
+        m.dx = dp.x();
+        m.dy = dp.y();
+        if (b.rotates) {
+            const double angle = b.startAngle + b.anglePath + b.angleTimeShift;
+            m.cos = std::cos(angle);
+            m.sin = std::sin(angle);
+        } else {
+            m.cos = 1.0;
+            m.sin = 0.0;
+        }
     }
-    for (ContactConstraint& c : constraints_) {
-        const SolverBody* a = c.bodyA >= 0 ? &bodies_[c.bodyA] : nullptr;
-        const SolverBody* b = c.bodyB >= 0 ? &bodies_[c.bodyB] : nullptr;
+    const BodyMotion* motion = motion_.data();
+    for (Row& c : rows_) {
+        const BodyMotion& a = motion[c.a];
+        const BodyMotion& b = motion[c.b];
         for (int k = 0; k < c.pointCount; ++k) {
-            ContactPoint& p = c.points[k];
+            RowPoint& p = c.p[k];
             // The anchors turn with their bodies: s = s₀ + n·(Δp_B − Δp_A), Δp = Δx + R(Δθ)·r − r.
-            Vec2 d = Vec2::Zero();
-            if (a) d -= a->dp + (a->dRotation * p.anchorA - p.anchorA);
-            if (b) d += b->dp + (b->dRotation * p.anchorB - p.anchorB);
-            p.separation = p.baseSeparation + c.normal.dot(d);
+            double dx = 0.0 - (a.dx + ((a.cos * p.rAx - a.sin * p.rAy) - p.rAx));
+            double dy = 0.0 - (a.dy + ((a.sin * p.rAx + a.cos * p.rAy) - p.rAy));
+            dx += b.dx + ((b.cos * p.rBx - b.sin * p.rBy) - p.rBx);
+            dy += b.dy + ((b.sin * p.rBx + b.cos * p.rBy) - p.rBy);
+            p.separation = p.baseSeparation + (c.nx * dx + c.ny * dy);
         }
     }
 }
+
+namespace {
+// Adds the impulse (px, py) at arm (rx, ry) to a body (a static one has zero inverse masses).
+template <class State>
+inline void applyImpulse(State& b, double rx, double ry, double px, double py) {
+    b.vx += b.invMass * px;
+    b.vy += b.invMass * py;
+    b.w += b.invInertia * (rx * py - ry * px);
+}
+template <class State>
+inline void removeImpulse(State& b, double rx, double ry, double px, double py) {
+    b.vx -= b.invMass * px;
+    b.vy -= b.invMass * py;
+    b.w -= b.invInertia * (rx * py - ry * px);
+}
+// Relative velocity of the contact point along (dx, dy): (v_B + ω_B × r_B − v_A − ω_A × r_A)·d.
+template <class State>
+inline double relativeVelocity(const State& a, const State& b, double rAx, double rAy, double rBx,
+                               double rBy, double dx, double dy) {
+    const double vx = (b.vx - b.w * rBy) - (a.vx - a.w * rAy);
+    const double vy = (b.vy + b.w * rBx) - (a.vy + a.w * rAx);
+    return dx * vx + dy * vy;
+}
+}  // namespace
 
 void ContactSolver::warmStart() {
-    for (ContactConstraint& c : constraints_) {
-        SolverBody* a = c.bodyA >= 0 ? &bodies_[c.bodyA] : nullptr;
-        SolverBody* b = c.bodyB >= 0 ? &bodies_[c.bodyB] : nullptr;
-        const Vec2 t = tangentOf(c.normal);
+    BodyState* state = state_.data();
+    for (const Row& c : rows_) {
+        BodyState& a = state[c.a];
+        BodyState& b = state[c.b];
+        const double tx = c.ny, ty = -c.nx;
         for (int k = 0; k < c.pointCount; ++k) {
-            const ContactPoint& p = c.points[k];
-            const Vec2& rA = p.anchorA;
-            const Vec2& rB = p.anchorB;
-            const Vec2 impulse = p.normalImpulse * c.normal + p.tangentImpulse * t;
-            applyImpulse(a, rA, -impulse);
-            applyImpulse(b, rB, impulse);
+            const RowPoint& p = c.p[k];
+            const double px = p.normalImpulse * c.nx + p.tangentImpulse * tx;
+            const double py = p.normalImpulse * c.ny + p.tangentImpulse * ty;
+            removeImpulse(a, p.rAx, p.rAy, px, py);
+            applyImpulse(b, p.rBx, p.rBy, px, py);
         }
     }
 }
 
-void ContactSolver::bounce(double h, const ContactSettings& settings) {
+bool ContactSolver::bounce(double h, const ContactSettings& settings) {
     // Passes on the current velocities until no contact that meets within this inner sub-step
     // approaches faster than the threshold: v_n ← −e·v_n. Each application conserves energy
     // exactly when e = 1 whatever else touches the bodies, and the passes let a row of touching
@@ -139,67 +219,78 @@ void ContactSolver::bounce(double h, const ContactSettings& settings) {
     // puts the impact within 1/kInnerRate s of its true time whatever the frame: the velocity
     // reflected is the one of the impact, not the end of a long step's (a ball dropped 1 m at
     // dt = 1 s would otherwise leave at 9.8 m/s and climb far above where it fell from).
-    for (ContactConstraint& c : constraints_)
-        for (int k = 0; k < c.pointCount; ++k) c.points[k].shifted = false;
+    // Returns whether a body was moved to its time of impact (its separations changed).
+    if (bouncing_.empty()) return false;
+    for (const int i : bouncing_) shifted_[2 * i] = shifted_[2 * i + 1] = 0;
+    const int world = static_cast<int>(bodies_.size());
+    BodyState* state = state_.data();
+    bool moved = false;
     for (int pass = 0; pass < kMaxCollisionPasses; ++pass) {
         bool any = false;
-        for (ContactConstraint& c : constraints_) {
-            if (c.restitution == 0.0) continue;
-            SolverBody* a = c.bodyA >= 0 ? &bodies_[c.bodyA] : nullptr;
-            SolverBody* b = c.bodyB >= 0 ? &bodies_[c.bodyB] : nullptr;
+        for (const int i : bouncing_) {
+            Row& c = rows_[i];
+            const double restitution = constraints_[i].restitution;
+            BodyState& a = state[c.a];
+            BodyState& b = state[c.b];
             for (int k = 0; k < c.pointCount; ++k) {
-                ContactPoint& p = c.points[k];
+                RowPoint& p = c.p[k];
                 const double s = p.separation;
-                const double vn = c.normal.dot(pointVelocity(b, p.anchorB) - pointVelocity(a, p.anchorA));
+                const double vn = relativeVelocity(a, b, p.rAx, p.rAy, p.rBx, p.rBy, c.nx, c.ny);
                 // The threshold keeps resting contact quiet (gravity presses a box on the floor
                 // at g·h per sub-step); it shrinks with 1 − e, so that e = 1 is exactly elastic
                 // however slow the collision, as the lecture's e = 1 means.
-                const double threshold = settings.restitutionThreshold * (1.0 - c.restitution);
+                const double threshold = settings.restitutionThreshold * (1.0 - restitution);
                 if (vn >= -threshold || vn >= 0.0 || s + h * vn > 0.0) continue;
-                const double lambda = -p.normalMass * (1.0 + c.restitution) * vn;
-                applyImpulse(a, p.anchorA, -lambda * c.normal);
-                applyImpulse(b, p.anchorB, lambda * c.normal);
+                const double lambda = -p.normalMass * (1.0 + restitution) * vn;
+                removeImpulse(a, p.rAx, p.rAy, lambda * c.nx, lambda * c.ny);
+                applyImpulse(b, p.rBx, p.rBy, lambda * c.nx, lambda * c.ny);
                 any = true;
                 // Time of impact: the bodies meet s/|v_n| into the sub-step and separate for the
                 // rest of it, so they end (1 + e)·s closer than moving by h·v_new from the
                 // sub-step's start implies; without this shift every rebound would start early
                 // and rise (1 + e)·s too high. Only for an isolated pair: shifting a body that
                 // touches others could push it into them.
-                const bool isolated = (!a || a->contactCount == 1) && (!b || b->contactCount == 1);
-                if (s > 0.0 && isolated && !p.shifted) {
-                    p.shifted = true;
-                    const Vec2 shift = (1.0 + c.restitution) * s * p.normalMass * c.normal;
-                    shiftBody(a, p.anchorA, shift);
-                    shiftBody(b, p.anchorB, -shift);
+                const bool isolated = (c.a == world || bodies_[c.a].contactCount == 1) &&
+                                      (c.b == world || bodies_[c.b].contactCount == 1);
+                if (s > 0.0 && isolated && !shifted_[2 * i + k]) {
+                    shifted_[2 * i + k] = 1;
+                    moved = true;
+                    const double shift = (1.0 + restitution) * s * p.normalMass;
+                    const double sx = shift * c.nx, sy = shift * c.ny;
+                    const Vec2 rA(p.rAx, p.rAy), rB(p.rBx, p.rBy);
+                    // A positional impulse: moves the bodies without changing their velocities.
+                    if (c.a != world) {
+                        SolverBody& body = bodies_[c.a];
+                        body.timeShift += body.invMass * Vec2(sx, sy);
+                        body.angleTimeShift += body.invInertia * cross(rA, Vec2(sx, sy));
+                    }
+                    if (c.b != world) {
+                        SolverBody& body = bodies_[c.b];
+                        body.timeShift += body.invMass * Vec2(-sx, -sy);
+                        body.angleTimeShift += body.invInertia * cross(rB, Vec2(-sx, -sy));
+                    }
                 }
             }
         }
         if (!any) break;
     }
+    return moved;
 }
 
-bool ContactSolver::solveBlock(ContactConstraint& c, SolverBody* a, SolverBody* b,
-                               const double bias[2], const double compliance[2]) {
-    // The two points of a manifold solved together as a 2×2 linear complementarity problem,
-    // as in Box2D 2.4's block solver, with the soft terms added: for each point the converged
-    // soft constraint is v_n + bias + compliance·λ = 0 (λ ≥ 0, complementary). Solving the
-    // points one after the other instead leaves an asymmetry that tips tall stacks over.
-    ContactPoint& p1 = c.points[0];
-    ContactPoint& p2 = c.points[1];
-    const Vec2& n = c.normal;
-    const double mA = a ? a->invMass : 0.0, iA = a ? a->invInertia : 0.0;
-    const double mB = b ? b->invMass : 0.0, iB = b ? b->invInertia : 0.0;
-    const double rn1A = cross(p1.anchorA, n), rn1B = cross(p1.anchorB, n);
-    const double rn2A = cross(p2.anchorA, n), rn2B = cross(p2.anchorB, n);
-    const double k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
-    const double k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
-    const double k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
-    // Nearly coincident points make K singular: let the sequential solve handle them.
-    if (k11 * k11 >= 1000.0 * (k11 * k22 - k12 * k12)) return false;
+namespace {
+// The two points of a manifold solved together as a 2×2 linear complementarity problem, as in
+// Box2D 2.4's block solver, with the soft terms added: for each point the converged soft
+// constraint is v_n + bias + compliance·λ = 0 (λ ≥ 0, complementary). Solving the points one
+// after the other instead leaves an asymmetry that tips tall stacks over.
+template <class Row, class State>
+inline bool solveBlock(Row& c, State& a, State& b, const double bias[2], const double compliance[2]) {
+    auto& p1 = c.p[0];
+    auto& p2 = c.p[1];
+    const double k11 = c.k11, k22 = c.k22, k12 = c.k12;
     const double a11 = k11 + compliance[0], a22 = k22 + compliance[1], a12 = k12;
 
-    const double vn1 = n.dot(pointVelocity(b, p1.anchorB) - pointVelocity(a, p1.anchorA));
-    const double vn2 = n.dot(pointVelocity(b, p2.anchorB) - pointVelocity(a, p2.anchorA));
+    const double vn1 = relativeVelocity(a, b, p1.rAx, p1.rAy, p1.rBx, p1.rBy, c.nx, c.ny);
+    const double vn2 = relativeVelocity(a, b, p2.rAx, p2.rAy, p2.rBx, p2.rBy, c.nx, c.ny);
     const double old1 = p1.normalImpulse, old2 = p2.normalImpulse;
     // w = v_n(λ = 0) + bias: the velocity the points would have without any normal impulse.
     const double w1 = vn1 - (k11 * old1 + k12 * old2) + bias[0];
@@ -222,68 +313,69 @@ bool ContactSolver::solveBlock(ContactConstraint& c, SolverBody* a, SolverBody* 
         }
     }
     const double d1 = x1 - old1, d2 = x2 - old2;
-    applyImpulse(a, p1.anchorA, -d1 * n);
-    applyImpulse(b, p1.anchorB, d1 * n);
-    applyImpulse(a, p2.anchorA, -d2 * n);
-    applyImpulse(b, p2.anchorB, d2 * n);
+    removeImpulse(a, p1.rAx, p1.rAy, d1 * c.nx, d1 * c.ny);
+    applyImpulse(b, p1.rBx, p1.rBy, d1 * c.nx, d1 * c.ny);
+    removeImpulse(a, p2.rAx, p2.rAy, d2 * c.nx, d2 * c.ny);
+    applyImpulse(b, p2.rBx, p2.rBy, d2 * c.nx, d2 * c.ny);
     p1.normalImpulse = x1;
     p2.normalImpulse = x2;
     return true;
 }
+}  // namespace
 
 void ContactSolver::solve(double h, bool useBias, const ContactSettings& settings) {
     const double invH = 1.0 / h;
-    for (ContactConstraint& c : constraints_) {
-        SolverBody* a = c.bodyA >= 0 ? &bodies_[c.bodyA] : nullptr;
-        SolverBody* b = c.bodyB >= 0 ? &bodies_[c.bodyB] : nullptr;
-        const Softness& soft = softness_[&c - constraints_.data()];
+    const double maxPushOut = settings.pushOut;
+    BodyState* state = state_.data();
+    for (Row& c : rows_) {
+        BodyState& a = state[c.a];
+        BodyState& b = state[c.b];
         // Per point: the bias velocity, and the soft parameters (a speculative point, or a
         // penetrating one during relax, is rigid).
         double bias[2] = {0.0, 0.0}, massScale[2] = {1.0, 1.0}, impulseScale[2] = {0.0, 0.0};
         double compliance[2] = {0.0, 0.0};
         bool active[2] = {true, true};
         for (int k = 0; k < c.pointCount; ++k) {
-            const double s = c.points[k].separation;
+            const double s = c.p[k].separation;
             if (s > 0.0) {
                 // Speculative: close at most the gap. Only while solving: relaxing a gap would
                 // brake an approaching body a sub-step early (the next solve sees the gap anew).
                 bias[k] = s * invH;
                 active[k] = useBias;
             } else if (useBias) {
-                bias[k] = std::max(soft.biasRate * s, -settings.pushOut);
-                massScale[k] = soft.massScale;
-                impulseScale[k] = soft.impulseScale;
-                // Converged, the soft update −m·s·(v_n + b) − r·λ = 0 is v_n + b + (r/(s·m))·λ = 0.
-                compliance[k] = soft.impulseScale / (soft.massScale * c.points[k].normalMass);
+                bias[k] = std::max(c.biasRate * s, -maxPushOut);
+                massScale[k] = c.massScale;
+                impulseScale[k] = c.impulseScale;
+                compliance[k] = c.p[k].compliance;
             }
         }
-        const bool block = c.pointCount == 2 && active[0] && active[1];
+        const bool block = c.blockable && active[0] && active[1];
         if (!block || !solveBlock(c, a, b, bias, compliance)) {
             for (int k = 0; k < c.pointCount; ++k) {
                 if (!active[k]) continue;
-                ContactPoint& p = c.points[k];
-                const double vn = c.normal.dot(pointVelocity(b, p.anchorB) - pointVelocity(a, p.anchorA));
+                RowPoint& p = c.p[k];
+                const double vn = relativeVelocity(a, b, p.rAx, p.rAy, p.rBx, p.rBy, c.nx, c.ny);
                 double impulse = -p.normalMass * massScale[k] * (vn + bias[k]) -
                                  impulseScale[k] * p.normalImpulse;
                 const double accumulated = std::max(p.normalImpulse + impulse, 0.0);
                 impulse = accumulated - p.normalImpulse;
                 p.normalImpulse = accumulated;
-                applyImpulse(a, p.anchorA, -impulse * c.normal);
-                applyImpulse(b, p.anchorB, impulse * c.normal);
+                removeImpulse(a, p.rAx, p.rAy, impulse * c.nx, impulse * c.ny);
+                applyImpulse(b, p.rBx, p.rBy, impulse * c.nx, impulse * c.ny);
             }
         }
         // Coulomb friction, each point bounded by its own normal impulse.
-        const Vec2 t = tangentOf(c.normal);
+        const double tx = c.ny, ty = -c.nx;
         for (int k = 0; k < c.pointCount; ++k) {
-            ContactPoint& p = c.points[k];
-            const double vt = t.dot(pointVelocity(b, p.anchorB) - pointVelocity(a, p.anchorA));
+            RowPoint& p = c.p[k];
+            const double vt = relativeVelocity(a, b, p.rAx, p.rAy, p.rBx, p.rBy, tx, ty);
             const double limit = c.friction * p.normalImpulse;
             double impulse = -p.tangentMass * vt;
             const double accumulated = std::clamp(p.tangentImpulse + impulse, -limit, limit);
             impulse = accumulated - p.tangentImpulse;
             p.tangentImpulse = accumulated;
-            applyImpulse(a, p.anchorA, -impulse * t);
-            applyImpulse(b, p.anchorB, impulse * t);
+            removeImpulse(a, p.rAx, p.rAy, impulse * tx, impulse * ty);
+            applyImpulse(b, p.rBx, p.rBy, impulse * tx, impulse * ty);
         }
     }
 }
@@ -302,51 +394,71 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     if (constraints_.empty()) return;
     const int n = innerSubsteps(h, settings);
     const double hi = h / n;
-    // Each contact's softness for the inner sub-step (its stiffness multiplier: see prepare()).
-    const double hertz = std::min(settings.hertz, 0.25 / hi);
-    softness_.resize(constraints_.size());
-    for (std::size_t i = 0; i < constraints_.size(); ++i)
-        softness_[i] = makeSoft(constraints_[i].stiffness * hertz, settings.dampingRatio, hi);
     // The smooth step's velocity change is spread evenly over the inner sub-steps (the
     // smooth forces held constant over the step); its position change is the integrator's, and
     // the solver adds to it only what the contact impulses change.
     loadBodies(q0, u0, u);
+    buildRows(std::min(settings.hertz, 0.25 / hi), settings.dampingRatio, hi);
+    const std::size_t count = bodies_.size();
+    // Positions move only at the end of a sub-step's solve and when a bounce moves a body to
+    // its time of impact, so separations are measured only then.
+    bool moved = true;
     for (int i = 1; i <= n; ++i) {
         const double f = double(i) / n;
-        for (SolverBody& b : bodies_) {
-            b.v += b.smoothDv / n;
-            b.w += b.smoothDw / n;
-            b.pushV = b.v;  // before the bounces
-            b.pushW = b.w;
+        for (std::size_t k = 0; k < count; ++k) {
+            SolverBody& b = bodies_[k];
+            BodyState& s = state_[k];
+            s.vx += b.smoothDv.x() / n;
+            s.vy += b.smoothDv.y() / n;
+            s.w += b.smoothDw / n;
+            b.pushV = Vec2(s.vx, s.vy);  // before the bounces
+            b.pushW = s.w;
         }
-        updateSeparations();
-        bounce(hi, settings);
-        for (SolverBody& b : bodies_) {
-            b.bounceDv += b.v - b.pushV;
-            b.bounceDw += b.w - b.pushW;
+        if (moved) updateSeparations();
+        moved = bounce(hi, settings);
+        for (std::size_t k = 0; k < count; ++k) {
+            SolverBody& b = bodies_[k];
+            const BodyState& s = state_[k];
+            b.bounceDv += Vec2(s.vx, s.vy) - b.pushV;
+            b.bounceDw += s.w - b.pushW;
         }
-        updateSeparations();
+        if (moved) updateSeparations();
         warmStart();
         for (int it = 0; it < settings.iterations; ++it) solve(hi, true, settings);
-        for (SolverBody& b : bodies_) {
+        for (std::size_t k = 0; k < count; ++k) {
+            SolverBody& b = bodies_[k];
+            const BodyState& s = state_[k];
+            const Vec2 v(s.vx, s.vy);
             // Contact-induced velocity, bounces included: what the impulses added to the
             // smooth path, which the integrator's positions do not know of.
-            b.shift += hi * (b.v - (b.v0 + f * b.smoothDv));
-            b.path += hi * b.v;
+            b.shift += hi * (v - (b.v0 + f * b.smoothDv));
+            b.path += hi * v;
             if (b.rotates) {
-                b.angleShift += hi * (b.w - (b.w0 + f * b.smoothDw));
-                b.anglePath += hi * b.w;
+                b.angleShift += hi * (s.w - (b.w0 + f * b.smoothDw));
+                b.anglePath += hi * s.w;
             }
-            b.pushV = b.v;
-            b.pushW = b.w;
+            b.pushV = v;
+            b.pushW = s.w;
         }
         updateSeparations();
+        moved = false;
         for (int it = 0; it < settings.relaxIterations; ++it) solve(hi, false, settings);
-        for (SolverBody& b : bodies_) {
+        for (std::size_t k = 0; k < count; ++k) {
+            SolverBody& b = bodies_[k];
+            const BodyState& s = state_[k];
             // What relax removed is the push-out's velocity: its displacement is the position
             // correction (the energy ledger's `correction`).
-            b.pushOut += hi * (b.pushV - b.v);
-            if (b.rotates) b.pushOutAngle += hi * (b.pushW - b.w);
+            b.pushOut += hi * (b.pushV - Vec2(s.vx, s.vy));
+            if (b.rotates) b.pushOutAngle += hi * (b.pushW - s.w);
+        }
+    }
+
+    // The accumulated impulses, for the next step's warm start.
+    for (std::size_t i = 0; i < constraints_.size(); ++i) {
+        ContactConstraint& c = constraints_[i];
+        for (int k = 0; k < c.pointCount; ++k) {
+            c.points[k].normalImpulse = rows_[i].p[k].normalImpulse;
+            c.points[k].tangentImpulse = rows_[i].p[k].tangentImpulse;
         }
     }
 
@@ -356,14 +468,17 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     // relax, keeps its whole displacement: that is its purpose; a bounce acts at the instant
     // of impact, not as a force over the step).
     const double excess = positionWeight - (n + 1.0) / (2.0 * n);
-    for (SolverBody& b : bodies_) {
-        const Vec2 dv = b.v - (b.v0 + b.smoothDv + b.bounceDv);
+    for (std::size_t k = 0; k < count; ++k) {
+        const SolverBody& b = bodies_[k];
+        const BodyState& s = state_[k];
+        const Vec2 v(s.vx, s.vy);
+        const Vec2 dv = v - (b.v0 + b.smoothDv + b.bounceDv);
         q.segment<2>(b.dof) += b.shift + excess * h * dv + b.timeShift;
-        u.segment<2>(b.dof) = b.v;
+        u.segment<2>(b.dof) = v;
         if (b.rotates) {
-            const double dw = b.w - (b.w0 + b.smoothDw + b.bounceDw);
+            const double dw = s.w - (b.w0 + b.smoothDw + b.bounceDw);
             q[b.dof + 2] += b.angleShift + excess * h * dw + b.angleTimeShift;
-            u[b.dof + 2] = b.w;
+            u[b.dof + 2] = s.w;
         }
     }
 }

@@ -39,14 +39,14 @@ struct ContactSettings {
     double speculativeDistance = 0.02;  // m: contacts are made this far ahead of touching
 };
 
-// A body as the solver sees it during one step.
+// A body as the solver sees it during one step: what the stage sets (dof, rotates, masses,
+// where the contacts were found) and the step's bookkeeping, touched a few times per inner
+// sub-step. The velocities the iterations read and write live apart (ContactSolver::BodyState).
 struct SolverBody {
     int dof = -1;  // first state index
     bool rotates = false;
     double invMass = 0.0;
     double invInertia = 0.0;
-    Vec2 v = Vec2::Zero();  // the current velocity
-    double w = 0.0;
     Vec2 collidePosition = Vec2::Zero();  // where the contacts were found
     double collideAngle = 0.0;
     // The step: velocity at its start, the smooth step's velocity change, and the start's
@@ -66,8 +66,6 @@ struct SolverBody {
     double pushW = 0.0;
     Vec2 pushOut = Vec2::Zero();  // the position correction (push-out) of this step
     double pushOutAngle = 0.0;
-    Vec2 dp = Vec2::Zero();  // displacement since the contacts were found
-    Mat2 dRotation = Mat2::Identity();  // R(Δθ), once per solver phase
     int contactCount = 0;  // constraints this step
 };
 
@@ -75,13 +73,11 @@ struct ContactPoint {
     Vec2 anchorA = Vec2::Zero();  // from each body's centre to the contact point, at collide
     Vec2 anchorB = Vec2::Zero();
     double baseSeparation = 0.0;  // separation when found
-    double separation = 0.0;      // now (updated once per solver phase)
     double normalMass = 0.0;
     double tangentMass = 0.0;
     double normalImpulse = 0.0;   // accumulated (warm-started)
     double tangentImpulse = 0.0;
     std::uint32_t id = 0;
-    bool shifted = false;  // moved to its time of impact in this sub-step
 };
 
 struct ContactConstraint {
@@ -124,19 +120,53 @@ private:
     struct Softness {
         double biasRate, massScale, impulseScale;
     };
+    // The hot per-body state the iterations touch (40 bytes). Index bodies_.size() is the
+    // static world: zero velocity and zero inverse masses, so a row needs no branch for it.
+    struct BodyState {
+        double vx, vy, w;
+        double invMass, invInertia;
+    };
+    // Where a body is now relative to where its contacts were found: Δp and R(Δθ), once per
+    // solver phase.
+    struct BodyMotion {
+        double dx, dy, cos, sin;
+    };
+    // A contact point as the iterations see it.
+    struct RowPoint {
+        double rAx, rAy, rBx, rBy;  // anchors (zero on the static side)
+        double baseSeparation, separation;
+        double normalMass, tangentMass;
+        double compliance;  // of the soft normal constraint, for the block solve
+        double normalImpulse, tangentImpulse;
+    };
+    // A constraint as the iterations see it: built once per step from ContactConstraint with
+    // everything that does not change within the step (masses, the block's K, the softness).
+    struct Row {
+        int a, b;  // BodyState indices
+        int pointCount;
+        bool blockable;  // two points whose K is well conditioned
+        double nx, ny, friction;
+        double biasRate, massScale, impulseScale;
+        double k11, k12, k22;
+        RowPoint p[2];
+    };
+
     void loadBodies(const Vec& q0, const Vec& u0, const Vec& u);
+    void buildRows(double hertz, double zeta, double h);
     void warmStart();
-    void bounce(double h, const ContactSettings& settings);
+    bool bounce(double h, const ContactSettings& settings);
     static Softness makeSoft(double hertz, double zeta, double h);
-    bool solveBlock(ContactConstraint& c, SolverBody* a, SolverBody* b, const double bias[2],
-                    const double compliance[2]);
     void solve(double h, bool useBias, const ContactSettings& settings);
     // Separations with the bodies where the solver's path has taken them.
     void updateSeparations();
 
     std::vector<SolverBody> bodies_;
     std::vector<ContactConstraint> constraints_;
-    std::vector<Softness> softness_;  // per constraint, for the current sub-step length
+    std::vector<BodyState> state_;    // bodies_.size() + 1 (the static world last)
+    std::vector<BodyMotion> motion_;  // likewise
+    std::vector<Row> rows_;           // per constraint, in constraints_'s order
+    std::vector<int> bouncing_;       // rows with restitution > 0
+    std::vector<unsigned char> shifted_;  // per row point (2 per row): moved to its time of impact
 };
 
 }  // namespace phasebox
