@@ -30,7 +30,7 @@ namespace phasebox {
 
 struct ContactSettings {
     int substeps = 0;                   // inner sub-steps per step; 0 = the solver's choice
-    int iterations = 4;                 // soft solve iterations per inner sub-step
+    int iterations = 3;                 // soft solve iterations per inner sub-step
     int relaxIterations = 1;            // bias-free iterations per inner sub-step
     double hertz = 60.0;                // contact stiffness (capped at a quarter of 1/h)
     double dampingRatio = 10.0;
