@@ -211,7 +211,18 @@ void ContactSolver::warmStart() {
     }
 }
 
-bool ContactSolver::bounce(double h, const ContactSettings& settings) {
+double ContactSolver::smoothNormalChange(const Row& c, const RowPoint& p) const {
+    // The smooth step's change of the relative normal velocity at the point, over the whole step.
+    const int world = static_cast<int>(bodies_.size());
+    auto at = [&](int body, double rx, double ry) -> Vec2 {
+        if (body == world) return Vec2::Zero();
+        const SolverBody& b = bodies_[body];
+        return b.smoothDv + b.smoothDw * Vec2(-ry, rx);
+    };
+    return Vec2(c.nx, c.ny).dot(at(c.b, p.rBx, p.rBy) - at(c.a, p.rAx, p.rAy));
+}
+
+bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settings) {
     // Passes on the current velocities until no contact that meets within this inner sub-step
     // approaches faster than the threshold: v_n ← −e·v_n. Each application conserves energy
     // exactly when e = 1 whatever else touches the bodies, and the passes let a row of touching
@@ -239,9 +250,17 @@ bool ContactSolver::bounce(double h, const ContactSettings& settings) {
                 // The threshold keeps resting contact quiet (gravity presses a box on the floor
                 // at g·h per sub-step); it shrinks with 1 − e, so that e = 1 is exactly elastic
                 // however slow the collision, as the lecture's e = 1 means.
+                if (vn >= 0.0 || s + h * vn > 0.0) continue;
+                // The smooth forces' share of this sub-step, taken as a constant acceleration
+                // a: the bodies meet at τ with v_i = v_n − a·(h − τ), slower than at the
+                // sub-step's end, and leave at −e·v_i (without this a dropped ball rebounds up
+                // to e·g·h faster than it hit: 2.7% too high at 240 sub-steps a second).
+                const double smooth = smoothNormalChange(c, p) / substeps;
+                const double tau = s > 0.0 ? std::min(h, s / -vn) : 0.0;
+                const double vi = std::min(vn - smooth * (h - tau) / h, 0.0);
                 const double threshold = settings.restitutionThreshold * (1.0 - restitution);
-                if (vn >= -threshold || vn >= 0.0 || s + h * vn > 0.0) continue;
-                const double lambda = -p.normalMass * (1.0 + restitution) * vn;
+                if (vi >= -threshold) continue;
+                const double lambda = -p.normalMass * (1.0 + restitution) * vi;
                 removeImpulse(a, p.rAx, p.rAy, lambda * c.nx, lambda * c.ny);
                 applyImpulse(b, p.rBx, p.rBy, lambda * c.nx, lambda * c.ny);
                 any = true;
@@ -415,7 +434,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
             b.pushW = s.w;
         }
         if (moved) updateSeparations();
-        moved = bounce(hi, settings);
+        moved = bounce(hi, n, settings);
         for (std::size_t k = 0; k < count; ++k) {
             SolverBody& b = bodies_[k];
             const BodyState& s = state_[k];

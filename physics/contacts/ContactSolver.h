@@ -154,7 +154,9 @@ private:
     void loadBodies(const Vec& q0, const Vec& u0, const Vec& u);
     void buildRows(double hertz, double zeta, double h);
     void warmStart();
-    bool bounce(double h, const ContactSettings& settings);
+    // Restitution in an inner sub-step of h, one of `substeps` of the step.
+    bool bounce(double h, int substeps, const ContactSettings& settings);
+    double smoothNormalChange(const Row& c, const RowPoint& p) const;
     static Softness makeSoft(double hertz, double zeta, double h);
     void solve(double h, bool useBias, const ContactSettings& settings);
     // Separations with the bodies where the solver's path has taken them.
