@@ -1,8 +1,8 @@
 #include "app/accuracy/ExactReference.h"
 
 #include "physics/core/EffectNames.h"
-#include "physics/world/World.h"
 #include "physics/scene/SceneDesc.h"
+#include "physics/world/World.h"
 
 #include <algorithm>
 #include <cmath>
@@ -171,9 +171,8 @@ std::optional<ExactReference> findExactReference(const SceneDesc& scene, const W
     if (world.contacts()) return std::nullopt;
     for (const auto& effect : world.effects()) {
         const std::string& name = effect->name();
-        if (name != effectName::gravity && name != effectName::drag &&
-            name != effectName::wind && name != effectName::springs &&
-            name != effectName::newtonianGravity)
+        if (name != effectName::gravity && name != effectName::drag && name != effectName::wind &&
+            name != effectName::springs && name != effectName::newtonianGravity)
             return std::nullopt;
     }
     const EffectsDesc& fx = scene.effects;

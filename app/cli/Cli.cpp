@@ -7,8 +7,8 @@
 #include <cmath>
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/integrators/Integrator.h"
-#include "physics/scene/SceneLibrary.h"
 #include "physics/scene/BuildWorld.h"
+#include "physics/scene/SceneLibrary.h"
 
 namespace phasebox::cli {
 
@@ -63,7 +63,9 @@ int run(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     if (command == QLatin1String("run")) return runCommand(rest, out, err);
     if (command == QLatin1String("scene")) return sceneCommand(rest, out, err);
     if (command == QLatin1String("accuracy")) return accuracyCommand(rest, out, err);
-    return fail(err, QStringLiteral("unknown command \"%1\"; known: integrators, info, run, scene, accuracy").arg(command));
+    return fail(err, QStringLiteral(
+                         "unknown command \"%1\"; known: integrators, info, run, scene, accuracy")
+                         .arg(command));
 }
 
 int integratorsCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
@@ -89,10 +91,12 @@ int sceneCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     const auto& library = scenes::library();
     if (args.isEmpty()) {
         for (const scenes::NamedScene& s : library)
-            out << QString::fromStdString(s.name).leftJustified(16) << QString::fromStdString(s.summary) << "\n";
+            out << QString::fromStdString(s.name).leftJustified(16)
+                << QString::fromStdString(s.summary) << "\n";
         return kSuccess;
     }
-    if (args.size() > 2) return fail(err, QStringLiteral("usage: phasebox-cli scene [NAME] [FILE]"));
+    if (args.size() > 2)
+        return fail(err, QStringLiteral("usage: phasebox-cli scene [NAME] [FILE]"));
     for (const scenes::NamedScene& s : library) {
         if (QString::fromStdString(s.name) != args[0]) continue;
         const SceneDesc scene = s.make();
@@ -106,7 +110,8 @@ int sceneCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     }
     QStringList names;
     for (const scenes::NamedScene& s : library) names << QString::fromStdString(s.name);
-    return fail(err, QStringLiteral("unknown scene \"%1\"; known: %2").arg(args[0], names.join(QStringLiteral(", "))));
+    return fail(err, QStringLiteral("unknown scene \"%1\"; known: %2")
+                         .arg(args[0], names.join(QStringLiteral(", "))));
 }
 
 int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
@@ -134,15 +139,20 @@ int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         return n;
     }();
 
-    out << "scene:       " << (scene.name.empty() ? QStringLiteral("(unnamed)") : QString::fromStdString(scene.name)) << "\n";
-    if (!scene.description.empty()) out << "description: " << QString::fromStdString(scene.description) << "\n";
+    out << "scene:       "
+        << (scene.name.empty() ? QStringLiteral("(unnamed)") : QString::fromStdString(scene.name))
+        << "\n";
+    if (!scene.description.empty())
+        out << "description: " << QString::fromStdString(scene.description) << "\n";
     out << "objects:\n";
-    out << "  particles  " << world.particles().size() - clothNodes << " (" << pinned << " pinned in all)\n";
+    out << "  particles  " << world.particles().size() - clothNodes << " (" << pinned
+        << " pinned in all)\n";
     out << "  boxes      " << world.boxes().size() << " (" << staticBoxes << " static)\n";
     out << "  planes     " << world.planes().size() << "\n";
     out << "  springs    " << world.springs().size() - clothSprings << "\n";
     out << "  cloths     " << world.cloths().size();
-    if (!world.cloths().empty()) out << " (" << clothNodes << " nodes, " << clothSprings << " springs)";
+    if (!world.cloths().empty())
+        out << " (" << clothNodes << " nodes, " << clothSprings << " springs)";
     out << "\n";
     out << "state:       " << world.dimension() << " degrees of freedom\n";
     // The same list as run --json's effects: everything that costs time per step.
@@ -156,7 +166,9 @@ int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     const SimulationDesc& sim = scene.simulation;
     const IntegratorInfo* info = findIntegrator(sim.integrator);
     out << "integrator:  " << QString::fromStdString(sim.integrator);
-    if (info) out << " (" << QString::fromUtf8(info->label.data(), info->label.size()) << ", order " << info->order << ")";
+    if (info)
+        out << " (" << QString::fromUtf8(info->label.data(), info->label.size()) << ", order "
+            << info->order << ")";
     out << "\n";
     out << "dt:          " << sim.dt << " s, " << sim.substeps << " sub-step(s)\n";
     out << "duration:    " << sim.duration << " s\n";
@@ -168,10 +180,15 @@ int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             << " rad/s (period " << QString::number(2.0 * M_PI / advice.omegaMax, 'g', 3)
             << " s); largest stable sub-step per method:\n";
         for (const StepLimit& limit : advice.limits) {
-            out << "  " << QString::fromLatin1(limit.integrator.data(), limit.integrator.size()).leftJustified(18);
-            if (std::isinf(limit.maxDt)) out << "any";
-            else if (limit.maxDt == 0.0) out << "none";
-            else out << QString::number(limit.maxDt, 'g', 3) << " s";
+            out << "  "
+                << QString::fromLatin1(limit.integrator.data(), limit.integrator.size())
+                       .leftJustified(18);
+            if (std::isinf(limit.maxDt))
+                out << "any";
+            else if (limit.maxDt == 0.0)
+                out << "none";
+            else
+                out << QString::number(limit.maxDt, 'g', 3) << " s";
             out << "  (" << QString::fromStdString(limit.note) << ")\n";
         }
     } else {

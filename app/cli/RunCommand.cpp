@@ -94,7 +94,8 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
         const QString& a = args[i];
         if (!a.startsWith(QLatin1String("--"))) {
             if (!o.scene.isEmpty())
-                return QStringLiteral("unexpected argument \"%1\" (the scene is \"%2\")").arg(a, o.scene);
+                return QStringLiteral("unexpected argument \"%1\" (the scene is \"%2\")")
+                    .arg(a, o.scene);
             o.scene = a;
             continue;
         }
@@ -102,15 +103,16 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
             o.json = true;
             continue;
         }
-        static const QStringList known{"--integrator", "--dt", "--duration", "--tolerance",
-                                       "--substeps", "--every", "--csv", "--track",
+        static const QStringList known{"--integrator",  "--dt",        "--duration", "--tolerance",
+                                       "--substeps",    "--every",     "--csv",      "--track",
                                        "--plot-energy", "--plot-phase"};
         if (!known.contains(a))
             return QStringLiteral("unknown option \"%1\"; see phasebox-cli run --help").arg(a);
         const int values = a == QLatin1String("--plot-phase") ? 2 : 1;
         if (i + values >= args.size())
-            return QStringLiteral("%1 needs %2").arg(a, values == 2 ? QStringLiteral("ID.COORD and FILE")
-                                                                     : QStringLiteral("a value"));
+            return QStringLiteral("%1 needs %2")
+                .arg(a,
+                     values == 2 ? QStringLiteral("ID.COORD and FILE") : QStringLiteral("a value"));
         const QString v = args[++i];
         QString error;
         double d = 0.0;
@@ -122,7 +124,8 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
             o.integrator = v;
         } else if (a == QLatin1String("--dt")) {
             if (!(error = number(a, v, d)).isEmpty()) return error;
-            if (!(d > 0.0 && d <= 1.0)) return QStringLiteral("--dt: must be > 0 and <= 1 (got %1)").arg(v);
+            if (!(d > 0.0 && d <= 1.0))
+                return QStringLiteral("--dt: must be > 0 and <= 1 (got %1)").arg(v);
             o.dt = d;
         } else if (a == QLatin1String("--duration")) {
             if (!(error = number(a, v, d)).isEmpty()) return error;
@@ -160,7 +163,8 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
     }
     if (o.scene.isEmpty()) return QStringLiteral("run needs a SCENE file");
     if (o.json && o.csv == QLatin1String("-"))
-        return QStringLiteral("--json and --csv - both write to standard output; give --csv a file");
+        return QStringLiteral(
+            "--json and --csv - both write to standard output; give --csv a file");
     return {};
 }
 
@@ -217,7 +221,8 @@ ui::PhaseSample phaseOf(const World& world, const Tracked& t, int coordinate) {
         if (coordinate == 2) return {world.boxAngle(t.index), world.boxAngularVelocity(t.index)};
         return {world.boxPosition(t.index)[coordinate], world.boxVelocity(t.index)[coordinate]};
     }
-    return {world.particlePosition(t.index)[coordinate], world.particleVelocity(t.index)[coordinate]};
+    return {world.particlePosition(t.index)[coordinate],
+            world.particleVelocity(t.index)[coordinate]};
 }
 
 class CsvOutput {
@@ -230,7 +235,8 @@ public:
         file_ = std::make_unique<QSaveFile>(path);
         file_->setDirectWriteFallback(true);
         if (!file_->open(QIODevice::WriteOnly | QIODevice::Text)) {
-            *error = QStringLiteral("%1: cannot write the CSV file: %2").arg(path, file_->errorString());
+            *error =
+                QStringLiteral("%1: cannot write the CSV file: %2").arg(path, file_->errorString());
             return false;
         }
         owned_ = std::make_unique<QTextStream>(file_.get());
@@ -242,7 +248,8 @@ public:
         if (!file_) return true;
         owned_->flush();
         if (file_->commit()) return true;
-        *error = QStringLiteral("%1: cannot write the CSV file: %2").arg(file_->fileName(), file_->errorString());
+        *error = QStringLiteral("%1: cannot write the CSV file: %2")
+                     .arg(file_->fileName(), file_->errorString());
         return false;
     }
 
@@ -265,9 +272,9 @@ void writeCsvHeader(QTextStream& s, const std::vector<Tracked>& tracked) {
 
 void writeCsvRow(QTextStream& s, const World& world, const std::vector<Tracked>& tracked) {
     const EnergyLedger& e = world.energy();
-    s << formatNumber(world.time()) << ',' << formatNumber(e.kinetic) << ',' << formatNumber(e.potential)
-      << ',' << formatNumber(e.workNc) << ',' << formatNumber(e.drift) << ','
-      << formatNumber(e.correction) << ",0";
+    s << formatNumber(world.time()) << ',' << formatNumber(e.kinetic) << ','
+      << formatNumber(e.potential) << ',' << formatNumber(e.workNc) << ',' << formatNumber(e.drift)
+      << ',' << formatNumber(e.correction) << ",0";
     for (const Tracked& t : tracked) {
         if (t.isBox) {
             const Vec2 p = world.boxPosition(t.index), v = world.boxVelocity(t.index);
@@ -283,7 +290,9 @@ void writeCsvRow(QTextStream& s, const World& world, const std::vector<Tracked>&
     s << '\n';
 }
 
-QJsonArray pair(const Vec2& v) { return QJsonArray{v.x(), v.y()}; }
+QJsonArray pair(const Vec2& v) {
+    return QJsonArray{v.x(), v.y()};
+}
 
 QJsonObject objectsJson(const World& world) {
     QJsonObject objects;
@@ -342,8 +351,9 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     } catch (const SceneError& e) {
         QStringList lines;
         for (const SceneIssue& issue : e.issues())
-            lines << QStringLiteral("%1: %2: %3").arg(o.scene, QString::fromStdString(issue.path),
-                                                      QString::fromStdString(issue.message));
+            lines << QStringLiteral("%1: %2: %3")
+                         .arg(o.scene, QString::fromStdString(issue.path),
+                              QString::fromStdString(issue.message));
         return fail(err, lines.join(QLatin1Char('\n')));
     }
     World& world = *built.world;
@@ -373,14 +383,20 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         const QString id = o.phaseTarget.left(dot), coord = o.phaseTarget.mid(dot + 1);
         phaseObject = dot > 0 ? findObject(world, id) : std::nullopt;
         if (!phaseObject)
-            return fail(err, QStringLiteral("--plot-phase: unknown object \"%1\" (expected ID.COORD, e.g. ball.x)")
-                                 .arg(o.phaseTarget));
-        if (coord == QLatin1String("x")) phaseCoordinate = 0;
-        else if (coord == QLatin1String("y")) phaseCoordinate = 1;
-        else if (coord == QLatin1String("angle") && phaseObject->isBox) phaseCoordinate = 2;
+            return fail(err,
+                        QStringLiteral(
+                            "--plot-phase: unknown object \"%1\" (expected ID.COORD, e.g. ball.x)")
+                            .arg(o.phaseTarget));
+        if (coord == QLatin1String("x"))
+            phaseCoordinate = 0;
+        else if (coord == QLatin1String("y"))
+            phaseCoordinate = 1;
+        else if (coord == QLatin1String("angle") && phaseObject->isBox)
+            phaseCoordinate = 2;
         else
-            return fail(err, QStringLiteral("--plot-phase: unknown coordinate \"%1\"; known: x, y%2")
-                                 .arg(coord, phaseObject->isBox ? QStringLiteral(", angle") : QString()));
+            return fail(
+                err, QStringLiteral("--plot-phase: unknown coordinate \"%1\"; known: x, y%2")
+                         .arg(coord, phaseObject->isBox ? QStringLiteral(", angle") : QString()));
     }
 
     CsvOutput csv;
@@ -398,8 +414,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         return fail(err, QStringLiteral("a run of %1 s at dt = %2 s takes %3 steps; at most %4 are "
                                         "allowed: use a larger --dt or a shorter --duration")
                              .arg(QString::number(sim.duration, 'g', 15),
-                                  QString::number(dt, 'g', 15),
-                                  QString::number(stepCount, 'g', 3),
+                                  QString::number(dt, 'g', 15), QString::number(stepCount, 'g', 3),
                                   QString::number(kMaxRunSteps, 'g', 3)));
     const long long steps = std::max<long long>(1, static_cast<long long>(stepCount));
     const bool plotting = !o.plotEnergy.isEmpty() || phaseObject;
@@ -439,7 +454,8 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             break;
         }
         done = k;
-        if (!o.csv.isEmpty() && (k % o.every == 0 || k == steps)) writeCsvRow(csv.stream(), world, tracked);
+        if (!o.csv.isEmpty() && (k % o.every == 0 || k == steps))
+            writeCsvRow(csv.stream(), world, tracked);
         if (plotting && (energy.due(k) || k == steps)) sample();
     }
     const double wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
@@ -452,18 +468,21 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         QString error;
         if (!csv.commit(&error)) status = fail(err, error);
     }
-    const QString title = QStringLiteral("%1 — %2, dt = %3 s")
-                              .arg(scene.name.empty() ? o.scene : QString::fromStdString(scene.name),
-                                   QString::fromStdString(sim.integrator), QString::number(dt, 'g', 4));
+    const QString title =
+        QStringLiteral("%1 — %2, dt = %3 s")
+            .arg(scene.name.empty() ? o.scene : QString::fromStdString(scene.name),
+                 QString::fromStdString(sim.integrator), QString::number(dt, 'g', 4));
     if (!o.plotEnergy.isEmpty() &&
         !writePlot(ui::createEnergyChart(energy.values(), {}, title), o.plotEnergy, err))
         status = kBadInput;
     if (phaseObject) {
-        static const char* names[3][2] = {{"x [m]", "vx [m/s]"}, {"y [m]", "vy [m/s]"}, {"angle [rad]", "omega [rad/s]"}};
+        static const char* names[3][2] = {
+            {"x [m]", "vx [m/s]"}, {"y [m]", "vy [m/s]"}, {"angle [rad]", "omega [rad/s]"}};
         const QString who = phaseObject->id + QLatin1Char(' ');
-        if (!writePlot(ui::createPhaseChart(phase.values(), who + QLatin1String(names[phaseCoordinate][0]),
-                                            who + QLatin1String(names[phaseCoordinate][1]), title),
-                       o.plotPhase, err))
+        if (!writePlot(
+                ui::createPhaseChart(phase.values(), who + QLatin1String(names[phaseCoordinate][0]),
+                                     who + QLatin1String(names[phaseCoordinate][1]), title),
+                o.plotPhase, err))
             status = kBadInput;
     }
 
@@ -480,9 +499,8 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         const StepProfile& profile = world.stepProfile();
         for (int i = 0; i < StepProfile::kStageCount; ++i)
             if (profile.ran(i))
-                stages.append(QJsonObject{
-                    {"name", stageName(i)},
-                    {"ms_per_step", profile.msPerStep(i)}});
+                stages.append(
+                    QJsonObject{{"name", stageName(i)}, {"ms_per_step", profile.msPerStep(i)}});
         const double mean = stepsTimed == 0 ? 0.0 : stepMsSum / static_cast<double>(stepsTimed);
         QJsonObject report{
             {"integrator", QString::fromStdString(sim.integrator)},
@@ -491,9 +509,8 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             {"steps", static_cast<double>(done)},
             {"sim_time", world.time()},
             {"wall_seconds", wallSeconds},
-            {"step_ms", QJsonObject{{"median", median(stepMs.values())},
-                                    {"mean", mean},
-                                    {"max", stepMsMax}}},
+            {"step_ms",
+             QJsonObject{{"median", median(stepMs.values())}, {"mean", mean}, {"max", stepMsMax}}},
             {"stages", stages},
             {"energy", QJsonObject{{"initial", initialEnergy},
                                    {"kinetic", e.kinetic},
@@ -511,32 +528,37 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             // The implicit solve's work: Newton iterations, linear solves and (for large systems)
             // conjugate-gradient iterations per step, and the last relative residual.
             const IntegratorStats& st = world.integrator().stats();
-            report.insert("implicit_solver",
-                          QJsonObject{{"last_newton_iterations", st.lastNewtonIterations},
-                                      {"linear_solves_per_step", static_cast<double>(st.linearSolves) / stepsRun},
-                                      {"cg_iterations_per_step", static_cast<double>(st.linearIterations) / stepsRun},
-                                      {"last_cg_iterations", st.lastLinearIterations},
-                                      {"last_cg_residual", st.lastLinearResidual}});
+            report.insert(
+                "implicit_solver",
+                QJsonObject{
+                    {"last_newton_iterations", st.lastNewtonIterations},
+                    {"linear_solves_per_step", static_cast<double>(st.linearSolves) / stepsRun},
+                    {"cg_iterations_per_step", static_cast<double>(st.linearIterations) / stepsRun},
+                    {"last_cg_iterations", st.lastLinearIterations},
+                    {"last_cg_residual", st.lastLinearResidual}});
         }
         if (diverged) {
             const Divergence& d = *world.divergence();
-            report.insert("divergence", QJsonObject{{"time", d.time},
-                                                    {"object", QString::fromStdString(d.objectId)},
-                                                    {"what", QString::fromStdString(d.what)},
-                                                    {"restored_time", d.restoredTime},
-                                                    {"message", QString::fromStdString(d.message())}});
+            report.insert("divergence",
+                          QJsonObject{{"time", d.time},
+                                      {"object", QString::fromStdString(d.objectId)},
+                                      {"what", QString::fromStdString(d.what)},
+                                      {"restored_time", d.restoredTime},
+                                      {"message", QString::fromStdString(d.message())}});
         }
         out << QJsonDocument(report).toJson(QJsonDocument::Indented);
     } else if (o.csv != QLatin1String("-")) {
-        out << "scene:      " << (scene.name.empty() ? o.scene : QString::fromStdString(scene.name)) << "\n"
-            << "integrator: " << QString::fromStdString(sim.integrator) << ", dt = " << formatNumber(dt)
-            << " s, " << sim.substeps << " sub-step(s)\n"
+        out << "scene:      " << (scene.name.empty() ? o.scene : QString::fromStdString(scene.name))
+            << "\n"
+            << "integrator: " << QString::fromStdString(sim.integrator)
+            << ", dt = " << formatNumber(dt) << " s, " << sim.substeps << " sub-step(s)\n"
             << "ran:        " << done << " steps to t = " << formatNumber(world.time()) << " s in "
             << QString::number(wallSeconds, 'f', 3) << " s ("
             << QString::number(median(stepMs.values()), 'g', 3) << " ms per step, median)\n"
-            << "energy:     initial " << QString::number(initialEnergy, 'g', 6) << " J; now kinetic "
-            << QString::number(e.kinetic, 'g', 6) << ", potential " << QString::number(e.potential, 'g', 6)
-            << ", work_nc " << QString::number(e.workNc, 'g', 6) << ", correction "
+            << "energy:     initial " << QString::number(initialEnergy, 'g', 6)
+            << " J; now kinetic " << QString::number(e.kinetic, 'g', 6) << ", potential "
+            << QString::number(e.potential, 'g', 6) << ", work_nc "
+            << QString::number(e.workNc, 'g', 6) << ", correction "
             << QString::number(e.correction, 'g', 6) << " J\n"
             << "drift:      " << QString::number(e.drift, 'g', 3) << " J (largest |drift| "
             << QString::number(e.maxAbsDrift, 'g', 3) << " J)\n";
@@ -549,19 +571,21 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         const StepProfile& profile = world.stepProfile();
         for (int i = 0; i < StepProfile::kStageCount; ++i)
             if (profile.ran(i))
-                out << " " << stageName(i)
-                    << " " << QString::number(profile.msPerStep(i), 'g', 3) << " ms/step;";
+                out << " " << stageName(i) << " " << QString::number(profile.msPerStep(i), 'g', 3)
+                    << " ms/step;";
         out << "\n";
         for (const Tracked& t : tracked) {
             const ui::PhaseSample x = phaseOf(world, t, 0), y = phaseOf(world, t, 1);
             out << "  " << t.id << ": position (" << QString::number(x.coordinate, 'g', 6) << ", "
-                << QString::number(y.coordinate, 'g', 6) << "), velocity (" << QString::number(x.velocity, 'g', 6)
-                << ", " << QString::number(y.velocity, 'g', 6) << ")\n";
+                << QString::number(y.coordinate, 'g', 6) << "), velocity ("
+                << QString::number(x.velocity, 'g', 6) << ", "
+                << QString::number(y.velocity, 'g', 6) << ")\n";
         }
     }
     out.flush();
     if (diverged) {
-        err << "phasebox-cli: diverged: " << QString::fromStdString(world.divergence()->message()) << "\n";
+        err << "phasebox-cli: diverged: " << QString::fromStdString(world.divergence()->message())
+            << "\n";
         err.flush();
         return kDiverged;
     }

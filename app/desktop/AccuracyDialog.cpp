@@ -61,16 +61,19 @@ AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
     // Choices: which methods, which steps, how long.
     integrators_ = new QListWidget(this);
     for (const IntegratorInfo& info : integratorRegistry()) {
-        auto* item = new QListWidgetItem(QString::fromUtf8(info.label.data(), static_cast<int>(info.label.size())),
-                                         integrators_);
-        item->setData(Qt::UserRole, QString::fromUtf8(info.name.data(), static_cast<int>(info.name.size())));
+        auto* item = new QListWidgetItem(
+            QString::fromUtf8(info.label.data(), static_cast<int>(info.label.size())),
+            integrators_);
+        item->setData(Qt::UserRole,
+                      QString::fromUtf8(info.name.data(), static_cast<int>(info.name.size())));
         item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
         item->setCheckState(Qt::Checked);
     }
     integrators_->setMaximumWidth(220);
     dts_ = new QLineEdit(this);
-    dts_->setToolTip(tr("Step sizes, separated by commas; fractions such as 1/120 are fine. The "
-                        "adaptive methods sweep tolerances at the first dt instead."));
+    dts_->setToolTip(
+        tr("Step sizes, separated by commas; fractions such as 1/120 are fine. The "
+           "adaptive methods sweep tolerances at the first dt instead."));
     duration_ = new QLineEdit(this);
     duration_->setToolTip(tr("Simulated seconds each run lasts; errors are measured at the end."));
     runButton_ = new QPushButton(tr("&Run"), this);
@@ -80,7 +83,8 @@ AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
     progress_ = new QProgressBar(this);
     auto* exportButton = new QPushButton(tr("&Export"), this);
     auto* exportMenu = new QMenu(exportButton);
-    for (const QString& format : {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("csv")})
+    for (const QString& format :
+         {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("csv")})
         exportMenu->addAction(format.toUpper() + QStringLiteral("…"), this,
                               [this, format] { exportInteractively(format); });
     exportButton->setMenu(exportMenu);
@@ -178,7 +182,8 @@ bool AccuracyDialog::run() {
     AccuracyOptions options;
     for (int i = 0; i < integrators_->count(); ++i)
         if (integrators_->item(i)->checkState() == Qt::Checked)
-            options.integrators.push_back(integrators_->item(i)->data(Qt::UserRole).toString().toStdString());
+            options.integrators.push_back(
+                integrators_->item(i)->data(Qt::UserRole).toString().toStdString());
     if (options.integrators.empty()) {
         summary_->setText(tr("Check at least one integrator."));
         return false;
@@ -197,7 +202,8 @@ bool AccuracyDialog::run() {
             value = text.toDouble(&ok);
         }
         if (!ok || !(value > 0.0) || value > 1.0) {
-            summary_->setText(tr("dt list: \"%1\" is not a step in (0, 1] s.").arg(text.toHtmlEscaped()));
+            summary_->setText(
+                tr("dt list: \"%1\" is not a step in (0, 1] s.").arg(text.toHtmlEscaped()));
             return false;
         }
         options.dts.push_back(value);
@@ -216,23 +222,29 @@ bool AccuracyDialog::run() {
     return true;
 }
 
-void AccuracyDialog::cancel() { study_.cancel(); }
+void AccuracyDialog::cancel() {
+    study_.cancel();
+}
 
 void AccuracyDialog::onFinished() {
     runButton_->setEnabled(true);
     cancelButton_->setEnabled(false);
     const AccuracyResult& result = study_.result();
     if (!result.error.empty() && result.records.empty()) {
-        summary_->setText(tr("The study could not run: %1").arg(QString::fromStdString(result.error)));
+        summary_->setText(
+            tr("The study could not run: %1").arg(QString::fromStdString(result.error)));
         return;
     }
     std::vector<ui::WorkPrecisionPoint> points;
     for (const AccuracyRecord& r : result.records)
-        points.push_back({QString::fromStdString(r.integrator), r.cpuSeconds, r.positionError,
-                          r.tolerance ? QStringLiteral("tol %1").arg(*r.tolerance, 0, 'g', 1) : formatDt(r.dt)});
+        points.push_back(
+            {QString::fromStdString(r.integrator), r.cpuSeconds, r.positionError,
+             r.tolerance ? QStringLiteral("tol %1").arg(*r.tolerance, 0, 'g', 1) : formatDt(r.dt)});
     QChart* old = chart_->chart();
-    chart_->setChart(ui::createWorkPrecisionChart(
-        points, tr("%1: error at t = %2 s against CPU time").arg(QString::fromStdString(scene_.name)).arg(result.endTime)));
+    chart_->setChart(
+        ui::createWorkPrecisionChart(points, tr("%1: error at t = %2 s against CPU time")
+                                                 .arg(QString::fromStdString(scene_.name))
+                                                 .arg(result.endTime)));
     delete old;
     fillTable(result);
     summary_->setText(summaryText());
@@ -256,7 +268,8 @@ std::optional<double> AccuracyDialog::observedOrder(const std::vector<AccuracyRe
                                                     const std::string& integrator) {
     std::vector<double> orders;
     for (const AccuracyRecord& r : records)
-        if (r.integrator == integrator && r.order && std::isfinite(*r.order)) orders.push_back(*r.order);
+        if (r.integrator == integrator && r.order && std::isfinite(*r.order))
+            orders.push_back(*r.order);
     if (orders.empty()) return std::nullopt;
     std::sort(orders.begin(), orders.end());
     return orders[orders.size() / 2];
@@ -266,17 +279,17 @@ void AccuracyDialog::fillTable(const AccuracyResult& result) {
     table_->setRowCount(static_cast<int>(result.records.size()));
     int row = 0;
     for (const AccuracyRecord& r : result.records) {
-        const QStringList cells = {
-            QString::fromStdString(r.integrator),
-            formatDt(r.dt),
-            r.tolerance ? QString::number(*r.tolerance, 'g', 2) : QString(),
-            QString::number(r.steps),
-            QString::number(r.forceEvals),
-            QString::number(r.cpuSeconds, 'g', 3),
-            formatError(r.positionError),
-            QString::number(r.energyDrift, 'e', 2),
-            r.order ? QString::number(*r.order, 'f', 2) : QString()};
-        for (int c = 0; c < cells.size(); ++c) table_->setItem(row, c, new QTableWidgetItem(cells[c]));
+        const QStringList cells = {QString::fromStdString(r.integrator),
+                                   formatDt(r.dt),
+                                   r.tolerance ? QString::number(*r.tolerance, 'g', 2) : QString(),
+                                   QString::number(r.steps),
+                                   QString::number(r.forceEvals),
+                                   QString::number(r.cpuSeconds, 'g', 3),
+                                   formatError(r.positionError),
+                                   QString::number(r.energyDrift, 'e', 2),
+                                   r.order ? QString::number(*r.order, 'f', 2) : QString()};
+        for (int c = 0; c < cells.size(); ++c)
+            table_->setItem(row, c, new QTableWidgetItem(cells[c]));
         ++row;
     }
     orders_->setRowCount(0);
@@ -289,9 +302,12 @@ void AccuracyDialog::fillTable(const AccuracyResult& result) {
         const int at = orders_->rowCount();
         orders_->insertRow(at);
         orders_->setItem(at, 0, new QTableWidgetItem(QString::fromStdString(r.integrator)));
-        orders_->setItem(at, 1, new QTableWidgetItem(order ? QString::number(*order, 'f', 2)
-                                                           : (result.contacts ? tr("contacts") : tr("–"))));
-        orders_->setItem(at, 2, new QTableWidgetItem(info ? QString::number(info->order) : QString()));
+        orders_->setItem(
+            at, 1,
+            new QTableWidgetItem(order ? QString::number(*order, 'f', 2)
+                                       : (result.contacts ? tr("contacts") : tr("–"))));
+        orders_->setItem(at, 2,
+                         new QTableWidgetItem(info ? QString::number(info->order) : QString()));
     }
 }
 
@@ -324,7 +340,9 @@ void AccuracyDialog::updateCheapest() {
     }
     cheapest_->setText(tr("<b>%1</b> at dt %2%3: error %4 m in %5 s of CPU")
                            .arg(QString::fromStdString(chosen_->integrator), formatDt(chosen_->dt),
-                                chosen_->tolerance ? tr(", tolerance %1").arg(*chosen_->tolerance, 0, 'g', 2) : QString(),
+                                chosen_->tolerance
+                                    ? tr(", tolerance %1").arg(*chosen_->tolerance, 0, 'g', 2)
+                                    : QString(),
                                 formatError(chosen_->positionError))
                            .arg(chosen_->cpuSeconds, 0, 'g', 3));
     apply_->setEnabled(true);
@@ -338,11 +356,13 @@ bool AccuracyDialog::exportTo(const QString& path, QString* error) const {
             return false;
         }
         QTextStream out(&file);
-        out << "integrator,dt,steps,force_evals,cpu_seconds,position_error,energy_drift,order,tolerance\n";
+        out << "integrator,dt,steps,force_evals,cpu_seconds,position_error,energy_drift,order,"
+               "tolerance\n";
         for (const AccuracyRecord& r : study_.result().records)
-            out << QString::fromStdString(r.integrator) << ',' << formatNumber(r.dt) << ',' << r.steps << ','
-                << r.forceEvals << ',' << formatNumber(r.cpuSeconds) << ',' << formatNumber(r.positionError) << ','
-                << formatNumber(r.energyDrift) << ',' << (r.order ? formatNumber(*r.order) : QString()) << ','
+            out << QString::fromStdString(r.integrator) << ',' << formatNumber(r.dt) << ','
+                << r.steps << ',' << r.forceEvals << ',' << formatNumber(r.cpuSeconds) << ','
+                << formatNumber(r.positionError) << ',' << formatNumber(r.energyDrift) << ','
+                << (r.order ? formatNumber(*r.order) : QString()) << ','
                 << (r.tolerance ? formatNumber(*r.tolerance) : QString()) << '\n';
         out.flush();
         if (!file.commit()) {
@@ -353,16 +373,18 @@ bool AccuracyDialog::exportTo(const QString& path, QString* error) const {
     }
     std::vector<ui::WorkPrecisionPoint> points;
     for (const AccuracyRecord& r : study_.result().records)
-        points.push_back({QString::fromStdString(r.integrator), r.cpuSeconds, r.positionError,
-                          r.tolerance ? QStringLiteral("tol %1").arg(*r.tolerance, 0, 'g', 1) : formatDt(r.dt)});
+        points.push_back(
+            {QString::fromStdString(r.integrator), r.cpuSeconds, r.positionError,
+             r.tolerance ? QStringLiteral("tol %1").arg(*r.tolerance, 0, 'g', 1) : formatDt(r.dt)});
     std::unique_ptr<QChart> chart(ui::createWorkPrecisionChart(
         points, tr("%1: error against CPU time").arg(QString::fromStdString(scene_.name))));
     return ui::exportChart(chart.get(), path, QSize(1400, 900), error);
 }
 
 void AccuracyDialog::exportInteractively(const QString& format) {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export"), QStringLiteral("accuracy.") + format,
-                                                      format.toUpper() + QStringLiteral(" (*.") + format + QLatin1Char(')'));
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export"), QStringLiteral("accuracy.") + format,
+        format.toUpper() + QStringLiteral(" (*.") + format + QLatin1Char(')'));
     if (path.isEmpty()) return;
     QString error;
     if (!exportTo(path, &error)) QMessageBox::warning(this, tr("Export failed"), error);

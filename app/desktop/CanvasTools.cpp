@@ -2,8 +2,8 @@
 
 #include "app/document/Document.h"
 #include "app/document/PropertyTable.h"
-#include "physics/world/World.h"
 #include "physics/effects/MouseSpringEffect.h"
+#include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
 
 #include <QLineF>
@@ -13,20 +13,28 @@
 namespace phasebox {
 
 namespace {
-Point2 point(QPointF p) { return {p.x(), p.y()}; }
+Point2 point(QPointF p) {
+    return {p.x(), p.y()};
+}
 
 // The key pair that places an object of this kind.
 std::optional<std::pair<QString, QString>> positionKeys(ObjectKind kind) {
     switch (kind) {
         case ObjectKind::Particle:
-        case ObjectKind::Box: return std::pair{QStringLiteral("position.x"), QStringLiteral("position.y")};
-        case ObjectKind::Plane: return std::pair{QStringLiteral("point.x"), QStringLiteral("point.y")};
-        case ObjectKind::Cloth: return std::pair{QStringLiteral("origin.x"), QStringLiteral("origin.y")};
-        default: return std::nullopt;
+        case ObjectKind::Box:
+            return std::pair{QStringLiteral("position.x"), QStringLiteral("position.y")};
+        case ObjectKind::Plane:
+            return std::pair{QStringLiteral("point.x"), QStringLiteral("point.y")};
+        case ObjectKind::Cloth:
+            return std::pair{QStringLiteral("origin.x"), QStringLiteral("origin.y")};
+        default:
+            return std::nullopt;
     }
 }
 
-QString formatLength(double metres) { return QString::number(metres, 'f', 2) + QStringLiteral(" m"); }
+QString formatLength(double metres) {
+    return QString::number(metres, 'f', 2) + QStringLiteral(" m");
+}
 }  // namespace
 
 CanvasTools::CanvasTools(Document& document, ui::SceneView& view, QObject* parent)
@@ -38,13 +46,20 @@ CanvasTools::CanvasTools(Document& document, ui::SceneView& view, QObject* paren
 
 QString CanvasTools::toolName(Tool tool) {
     switch (tool) {
-        case Tool::Select: return tr("Select / move");
-        case Tool::Particle: return tr("Add particle");
-        case Tool::Spring: return tr("Add spring");
-        case Tool::Cloth: return tr("Add cloth");
-        case Tool::Box: return tr("Add box");
-        case Tool::Plane: return tr("Add plane");
-        case Tool::Pin: return tr("Pin / unpin");
+        case Tool::Select:
+            return tr("Select / move");
+        case Tool::Particle:
+            return tr("Add particle");
+        case Tool::Spring:
+            return tr("Add spring");
+        case Tool::Cloth:
+            return tr("Add cloth");
+        case Tool::Box:
+            return tr("Add box");
+        case Tool::Plane:
+            return tr("Add plane");
+        case Tool::Pin:
+            return tr("Pin / unpin");
     }
     return {};
 }
@@ -52,16 +67,21 @@ QString CanvasTools::toolName(Tool tool) {
 QString CanvasTools::toolHelp(Tool tool) {
     switch (tool) {
         case Tool::Select:
-            return tr("Click to select (Shift adds), drag to move; while running, drag an object to "
-                      "pull it with a mouse spring.");
-        case Tool::Particle: return tr("Click to drop a particle; drag to give it a velocity.");
+            return tr(
+                "Click to select (Shift adds), drag to move; while running, drag an object to "
+                "pull it with a mouse spring.");
+        case Tool::Particle:
+            return tr("Click to drop a particle; drag to give it a velocity.");
         case Tool::Spring:
             return tr("Drag from an object to another, or to empty space for a fixed anchor.");
-        case Tool::Cloth: return tr("Drag a rectangle: a cloth pinned along its top edge.");
-        case Tool::Box: return tr("Drag a rectangle: a box of that size.");
+        case Tool::Cloth:
+            return tr("Drag a rectangle: a cloth pinned along its top edge.");
+        case Tool::Box:
+            return tr("Drag a rectangle: a box of that size.");
         case Tool::Plane:
             return tr("Drag a line along the surface; the solid side is to the right of the drag.");
-        case Tool::Pin: return tr("Click a particle to pin or unpin it, a box to make it static.");
+        case Tool::Pin:
+            return tr("Click a particle to pin or unpin it, a box to make it static.");
     }
     return {};
 }
@@ -105,8 +125,10 @@ void CanvasTools::pressed(QPointF world, Qt::MouseButton button, Qt::KeyboardMod
     // Select (Shift toggles the object in the selection).
     QStringList selection = document_.selection();
     if (modifiers & Qt::ShiftModifier) {
-        if (selection.contains(startObject_)) selection.removeAll(startObject_);
-        else selection.append(startObject_);
+        if (selection.contains(startObject_))
+            selection.removeAll(startObject_);
+        else
+            selection.append(startObject_);
     } else if (!selection.contains(startObject_)) {
         selection = {startObject_};
     }
@@ -176,14 +198,15 @@ void CanvasTools::showPreview(QPointF world) {
     switch (tool_) {
         case Tool::Particle:
             overlay.shape = ui::ToolOverlay::Arrow;
-            overlay.text = tr("v = %1 m/s")
-                               .arg(std::hypot(d.x(), d.y()) * kVelocityPerMetre, 0, 'f', 2);
+            overlay.text =
+                tr("v = %1 m/s").arg(std::hypot(d.x(), d.y()) * kVelocityPerMetre, 0, 'f', 2);
             break;
         case Tool::Spring: {
             overlay.shape = ui::ToolOverlay::Line;
             const QString target = objectAt(world);
-            overlay.text = target.isEmpty() ? tr("anchor, %1").arg(formatLength(std::hypot(d.x(), d.y())))
-                                            : target;
+            overlay.text = target.isEmpty()
+                               ? tr("anchor, %1").arg(formatLength(std::hypot(d.x(), d.y())))
+                               : target;
             break;
         }
         case Tool::Cloth:
@@ -192,8 +215,11 @@ void CanvasTools::showPreview(QPointF world) {
             overlay.text = formatLength(std::abs(d.x())) + QStringLiteral(" × ") +
                            formatLength(std::abs(d.y()));
             break;
-        case Tool::Plane: overlay.shape = ui::ToolOverlay::Arrow; break;
-        default: return;
+        case Tool::Plane:
+            overlay.shape = ui::ToolOverlay::Arrow;
+            break;
+        default:
+            return;
     }
     view_.setOverlay(overlay);
 }
@@ -230,8 +256,10 @@ void CanvasTools::finish(QPointF world) {
             }
             SpringDesc s;
             s.a = startObject_.toStdString();
-            if (target.isEmpty()) s.anchor = point(world);
-            else s.b = target.toStdString();
+            if (target.isEmpty())
+                s.anchor = point(world);
+            else
+                s.b = target.toStdString();
             // Stiff enough to hold a 1 kg ball against gravity with a visible stretch.
             s.stiffness = 50.0;
             s.damping = 0.1;
@@ -244,7 +272,9 @@ void CanvasTools::finish(QPointF world) {
             c.origin = {std::min(start_.x(), world.x()), std::max(start_.y(), world.y())};
             c.size = {std::abs(d.x()), std::abs(d.y())};
             // About 20 cm between nodes, between 4 and 24 nodes a side.
-            const auto nodes = [](double length) { return std::clamp(int(length / 0.2) + 1, 4, 24); };
+            const auto nodes = [](double length) {
+                return std::clamp(int(length / 0.2) + 1, 4, 24);
+            };
             c.resolution = {nodes(c.size[0]), nodes(c.size[1])};
             report(document_.addObject(c, &error, &id), error);
             break;

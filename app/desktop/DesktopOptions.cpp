@@ -16,25 +16,30 @@ namespace phasebox {
 
 bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, QString* error) {
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Phasebox, a 2D physics sandbox for the classroom"));
+    parser.setApplicationDescription(
+        QStringLiteral("Phasebox, a 2D physics sandbox for the classroom"));
     parser.addHelpOption();
     parser.addVersionOption();
-    const QCommandLineOption screenshot(QStringLiteral("screenshot"),
-                                        QStringLiteral("Save a picture of the window to FILE and exit."),
-                                        QStringLiteral("FILE"));
-    const QCommandLineOption runFor(QStringLiteral("run-for"),
-                                    QStringLiteral("Simulate S seconds before the picture (default 0)."),
-                                    QStringLiteral("S"), QStringLiteral("0"));
+    const QCommandLineOption screenshot(
+        QStringLiteral("screenshot"),
+        QStringLiteral("Save a picture of the window to FILE and exit."), QStringLiteral("FILE"));
+    const QCommandLineOption runFor(
+        QStringLiteral("run-for"),
+        QStringLiteral("Simulate S seconds before the picture (default 0)."), QStringLiteral("S"),
+        QStringLiteral("0"));
     const QCommandLineOption canvas(QStringLiteral("canvas"),
                                     QStringLiteral("Canvas backend: auto, raster or opengl."),
                                     QStringLiteral("BACKEND"), QStringLiteral("auto"));
-    const QCommandLineOption presentation(QStringLiteral("presentation"),
-                                          QStringLiteral("Start in presentation mode (full screen, large type)."));
-    const QCommandLineOption select(QStringLiteral("select"),
-                                    QStringLiteral("Select the object ID at start (the phase plot follows it)."),
-                                    QStringLiteral("ID"));
+    const QCommandLineOption presentation(
+        QStringLiteral("presentation"),
+        QStringLiteral("Start in presentation mode (full screen, large type)."));
+    const QCommandLineOption select(
+        QStringLiteral("select"),
+        QStringLiteral("Select the object ID at start (the phase plot follows it)."),
+        QStringLiteral("ID"));
     parser.addOptions({screenshot, runFor, canvas, presentation, select});
-    parser.addPositionalArgument(QStringLiteral("scene"), QStringLiteral("Scene file to open (default: the demo)."));
+    parser.addPositionalArgument(QStringLiteral("scene"),
+                                 QStringLiteral("Scene file to open (default: the demo)."));
     if (!parser.parse(arguments)) {
         *error = parser.errorText();
         return false;
@@ -45,13 +50,15 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
     bool ok = false;
     options.runFor = parser.value(runFor).toDouble(&ok);
     if (!ok || !std::isfinite(options.runFor) || options.runFor < 0.0 || options.runFor > 1e6) {
-        *error = QStringLiteral("--run-for: expected a number of seconds >= 0, got \"%1\"").arg(parser.value(runFor));
+        *error = QStringLiteral("--run-for: expected a number of seconds >= 0, got \"%1\"")
+                     .arg(parser.value(runFor));
         return false;
     }
     options.screenshot = parser.value(screenshot);
     options.canvas = parser.value(canvas).toLower();
     if (!QStringList{"auto", "raster", "opengl"}.contains(options.canvas)) {
-        *error = QStringLiteral("--canvas: expected auto, raster or opengl, got \"%1\"").arg(options.canvas);
+        *error = QStringLiteral("--canvas: expected auto, raster or opengl, got \"%1\"")
+                     .arg(options.canvas);
         return false;
     }
     options.presentation = parser.isSet(presentation);
@@ -91,9 +98,10 @@ int runDesktop(QApplication& app) {
         return 2;
     }
     MainWindow window;
-    const ui::CanvasBackend backend = options.canvas == QLatin1String("raster")   ? ui::CanvasBackend::Raster
-                                      : options.canvas == QLatin1String("opengl") ? ui::CanvasBackend::OpenGL
-                                                                                  : ui::CanvasBackend::Auto;
+    const ui::CanvasBackend backend =
+        options.canvas == QLatin1String("raster")   ? ui::CanvasBackend::Raster
+        : options.canvas == QLatin1String("opengl") ? ui::CanvasBackend::OpenGL
+                                                    : ui::CanvasBackend::Auto;
     window.canvas()->setBackend(backend);
     const QString scene = options.scene.isEmpty() ? kDemoScene : options.scene;
     const bool headless = !options.screenshot.isEmpty();

@@ -11,12 +11,12 @@ namespace phasebox {
 class MainWindow;
 
 struct DesktopOptions {
-    QString scene;           // empty: the built-in demo
-    QString screenshot;      // non-empty: save a picture of the window and exit
-    double runFor = 0.0;     // simulated seconds before the picture
-    QString canvas;          // "auto", "raster" or "opengl"
+    QString scene;        // empty: the built-in demo
+    QString screenshot;   // non-empty: save a picture of the window and exit
+    double runFor = 0.0;  // simulated seconds before the picture
+    QString canvas;       // "auto", "raster" or "opengl"
     bool presentation = false;
-    QString select;          // an object to select at start (its phase space is plotted)
+    QString select;  // an object to select at start (its phase space is plotted)
 };
 
 inline const QString kDemoScene = QStringLiteral(":/scenes/demo.phasebox.json");

@@ -2,11 +2,11 @@
 
 #include "app/document/Commands.h"
 #include "app/io/SceneIO.h"
-#include "physics/world/World.h"
 #include "physics/effects/MouseSpringEffect.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneSchema.h"
 #include "physics/scene/StateTransfer.h"
+#include "physics/world/World.h"
 
 #include <QtGlobal>
 

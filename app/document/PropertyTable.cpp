@@ -2,10 +2,10 @@
 
 #include "physics/scene/SceneSchema.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <algorithm>
 #include <span>
 #include <unordered_set>
 
@@ -22,8 +22,14 @@ QString text(std::string_view s) {
 // A plane's normal is edited as the tilt of the surface: 0 = a floor (normal up), π/2 = a wall
 // facing −x. Two spin boxes for the normal's components would let it become zero.
 PropertyRow tiltRow(const PlaneDesc& d) {
-    return {text(key::angle), QStringLiteral("Tilt"), QStringLiteral("rad"),
-            std::atan2(-d.normal[0], d.normal[1]), -std::numbers::pi, std::numbers::pi, 3, false};
+    return {text(key::angle),
+            QStringLiteral("Tilt"),
+            QStringLiteral("rad"),
+            std::atan2(-d.normal[0], d.normal[1]),
+            -std::numbers::pi,
+            std::numbers::pi,
+            3,
+            false};
 }
 
 // The names of a pair's two rows: keys "size.w", labels "Width".
@@ -59,8 +65,8 @@ void forEachProperty(D& d, Fn&& fn, const QString& prefix = {}) {
             }
         }
         auto row = [&](const QString& rowKey, const QString& label, double value) {
-            return PropertyRow{rowKey,     label, text(field.unit), value, e.min,
-                               e.max, e.decimals, field.type == schema::Type::Bool};
+            return PropertyRow{rowKey, label, text(field.unit), value,
+                               e.min,  e.max, e.decimals,       field.type == schema::Type::Bool};
         };
         std::visit(
             [&]<typename V>(V D::*member) {
@@ -70,8 +76,7 @@ void forEachProperty(D& d, Fn&& fn, const QString& prefix = {}) {
                 } else if (e.decimals < 0) {
                     return;
                 } else if constexpr (std::is_same_v<V, double>) {
-                    fn(row(fieldKey, text(field.label), v), e,
-                       [&v](double x) { v = x; });
+                    fn(row(fieldKey, text(field.label), v), e, [&v](double x) { v = x; });
                 } else if constexpr (std::is_same_v<V, std::optional<double>>) {
                     fn(row(fieldKey, text(field.label), v.value_or(0.0)), e,
                        [&v](double x) { v = x; });
@@ -84,7 +89,8 @@ void forEachProperty(D& d, Fn&& fn, const QString& prefix = {}) {
                     auto* pair = [&] {
                         if constexpr (std::is_same_v<V, std::optional<Point2>>)
                             return v ? &*v : nullptr;
-                        else return &v;
+                        else
+                            return &v;
                     }();
                     if (!pair) return;
                     const PairNames names = pairNames(field);
@@ -95,7 +101,8 @@ void forEachProperty(D& d, Fn&& fn, const QString& prefix = {}) {
                                using Element = std::remove_reference_t<decltype((*pair)[k])>;
                                if constexpr (std::is_same_v<Element, int>)
                                    (*pair)[k] = static_cast<int>(std::lround(x));
-                               else (*pair)[k] = x;
+                               else
+                                   (*pair)[k] = x;
                            });
                 }
             },

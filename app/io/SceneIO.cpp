@@ -363,8 +363,10 @@ void readFields(Fields& f, D& d) {
             [&]<typename V>(V D::*member) {
                 V& v = d.*member;
                 if constexpr (std::is_same_v<V, double> || std::is_same_v<V, std::string>) {
-                    if constexpr (std::is_same_v<V, double>) f.number(key, v, need);
-                    else f.string(key, v, need);
+                    if constexpr (std::is_same_v<V, double>)
+                        f.number(key, v, need);
+                    else
+                        f.string(key, v, need);
                 } else if constexpr (std::is_same_v<V, std::optional<double>>) {
                     f.number(key, v);
                 } else if constexpr (std::is_same_v<V, std::optional<std::string>>) {

@@ -176,16 +176,26 @@ void writeFields(Writer& w, const D& d) {
         std::visit(
             [&]<typename V>(V D::*member) {
                 const V& v = d.*member;
-                if constexpr (std::is_same_v<V, double>) w.number(v);
-                else if constexpr (std::is_same_v<V, std::optional<double>>) w.number(*v);
-                else if constexpr (std::is_same_v<V, int>) w.integer(v);
-                else if constexpr (std::is_same_v<V, bool>) w.boolean(v);
-                else if constexpr (std::is_same_v<V, std::string>) w.string(v);
-                else if constexpr (std::is_same_v<V, std::optional<std::string>>) w.string(*v);
-                else if constexpr (std::is_same_v<V, Point2>) w.point(v);
-                else if constexpr (std::is_same_v<V, std::optional<Point2>>) w.point(*v);
-                else if constexpr (std::is_same_v<V, std::array<int, 2>>) w.intPair(v);
-                else if constexpr (std::is_same_v<V, ClothStiffnessDesc>) writeFields(w, v);
+                if constexpr (std::is_same_v<V, double>)
+                    w.number(v);
+                else if constexpr (std::is_same_v<V, std::optional<double>>)
+                    w.number(*v);
+                else if constexpr (std::is_same_v<V, int>)
+                    w.integer(v);
+                else if constexpr (std::is_same_v<V, bool>)
+                    w.boolean(v);
+                else if constexpr (std::is_same_v<V, std::string>)
+                    w.string(v);
+                else if constexpr (std::is_same_v<V, std::optional<std::string>>)
+                    w.string(*v);
+                else if constexpr (std::is_same_v<V, Point2>)
+                    w.point(v);
+                else if constexpr (std::is_same_v<V, std::optional<Point2>>)
+                    w.point(*v);
+                else if constexpr (std::is_same_v<V, std::array<int, 2>>)
+                    w.intPair(v);
+                else if constexpr (std::is_same_v<V, ClothStiffnessDesc>)
+                    writeFields(w, v);
                 else if constexpr (std::is_same_v<V, std::vector<AttractorDesc>>) {
                     w.beginArray();
                     for (const AttractorDesc& item : v) writeFields(w, item);
@@ -265,6 +275,5 @@ bool SceneIO::save(const SceneDesc& scene, const QString& path, QString* error) 
     if (!file.commit()) return fail(file.errorString());
     return true;
 }
-
 
 }  // namespace phasebox

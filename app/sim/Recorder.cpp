@@ -186,8 +186,9 @@ bool Recorder::writeEnergyCsv(const QString& path, QString* error) const {
 
 bool Recorder::writePhaseCsv(const QString& path, QString* error) const {
     const QString id = phaseObject();
-    const QString header = QStringLiteral("t,") + csvField(id + QLatin1Char('.') + phaseCoordinate_) +
-                           QLatin1Char(',') + csvField(id + QLatin1Char('.') + phaseVelocityName());
+    const QString header = QStringLiteral("t,") +
+                           csvField(id + QLatin1Char('.') + phaseCoordinate_) + QLatin1Char(',') +
+                           csvField(id + QLatin1Char('.') + phaseVelocityName());
     return writeCsv(path, error, header, [&](QTextStream& out) {
         for (std::size_t k = 0; k < phase_.size(); ++k)
             out << formatNumber(phaseTimes_[k]) << ',' << formatNumber(phase_[k].coordinate) << ','
@@ -197,7 +198,8 @@ bool Recorder::writePhaseCsv(const QString& path, QString* error) const {
 
 bool Recorder::writeErrorCsv(const QString& path, QString* error) const {
     return writeCsv(path, error, QStringLiteral("t,local_error"), [&](QTextStream& out) {
-        for (const QPointF& p : errors_) out << formatNumber(p.x()) << ',' << formatNumber(p.y()) << '\n';
+        for (const QPointF& p : errors_)
+            out << formatNumber(p.x()) << ',' << formatNumber(p.y()) << '\n';
     });
 }
 

@@ -2,8 +2,8 @@
 
 #include "app/document/Document.h"
 #include "app/sim/Recorder.h"
-#include "physics/world/World.h"
 #include "physics/diagnostics/StabilityAdvisor.h"
+#include "physics/world/World.h"
 
 #include <algorithm>
 #include <cmath>

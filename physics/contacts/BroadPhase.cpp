@@ -48,8 +48,8 @@ void BroadPhase::sortOrder(const std::vector<Aabb>& boxes, bool fresh) {
     }
 }
 
-void BroadPhase::findPairs(const std::vector<Aabb>& boxes,
-                           std::vector<std::pair<int, int>>& pairs, const PairCap& cap) {
+void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs,
+                           const PairCap& cap) {
     pairs.clear();
     candidatesVisited_ = 0;
     const int count = static_cast<int>(boxes.size());

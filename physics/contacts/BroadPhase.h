@@ -56,7 +56,7 @@ public:
 private:
     void sortOrder(const std::vector<Aabb>& boxes, bool fresh);
 
-    std::vector<int> order_;  // indices sorted by lower bound on axis_, kept between calls
+    std::vector<int> order_;      // indices sorted by lower bound on axis_, kept between calls
     std::vector<int> pairCount_;  // per box: overlapping capped partners taken in this call
     std::vector<int> nearCount_;  // per box: near capped partners taken in this call
     int axis_ = 0;

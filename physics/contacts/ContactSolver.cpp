@@ -9,7 +9,9 @@ namespace phasebox {
 namespace {
 constexpr int kMaxCollisionPasses = 32;
 
-Vec2 tangentOf(const Vec2& n) { return {n.y(), -n.x()}; }
+Vec2 tangentOf(const Vec2& n) {
+    return {n.y(), -n.x()};
+}
 }  // namespace
 
 // Soft constraint coefficients (Box2D v3's b2MakeSoft): a spring-damper of frequency ω and
@@ -129,7 +131,8 @@ void ContactSolver::buildRows(double hertz, double zeta, double h) {
             row.k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
             row.k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
             // Nearly coincident points make K singular: the sequential solve handles them.
-            row.blockable = !(row.k11 * row.k11 >= 1000.0 * (row.k11 * row.k22 - row.k12 * row.k12));
+            row.blockable =
+                !(row.k11 * row.k11 >= 1000.0 * (row.k11 * row.k22 - row.k12 * row.k12));
         }
         if (c.restitution != 0.0) bouncing_.push_back(static_cast<int>(i));
     }
@@ -302,7 +305,8 @@ namespace {
 // constraint is v_n + bias + compliance·λ = 0 (λ ≥ 0, complementary). Solving the points one
 // after the other instead leaves an asymmetry that tips tall stacks over.
 template <class Row, class State>
-inline bool solveBlock(Row& c, State& a, State& b, const double bias[2], const double compliance[2]) {
+inline bool solveBlock(Row& c, State& a, State& b, const double bias[2],
+                       const double compliance[2]) {
     auto& p1 = c.p[0];
     auto& p2 = c.p[1];
     const double k11 = c.k11, k22 = c.k22, k12 = c.k12;

@@ -29,10 +29,10 @@
 namespace phasebox {
 
 struct ContactSettings {
-    int substeps = 0;                   // inner sub-steps per step; 0 = the solver's choice
-    int iterations = 3;                 // soft solve iterations per inner sub-step
-    int relaxIterations = 1;            // bias-free iterations per inner sub-step
-    double hertz = 60.0;                // contact stiffness (capped at a quarter of 1/h)
+    int substeps = 0;         // inner sub-steps per step; 0 = the solver's choice
+    int iterations = 3;       // soft solve iterations per inner sub-step
+    int relaxIterations = 1;  // bias-free iterations per inner sub-step
+    double hertz = 60.0;      // contact stiffness (capped at a quarter of 1/h)
     double dampingRatio = 10.0;
     double pushOut = 3.0;               // m/s: the fastest overlap is removed
     double restitutionThreshold = 1.0;  // m/s, times 1 − e: slower impacts do not bounce
@@ -75,13 +75,13 @@ struct ContactPoint {
     double baseSeparation = 0.0;  // separation when found
     double normalMass = 0.0;
     double tangentMass = 0.0;
-    double normalImpulse = 0.0;   // accumulated (warm-started)
+    double normalImpulse = 0.0;  // accumulated (warm-started)
     double tangentImpulse = 0.0;
     std::uint32_t id = 0;
 };
 
 struct ContactConstraint {
-    std::uint64_t key = 0;  // the shape pair, for matching across steps
+    std::uint64_t key = 0;       // the shape pair, for matching across steps
     int bodyA = -1, bodyB = -1;  // solver body indices, −1 = static
     Vec2 normal = Vec2::Zero();  // from A to B
     double friction = 0.0;
@@ -164,10 +164,10 @@ private:
 
     std::vector<SolverBody> bodies_;
     std::vector<ContactConstraint> constraints_;
-    std::vector<BodyState> state_;    // bodies_.size() + 1 (the static world last)
-    std::vector<BodyMotion> motion_;  // likewise
-    std::vector<Row> rows_;           // per constraint, in constraints_'s order
-    std::vector<int> bouncing_;       // rows with restitution > 0
+    std::vector<BodyState> state_;        // bodies_.size() + 1 (the static world last)
+    std::vector<BodyMotion> motion_;      // likewise
+    std::vector<Row> rows_;               // per constraint, in constraints_'s order
+    std::vector<int> bouncing_;           // rows with restitution > 0
     std::vector<unsigned char> shifted_;  // per row point (2 per row): moved to its time of impact
 };
 

@@ -76,9 +76,8 @@ int ContactStage::solverBodyFor(int collider, const Vec& q) {
     return index;
 }
 
-void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB,
-                                 const Manifold& m, double friction, double restitution,
-                                 const Vec& q) {
+void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB, const Manifold& m,
+                                 double friction, double restitution, const Vec& q) {
     ContactConstraint c;
     c.key = key;
     c.normal = m.normal;
@@ -90,8 +89,9 @@ void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB
                                                ? disks_[colliderA].center
                                                : boxes_[colliderA].center)
                                         : Vec2::Zero();
-    const Vec2 centerB = colliders_[colliderB].kind == Collider::Kind::Disk ? disks_[colliderB].center
-                                                                            : boxes_[colliderB].center;
+    const Vec2 centerB = colliders_[colliderB].kind == Collider::Kind::Disk
+                             ? disks_[colliderB].center
+                             : boxes_[colliderB].center;
     c.pointCount = m.pointCount;
     for (int k = 0; k < m.pointCount; ++k) {
         ContactPoint& p = c.points[k];
@@ -138,7 +138,8 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
                 return std::max(std::abs(u[k]), std::abs(u[k] + extrapolate * (uNext[k] - u[k])));
             };
             double speed = std::hypot(reach(c.dof), reach(c.dof + 1));
-            if (c.kind == Collider::Kind::Box) speed += reach(c.dof + 2) * boxes_[i].halfExtents.norm();
+            if (c.kind == Collider::Kind::Box)
+                speed += reach(c.dof + 2) * boxes_[i].halfExtents.norm();
             sweep[i] = speed * dt;
         }
         const Vec2 grow = Vec2::Constant(settings.speculativeDistance + sweep[i]);
@@ -158,7 +159,8 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
         const double margin = settings.speculativeDistance + sweep[i] + sweep[j];
         const double friction = std::sqrt(a.friction * b.friction);
         double restitution = std::max(a.restitution, b.restitution);
-        const std::uint64_t key = (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint64_t>(j);
+        const std::uint64_t key =
+            (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint64_t>(j);
         const bool diskA = a.kind == Collider::Kind::Disk, diskB = b.kind == Collider::Kind::Disk;
         if (diskA && diskB) {
             if (!particleCollisions_) continue;
@@ -179,8 +181,9 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
         } else {
             const int box = diskA ? j : i, disk = diskA ? i : j;
             if (collideBoxDisk(boxes_[box], disks_[disk], margin, m))
-                addConstraint((static_cast<std::uint64_t>(box) << 32) | static_cast<std::uint64_t>(disk),
-                              box, disk, m, friction, restitution, q);
+                addConstraint(
+                    (static_cast<std::uint64_t>(box) << 32) | static_cast<std::uint64_t>(disk), box,
+                    disk, m, friction, restitution, q);
         }
     }
     // Planes against every dynamic body (planes are infinite: not in the broad phase).

@@ -15,8 +15,8 @@ struct Bodies;
 
 class ContactStage {
 public:
-    // Whether a world of these bodies needs a contact stage at all: two things that can touch, one of them
-    // dynamic. Particle–particle pairs count only with particleCollisions.
+    // Whether a world of these bodies needs a contact stage at all: two things that can touch, one
+    // of them dynamic. Particle–particle pairs count only with particleCollisions.
     static bool needed(const Bodies& bodies, bool particleCollisions);
 
     ContactStage(bool particleCollisions, double particleRestitution)
@@ -29,7 +29,8 @@ public:
     // after the frame's first smooth sub-step, which is frameFraction of the frame: bounds grow by
     // how far each body can move in the frame, so that fast bodies find what lies ahead.
     void collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u,
-                 const Vec& uNext, double frameFraction, double dt, const ContactSettings& settings);
+                 const Vec& uNext, double frameFraction, double dt,
+                 const ContactSettings& settings);
 
     // One step of h after the smooth step (ContactSolver::solveStep).
     void solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
@@ -54,8 +55,8 @@ public:
 private:
     struct Collider {
         enum class Kind : unsigned char { Disk, Box } kind;
-        int object;       // particle or box index
-        int dof;          // −1 static
+        int object;  // particle or box index
+        int dof;     // −1 static
         double friction;
         double restitution;
     };
@@ -70,7 +71,7 @@ private:
     std::vector<Disk> disks_;         // per collider, when a disk
     std::vector<OrientedBox> boxes_;  // per collider, when a box
     std::vector<Aabb> bounds_;
-    std::vector<double> sweep_;       // per collider: how far it can move in this step
+    std::vector<double> sweep_;  // per collider: how far it can move in this step
     std::vector<std::pair<int, int>> pairs_;
     std::vector<unsigned char> pairLimited_;  // per collider: disk pairs capped (PairCap)
     std::vector<double> pairSize_;            // per collider: disk radius, for the cap

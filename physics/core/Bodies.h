@@ -54,8 +54,8 @@ struct Plane {
 struct SpringEnd {
     enum class Kind { Particle, Box, Anchor };
     Kind kind = Kind::Anchor;
-    int index = -1;           // particle or box index
-    Vec2 point{0.0, 0.0};     // box: attachment in the box frame; anchor: world point
+    int index = -1;        // particle or box index
+    Vec2 point{0.0, 0.0};  // box: attachment in the box frame; anchor: world point
 };
 
 struct Spring {

@@ -34,7 +34,7 @@ struct ForceJacobians {
     std::vector<Triplet> damping;    // D's single entries
     std::vector<JacobianBlock> stiffnessBlocks, dampingBlocks;
     std::vector<JacobianPair> stiffnessPairs, dampingPairs;
-    bool symmetric = true;           // false when some effect adds a non-symmetric term
+    bool symmetric = true;  // false when some effect adds a non-symmetric term
     // Asked for by the implicit integrators: leave out the parts of K that can make
     // M − h·D − h²·K indefinite (a compressed spring's geometric stiffness, as Choi & Ko 2002
     // do for cloth), so that the matrix is symmetric positive definite and conjugate gradients
@@ -55,19 +55,31 @@ struct ForceJacobians {
     bool hasStiffness() const {
         return !stiffness.empty() || !stiffnessBlocks.empty() || !stiffnessPairs.empty();
     }
-    bool hasDamping() const { return !damping.empty() || !dampingBlocks.empty() || !dampingPairs.empty(); }
+    bool hasDamping() const {
+        return !damping.empty() || !dampingBlocks.empty() || !dampingPairs.empty();
+    }
     void addStiffness(int row, int col, double value) { stiffness.emplace_back(row, col, value); }
     void addDamping(int row, int col, double value) { damping.emplace_back(row, col, value); }
     // Adds a 2×2 block at (row, col).
-    void addStiffnessBlock(int row, int col, const Mat2& block) { stiffnessBlocks.push_back(make<JacobianBlock>(row, col, block)); }
-    void addDampingBlock(int row, int col, const Mat2& block) { dampingBlocks.push_back(make<JacobianBlock>(row, col, block)); }
-    void addStiffnessPair(int a, int b, const Mat2& coupling) { stiffnessPairs.push_back(make<JacobianPair>(a, b, coupling)); }
-    void addDampingPair(int a, int b, const Mat2& coupling) { dampingPairs.push_back(make<JacobianPair>(a, b, coupling)); }
+    void addStiffnessBlock(int row, int col, const Mat2& block) {
+        stiffnessBlocks.push_back(make<JacobianBlock>(row, col, block));
+    }
+    void addDampingBlock(int row, int col, const Mat2& block) {
+        dampingBlocks.push_back(make<JacobianBlock>(row, col, block));
+    }
+    void addStiffnessPair(int a, int b, const Mat2& coupling) {
+        stiffnessPairs.push_back(make<JacobianPair>(a, b, coupling));
+    }
+    void addDampingPair(int a, int b, const Mat2& coupling) {
+        dampingPairs.push_back(make<JacobianPair>(a, b, coupling));
+    }
     // All of K (or D) as triplets, blocks and pairs spelled out: for analysis and tests.
     std::vector<Triplet> stiffnessTriplets() const {
         return spelledOut(stiffness, stiffnessBlocks, stiffnessPairs);
     }
-    std::vector<Triplet> dampingTriplets() const { return spelledOut(damping, dampingBlocks, dampingPairs); }
+    std::vector<Triplet> dampingTriplets() const {
+        return spelledOut(damping, dampingBlocks, dampingPairs);
+    }
     // Calls block(row, col, v, sign) for each 2 × 2 block a pair stands for.
     template <typename Block>
     static void forEachPairBlock(const JacobianPair& p, Block&& block) {

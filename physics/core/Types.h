@@ -12,8 +12,12 @@ using Mat2 = Eigen::Matrix2d;
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using Triplet = Eigen::Triplet<double>;
 
-inline Vec2 perp(const Vec2& v) { return {-v.y(), v.x()}; }
-inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+inline Vec2 perp(const Vec2& v) {
+    return {-v.y(), v.x()};
+}
+inline double cross(const Vec2& a, const Vec2& b) {
+    return a.x() * b.y() - a.y() * b.x();
+}
 inline Mat2 rotation(double angle) {
     const double c = std::cos(angle), s = std::sin(angle);
     Mat2 r;

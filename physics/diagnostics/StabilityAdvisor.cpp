@@ -86,19 +86,23 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
     if (omega > 0.0 && bound != kInfinity && wh >= bound) {
         advice.currentStable = false;
         std::ostringstream out;
-        out << method << " at a sub-step of " << number(advice.dt) << " s has omega*h = "
-            << number(wh);
+        out << method << " at a sub-step of " << number(advice.dt)
+            << " s has omega*h = " << number(wh);
         if (bound > 0.0)
-            out << " (stable below " << number(bound) << "): it will blow up. Use dt/substeps below "
-                << number(bound / omega) << " s (" << std::ceil(settings.dt * omega / bound)
+            out << " (stable below " << number(bound)
+                << "): it will blow up. Use dt/substeps below " << number(bound / omega) << " s ("
+                << std::ceil(settings.dt * omega / bound)
                 << " sub-steps, more for a margin), or an implicit integrator.";
         else
             out << ": it gains energy at every step (its stiffest mode by a factor of about "
-                << number(growth ? growth(wh) : kInfinity) << " per sub-step). Use symplectic_euler, velocity_verlet or an implicit integrator.";
+                << number(growth ? growth(wh) : kInfinity)
+                << " per sub-step). Use symplectic_euler, velocity_verlet or an implicit "
+                   "integrator.";
         advice.message = out.str();
     } else {
-        advice.message = omega > 0.0 ? method + " is stable at this step (omega*h = " + number(wh) + ")"
-                                     : "nothing in the scene oscillates";
+        advice.message = omega > 0.0
+                             ? method + " is stable at this step (omega*h = " + number(wh) + ")"
+                             : "nothing in the scene oscillates";
     }
     return advice;
 }

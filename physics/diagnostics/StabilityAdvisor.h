@@ -23,8 +23,8 @@ struct StepLimit {
 };
 
 struct StabilityAdvice {
-    double omegaMax = 0.0;  // rad/s; 0 when nothing in the scene oscillates
-    double dt = 0.0;        // the scene's sub-step length, dt/substeps
+    double omegaMax = 0.0;          // rad/s; 0 when nothing in the scene oscillates
+    double dt = 0.0;                // the scene's sub-step length, dt/substeps
     std::vector<StepLimit> limits;  // one per fixed-step method, in registry order
     // The current integrator at the current sub-step: stable, and if not, what to do.
     bool currentStable = true;

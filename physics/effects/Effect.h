@@ -28,7 +28,7 @@ struct EffectWorldView {
     const StateLayout* layout = nullptr;
     const Vec* mass = nullptr;  // per dof: m, m for particles; m, m, I for boxes
     const std::vector<Particle>* particles = nullptr;  // every particle, with its dof (−1: pinned)
-    const std::vector<Box>* boxes = nullptr;          // every box, with its dof (−1: static)
+    const std::vector<Box>* boxes = nullptr;           // every box, with its dof (−1: static)
 };
 
 class Effect {

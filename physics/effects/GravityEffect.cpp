@@ -20,8 +20,7 @@ double GravityEffect::addForces(double, const Vec&, const Vec&, Vec& force) {
     return 0.0;
 }
 
-void GravityEffect::addAccelerations(double, const Vec&, const Vec&, Vec& accel,
-                                     bool overwrite) {
+void GravityEffect::addAccelerations(double, const Vec&, const Vec&, Vec& accel, bool overwrite) {
     const StateLayout& layout = *view_.layout;
     double* __restrict a = accel.data();
     const double gx = g_.x(), gy = g_.y();

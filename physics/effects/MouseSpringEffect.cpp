@@ -7,9 +7,8 @@
 
 namespace phasebox {
 
-MouseSpringEffect::MouseSpringEffect(std::string objectId,
-                                     const Vec2& localPoint, const Vec2& target, double stiffness,
-                                     double dampingRatio)
+MouseSpringEffect::MouseSpringEffect(std::string objectId, const Vec2& localPoint,
+                                     const Vec2& target, double stiffness, double dampingRatio)
     : Effect("mouse_spring"),
       objectId_(std::move(objectId)),
       localPoint_(localPoint),

@@ -24,8 +24,8 @@ class MouseSpringEffect final : public Effect {
 public:
     // localPoint is the grabbed point in the box's own frame (ignored for a particle). The
     // object is found by id when the world binds the effect.
-    MouseSpringEffect(std::string objectId, const Vec2& localPoint,
-                      const Vec2& target, double stiffness, double dampingRatio = 1.0);
+    MouseSpringEffect(std::string objectId, const Vec2& localPoint, const Vec2& target,
+                      double stiffness, double dampingRatio = 1.0);
 
     // The mass the spring feels at a point at localPoint of a body (inertia 0: a particle).
     static double effectiveMass(double mass, double inertia, const Vec2& localPoint);

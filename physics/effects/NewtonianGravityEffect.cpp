@@ -51,8 +51,7 @@ double NewtonianGravityEffect::addForces(double, const Vec& q, const Vec&, Vec& 
     return 0.0;
 }
 
-void NewtonianGravityEffect::addJacobians(double, const Vec& q, const Vec&,
-                                          ForceJacobians& jac) {
+void NewtonianGravityEffect::addJacobians(double, const Vec& q, const Vec&, ForceJacobians& jac) {
     // ∂F_i/∂p_i = −G·M·m·(I/s³ − 3·r·rᵀ/s⁵), s² = ‖r‖² + ε² (inverse_square). None for the
     // tree's pairs.
     forEachPair(q, mutual_ && !usesTree(), [&](int i, int j, const Vec2& r, double gmm) {

@@ -19,8 +19,8 @@ struct SpringGeometry {
 
 // A particle end read in place (a cloth's springs are all particle to particle); others
 // through BodyPoint.
-inline void evaluateEnd(const BodyPoint& p, const Vec& q, const Vec& u, Vec2& position, Vec2& velocity,
-                        Vec2& arm) {
+inline void evaluateEnd(const BodyPoint& p, const Vec& q, const Vec& u, Vec2& position,
+                        Vec2& velocity, Vec2& arm) {
     if (p.kind == BodyPoint::Kind::Particle) {
         position = q.segment<2>(p.dof);
         velocity = u.segment<2>(p.dof);
@@ -65,14 +65,15 @@ PointJacobian pointJacobian(const BodyPoint& point, const Vec2& arm) {
 // −k·[t·(I − ûûᵀ) + ûûᵀ], t = 1 − L₀/L (kept ≥ 0 when the caller asks for a definite
 // Jacobian), and −c·ûûᵀ: a spring's couplings, for both spring loops. A degenerate spring
 // (valid false, û = 0) gives zero blocks, which keep the pattern fixed.
-Mat2 elasticCoupling(double stiffness, double restLength, double length, double ux, double uy, bool valid,
-                     bool definite) {
+Mat2 elasticCoupling(double stiffness, double restLength, double length, double ux, double uy,
+                     bool valid, bool definite) {
     const double xx = ux * ux, xy = ux * uy, yy = uy * uy;
     double t = valid ? 1.0 - restLength / length : 0.0;
     if (definite) t = std::max(t, 0.0);
     const double k = -stiffness;
     Mat2 m;
-    m << k * (t * (1.0 - xx) + xx), k * (t * (0.0 - xy) + xy), k * (t * (0.0 - xy) + xy), k * (t * (1.0 - yy) + yy);
+    m << k * (t * (1.0 - xx) + xx), k * (t * (0.0 - xy) + xy), k * (t * (0.0 - xy) + xy),
+        k * (t * (1.0 - yy) + yy);
     return m;
 }
 
@@ -122,7 +123,8 @@ void SpringEffect::setTerms(std::vector<SpringTerm> terms) {
 // without BodyPoint's dispatch and the geometry's copies it takes about two thirds of the time
 // on a 64 × 64 cloth (measured).
 template <bool WithJacobians>
-double SpringEffect::pointForces(const Vec& q, const Vec& u, Vec& force, ForceJacobians* jac) const {
+double SpringEffect::pointForces(const Vec& q, const Vec& u, Vec& force,
+                                 ForceJacobians* jac) const {
     double power = 0.0;
     const double* qs = q.data();
     const double* us = u.data();
@@ -154,7 +156,9 @@ double SpringEffect::pointForces(const Vec& q, const Vec& u, Vec& force, ForceJa
             power -= dampingForce * rate;
         }
         if constexpr (WithJacobians) {
-            jac->addStiffnessPair(s.a, s.b, elasticCoupling(s.stiffness, s.restLength, length, ux, uy, valid, definite));
+            jac->addStiffnessPair(
+                s.a, s.b,
+                elasticCoupling(s.stiffness, s.restLength, length, ux, uy, valid, definite));
             if (s.damping != 0.0) jac->addDampingPair(s.a, s.b, dampingCoupling(s.damping, ux, uy));
         }
     }
@@ -191,11 +195,13 @@ namespace {
 // ∂F_a/∂ṗ_a = −c·ûûᵀ. The damping force's dependence on the direction û (a non-symmetric
 // term) is left out, as in Baraff & Witkin: it only slows Newton's convergence, never
 // changes the solution, and keeps the matrix symmetric.
-void addTermJacobians(const SpringTerm& s, const SpringGeometry& g, bool valid, ForceJacobians& jac) {
+void addTermJacobians(const SpringTerm& s, const SpringGeometry& g, bool valid,
+                      ForceJacobians& jac) {
     // A degenerate spring still writes its (zero) blocks: the sparsity pattern must not
     // change from step to step, or the implicit solver would have to analyse it again.
     const double ux = valid ? g.dir.x() : 0.0, uy = valid ? g.dir.y() : 0.0;
-    const Mat2 ks = elasticCoupling(s.stiffness, s.restLength, g.length, ux, uy, valid, jac.definite);
+    const Mat2 ks =
+        elasticCoupling(s.stiffness, s.restLength, g.length, ux, uy, valid, jac.definite);
     if (s.a.kind != BodyPoint::Kind::Box && s.b.kind != BodyPoint::Kind::Box) {
         // Points without a rotation: one two-point coupling.
         const int a = s.a.isDynamic() ? s.a.dof : -1, b = s.b.isDynamic() ? s.b.dof : -1;
@@ -219,8 +225,9 @@ void addTermJacobians(const SpringTerm& s, const SpringGeometry& g, bool valid, 
         addProjected(jb, jb, ds, 1.0, addD);
     }
     // A box's torque r × F also turns with the box: ∂(r × F)/∂θ = −r·F.
-    const Vec2 f = valid ? Vec2(-(s.stiffness * (g.length - s.restLength) + s.damping * g.rate) * g.dir)
-                         : Vec2::Zero();
+    const Vec2 f =
+        valid ? Vec2(-(s.stiffness * (g.length - s.restLength) + s.damping * g.rate) * g.dir)
+              : Vec2::Zero();
     if (s.a.kind == BodyPoint::Kind::Box) jac.addStiffness(s.a.dof + 2, s.a.dof + 2, -g.ra.dot(f));
     if (s.b.kind == BodyPoint::Kind::Box) jac.addStiffness(s.b.dof + 2, s.b.dof + 2, g.rb.dot(f));
 }

@@ -40,8 +40,8 @@ private:
     // A spring between two points without rotation (particles or fixed points), read without
     // BodyPoint's dispatch: a cloth's springs, when every spring is one.
     struct PointSpring {
-        int a = -1, b = -1;            // first DOFs; −1 for a fixed end
-        Vec2 fixedA, fixedB;           // a fixed end's position
+        int a = -1, b = -1;   // first DOFs; −1 for a fixed end
+        Vec2 fixedA, fixedB;  // a fixed end's position
         double stiffness = 0.0, damping = 0.0, restLength = 0.0;
         // p_a − p_b for positions q.
         void separation(const double* q, double& dx, double& dy) const {

@@ -16,7 +16,8 @@ double WindEffect::addForces(double, const Vec&, const Vec& u, Vec& force) {
 double WindEffect::nonConservativePower(double, const Vec&, const Vec& u) {
     double power = 0.0;
     const int end = view_.layout->boxBase();
-    for (int i = 0; i < end; i += 2) power += drag_ * (wind_ - u.segment<2>(i)).dot(u.segment<2>(i));
+    for (int i = 0; i < end; i += 2)
+        power += drag_ * (wind_ - u.segment<2>(i)).dot(u.segment<2>(i));
     return power;
 }
 

@@ -8,7 +8,8 @@ namespace phasebox {
 
 class WindEffect final : public Effect {
 public:
-    WindEffect(const Vec2& velocity, double drag) : Effect(effectName::wind), wind_(velocity), drag_(drag) {}
+    WindEffect(const Vec2& velocity, double drag)
+        : Effect(effectName::wind), wind_(velocity), drag_(drag) {}
 
     double addForces(double t, const Vec& q, const Vec& u, Vec& force) override;
     double nonConservativePower(double t, const Vec& q, const Vec& u) override;

@@ -10,10 +10,18 @@ namespace phasebox::methods {
 // Position weight ¼: an accepted step keeps two explicit Euler half steps, which move a body by
 // h·v + h²/4·a under a constant acceleration.
 const IntegratorInfo kAdaptiveEulerInfo{
-    "adaptive_euler", "Adaptive Euler (step doubling)", 1, false, false, true,
+    "adaptive_euler",
+    "Adaptive Euler (step doubling)",
+    1,
+    false,
+    false,
+    true,
     "2 per attempt",
-    "Explicit Euler whose step size follows the error of one step against two half steps.", 0.25,
-    kInfinity, nullptr, false};
+    "Explicit Euler whose step size follows the error of one step against two half steps.",
+    0.25,
+    kInfinity,
+    nullptr,
+    false};
 
 namespace {
 constexpr long long kMaxInternalSteps = 10'000'000;
@@ -26,7 +34,7 @@ public:
         stepper_.reset();
     }
     bool advance(OdeSystem& sys, double t, double H, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-              double& workNc) override {
+                 double& workNc) override {
         q = q0;
         u = u0;
         const double tol = settings_.tolerance;
@@ -69,6 +77,8 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Integrator> makeAdaptiveEuler() { return std::make_unique<AdaptiveEuler>(); }
+std::unique_ptr<Integrator> makeAdaptiveEuler() {
+    return std::make_unique<AdaptiveEuler>();
+}
 
 }  // namespace phasebox::methods

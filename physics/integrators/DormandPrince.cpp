@@ -12,9 +12,18 @@
 namespace phasebox::methods {
 
 const IntegratorInfo kDormandPrinceInfo{
-    "rk45", "Dormand–Prince 5(4)", 5, false, false, true, "6 per attempt (+1 per call)",
-    "Embedded Runge–Kutta pair with error control; the reference for the accuracy lab.", 0.5,
-    kInfinity, nullptr, false};
+    "rk45",
+    "Dormand–Prince 5(4)",
+    5,
+    false,
+    false,
+    true,
+    "6 per attempt (+1 per call)",
+    "Embedded Runge–Kutta pair with error control; the reference for the accuracy lab.",
+    0.5,
+    kInfinity,
+    nullptr,
+    false};
 
 namespace {
 constexpr long long kMaxInternalSteps = 10'000'000;
@@ -31,9 +40,9 @@ constexpr double kA[kStages][kStages - 1] = {
     {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
     {35.0 / 384, 0.0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
 // Fifth-order weights (= the last row of A) and the difference fifth − fourth order.
-constexpr double kB[kStages] = {35.0 / 384, 0.0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784,
-                                11.0 / 84, 0.0};
-constexpr double kE[kStages] = {71.0 / 57600,      0.0,         -71.0 / 16695, 71.0 / 1920,
+constexpr double kB[kStages] = {35.0 / 384,     0.0,       500.0 / 1113, 125.0 / 192,
+                                -2187.0 / 6784, 11.0 / 84, 0.0};
+constexpr double kE[kStages] = {71.0 / 57600,      0.0,        -71.0 / 16695, 71.0 / 1920,
                                 -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
 
 class DormandPrince final : public Integrator {
@@ -49,7 +58,7 @@ public:
     }
 
     bool advance(OdeSystem& sys, double t, double H, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-              double& workNc) override {
+                 double& workNc) override {
         q = q0;
         u = u0;
         const double tol = settings_.tolerance;
@@ -125,6 +134,8 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Integrator> makeDormandPrince() { return std::make_unique<DormandPrince>(); }
+std::unique_ptr<Integrator> makeDormandPrince() {
+    return std::make_unique<DormandPrince>();
+}
 
 }  // namespace phasebox::methods

@@ -6,9 +6,18 @@
 namespace phasebox::methods {
 
 const IntegratorInfo kExplicitEulerInfo{
-    "explicit_euler", "Explicit Euler", 1, false, false, false, "1",
-    "Forward Euler on (x, v): first order, gains energy on every oscillation.", 0.0,
-    0.0, [](double wh) { return 1.0 + wh * wh; }, false};
+    "explicit_euler",
+    "Explicit Euler",
+    1,
+    false,
+    false,
+    false,
+    "1",
+    "Forward Euler on (x, v): first order, gains energy on every oscillation.",
+    0.0,
+    0.0,
+    [](double wh) { return 1.0 + wh * wh; },
+    false};
 
 namespace {
 class ExplicitEuler final : public Integrator {
@@ -16,7 +25,7 @@ public:
     const IntegratorInfo& info() const override { return kExplicitEulerInfo; }
     void reset(int n) override { a_.setZero(n); }
     bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-              double& workNc) override {
+                 double& workNc) override {
         workNc += h * sys.acceleration(t, q0, u0, a_);
         q = q0 + h * u0;
         u = u0 + h * a_;
@@ -29,6 +38,8 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Integrator> makeExplicitEuler() { return std::make_unique<ExplicitEuler>(); }
+std::unique_ptr<Integrator> makeExplicitEuler() {
+    return std::make_unique<ExplicitEuler>();
+}
 
 }  // namespace phasebox::methods

@@ -5,9 +5,18 @@
 namespace phasebox::methods {
 
 const IntegratorInfo kHeunInfo{
-    "heun", "Heun (explicit trapezoid)", 2, false, false, false, "2",
-    "Average of the slopes at the start and at an Euler-predicted end point.", 0.5,
-    0.0, [](double wh) { return 1.0 + wh * wh * wh * wh / 4.0; }, false};
+    "heun",
+    "Heun (explicit trapezoid)",
+    2,
+    false,
+    false,
+    false,
+    "2",
+    "Average of the slopes at the start and at an Euler-predicted end point.",
+    0.5,
+    0.0,
+    [](double wh) { return 1.0 + wh * wh * wh * wh / 4.0; },
+    false};
 
 namespace {
 class Heun final : public Integrator {
@@ -20,7 +29,7 @@ public:
         u2_.setZero(n);
     }
     bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-              double& workNc) override {
+                 double& workNc) override {
         const double p1 = sys.acceleration(t, q0, u0, a1_);
         q2_ = q0 + h * u0;
         u2_ = u0 + h * a1_;
@@ -37,6 +46,8 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Integrator> makeHeun() { return std::make_unique<Heun>(); }
+std::unique_ptr<Integrator> makeHeun() {
+    return std::make_unique<Heun>();
+}
 
 }  // namespace phasebox::methods

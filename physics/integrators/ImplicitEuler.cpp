@@ -11,10 +11,18 @@
 namespace phasebox::methods {
 
 const IntegratorInfo kImplicitEulerInfo{
-    "implicit_euler", "Implicit Euler", 1, true, false, false,
+    "implicit_euler",
+    "Implicit Euler",
+    1,
+    true,
+    false,
+    false,
     "1 + Jacobian per Newton iteration",
-    "Backward Euler, Newton-linearised (Baraff & Witkin): unconditionally stable, dissipative.", 1.0,
-    kInfinity, nullptr, true};
+    "Backward Euler, Newton-linearised (Baraff & Witkin): unconditionally stable, dissipative.",
+    1.0,
+    kInfinity,
+    nullptr,
+    true};
 
 namespace {
 class ImplicitEuler final : public Integrator {
@@ -22,7 +30,7 @@ public:
     const IntegratorInfo& info() const override { return kImplicitEulerInfo; }
     void reset(int n) override { newton_.reset(n); }
     bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-              double& workNc) override {
+                 double& workNc) override {
         const int iterations = std::max(1, settings_.newtonIterations);
         // The unknown is the end velocity, solved straight into u.
         const auto r = newton_.solve(sys, t + h, h, q0, u0, u, iterations, true, 1e-12);
@@ -44,6 +52,8 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Integrator> makeImplicitEuler() { return std::make_unique<ImplicitEuler>(); }
+std::unique_ptr<Integrator> makeImplicitEuler() {
+    return std::make_unique<ImplicitEuler>();
+}
 
 }  // namespace phasebox::methods

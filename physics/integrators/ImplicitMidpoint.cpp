@@ -9,10 +9,18 @@
 namespace phasebox::methods {
 
 const IntegratorInfo kImplicitMidpointInfo{
-    "implicit_midpoint", "Implicit midpoint", 2, true, true, false,
+    "implicit_midpoint",
+    "Implicit midpoint",
+    2,
+    true,
+    true,
+    false,
     "1 + Jacobian per Newton iteration (to convergence)",
-    "Implicit midpoint rule: symplectic, second order, conserves a linear spring's energy.", 0.5,
-    kInfinity, nullptr, false};
+    "Implicit midpoint rule: symplectic, second order, conserves a linear spring's energy.",
+    0.5,
+    kInfinity,
+    nullptr,
+    false};
 
 namespace {
 constexpr int kMaxNewtonIterations = 50;
@@ -29,11 +37,11 @@ public:
         qm_.setZero(n);
     }
     bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-              double& workNc) override {
+                 double& workNc) override {
         // Unknown: the midpoint velocity vm, with the midpoint position q0 + h/2·vm.
         const double c = 0.5 * h;
-        const auto r = newton_.solve(sys, t + c, c, q0, u0, vm_, kMaxNewtonIterations, true,
-                                     kNewtonTolerance);
+        const auto r =
+            newton_.solve(sys, t + c, c, q0, u0, vm_, kMaxNewtonIterations, true, kNewtonTolerance);
         stats_.linearSolves += r.linearSolves;
         stats_.lastNewtonIterations = r.iterations;
         stats_.lastNewtonCorrection = r.lastCorrection;
@@ -58,6 +66,8 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Integrator> makeImplicitMidpoint() { return std::make_unique<ImplicitMidpoint>(); }
+std::unique_ptr<Integrator> makeImplicitMidpoint() {
+    return std::make_unique<ImplicitMidpoint>();
+}
 
 }  // namespace phasebox::methods

@@ -13,9 +13,9 @@
 namespace phasebox {
 
 struct IntegratorInfo {
-    std::string_view name;         // the fixed name of CONTRACT.md §3
-    std::string_view label;        // for people: "Symplectic Euler"
-    int order;                     // global order of accuracy on smooth problems
+    std::string_view name;   // the fixed name of CONTRACT.md §3
+    std::string_view label;  // for people: "Symplectic Euler"
+    int order;               // global order of accuracy on smooth problems
     bool implicit;
     bool symplectic;
     bool adaptive;

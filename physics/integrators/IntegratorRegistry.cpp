@@ -38,7 +38,9 @@ const std::array<IntegratorInfo, 10>& infos() {
 }
 }  // namespace
 
-std::span<const IntegratorInfo> integratorRegistry() { return infos(); }
+std::span<const IntegratorInfo> integratorRegistry() {
+    return infos();
+}
 
 const IntegratorInfo* findIntegrator(std::string_view name) {
     for (const IntegratorInfo& info : infos())

@@ -6,9 +6,18 @@
 namespace phasebox::methods {
 
 const IntegratorInfo kMidpointInfo{
-    "midpoint", "Midpoint (RK2)", 2, false, false, false, "2",
-    "Explicit midpoint: a half step to estimate the slope, then a full step with it.", 0.5,
-    0.0, [](double wh) { return 1.0 + wh * wh * wh * wh / 4.0; }, false};
+    "midpoint",
+    "Midpoint (RK2)",
+    2,
+    false,
+    false,
+    false,
+    "2",
+    "Explicit midpoint: a half step to estimate the slope, then a full step with it.",
+    0.5,
+    0.0,
+    [](double wh) { return 1.0 + wh * wh * wh * wh / 4.0; },
+    false};
 
 namespace {
 class Midpoint final : public Integrator {
@@ -20,7 +29,7 @@ public:
         um_.setZero(n);
     }
     bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-              double& workNc) override {
+                 double& workNc) override {
         sys.acceleration(t, q0, u0, a_);
         qm_ = q0 + (0.5 * h) * u0;
         um_ = u0 + (0.5 * h) * a_;
@@ -36,6 +45,8 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Integrator> makeMidpoint() { return std::make_unique<Midpoint>(); }
+std::unique_ptr<Integrator> makeMidpoint() {
+    return std::make_unique<Midpoint>();
+}
 
 }  // namespace phasebox::methods

@@ -7,9 +7,12 @@
 namespace phasebox::methods {
 
 const IntegratorInfo kRungeKutta4Info{
-    "rk4", "Runge–Kutta 4", 4, false, false, false, "4",
-    "Classic fourth-order Runge–Kutta: four slopes weighted 1/6, 1/3, 1/3, 1/6.", 0.5,
-    2.0 * std::numbers::sqrt2, nullptr, false};
+    "rk4",   "Runge–Kutta 4",
+    4,       false,
+    false,   false,
+    "4",     "Classic fourth-order Runge–Kutta: four slopes weighted 1/6, 1/3, 1/3, 1/6.",
+    0.5,     2.0 * std::numbers::sqrt2,
+    nullptr, false};
 
 namespace {
 class RungeKutta4 final : public Integrator {
@@ -19,7 +22,7 @@ public:
         for (Vec* v : {&a1_, &a2_, &a3_, &a4_, &u2_, &u3_, &u4_, &qs_}) v->setZero(n);
     }
     bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-              double& workNc) override {
+                 double& workNc) override {
         // Stage slopes of x are the stage velocities (u0, u2, u3, u4), of v the accelerations.
         const double p1 = sys.acceleration(t, q0, u0, a1_);
         qs_ = q0 + (0.5 * h) * u0;
@@ -43,6 +46,8 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Integrator> makeRungeKutta4() { return std::make_unique<RungeKutta4>(); }
+std::unique_ptr<Integrator> makeRungeKutta4() {
+    return std::make_unique<RungeKutta4>();
+}
 
 }  // namespace phasebox::methods

@@ -8,9 +8,18 @@
 namespace phasebox::methods {
 
 const IntegratorInfo kSymplecticEulerInfo{
-    "symplectic_euler", "Symplectic Euler", 1, false, true, false, "1",
-    "Semi-implicit Euler: velocity first, then position with the new velocity; bounded energy.", 1.0,
-    2.0, nullptr, false};
+    "symplectic_euler",
+    "Symplectic Euler",
+    1,
+    false,
+    true,
+    false,
+    "1",
+    "Semi-implicit Euler: velocity first, then position with the new velocity; bounded energy.",
+    1.0,
+    2.0,
+    nullptr,
+    false};
 
 namespace {
 class SymplecticEuler final : public Integrator {
@@ -18,7 +27,7 @@ public:
     const IntegratorInfo& info() const override { return kSymplecticEulerInfo; }
     void reset(int n) override { a_.setZero(n); }
     bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-              double& workNc) override {
+                 double& workNc) override {
         workNc += h * sys.acceleration(t, q0, u0, a_);
         // One fused pass: the velocity update and the position update read the same lanes,
         // and when the caller wants the end state summed, the sum reads them from registers.
@@ -58,6 +67,8 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Integrator> makeSymplecticEuler() { return std::make_unique<SymplecticEuler>(); }
+std::unique_ptr<Integrator> makeSymplecticEuler() {
+    return std::make_unique<SymplecticEuler>();
+}
 
 }  // namespace phasebox::methods

@@ -8,9 +8,18 @@
 namespace phasebox::methods {
 
 const IntegratorInfo kVelocityVerletInfo{
-    "velocity_verlet", "Velocity Verlet", 2, false, true, false, "2",
-    "Position from the current acceleration, velocity from the average of old and new ones.", 0.5,
-    2.0, nullptr, false};
+    "velocity_verlet",
+    "Velocity Verlet",
+    2,
+    false,
+    true,
+    false,
+    "2",
+    "Position from the current acceleration, velocity from the average of old and new ones.",
+    0.5,
+    2.0,
+    nullptr,
+    false};
 
 namespace {
 class VelocityVerlet final : public Integrator {
@@ -22,7 +31,7 @@ public:
         up_.setZero(n);
     }
     bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-              double& workNc) override {
+                 double& workNc) override {
         const double p1 = sys.acceleration(t, q0, u0, a_);
         q = q0 + h * u0 + (0.5 * h * h) * a_;
         up_ = u0 + h * a_;
@@ -38,6 +47,8 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Integrator> makeVelocityVerlet() { return std::make_unique<VelocityVerlet>(); }
+std::unique_ptr<Integrator> makeVelocityVerlet() {
+    return std::make_unique<VelocityVerlet>();
+}
 
 }  // namespace phasebox::methods

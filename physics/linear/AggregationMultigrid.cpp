@@ -59,21 +59,25 @@ void scalarMultiply(const blocks::Rows& a, const double* x, double* y) {
 }
 
 void scalarForward(const blocks::Rows& a, const double* inverse, const double* b, double* x) {
-    for (int i = 0; i < a.nodes; ++i) x[i] = inverse[i] * (b[i] - scalarRowSum(a, a.outer[i], a.diagonal[i], x));
+    for (int i = 0; i < a.nodes; ++i)
+        x[i] = inverse[i] * (b[i] - scalarRowSum(a, a.outer[i], a.diagonal[i], x));
 }
 
-void scalarRestrictUpper(const blocks::Rows& a, const int* toCoarse, const double* x, double* coarse) {
-    for (int i = 0; i < a.nodes; ++i) coarse[toCoarse[i]] -= scalarRowSum(a, a.diagonal[i] + 1, a.outer[i + 1], x);
+void scalarRestrictUpper(const blocks::Rows& a, const int* toCoarse, const double* x,
+                         double* coarse) {
+    for (int i = 0; i < a.nodes; ++i)
+        coarse[toCoarse[i]] -= scalarRowSum(a, a.diagonal[i] + 1, a.outer[i + 1], x);
 }
 
 void scalarBackward(const blocks::Rows& a, const double* inverse, const double* b, double* x) {
-    for (int i = a.nodes - 1; i >= 0; --i) x[i] += inverse[i] * (b[i] - scalarRowSum(a, a.outer[i], a.outer[i + 1], x));
+    for (int i = a.nodes - 1; i >= 0; --i)
+        x[i] += inverse[i] * (b[i] - scalarRowSum(a, a.outer[i], a.outer[i + 1], x));
 }
 
-blocks::Rows rowsOf(const std::vector<int>& outer, const std::vector<int>& diagonal, const std::vector<int>& column,
-                    const std::vector<double>& values) {
-    return {static_cast<int>(outer.size()) - 1, outer.data(), diagonal.empty() ? nullptr : diagonal.data(),
-            column.data(), values.data()};
+blocks::Rows rowsOf(const std::vector<int>& outer, const std::vector<int>& diagonal,
+                    const std::vector<int>& column, const std::vector<double>& values) {
+    return {static_cast<int>(outer.size()) - 1, outer.data(),
+            diagonal.empty() ? nullptr : diagonal.data(), column.data(), values.data()};
 }
 
 }  // namespace
@@ -136,17 +140,20 @@ void AggregationMultigrid::build(const SparseMatrix& a, int pairedDofs) {
     std::vector<Triplet> full;
     for (int row = 0; row < last.nodes; ++row)
         for (int k = last.outer[row]; k < last.outer[row + 1]; ++k)
-            for (int e = 0; e < B * B; ++e) full.emplace_back(row * B + e / B, last.inner[k] * B + e % B, 1.0);
+            for (int e = 0; e < B * B; ++e)
+                full.emplace_back(row * B + e / B, last.inner[k] * B + e % B, 1.0);
     // Ordered by nodes (a point's two DOFs stay together, so that the factor comes in 2 × 2
     // blocks too).
     std::vector<Triplet> nodePattern;
     for (int row = 0; row < last.nodes; ++row)
-        for (int k = last.outer[row]; k < last.outer[row + 1]; ++k) nodePattern.emplace_back(row, last.inner[k], 1.0);
+        for (int k = last.outer[row]; k < last.outer[row + 1]; ++k)
+            nodePattern.emplace_back(row, last.inner[k], 1.0);
     SparseMatrix pattern(last.nodes, last.nodes);
     pattern.setFromTriplets(nodePattern.begin(), nodePattern.end());
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverseOrder;
     Eigen::AMDOrdering<int>()(pattern, inverseOrder);
-    const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order = inverseOrder.inverse();
+    const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order =
+        inverseOrder.inverse();
     coarsestOrder_.resize(last.n);  // old index → position
     for (int i = 0; i < last.n; ++i) coarsestOrder_[i] = order.indices()[i / B] * B + i % B;
     std::vector<Triplet> upper;
@@ -161,7 +168,9 @@ void AggregationMultigrid::build(const SparseMatrix& a, int pairedDofs) {
     for (std::size_t k = 0; k < full.size(); ++k) {
         const int r = coarsestOrder_[full[k].row()], c = coarsestOrder_[full[k].col()];
         // Entries below the diagonal are the mirror images of ones above: not stored.
-        coarsestSlot_[k] = r <= c ? static_cast<int>(&coarsestMatrix_.coeffRef(r, c) - coarsestMatrix_.valuePtr()) : -1;
+        coarsestSlot_[k] =
+            r <= c ? static_cast<int>(&coarsestMatrix_.coeffRef(r, c) - coarsestMatrix_.valuePtr())
+                   : -1;
     }
     coarsestB_.setZero(last.n);
     coarsestX_.setZero(last.n);
@@ -177,7 +186,8 @@ bool AggregationMultigrid::coarsen(const Level& fine, Level& coarse, std::vector
     // Coupling strengths from the current values (those of the first step of a pattern).
     auto norm = [&](int k) {
         double s = 0.0;
-        for (int e = 0; e < B * B; ++e) s += fine.values[k * B * B + e] * fine.values[k * B * B + e];
+        for (int e = 0; e < B * B; ++e)
+            s += fine.values[k * B * B + e] * fine.values[k * B * B + e];
         return std::sqrt(s);
     };
     // The threshold halves from level to level (Vaněk, Mandel & Brezina): Galerkin sums make
@@ -207,7 +217,8 @@ bool AggregationMultigrid::coarsen(const Level& fine, Level& coarse, std::vector
     for (int p = 0; p < nodes; ++p) {
         if (aggregate[p] >= 0 || strongOuter[p] == strongOuter[p + 1]) continue;
         bool free = true;
-        for (int k = strongOuter[p]; k < strongOuter[p + 1]; ++k) free = free && aggregate[strongInner[k]] < 0;
+        for (int k = strongOuter[p]; k < strongOuter[p + 1]; ++k)
+            free = free && aggregate[strongInner[k]] < 0;
         if (!free) continue;
         aggregate[p] = count;
         for (int k = strongOuter[p]; k < strongOuter[p + 1]; ++k) aggregate[strongInner[k]] = count;
@@ -278,7 +289,8 @@ void AggregationMultigrid::galerkin(std::size_t l) {
     std::fill(to.values.begin(), to.values.end(), 0.0);
     const int blocks = static_cast<int>(from.inner.size());
     for (int k = 0; k < blocks; ++k)
-        for (int e = 0; e < BB; ++e) to.values[from.galerkinSlot[k] * BB + e] += from.values[k * BB + e];
+        for (int e = 0; e < BB; ++e)
+            to.values[from.galerkinSlot[k] * BB + e] += from.values[k * BB + e];
 }
 
 void AggregationMultigrid::refresh(bool coarse) {
@@ -334,7 +346,8 @@ void AggregationMultigrid::blockFactor() {
         compress(nodes, positions, f.lowerOuter, f.lowerColumn);
         std::vector<std::pair<int, int>> mirrored;
         for (int row = 0; row < nodes; ++row)
-            for (int k = f.lowerOuter[row]; k < f.lowerOuter[row + 1]; ++k) mirrored.emplace_back(f.lowerColumn[k], row);
+            for (int k = f.lowerOuter[row]; k < f.lowerOuter[row + 1]; ++k)
+                mirrored.emplace_back(f.lowerColumn[k], row);
         compress(nodes, mirrored, f.upperOuter, f.upperColumn);
         f.mirror.resize(f.lowerColumn.size());
         for (int row = 0; row < nodes; ++row)
@@ -345,8 +358,11 @@ void AggregationMultigrid::blockFactor() {
         for (int j = 0; j < n; ++j)
             for (int k = outer[j]; k < outer[j + 1]; ++k) {
                 const int row = inner[k] / 2, col = j / 2;
-                if (row == col) f.intra[col] = k;
-                else f.slot[k] = findBlock(f.lowerOuter, f.lowerColumn, row, col) * 4 + (inner[k] % 2) * 2 + j % 2;
+                if (row == col)
+                    f.intra[col] = k;
+                else
+                    f.slot[k] = findBlock(f.lowerOuter, f.lowerColumn, row, col) * 4 +
+                                (inner[k] % 2) * 2 + j % 2;
             }
         for (int& c : f.lowerColumn) c *= 2;
         for (int& c : f.upperColumn) c *= 2;
@@ -371,7 +387,8 @@ void AggregationMultigrid::blockFactor() {
     for (int row = 0; row < nodes; ++row)
         for (int k = f.lowerOuter[row]; k < f.lowerOuter[row + 1]; ++k) {
             double* b = &f.lower[4 * k];
-            const double e = f.intra[f.lowerColumn[k] / 2] >= 0 ? value[f.intra[f.lowerColumn[k] / 2]] : 0.0;
+            const double e =
+                f.intra[f.lowerColumn[k] / 2] >= 0 ? value[f.intra[f.lowerColumn[k] / 2]] : 0.0;
             b[0] -= e * b[1];  // L_IK·E_K⁻¹: column 0 − l·column 1
             b[2] -= e * b[3];
             double* t = &f.upper[4 * f.mirror[k]];
@@ -385,8 +402,10 @@ void AggregationMultigrid::blockFactor() {
 void AggregationMultigrid::multiply(const Vec& x, Vec& y) const {
     const Level& fine = levels_[0];
     const blocks::Rows rows = rowsOf(fine.outer, fine.diagonal, fine.column, fine.values);
-    if (block_ == 2) blocks::multiply(rows, x.data(), y.data());
-    else scalarMultiply(rows, x.data(), y.data());
+    if (block_ == 2)
+        blocks::multiply(rows, x.data(), y.data());
+    else
+        scalarMultiply(rows, x.data(), y.data());
 }
 
 // One V-cycle on levels_[index] with right side b, into x (the caller's vectors on the finest
@@ -398,16 +417,20 @@ void AggregationMultigrid::cycle(std::size_t index, const double* b, double* x) 
     const blocks::Rows rows = rowsOf(level.outer, level.diagonal, level.column, level.values);
     const double* inverse = level.diagonalInverse.data();
     // Forward block Gauss–Seidel from x = 0: only the blocks left of the diagonal see a value.
-    if (paired) blocks::forward(rows, inverse, b, x);
-    else scalarForward(rows, inverse, b, x);
+    if (paired)
+        blocks::forward(rows, inverse, b, x);
+    else
+        scalarForward(rows, inverse, b, x);
     if (index + 1 < levels_.size()) {
         // Row i's residual b − A·x is now what the blocks right of the diagonal (zero while
         // row i was solved) contribute: summed straight into the coarse right side, Pᵀ·r.
         Level& next = levels_[index + 1];
         next.b.setZero();
         const int* toCoarse = level.toCoarse.data();
-        if (paired) blocks::restrictUpper(rows, toCoarse, x, next.b.data());
-        else scalarRestrictUpper(rows, toCoarse, x, next.b.data());
+        if (paired)
+            blocks::restrictUpper(rows, toCoarse, x, next.b.data());
+        else
+            scalarRestrictUpper(rows, toCoarse, x, next.b.data());
         cycle(index + 1, next.b.data(), next.x.data());
         const int B = block_;
         const double* coarseX = next.x.data();
@@ -415,11 +438,15 @@ void AggregationMultigrid::cycle(std::size_t index, const double* b, double* x) 
             for (int c = 0; c < B; ++c) x[i * B + c] += coarseX[toCoarse[i] * B + c];
     }
     // Backward block Gauss–Seidel over whole rows.
-    if (paired) blocks::backward(rows, inverse, b, x);
-    else scalarBackward(rows, inverse, b, x);
+    if (paired)
+        blocks::backward(rows, inverse, b, x);
+    else
+        scalarBackward(rows, inverse, b, x);
 }
 
-void AggregationMultigrid::apply(const Vec& r, Vec& z) { cycle(0, r.data(), z.data()); }
+void AggregationMultigrid::apply(const Vec& r, Vec& z) {
+    cycle(0, r.data(), z.data());
+}
 
 void AggregationMultigrid::coarsestSolve(const double* b, double* x) {
     const int n = levels_.back().n;
@@ -427,8 +454,8 @@ void AggregationMultigrid::coarsestSolve(const double* b, double* x) {
     if (factor_.ready) {
         const BlockFactor& f = factor_;
         blocks::lowerSolve(rowsOf(f.lowerOuter, {}, f.lowerColumn, f.lower), coarsestB_.data());
-        blocks::upperSolve(rowsOf(f.upperOuter, {}, f.upperColumn, f.upper), f.diagonalInverse.data(),
-                           coarsestB_.data());
+        blocks::upperSolve(rowsOf(f.upperOuter, {}, f.upperColumn, f.upper),
+                           f.diagonalInverse.data(), coarsestB_.data());
     } else {
         coarsestX_ = coarsest_.solve(coarsestB_);
         coarsestB_.swap(coarsestX_);
@@ -443,7 +470,8 @@ SparseMatrix AggregationMultigrid::coarsestOperator() const {
     for (int row = 0; row < last.nodes; ++row)
         for (int k = last.outer[row]; k < last.outer[row + 1]; ++k)
             for (int e = 0; e < B * B; ++e)
-                entries.emplace_back(row * B + e / B, last.inner[k] * B + e % B, last.values[k * B * B + e]);
+                entries.emplace_back(row * B + e / B, last.inner[k] * B + e % B,
+                                     last.values[k * B * B + e]);
     SparseMatrix a(last.n, last.n);
     a.setFromTriplets(entries.begin(), entries.end());
     return a;

@@ -76,15 +76,15 @@ private:
 
     bool coarsen(const Level& fine, Level& coarse, std::vector<int>& toCoarse,
                  std::vector<int>& slot) const;
-    void prepare(Level& level) const;        // sizes the diagonal, values and work vectors
-    void fillFine(const SparseMatrix& a);    // level 0's blocks from a
-    void galerkin(std::size_t level);        // level + 1's values from level's
+    void prepare(Level& level) const;      // sizes the diagonal, values and work vectors
+    void fillFine(const SparseMatrix& a);  // level 0's blocks from a
+    void galerkin(std::size_t level);      // level + 1's values from level's
     void cycle(std::size_t level, const double* b, double* x);
     void coarsestSolve(const double* b, double* x);
 
     int block_ = 1;
     std::vector<Level> levels_;
-    std::vector<int> fineSlot_;    // scalar entry of a → index in levels_[0].values
+    std::vector<int> fineSlot_;  // scalar entry of a → index in levels_[0].values
     // The coarsest level as a scalar matrix in fill-reducing order (upper triangle), to
     // factorise; coarsestSlot_ maps each of its block entries there (−1: below the diagonal).
     SparseMatrix coarsestMatrix_;
@@ -93,7 +93,8 @@ private:
     Vec coarsestB_, coarsestX_;
     // Eigen's factorize() builds an empty temporary matrix (one allocation a step) even when,
     // as here, it does not use it; this calls the factorisation proper.
-    class OrderedLdlt : public Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>> {
+    class OrderedLdlt
+        : public Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>> {
     public:
         void factorizeOrdered(const SparseMatrix& upper) { factorize_preordered<true>(upper); }
         const SparseMatrix& factor() const { return m_matrix; }  // L, strictly lower

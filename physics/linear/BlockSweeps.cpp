@@ -25,7 +25,8 @@ namespace twoLane {
 // Σ_k A_k·x_k over the blocks [begin, end) of a row into sum: each block row times the
 // point's (x, y) is one two-lane product. The sum is split over independent accumulators two
 // blocks at a time; one chain of additions would make each row wait on the adder's latency.
-[[gnu::always_inline]] inline void rowSum(const Rows& a, int begin, int end, const double* x, double* sum) {
+[[gnu::always_inline]] inline void rowSum(const Rows& a, int begin, int end, const double* x,
+                                          double* sum) {
     typedef double Lanes __attribute__((vector_size(16)));
     auto load = [](const double* p) {
         Lanes v;
@@ -61,8 +62,11 @@ namespace twoLane {
 namespace fourLane {
 // The same on four lanes: a row-major block times (x, y, x, y) is one fused multiply-add, and
 // the lane pairs are summed once at the end of the row.
-[[gnu::always_inline]] inline void rowSum(const Rows& a, int begin, int end, const double* x, double* sum) {
-    auto point = [&](int k) { return _mm256_broadcast_pd(reinterpret_cast<const __m128d*>(x + a.column[k])); };
+[[gnu::always_inline]] inline void rowSum(const Rows& a, int begin, int end, const double* x,
+                                          double* sum) {
+    auto point = [&](int k) {
+        return _mm256_broadcast_pd(reinterpret_cast<const __m128d*>(x + a.column[k]));
+    };
     __m256d p = _mm256_setzero_pd(), q = _mm256_setzero_pd();
     int k = begin;
     for (; k + 1 < end; k += 2) {
@@ -78,7 +82,7 @@ namespace fourLane {
 #pragma GCC pop_options
 #endif
 
-constexpr Kernels kNarrow{twoLane::multiplyLoop, twoLane::forwardLoop, twoLane::restrictLoop,
+constexpr Kernels kNarrow{twoLane::multiplyLoop, twoLane::forwardLoop,    twoLane::restrictLoop,
                           twoLane::backwardLoop, twoLane::lowerSolveLoop, twoLane::upperSolveLoop};
 
 bool wideAvailable() {
@@ -92,8 +96,9 @@ bool wideAvailable() {
 
 const Kernels* choose(bool on) {
 #ifdef PHASEBOX_WIDE_KERNELS
-    static constexpr Kernels kWide{fourLane::multiplyLoop, fourLane::forwardLoop, fourLane::restrictLoop,
-                                   fourLane::backwardLoop, fourLane::lowerSolveLoop, fourLane::upperSolveLoop};
+    static constexpr Kernels kWide{fourLane::multiplyLoop,   fourLane::forwardLoop,
+                                   fourLane::restrictLoop,   fourLane::backwardLoop,
+                                   fourLane::lowerSolveLoop, fourLane::upperSolveLoop};
     if (on && wideAvailable()) return &kWide;
 #endif
     (void)on;
@@ -114,14 +119,24 @@ const Kernels& kernels() {
 
 }  // namespace
 
-void multiply(const Rows& a, const double* x, double* y) { kernels().multiply(a, x, y); }
-void forward(const Rows& a, const double* inverse, const double* b, double* x) { kernels().forward(a, inverse, b, x); }
+void multiply(const Rows& a, const double* x, double* y) {
+    kernels().multiply(a, x, y);
+}
+void forward(const Rows& a, const double* inverse, const double* b, double* x) {
+    kernels().forward(a, inverse, b, x);
+}
 void restrictUpper(const Rows& a, const int* toCoarse, const double* x, double* coarse) {
     kernels().restrictUpper(a, toCoarse, x, coarse);
 }
-void backward(const Rows& a, const double* inverse, const double* b, double* x) { kernels().backward(a, inverse, b, x); }
-void lowerSolve(const Rows& l, double* y) { kernels().lowerSolve(l, y); }
-void upperSolve(const Rows& u, const double* inverse, double* y) { kernels().upperSolve(u, inverse, y); }
+void backward(const Rows& a, const double* inverse, const double* b, double* x) {
+    kernels().backward(a, inverse, b, x);
+}
+void lowerSolve(const Rows& l, double* y) {
+    kernels().lowerSolve(l, y);
+}
+void upperSolve(const Rows& u, const double* inverse, double* y) {
+    kernels().upperSolve(u, inverse, y);
+}
 
 bool setWide(bool on) {
     const Kernels* k = choose(on);

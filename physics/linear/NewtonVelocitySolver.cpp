@@ -21,7 +21,9 @@ void NewtonVelocitySolver::reset(int n) {
 }
 
 namespace {
-long long key(int row, int col) { return (static_cast<long long>(row) << 32) | static_cast<unsigned>(col); }
+long long key(int row, int col) {
+    return (static_cast<long long>(row) << 32) | static_cast<unsigned>(col);
+}
 }  // namespace
 
 // The contributions, in the order keys_ and the slot tables list them: the masses, K's and
@@ -35,15 +37,18 @@ void NewtonVelocitySolver::forEachContribution(double c, Visit&& visit) const {
     const double kScale = -c * c, dScale = -c;
     for (const Triplet& t : jac_.stiffness) visit.single(t.row(), t.col(), kScale * t.value());
     for (const Triplet& t : jac_.damping) visit.single(t.row(), t.col(), dScale * t.value());
-    for (const JacobianBlock& b : jac_.stiffnessBlocks) visit.block(key(b.row, b.col), b.row, b.col, b.v, kScale);
-    for (const JacobianBlock& b : jac_.dampingBlocks) visit.block(key(b.row, b.col), b.row, b.col, b.v, dScale);
+    for (const JacobianBlock& b : jac_.stiffnessBlocks)
+        visit.block(key(b.row, b.col), b.row, b.col, b.v, kScale);
+    for (const JacobianBlock& b : jac_.dampingBlocks)
+        visit.block(key(b.row, b.col), b.row, b.col, b.v, dScale);
     for (const auto* pairs : {&jac_.stiffnessPairs, &jac_.dampingPairs}) {
         const double scale = pairs == &jac_.stiffnessPairs ? kScale : dScale;
         for (const JacobianPair& p : *pairs) {
             visit.pairKey(key(p.a + 1, p.b + 1));
-            ForceJacobians::forEachPairBlock(p, [&](int row, int col, const double* v, double sign) {
-                visit.block(-1, row, col, v, sign * scale);
-            });
+            ForceJacobians::forEachPairBlock(p,
+                                             [&](int row, int col, const double* v, double sign) {
+                                                 visit.block(-1, row, col, v, sign * scale);
+                                             });
         }
     }
 }
@@ -123,7 +128,8 @@ void NewtonVelocitySolver::assemble(OdeSystem& sys, double c) {
             keys.push_back(key(row, col));
         }
         void block(long long k, int row, int col, const double* v, double scale) {
-            for (int e = 0; e < 4; ++e) triplets.emplace_back(row + e / 2, col + e % 2, scale * v[e]);
+            for (int e = 0; e < 4; ++e)
+                triplets.emplace_back(row + e / 2, col + e % 2, scale * v[e]);
             if (k >= 0) keys.push_back(k);
         }
         void pairKey(long long k) { keys.push_back(k); }
@@ -158,7 +164,8 @@ bool NewtonVelocitySolver::assembleIterative(OdeSystem& sys, double c, bool refr
     const int n = static_cast<int>(mass.size());
     multigrid_.build(matrix_, sys.pairedDofs());
     iterative_.rowMajor = true;
-    recordSlots(n, c, iterative_, [this](int row, int col) { return multigrid_.fineOffset(row, col); });
+    recordSlots(n, c, iterative_,
+                [this](int row, int col) { return multigrid_.fineOffset(row, col); });
     iterative_.values = multigrid_.fineValues();
     iterative_.count = multigrid_.fineValueCount();
     if (!refill(mass, c, iterative_)) return false;
@@ -197,11 +204,14 @@ bool NewtonVelocitySolver::solveLinear(OdeSystem& sys, double c, bool warmStart,
                     coarseFresh_ = true;
                 }
                 const bool fresh = coarseFresh_;
-                if (warmStart) delta_ = guess_;
-                else delta_.setZero();
+                if (warmStart)
+                    delta_ = guess_;
+                else
+                    delta_.setZero();
                 int iterations = 0;
                 double residual = 0.0;
-                const int cap = fresh ? maxIterations : std::min(maxIterations, 2 * iterationsAfterCoarse_ + 10);
+                const int cap = fresh ? maxIterations
+                                      : std::min(maxIterations, 2 * iterationsAfterCoarse_ + 10);
                 const bool converged = conjugateGradient(tolerance, cap, iterations, residual);
                 result.linearIterations += iterations;
                 result.linearResidual = residual;
@@ -359,7 +369,8 @@ NewtonVelocitySolver::Result NewtonVelocitySolver::solve(OdeSystem& sys, double 
         if (result.lastCorrection <= relativeTolerance * scale) break;
         // At the round-off floor the update stops shrinking (quadratic convergence would cut it
         // by far more than half): further iterations cannot improve the answer.
-        if (result.lastCorrection <= kRoundOffFloor * scale && result.lastCorrection > 0.5 * previous)
+        if (result.lastCorrection <= kRoundOffFloor * scale &&
+            result.lastCorrection > 0.5 * previous)
             break;
     }
     result.ok = v.allFinite();

@@ -8,8 +8,8 @@
 // Baraff & Witkin 1998: (M − c·D − c²·K)·Δv = c·(F₀ + c·K·u₀). Later iterations are Newton
 // steps on the residual at the current iterate.
 
-#include "physics/linear/AggregationMultigrid.h"
 #include "physics/core/OdeSystem.h"
+#include "physics/linear/AggregationMultigrid.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>

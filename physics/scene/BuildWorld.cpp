@@ -14,7 +14,9 @@
 namespace phasebox {
 
 namespace {
-Vec2 vec(const Point2& p) { return {p[0], p[1]}; }
+Vec2 vec(const Point2& p) {
+    return {p[0], p[1]};
+}
 
 std::string summarize(const std::vector<SceneIssue>& issues) {
     std::string out;
@@ -57,7 +59,8 @@ void addClothSprings(World& world, const Cloth& cloth, const ClothDesc& desc) {
         s.b = {SpringEnd::Kind::Particle, clothNode(cloth, i1, j1), Vec2::Zero()};
         s.stiffness = k;
         s.damping = desc.damping;
-        s.restLength = (world.particles()[s.a.index].position - world.particles()[s.b.index].position).norm();
+        s.restLength =
+            (world.particles()[s.a.index].position - world.particles()[s.b.index].position).norm();
         s.cloth = static_cast<int>(world.cloths().size());
         world.addSpring(s);
     };
@@ -66,7 +69,7 @@ void addClothSprings(World& world, const Cloth& cloth, const ClothDesc& desc) {
         for (int i = 0; i < cloth.nx; ++i) {
             addSpring(i, j, i + 1, j, k.structural);  // structural
             addSpring(i, j, i, j + 1, k.structural);
-            addSpring(i, j, i + 1, j + 1, k.shear);   // shear
+            addSpring(i, j, i + 1, j + 1, k.shear);  // shear
             if (i + 1 < cloth.nx && j + 1 < cloth.ny) {
                 Spring s;
                 s.a = {SpringEnd::Kind::Particle, clothNode(cloth, i + 1, j), Vec2::Zero()};
@@ -75,7 +78,8 @@ void addClothSprings(World& world, const Cloth& cloth, const ClothDesc& desc) {
                     s.stiffness = k.shear;
                     s.damping = desc.damping;
                     s.restLength = (world.particles()[s.a.index].position -
-                                    world.particles()[s.b.index].position).norm();
+                                    world.particles()[s.b.index].position)
+                                       .norm();
                     s.cloth = static_cast<int>(world.cloths().size());
                     world.addSpring(s);
                 }
@@ -131,8 +135,8 @@ BuildResult buildWorld(const SceneDesc& scene) {
     const EffectsDesc& fx = scene.effects;
     if (fx.gravity) world.addEffect(std::make_unique<GravityEffect>(vec(fx.gravity->g)));
     if (fx.drag)
-        world.addEffect(std::make_unique<DragEffect>(fx.drag->linear, fx.drag->quadratic,
-                                                     fx.drag->angular));
+        world.addEffect(
+            std::make_unique<DragEffect>(fx.drag->linear, fx.drag->quadratic, fx.drag->angular));
     if (fx.newtonianGravity) {
         std::vector<Attractor> attractors;
         for (const AttractorDesc& a : fx.newtonianGravity->attractors)
@@ -159,7 +163,8 @@ BuildResult buildWorld(const SceneDesc& scene) {
         const CoulombDesc coulomb = fx.coulomb.value_or(CoulombDesc{});
         world.addEffect(std::make_unique<CoulombEffect>(coulomb.k, coulomb.softening));
     }
-    if (fx.particleCollisions) world.setParticleCollisions(true, fx.particleCollisions->restitution);
+    if (fx.particleCollisions)
+        world.setParticleCollisions(true, fx.particleCollisions->restitution);
 
     // Objects. Ids map to particle or box indices for the springs.
     std::unordered_map<std::string, SpringEnd> ends;
@@ -243,8 +248,9 @@ BuildResult buildWorld(const SceneDesc& scene) {
         }
         s.stiffness = d.stiffness;
         s.damping = d.damping;
-        s.restLength = d.restLength ? *d.restLength
-                                    : (world.springEndPosition(s.a) - world.springEndPosition(s.b)).norm();
+        s.restLength = d.restLength
+                           ? *d.restLength
+                           : (world.springEndPosition(s.a) - world.springEndPosition(s.b)).norm();
         world.addSpring(s);
     }
 

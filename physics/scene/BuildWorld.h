@@ -2,8 +2,8 @@
 // SceneDesc → World. Constructs exactly the effects the scene lists plus what its objects
 // imply (springs → the spring effect); nothing else exists, so nothing else costs.
 
-#include "physics/world/World.h"
 #include "physics/scene/SceneDesc.h"
+#include "physics/world/World.h"
 
 #include <memory>
 #include <stdexcept>
@@ -36,6 +36,8 @@ ContactSettings contactSettings(const std::map<std::string, double>& solver);
 BuildResult buildWorld(const SceneDesc& scene);
 
 // The node index (into World::particles()) of cloth node (i, j).
-inline int clothNode(const Cloth& cloth, int i, int j) { return cloth.firstParticle + j * cloth.nx + i; }
+inline int clothNode(const Cloth& cloth, int i, int j) {
+    return cloth.firstParticle + j * cloth.nx + i;
+}
 
 }  // namespace phasebox

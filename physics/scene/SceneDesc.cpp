@@ -25,8 +25,10 @@ std::string fmt(double v) {
     std::string text(buffer, result.ptr);
     if (const auto e = text.find('e'); e != std::string::npos) {
         std::size_t digits = e + 1;
-        if (digits < text.size() && text[digits] == '+') text.erase(digits, 1);
-        else if (digits < text.size() && text[digits] == '-') ++digits;
+        if (digits < text.size() && text[digits] == '+')
+            text.erase(digits, 1);
+        else if (digits < text.size() && text[digits] == '-')
+            ++digits;
         while (digits + 1 < text.size() && text[digits] == '0') text.erase(digits, 1);
     }
     return text;
@@ -99,7 +101,9 @@ std::string join(const std::string& path, std::string_view key) {
     return path + "." + std::string(key);
 }
 
-std::string integerText(double v) { return std::to_string(static_cast<long long>(v)); }
+std::string integerText(double v) {
+    return std::to_string(static_cast<long long>(v));
+}
 
 // One number against its schema range, with the messages listed at schema::Bound.
 void checkNumber(Checker& check, const std::string& path, double v, const schema::Range& r) {
@@ -124,8 +128,10 @@ void checkNumber(Checker& check, const std::string& path, double v, const schema
                 check.fail(path, "must be > 0 and <= " + fmt(r.max) + " (got " + fmt(v) + ")");
             break;
         case Bound::IntegerAtLeast:
-            if (v < r.min) check.fail(path, "must be an integer >= " + integerText(r.min));
-            else if (v > r.max) check.fail(path, "must be <= " + integerText(r.max));
+            if (v < r.min)
+                check.fail(path, "must be an integer >= " + integerText(r.min));
+            else if (v > r.max)
+                check.fail(path, "must be <= " + integerText(r.max));
             break;
         case Bound::IntegerBetween:
             if (check.finite(path, v) && (v < r.min || v > r.max || v != std::floor(v)))
@@ -139,10 +145,11 @@ void checkDirection(Checker& check, const std::string& path, const Point2& p) {
     // The normal is normalised on load: a length that squares to zero or to infinity would
     // make it NaN, so its length must be representable (its bound is checked before this).
     const double length = std::hypot(p[0], p[1]);
-    if (p[0] == 0.0 && p[1] == 0.0) check.fail(path, "must be non-zero");
+    if (p[0] == 0.0 && p[1] == 0.0)
+        check.fail(path, "must be non-zero");
     else if (std::isfinite(length) && length < L::kMinNormalLength)
-        check.fail(path, "is too short to give a direction (length " + fmt(length) +
-                             "; at least " + fmt(L::kMinNormalLength) + ")");
+        check.fail(path, "is too short to give a direction (length " + fmt(length) + "; at least " +
+                             fmt(L::kMinNormalLength) + ")");
 }
 
 // The contact solver's settings (engine-defined); others are ignored like any unknown key.
@@ -177,9 +184,12 @@ void checkFields(Checker& check, const std::string& path, const D& d) {
                                          std::is_same_v<V, std::optional<Point2>> ||
                                          std::is_same_v<V, std::array<int, 2>>) {
                         const auto& pair = [&]() -> const auto& {
-                            if constexpr (std::is_same_v<V, std::optional<Point2>>) return *v;
-                            else return v;
-                        }();
+                            if constexpr (std::is_same_v<V, std::optional<Point2>>)
+                                return *v;
+                            else
+                                return v;
+                        }
+                        ();
                         for (std::size_t k = 0; k < 2; ++k)
                             checkNumber(check, here + "[" + std::to_string(k) + "]", pair[k],
                                         f.range);
@@ -205,10 +215,18 @@ void checkFields(Checker& check, const std::string& path, const D& d) {
 }
 }  // namespace
 
-std::string particleId(const SceneDesc& s, std::size_t i) { return defaultOr(s.particles[i].id, "p", i); }
-std::string boxId(const SceneDesc& s, std::size_t i) { return defaultOr(s.boxes[i].id, "b", i); }
-std::string planeId(const SceneDesc& s, std::size_t i) { return defaultOr(s.planes[i].id, "plane", i); }
-std::string springId(const SceneDesc& s, std::size_t i) { return defaultOr(s.springs[i].id, "s", i); }
+std::string particleId(const SceneDesc& s, std::size_t i) {
+    return defaultOr(s.particles[i].id, "p", i);
+}
+std::string boxId(const SceneDesc& s, std::size_t i) {
+    return defaultOr(s.boxes[i].id, "b", i);
+}
+std::string planeId(const SceneDesc& s, std::size_t i) {
+    return defaultOr(s.planes[i].id, "plane", i);
+}
+std::string springId(const SceneDesc& s, std::size_t i) {
+    return defaultOr(s.springs[i].id, "s", i);
+}
 std::string clothNodeId(const std::string& clothId, int i, int j) {
     return clothId + "[" + std::to_string(i) + "," + std::to_string(j) + "]";
 }
@@ -235,18 +253,23 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     // hang (the limits are documented in docs/scene-format.md).
     long long clothNodes = 0;
     for (const ClothDesc& cl : scene.cloths)
-        clothNodes += static_cast<long long>(std::max(0, cl.resolution[0])) * std::max(0, cl.resolution[1]);
+        clothNodes +=
+            static_cast<long long>(std::max(0, cl.resolution[0])) * std::max(0, cl.resolution[1]);
     const long long particleCount = static_cast<long long>(scene.particles.size()) + clothNodes;
     if (particleCount > SceneLimits::kMaxParticles)
         check.fail(std::string(scene.cloths.empty() ? key::particles : key::cloths),
-                   "the scene has " + std::to_string(particleCount) + " particles (cloth nodes included); at most " +
+                   "the scene has " + std::to_string(particleCount) +
+                       " particles (cloth nodes included); at most " +
                        std::to_string(SceneLimits::kMaxParticles) + " are allowed");
     if (static_cast<long long>(scene.boxes.size()) > SceneLimits::kMaxBoxes)
-        check.fail(std::string(key::boxes), "at most " + std::to_string(SceneLimits::kMaxBoxes) + " boxes are allowed");
+        check.fail(std::string(key::boxes),
+                   "at most " + std::to_string(SceneLimits::kMaxBoxes) + " boxes are allowed");
     if (static_cast<long long>(scene.springs.size()) > SceneLimits::kMaxSprings)
-        check.fail(std::string(key::springs), "at most " + std::to_string(SceneLimits::kMaxSprings) + " springs are allowed");
+        check.fail(std::string(key::springs),
+                   "at most " + std::to_string(SceneLimits::kMaxSprings) + " springs are allowed");
     if (static_cast<long long>(scene.planes.size()) > SceneLimits::kMaxPlanes)
-        check.fail(std::string(key::planes), "at most " + std::to_string(SceneLimits::kMaxPlanes) + " planes are allowed");
+        check.fail(std::string(key::planes),
+                   "at most " + std::to_string(SceneLimits::kMaxPlanes) + " planes are allowed");
     if (!issues.empty() && (particleCount > SceneLimits::kMaxParticles)) return issues;
 
     // ids: unique across the scene (cloth node ids included); springs may refer to particles,
@@ -260,7 +283,8 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
                 check.fail(path, "the default id \"" + id + "\" is already used by " + it->second +
                                      "; give this object an id");
             else
-                check.fail(join(path, key::id), "duplicate id \"" + id + "\" (also used by " + it->second + ")");
+                check.fail(join(path, key::id),
+                           "duplicate id \"" + id + "\" (also used by " + it->second + ")");
         }
         if (body) bodies.insert(id);
     };
@@ -278,8 +302,10 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     for (std::size_t c = 0; c < scene.cloths.size(); ++c) {
         const ClothDesc& cl = scene.cloths[c];
         const std::string path = at(key::cloths, c);
-        if (cl.id.empty()) check.fail(join(path, key::id), "is required");
-        else claim(path, cl.id, false, false);
+        if (cl.id.empty())
+            check.fail(join(path, key::id), "is required");
+        else
+            claim(path, cl.id, false, false);
         checkFields(check, path, cl);
         const std::string pinned = join(path, key::pinned);
         if (const auto* mode = std::get_if<std::string>(&cl.pinned)) {
@@ -291,10 +317,10 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
             for (std::size_t k = 0; k < nodes.size(); ++k) {
                 const auto [i, j] = nodes[k];
                 if (i < 0 || i >= cl.resolution[0] || j < 0 || j >= cl.resolution[1])
-                    check.fail(at(pinned, k),
-                               "node [" + std::to_string(i) + "," + std::to_string(j) +
-                                   "] is outside the " + std::to_string(cl.resolution[0]) + "x" +
-                                   std::to_string(cl.resolution[1]) + " grid");
+                    check.fail(at(pinned, k), "node [" + std::to_string(i) + "," +
+                                                  std::to_string(j) + "] is outside the " +
+                                                  std::to_string(cl.resolution[0]) + "x" +
+                                                  std::to_string(cl.resolution[1]) + " grid");
             }
         }
         if (!cl.id.empty() && cl.resolution[0] >= 2 && cl.resolution[1] >= 2)
@@ -316,10 +342,14 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
                                       "; springs attach to particles, boxes and cloth nodes");
         };
         const std::string a = join(path, key::a), b = join(path, key::b);
-        if (s.a.empty()) check.fail(a, "is required");
-        else reference(a, s.a);
-        if (s.b && s.anchor) check.fail(path, "has both b and anchor; give one");
-        else if (!s.b && !s.anchor) check.fail(path, "needs either b (an object id) or anchor [x, y]");
+        if (s.a.empty())
+            check.fail(a, "is required");
+        else
+            reference(a, s.a);
+        if (s.b && s.anchor)
+            check.fail(path, "has both b and anchor; give one");
+        else if (!s.b && !s.anchor)
+            check.fail(path, "needs either b (an object id) or anchor [x, y]");
         if (s.b) reference(b, *s.b);
         if (s.b && *s.b == s.a) check.fail(b, "must differ from a");
         checkFields(check, path, s);

@@ -135,9 +135,9 @@ struct PlaneDesc {
 struct SpringDesc {
     std::string id;  // empty = default "s<index>"
     std::string a;
-    std::optional<std::string> b;     // object id, or
-    std::optional<Point2> anchor;     // a fixed world point
-    Point2 aPoint{0.0, 0.0};          // attachment in a box's own frame
+    std::optional<std::string> b;  // object id, or
+    std::optional<Point2> anchor;  // a fixed world point
+    Point2 aPoint{0.0, 0.0};       // attachment in a box's own frame
     Point2 bPoint{0.0, 0.0};
     double stiffness = 0.0;
     double damping = 0.0;
@@ -198,14 +198,14 @@ struct SceneLimits {
     // seconds; these bounds are a million times past that, yet keep every product the engine
     // forms (m·v², k·x², G·M·m/r) far inside the double range, so a typo such as 1e300 is
     // reported at its JSON path instead of surfacing as an infinity somewhere in a step.
-    static constexpr double kMaxLength = 1e6;        // m: coordinates, sizes, radii, lengths
-    static constexpr double kMaxSpeed = 1e6;         // m/s, and rad/s for angular velocities
-    static constexpr double kMaxAngle = 1e6;         // rad
-    static constexpr double kMaxAcceleration = 1e6;  // m/s²: gravity's g
-    static constexpr double kMinMass = 1e-12;        // kg: below it 1/m leaves the safe range
-    static constexpr double kMaxMass = 1e12;         // kg (kg/m² for densities)
+    static constexpr double kMaxLength = 1e6;          // m: coordinates, sizes, radii, lengths
+    static constexpr double kMaxSpeed = 1e6;           // m/s, and rad/s for angular velocities
+    static constexpr double kMaxAngle = 1e6;           // rad
+    static constexpr double kMaxAcceleration = 1e6;    // m/s²: gravity's g
+    static constexpr double kMinMass = 1e-12;          // kg: below it 1/m leaves the safe range
+    static constexpr double kMaxMass = 1e12;           // kg (kg/m² for densities)
     static constexpr double kMaxAttractorMass = 1e30;  // kg: fixed attractors may be stars
-    static constexpr double kMinBoxSize = 1e-6;      // m: a box's moment of inertia ∝ size²
+    static constexpr double kMinBoxSize = 1e-6;        // m: a box's moment of inertia ∝ size²
     static constexpr double kMinNormalLength = 1e-12;
     static constexpr double kMaxCoefficient = 1e12;  // stiffness, damping, drag, G, k, ρ, …
     static constexpr double kMaxCharge = 1e6;        // C

@@ -1,6 +1,5 @@
 #include "physics/scene/SceneLibrary.h"
 
-
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -62,19 +61,22 @@ SceneDesc pyramid(int rows) {
 }
 
 SceneDesc tower(int count) {
-    SceneDesc s = contactScene(name("Tower of ", count) + " boxes",
-                               "A single column of 1 m boxes. Tall towers are where solvers drift.");
+    SceneDesc s =
+        contactScene(name("Tower of ", count) + " boxes",
+                     "A single column of 1 m boxes. Tall towers are where solvers drift.");
     s.planes.push_back(ground());
     for (int i = 0; i < count; ++i) s.boxes.push_back(box(name("t", i), 0.0, 0.5 + i, 1.0, 1.0));
     return s;
 }
 
 SceneDesc stack(const std::vector<double>& masses) {
-    SceneDesc s = contactScene("Heavy on light", "Boxes of very different masses stacked, the "
-                                                 "heaviest on top: a classic solver failure.");
+    SceneDesc s = contactScene("Heavy on light",
+                               "Boxes of very different masses stacked, the "
+                               "heaviest on top: a classic solver failure.");
     s.planes.push_back(ground());
     for (std::size_t i = 0; i < masses.size(); ++i) {
-        BoxDesc b = box(name("m", static_cast<int>(i)), 0.0, 0.5 + static_cast<double>(i), 1.0, 1.0);
+        BoxDesc b =
+            box(name("m", static_cast<int>(i)), 0.0, 0.5 + static_cast<double>(i), 1.0, 1.0);
         b.mass = masses[i];
         s.boxes.push_back(b);
     }
@@ -82,7 +84,8 @@ SceneDesc stack(const std::vector<double>& masses) {
 }
 
 SceneDesc bigOnSmall(double ratio) {
-    SceneDesc s = contactScene("Big on small", "A 2 m box far heavier than the 0.5 m box under it.");
+    SceneDesc s =
+        contactScene("Big on small", "A 2 m box far heavier than the 0.5 m box under it.");
     s.planes.push_back(ground());
     BoxDesc small = box("small", 0.0, 0.25, 0.5, 0.5);
     small.mass = 1.0;
@@ -93,8 +96,9 @@ SceneDesc bigOnSmall(double ratio) {
 }
 
 SceneDesc ballDrop(double height, double restitution) {
-    SceneDesc s = contactScene("Bouncing ball", "A ball dropped on the floor. With restitution e it "
-                                                "rises to e² of its drop height.");
+    SceneDesc s = contactScene("Bouncing ball",
+                               "A ball dropped on the floor. With restitution e it "
+                               "rises to e² of its drop height.");
     // Velocity Verlet is exact in free fall, so the rebound shows the contact law alone;
     // symplectic Euler's own flight error at dt = 1/60 s would lower the top by v·h/2 (3 cm).
     s.simulation.integrator = "velocity_verlet";
@@ -109,8 +113,9 @@ SceneDesc ballDrop(double height, double restitution) {
 }
 
 SceneDesc incline(double degrees, double friction) {
-    SceneDesc s = contactScene("Box on an incline", "A box on a slope: it holds when tan θ ≤ μ, "
-                                                    "else it slides with a = g·(sin θ − μ·cos θ).");
+    SceneDesc s = contactScene("Box on an incline",
+                               "A box on a slope: it holds when tan θ ≤ μ, "
+                               "else it slides with a = g·(sin θ − μ·cos θ).");
     const double theta = degrees * std::numbers::pi / 180.0;
     PlaneDesc slope;
     slope.id = "slope";
@@ -126,8 +131,9 @@ SceneDesc incline(double degrees, double friction) {
 }
 
 SceneDesc elasticGas(int count, unsigned seed) {
-    SceneDesc s = contactScene("Elastic gas", "Disks with restitution 1 and no friction in a closed "
-                                              "box: the kinetic energy stays constant.");
+    SceneDesc s = contactScene("Elastic gas",
+                               "Disks with restitution 1 and no friction in a closed "
+                               "box: the kinetic energy stays constant.");
     s.effects.gravity.reset();
     s.effects.particleCollisions = ParticleCollisionsDesc{1.0};
     // e = 1: every impact bounces, however slow (the restitution threshold scales with 1 − e).
@@ -163,8 +169,9 @@ SceneDesc elasticGas(int count, unsigned seed) {
 }
 
 SceneDesc newtonsCradle(int count, double speed) {
-    SceneDesc s = contactScene("Newton's cradle", "Touching balls in a row: the momentum of the "
-                                                  "first passes down the row to the last.");
+    SceneDesc s = contactScene("Newton's cradle",
+                               "Touching balls in a row: the momentum of the "
+                               "first passes down the row to the last.");
     s.effects.gravity.reset();
     s.effects.particleCollisions = ParticleCollisionsDesc{1.0};
     // A cradle swings slowly: every impact must bounce, not only those above 1 m/s.
@@ -183,8 +190,9 @@ SceneDesc newtonsCradle(int count, double speed) {
 }
 
 SceneDesc bullet(double speed) {
-    SceneDesc s = contactScene("Bullet and thin wall", "A small fast disk against a thin wall: "
-                                                       "it must not tunnel through.");
+    SceneDesc s = contactScene("Bullet and thin wall",
+                               "A small fast disk against a thin wall: "
+                               "it must not tunnel through.");
     s.effects.gravity.reset();
     BoxDesc wall = box("wall", 5.0, 0.0, 0.1, 4.0);
     wall.isStatic = true;
@@ -246,8 +254,9 @@ SceneDesc clusteredBodies(int count, unsigned seed) {
 SceneDesc cloth(int n, double structuralStiffness) {
     SceneDesc s;
     s.name = name("Cloth ", n) + "x" + std::to_string(n);
-    s.description = "A square of cloth hanging from its top edge. Stiff springs at a large step: "
-                    "explicit methods blow up, implicit Euler stays calm.";
+    s.description =
+        "A square of cloth hanging from its top edge. Stiff springs at a large step: "
+        "explicit methods blow up, implicit Euler stays calm.";
     s.simulation.integrator = "implicit_euler";
     s.simulation.dt = 1.0 / 60.0;
     s.effects.gravity = GravityDesc{};
@@ -269,15 +278,21 @@ const std::vector<NamedScene>& library() {
         {"pyramid", "20-row box pyramid", [] { return pyramid(20); }},
         {"pyramid40", "40-row box pyramid", [] { return pyramid(40); }},
         {"tower", "tower of 40 boxes", [] { return tower(40); }},
-        {"heavy-on-light", "1, 20 and 400 kg boxes stacked", [] { return stack({1, 20, 400}); }},
-        {"big-on-small", "2 m box 100× heavier than the 0.5 m box under it", [] { return bigOnSmall(100); }},
-        {"ball-drop", "ball with restitution 0.8 dropped from 1 m", [] { return ballDrop(1.0, 0.8); }},
+        {"heavy-on-light", "1, 20 and 400 kg boxes stacked",
+         [] {
+             return stack({1, 20, 400});
+         }},
+        {"big-on-small", "2 m box 100× heavier than the 0.5 m box under it",
+         [] { return bigOnSmall(100); }},
+        {"ball-drop", "ball with restitution 0.8 dropped from 1 m",
+         [] { return ballDrop(1.0, 0.8); }},
         {"incline", "box on a 20° incline, μ = 0.5", [] { return incline(20, 0.5); }},
         {"gas", "200 elastic disks in a box", [] { return elasticGas(200); }},
         {"cradle", "Newton's cradle of 5 balls", [] { return newtonsCradle(5, 1.0); }},
         {"bullet", "0.05 m disk at 200 m/s against a 0.1 m wall", [] { return bullet(200); }},
         {"dominoes", "row of 30 dominoes", [] { return dominoes(30); }},
-        {"cloth", "40 x 40 cloth, structural stiffness 2e4, implicit Euler", [] { return cloth(40, 2e4); }},
+        {"cloth", "40 x 40 cloth, structural stiffness 2e4, implicit Euler",
+         [] { return cloth(40, 2e4); }},
     };
     return scenes;
 }

@@ -8,8 +8,9 @@
 // its physics and drawing.
 //
 // Defaults are not repeated here: they are the Desc structs' member initialisers (SceneDesc.h),
-// reached through the same member pointers from a default-made Desc. Rules that tie fields together (a spring's
-// ends, unique ids, a cloth's pinning) stay in validateScene(), which names them by these keys.
+// reached through the same member pointers from a default-made Desc. Rules that tie fields together
+// (a spring's ends, unique ids, a cloth's pinning) stay in validateScene(), which names them by
+// these keys.
 
 #include "physics/core/EffectNames.h"
 #include "physics/scene/SceneDesc.h"
@@ -160,10 +161,18 @@ struct Range {
     bool lowestExcluded() const;
 };
 
-constexpr Range positive(double max, double min = 0.0) { return {Bound::Positive, max, min}; }
-constexpr Range nonNegative(double max) { return {Bound::NonNegative, max, 0.0}; }
-constexpr Range symmetric(double max) { return {Bound::Symmetric, max, 0.0}; }
-constexpr Range unitInterval() { return {Bound::UnitInterval, 1.0, 0.0}; }
+constexpr Range positive(double max, double min = 0.0) {
+    return {Bound::Positive, max, min};
+}
+constexpr Range nonNegative(double max) {
+    return {Bound::NonNegative, max, 0.0};
+}
+constexpr Range symmetric(double max) {
+    return {Bound::Symmetric, max, 0.0};
+}
+constexpr Range unitInterval() {
+    return {Bound::UnitInterval, 1.0, 0.0};
+}
 
 // The property editor's view of a field, where it differs from the format's: a spin box range
 // that fits the classroom (the format's bounds are a million times past it), the decimals
@@ -190,8 +199,8 @@ template <typename D>
 using Member = std::variant<double D::*, int D::*, bool D::*, std::string D::*, Point2 D::*,
                             std::array<int, 2> D::*, std::optional<double> D::*,
                             std::optional<std::string> D::*, std::optional<Point2> D::*,
-                            ClothStiffnessDesc D::*, std::vector<AttractorDesc> D::*,
-                            Pinning D::*, std::map<std::string, double> D::*>;
+                            ClothStiffnessDesc D::*, std::vector<AttractorDesc> D::*, Pinning D::*,
+                            std::map<std::string, double> D::*>;
 
 template <typename D>
 struct Field {
@@ -296,8 +305,10 @@ bool isPresent(const Field<D>& f, const D& d) {
     if (f.present) return f.present(d);
     return std::visit(
         [&]<typename T>(T D::*m) {
-            if constexpr (requires { (d.*m).has_value(); }) return (d.*m).has_value();
-            else return true;
+            if constexpr (requires { (d.*m).has_value(); })
+                return (d.*m).has_value();
+            else
+                return true;
         },
         f.member);
 }

@@ -6,8 +6,8 @@
 // object that exists in both worlds continues where it was, and a new one starts from its
 // setup values.
 
-#include "physics/world/World.h"
 #include "physics/scene/SceneDesc.h"
+#include "physics/world/World.h"
 
 #include <string>
 #include <unordered_set>

@@ -68,7 +68,8 @@ DivergenceGuard::Verdict DivergenceGuard::judge(const EnergyLedger& ledger, cons
     growthStreak_ = growing ? growthStreak_ + 1 : 0;
     previousDrift_ = drift;
     if (growthStreak_ >= kStreak) return Verdict::RestoreRunawayStart;
-    if (drift > kAbsurd * (energyScale_ + std::abs(ledger.workNc))) return Verdict::RestoreFrameStart;
+    if (drift > kAbsurd * (energyScale_ + std::abs(ledger.workNc)))
+        return Verdict::RestoreFrameStart;
     return Verdict::Good;
 }
 

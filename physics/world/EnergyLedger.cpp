@@ -29,8 +29,8 @@ double potentialEnergy(const std::vector<std::unique_ptr<Effect>>& effects, cons
     double energy = 0.0;
     for (const auto& e : effects) {
         double fromMoment = 0.0;
-        energy += e->potentialFromMassMoment(massMoment, fromMoment) ? fromMoment
-                                                                     : e->potentialEnergy(q);
+        energy +=
+            e->potentialFromMassMoment(massMoment, fromMoment) ? fromMoment : e->potentialEnergy(q);
     }
     return energy;
 }

@@ -15,8 +15,8 @@ public:
     // The estimated local error of one step h from (q, u) at t, max over position coordinates
     // (m, or rad for an angle): the difference of the two answers divided by (1 − 2^−p) for a
     // method of order p; ∞ when the method fails. The system's counters are the caller's to keep.
-    double estimate(OdeSystem& system, const Integrator& running, double t, double h,
-                    const Vec& q, const Vec& u);
+    double estimate(OdeSystem& system, const Integrator& running, double t, double h, const Vec& q,
+                    const Vec& u);
 
 private:
     std::unique_ptr<Integrator> method_;

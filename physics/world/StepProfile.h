@@ -18,7 +18,7 @@ struct StepProfile {
         "integrate", "collide", "solve contacts", "ledger", "guard"};
 
     std::array<double, kStageCount> seconds{};  // summed since the last reset
-    long long steps = 0;                         // steps timed since the last reset
+    long long steps = 0;                        // steps timed since the last reset
 
     double& operator[](StepStage stage) { return seconds[static_cast<int>(stage)]; }
     double operator[](StepStage stage) const { return seconds[static_cast<int>(stage)]; }

@@ -44,7 +44,9 @@ private:
 };
 }  // namespace
 
-World::World() { integrator_ = makeIntegrator(settings_.integrator); }
+World::World() {
+    integrator_ = makeIntegrator(settings_.integrator);
+}
 World::~World() = default;
 
 // ---- objects ------------------------------------------------------------------------------
@@ -501,8 +503,10 @@ void World::solveContacts(double h, int next) {
 
 StateSummary World::closeLedger(const StateSummary* summed) {
     const Vec& q = q_[current_];
-    const StateSummary summary = summed ? *summed : summarizeState(pairedDofs(), mass_, q, u_[current_]);
-    if (summary.finite) ledger_.close(summary, phasebox::potentialEnergy(effects_, q, summary.massMoment));
+    const StateSummary summary =
+        summed ? *summed : summarizeState(pairedDofs(), mass_, q, u_[current_]);
+    if (summary.finite)
+        ledger_.close(summary, phasebox::potentialEnergy(effects_, q, summary.massMoment));
     return summary;
 }
 
@@ -520,11 +524,14 @@ bool World::guard(const StateSummary& summary) {
     }
     Divergence d;
     d.time = clock_.time;
-    d.objectId = summary.finite ? mostEnergeticObject() : firstNonFinite(q_[current_], u_[current_]);
+    d.objectId =
+        summary.finite ? mostEnergeticObject() : firstNonFinite(q_[current_], u_[current_]);
     if (d.objectId.empty()) d.objectId = mostEnergeticObject();  // energy overflowed first
     d.what = what;
-    if (verdict == DivergenceGuard::Verdict::RestoreRunawayStart) restore(guard_.runawayStart(), false);
-    else restore(guard_.frameStart(), true);
+    if (verdict == DivergenceGuard::Verdict::RestoreRunawayStart)
+        restore(guard_.runawayStart(), false);
+    else
+        restore(guard_.frameStart(), true);
     d.restoredTime = clock_.time;
     divergence_ = d;
     return false;
@@ -561,8 +568,8 @@ double World::kineticEnergy() const {
 
 double World::potentialEnergy() const {
     const Vec& q = q_[current_];
-    return phasebox::potentialEnergy(effects_, q,
-                                     summarizeState(pairedDofs(), mass_, q, u_[current_]).massMoment);
+    return phasebox::potentialEnergy(
+        effects_, q, summarizeState(pairedDofs(), mass_, q, u_[current_]).massMoment);
 }
 
 double World::mechanicalEnergy(const Vec& q, const Vec& u) const {
@@ -577,9 +584,9 @@ double World::estimateLocalError() {
     // The estimate is not part of the run: its force evaluations and time are not booked.
     const long long evaluations = forceEvaluations_;
     const std::vector<double> seconds = effectSeconds_;
-    const double error = errorEstimator_.estimate(*this, *integrator_, clock_.time,
-                                                  settings_.dt / settings_.substeps,
-                                                  q_[current_], u_[current_]);
+    const double error =
+        errorEstimator_.estimate(*this, *integrator_, clock_.time,
+                                 settings_.dt / settings_.substeps, q_[current_], u_[current_]);
     forceEvaluations_ = evaluations;
     effectSeconds_ = seconds;
     return error;
@@ -651,10 +658,12 @@ void World::checkInvariants([[maybe_unused]] StepStage after) const {
     for (int k = 0; k < layout_.dynamicBoxes; ++k)
         if (bodies_.boxes[dynamicBoxes_[k]].dof != layout_.boxDof(k))
             fail("a box's dof does not match the layout");
-    if (!(mass_.array() > 0.0).all() || !mass_.allFinite()) fail("a mass is not positive and finite");
+    if (!(mass_.array() > 0.0).all() || !mass_.allFinite())
+        fail("a mass is not positive and finite");
     if (after == StepStage::Guard) {
         // Whatever the verdict, the state the world keeps is a good one.
-        if (!q_[current_].allFinite() || !u_[current_].allFinite()) fail("the kept state is not finite");
+        if (!q_[current_].allFinite() || !u_[current_].allFinite())
+            fail("the kept state is not finite");
     }
     if (after == StepStage::Ledger && std::isfinite(ledger_.drift)) {
         // Recomputed term by term, without the mass-moment shortcut.
@@ -664,9 +673,11 @@ void World::checkInvariants([[maybe_unused]] StepStage after) const {
         for (int i = 0; i < n; ++i) kinetic += 0.5 * mass_[i] * u[i] * u[i];
         double potential = 0.0;
         for (const auto& e : effects_) potential += e->potentialEnergy(q);
-        const double drift = kinetic + potential - ledger_.workNc - ledger_.correction - ledger_.initial;
-        const double scale = 1.0 + std::abs(kinetic) + std::abs(potential) + std::abs(ledger_.workNc) +
-                             std::abs(ledger_.correction) + std::abs(ledger_.initial);
+        const double drift =
+            kinetic + potential - ledger_.workNc - ledger_.correction - ledger_.initial;
+        const double scale = 1.0 + std::abs(kinetic) + std::abs(potential) +
+                             std::abs(ledger_.workNc) + std::abs(ledger_.correction) +
+                             std::abs(ledger_.initial);
         if (std::abs(kinetic - ledger_.kinetic) > 1e-9 * scale ||
             std::abs(drift - ledger_.drift) > 1e-9 * scale)
             fail("the energy ledger does not balance");

@@ -187,10 +187,10 @@ private:
     std::vector<std::unique_ptr<Effect>> effects_;
     SpringEffect* springEffect_ = nullptr;
     // Indices into effects_ by how the world calls them.
-    std::vector<int> forceEffects_;     // the force channel
-    std::vector<int> fieldEffects_;     // the acceleration-field channel
-    std::vector<int> nonConservative_;  // those with power to account
-    std::vector<double> effectSeconds_; // parallel to effects_
+    std::vector<int> forceEffects_;      // the force channel
+    std::vector<int> fieldEffects_;      // the acceleration-field channel
+    std::vector<int> nonConservative_;   // those with power to account
+    std::vector<double> effectSeconds_;  // parallel to effects_
 
     std::unique_ptr<ContactStage> contacts_;
     bool particleCollisions_ = false;

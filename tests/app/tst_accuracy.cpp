@@ -27,7 +27,6 @@ using namespace phasebox::testing;
 
 namespace {
 
-
 std::vector<std::string> fixedStepNames() {
     std::vector<std::string> names;
     for (const Theory& t : kFixedStep) names.emplace_back(t.name);

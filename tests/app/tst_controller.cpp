@@ -7,10 +7,10 @@
 #include "app/document/Document.h"
 #include "app/sim/Recorder.h"
 #include "app/sim/SimulationController.h"
-#include "physics/world/World.h"
 #include "physics/effects/MouseSpringEffect.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/StateTransfer.h"
+#include "physics/world/World.h"
 
 #include <QElapsedTimer>
 #include <QFile>

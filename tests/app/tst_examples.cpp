@@ -50,7 +50,9 @@ SceneDesc load(const QString& file) {
     return *result.scene;
 }
 
-std::unique_ptr<World> build(const SceneDesc& scene) { return buildWorld(scene).world; }
+std::unique_ptr<World> build(const SceneDesc& scene) {
+    return buildWorld(scene).world;
+}
 
 int particleIndex(const World& world, const std::string& id) {
     for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
@@ -116,21 +118,23 @@ void TestExamples::thereAreElevenExamplesCompiledInAndOnDisk() {
     const QStringList onDisk = sceneFiles(kDiskDir);
     qInfo("%lld scene files compiled in, %lld on disk", static_cast<long long>(compiledIn.size()),
           static_cast<long long>(onDisk.size()));
-    QVERIFY2(exampleFiles(kResourceDir).size() >= 11, qPrintable(compiledIn.join(QLatin1Char(' '))));
+    QVERIFY2(exampleFiles(kResourceDir).size() >= 11,
+             qPrintable(compiledIn.join(QLatin1Char(' '))));
     QVERIFY2(exampleFiles(kDiskDir).size() >= 11, qPrintable(onDisk.join(QLatin1Char(' '))));
     // The built app carries exactly the files of the source tree, byte for byte.
     QCOMPARE(compiledIn, onDisk);
     for (const QString& name : onDisk) {
         QFile a(kResourceDir + QLatin1Char('/') + name), b(kDiskDir + QLatin1Char('/') + name);
         QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
-        QVERIFY2(a.readAll() == b.readAll(), qPrintable(name + QStringLiteral(" differs; rebuild")));
+        QVERIFY2(a.readAll() == b.readAll(),
+                 qPrintable(name + QStringLiteral(" differs; rebuild")));
     }
-    for (const char* required :
-         {"spring-oscillator", "pendulum-stiff-spring", "spring-chain", "cloth-flag", "box-pyramid",
-          "newtons-cradle", "projectile-drag", "orbit", "elastic-gas", "box-incline",
-          "stiff-spring-blowup"})
-        QVERIFY2(compiledIn.contains(QString::fromLatin1(required) + QStringLiteral(".phasebox.json")),
-                 required);
+    for (const char* required : {"spring-oscillator", "pendulum-stiff-spring", "spring-chain",
+                                 "cloth-flag", "box-pyramid", "newtons-cradle", "projectile-drag",
+                                 "orbit", "elastic-gas", "box-incline", "stiff-spring-blowup"})
+        QVERIFY2(
+            compiledIn.contains(QString::fromLatin1(required) + QStringLiteral(".phasebox.json")),
+            required);
 }
 
 void TestExamples::everyExampleLoadsAndRoundTrips_data() {
@@ -146,12 +150,14 @@ void TestExamples::everyExampleLoadsAndRoundTrips() {
     const SceneDesc& scene = *loaded.scene;
     QVERIFY2(!QString::fromStdString(scene.name).trimmed().isEmpty(), "the scene has no name");
     const QString description = QString::fromStdString(scene.description);
-    QVERIFY2(description.size() >= 80, qPrintable(QStringLiteral("description too short: ") + description));
+    QVERIFY2(description.size() >= 80,
+             qPrintable(QStringLiteral("description too short: ") + description));
 
     // It builds, and everything it asks for is simulated.
     BuildResult built = buildWorld(scene);
     QVERIFY(built.world != nullptr);
-    QVERIFY2(built.unsupported.empty(), built.unsupported.empty() ? "" : built.unsupported.front().c_str());
+    QVERIFY2(built.unsupported.empty(),
+             built.unsupported.empty() ? "" : built.unsupported.front().c_str());
     QCOMPARE(built.world->settings().integrator, scene.simulation.integrator);
 
     // serialize → parse → serialize gives the same bytes.
@@ -161,7 +167,9 @@ void TestExamples::everyExampleLoadsAndRoundTrips() {
     QCOMPARE(SceneIO::serialize(*reparsed.scene), first);
 }
 
-void TestExamples::everyExampleRunsStably_data() { everyExampleLoadsAndRoundTrips_data(); }
+void TestExamples::everyExampleRunsStably_data() {
+    everyExampleLoadsAndRoundTrips_data();
+}
 
 // Each example runs with its own integrator for its duration (at most 10 s): no divergence,
 // finite state, nothing flying off, and an energy error that is small against the energy that
@@ -181,7 +189,8 @@ void TestExamples::everyExampleRunsStably() {
     for (const BoxDesc& b : scene.boxes)
         extent = std::max({extent, std::abs(b.position[0]), std::abs(b.position[1])});
     for (const ClothDesc& c : scene.cloths)
-        extent = std::max({extent, std::abs(c.origin[0]) + c.size[0], std::abs(c.origin[1]) + c.size[1]});
+        extent = std::max(
+            {extent, std::abs(c.origin[0]) + c.size[0], std::abs(c.origin[1]) + c.size[1]});
     QVERIFY2(extent <= 20.0, "objects should start within a classroom-sized view");
 
     double maxKinetic = world->energy().kinetic;
@@ -191,7 +200,8 @@ void TestExamples::everyExampleRunsStably() {
         const bool ok = world->step();
         QVERIFY2(ok, world->divergence() ? world->divergence()->message().c_str() : "step failed");
         QVERIFY(!world->divergence());
-        QVERIFY2(stateIsFinite(*world), qPrintable(QStringLiteral("non-finite at t = %1").arg(world->time())));
+        QVERIFY2(stateIsFinite(*world),
+                 qPrintable(QStringLiteral("non-finite at t = %1").arg(world->time())));
         const EnergyLedger& e = world->energy();
         maxKinetic = std::max(maxKinetic, e.kinetic);
         minPotential = std::min(minPotential, e.potential);
@@ -237,7 +247,8 @@ void TestExamples::springOscillatorHasPeriodTwoPiRootMOverK() {
             QVERIFY(world->step());
             const double now = world->particlePosition(i).y() - yEq;
             if (previous < 0.0 && now >= 0.0)
-                crossings.push_back(tPrevious + (world->time() - tPrevious) * (-previous) / (now - previous));
+                crossings.push_back(tPrevious +
+                                    (world->time() - tPrevious) * (-previous) / (now - previous));
             previous = now;
             tPrevious = world->time();
         }
@@ -245,7 +256,8 @@ void TestExamples::springOscillatorHasPeriodTwoPiRootMOverK() {
         const double measured = (crossings.back() - crossings.front()) / (crossings.size() - 1);
         qInfo("%s: m = %g kg, k = %.4g N/m: period %.5f s, 2*pi*sqrt(m/k) = %.5f s (%zu periods)",
               p.id.c_str(), m, k, measured, expected, crossings.size() - 1);
-        QVERIFY2(std::abs(measured - expected) < 0.01 * expected, qPrintable(QString::number(measured)));
+        QVERIFY2(std::abs(measured - expected) < 0.01 * expected,
+                 qPrintable(QString::number(measured)));
     }
 }
 
@@ -254,8 +266,10 @@ void TestExamples::springOscillatorHasPeriodTwoPiRootMOverK() {
 void TestExamples::orbitStaysCircularUnderRk4() {
     SceneDesc scene = load(QStringLiteral("orbit.phasebox.json"));
     QCOMPARE(scene.simulation.integrator, std::string("rk4"));
-    QVERIFY(scene.effects.newtonianGravity && scene.effects.newtonianGravity->attractors.size() == 1);
-    const double GM = scene.effects.newtonianGravity->G * scene.effects.newtonianGravity->attractors[0].mass;
+    QVERIFY(scene.effects.newtonianGravity &&
+            scene.effects.newtonianGravity->attractors.size() == 1);
+    const double GM =
+        scene.effects.newtonianGravity->G * scene.effects.newtonianGravity->attractors[0].mass;
     auto world = build(scene);
     const int ship = particleIndex(*world, "ship");
     const int comet = particleIndex(*world, "comet");
@@ -272,18 +286,21 @@ void TestExamples::orbitStaysCircularUnderRk4() {
     const double a = 1.0 / (2.0 / rc - vc * vc / GM);
     const double cometPeriod = 2.0 * kPi * std::pow(a, 1.5) / std::sqrt(GM);
 
-    double worstRadius = 0.0, worstEnergy = 0.0, cometMiss = std::numeric_limits<double>::infinity();
+    double worstRadius = 0.0, worstEnergy = 0.0,
+           cometMiss = std::numeric_limits<double>::infinity();
     while (world->time() < std::max(period, cometPeriod) + 0.1) {
         QVERIFY(world->step());
         if (world->time() <= period + 1e-9)
-            worstRadius = std::max(worstRadius, std::abs(world->particlePosition(ship).norm() / r0 - 1.0));
+            worstRadius =
+                std::max(worstRadius, std::abs(world->particlePosition(ship).norm() / r0 - 1.0));
         worstEnergy = std::max(worstEnergy, std::abs(world->energy().drift / e0));
         if (std::abs(world->time() - cometPeriod) < 0.5 * scene.simulation.dt)
             cometMiss = (world->particlePosition(comet) - cometStart).norm();
     }
-    qInfo("rk4: ship radius within %.2e of r0 over one period (%.3f s), relative energy drift %.2e, "
-          "comet back within %.2e m of its start after its period %.3f s",
-          worstRadius, period, worstEnergy, cometMiss, cometPeriod);
+    qInfo(
+        "rk4: ship radius within %.2e of r0 over one period (%.3f s), relative energy drift %.2e, "
+        "comet back within %.2e m of its start after its period %.3f s",
+        worstRadius, period, worstEnergy, cometMiss, cometPeriod);
     QVERIFY(worstRadius < 0.01);
     QVERIFY(worstEnergy < 0.01);
     QVERIFY(cometMiss < 0.02 * a);
@@ -298,7 +315,8 @@ void TestExamples::orbitGainsEnergyUnderExplicitEuler() {
     auto world = build(scene);
     const int ship = particleIndex(*world, "ship");
     const double r0 = world->particlePosition(ship).norm();
-    const double GM = scene.effects.newtonianGravity->G * scene.effects.newtonianGravity->attractors[0].mass;
+    const double GM =
+        scene.effects.newtonianGravity->G * scene.effects.newtonianGravity->attractors[0].mass;
     const double period = 2.0 * kPi * std::pow(r0, 1.5) / std::sqrt(GM);
     const double e0 = world->energy().kinetic + world->energy().potential;
     QVERIFY(runTo(*world, period));
@@ -307,9 +325,10 @@ void TestExamples::orbitGainsEnergyUnderExplicitEuler() {
     QVERIFY(runTo(*world, 2.0 * period));
     const double drift2 = world->energy().drift;
     const double r2 = world->particlePosition(ship).norm();
-    qInfo("explicit Euler: drift %.4f J after one period, %.4f J after two (|E0| = %.3f J); ship "
-          "radius %.3f -> %.3f -> %.3f m",
-          drift1, drift2, std::abs(e0), r0, r1, r2);
+    qInfo(
+        "explicit Euler: drift %.4f J after one period, %.4f J after two (|E0| = %.3f J); ship "
+        "radius %.3f -> %.3f -> %.3f m",
+        drift1, drift2, std::abs(e0), r0, r1, r2);
     QVERIFY(drift1 > 0.01 * std::abs(e0));
     QVERIFY(drift2 > drift1 + 0.01 * std::abs(e0));
     QVERIFY(r1 > 1.02 * r0);
@@ -349,10 +368,11 @@ void TestExamples::stiffSpringStaysBoundedUnderImplicitEuler() {
         highest = std::max(highest, world->energy().kinetic + world->energy().potential);
         longest = std::max(longest, (world->particlePosition(0) - anchor).norm());
     }
-    qInfo("implicit Euler: energy %.4f J at the start, at most %.4f J, %.4f J after %.0f s; longest "
-          "spring %.4f m (rest %.2f m)",
-          e0, highest, world->energy().kinetic + world->energy().potential, world->time(), longest,
-          *spring.restLength);
+    qInfo(
+        "implicit Euler: energy %.4f J at the start, at most %.4f J, %.4f J after %.0f s; longest "
+        "spring %.4f m (rest %.2f m)",
+        e0, highest, world->energy().kinetic + world->energy().potential, world->time(), longest,
+        *spring.restLength);
     QVERIFY(highest <= e0 + 1e-9 * std::abs(e0) + 1e-9);
     QVERIFY(longest < *spring.restLength * 1.01);
 }
@@ -369,7 +389,8 @@ void TestExamples::boxesOnTheInclineStickOrSlideAsTanThetaPredicts() {
         const BoxDesc* ramp = nullptr;
         double nearest = std::numeric_limits<double>::infinity();
         for (const BoxDesc& r : scene.boxes) {
-            const double d = std::hypot(r.position[0] - box.position[0], r.position[1] - box.position[1]);
+            const double d =
+                std::hypot(r.position[0] - box.position[0], r.position[1] - box.position[1]);
             if (r.isStatic && d < nearest) nearest = d, ramp = &r;
         }
         QVERIFY(ramp != nullptr);
@@ -377,7 +398,8 @@ void TestExamples::boxesOnTheInclineStickOrSlideAsTanThetaPredicts() {
         const double theta = std::abs(ramp->angle);
         const double mu = std::sqrt(box.friction * ramp->friction);
         const bool sticks = std::tan(theta) < mu;
-        QVERIFY2(std::abs(std::tan(theta) - mu) > 0.1, "too close to the threshold for a clear lesson");
+        QVERIFY2(std::abs(std::tan(theta) - mu) > 0.1,
+                 "too close to the threshold for a clear lesson");
         // Downhill unit vector along the ramp.
         Eigen::Vector2d down(std::cos(ramp->angle), std::sin(ramp->angle));
         if (down.y() > 0.0) down = -down;
@@ -391,10 +413,11 @@ void TestExamples::boxesOnTheInclineStickOrSlideAsTanThetaPredicts() {
         const double s1 = world->boxPosition(i).dot(down);
         const double measured = 2.0 * (s1 - s0 - v0 * t) / (t * t);
         const double expected = sticks ? 0.0 : g * (std::sin(theta) - mu * std::cos(theta));
-        qInfo("%s: theta = %.1f deg, tan = %.3f, mu = %.2f -> %s; moved %.4f m, a = %.4f m/s^2 "
-              "(expected %.4f)",
-              box.id.c_str(), theta * 180.0 / kPi, std::tan(theta), mu, sticks ? "sticks" : "slides",
-              s1 - s0, measured, expected);
+        qInfo(
+            "%s: theta = %.1f deg, tan = %.3f, mu = %.2f -> %s; moved %.4f m, a = %.4f m/s^2 "
+            "(expected %.4f)",
+            box.id.c_str(), theta * 180.0 / kPi, std::tan(theta), mu, sticks ? "sticks" : "slides",
+            s1 - s0, measured, expected);
         if (sticks) {
             ++sticking;
             QVERIFY(std::abs(s1 - s0) < 0.005);
@@ -415,12 +438,14 @@ void TestExamples::boxesOnTheInclineStickOrSlideAsTanThetaPredicts() {
 void TestExamples::elasticGasKeepsItsKineticEnergy() {
     const SceneDesc scene = load(QStringLiteral("elastic-gas.phasebox.json"));
     QVERIFY(!scene.effects.gravity && !scene.effects.drag);
-    QVERIFY(scene.effects.particleCollisions && scene.effects.particleCollisions->restitution == 1.0);
+    QVERIFY(scene.effects.particleCollisions &&
+            scene.effects.particleCollisions->restitution == 1.0);
     QVERIFY(scene.particles.size() >= 150);
     auto world = build(scene);
     const double k0 = world->energy().kinetic;
     double worst = 0.0;
-    while (world->time() < std::min(scene.simulation.duration, kMaxRun) - 0.5 * scene.simulation.dt) {
+    while (world->time() <
+           std::min(scene.simulation.duration, kMaxRun) - 0.5 * scene.simulation.dt) {
         QVERIFY(world->step());
         worst = std::max(worst, std::abs(world->energy().kinetic / k0 - 1.0));
     }
@@ -431,9 +456,10 @@ void TestExamples::elasticGasKeepsItsKineticEnergy() {
         lo = std::min(lo, world->particleVelocity(i).norm());
         hi = std::max(hi, world->particleVelocity(i).norm());
     }
-    qInfo("elastic gas: kinetic energy %.4f J, largest relative change %.2e over %.0f s; speeds "
-          "now from %.3f to %.3f m/s",
-          k0, worst, world->time(), lo, hi);
+    qInfo(
+        "elastic gas: kinetic energy %.4f J, largest relative change %.2e over %.0f s; speeds "
+        "now from %.3f to %.3f m/s",
+        k0, worst, world->time(), lo, hi);
     QVERIFY(worst < 1e-6);
     QVERIFY(hi - lo > 1.0);
 }
@@ -453,11 +479,11 @@ void TestExamples::flagSettlesAtTheWindAngle() {
     auto world = build(scene);
     QVERIFY(runTo(*world, std::min(scene.simulation.duration, kMaxRun)));
     const Cloth& c = world->cloths()[0];
-    const Eigen::Vector2d edge =
-        world->particlePosition(clothNode(c, c.nx - 1, 0)) - world->particlePosition(clothNode(c, 0, 0));
+    const Eigen::Vector2d edge = world->particlePosition(clothNode(c, c.nx - 1, 0)) -
+                                 world->particlePosition(clothNode(c, 0, 0));
     const double measured = std::atan2(-edge.y(), edge.x());
-    qInfo("flag: top edge %.2f deg below level, tan a = m g/(b w) gives %.2f deg", measured * 180.0 / kPi,
-          expected * 180.0 / kPi);
+    qInfo("flag: top edge %.2f deg below level, tan a = m g/(b w) gives %.2f deg",
+          measured * 180.0 / kPi, expected * 180.0 / kPi);
     QVERIFY(std::abs(measured - expected) < 1.0 * kPi / 180.0);
 }
 
@@ -470,7 +496,8 @@ void TestExamples::bouncingBallsReboundToESquaredH() {
     const int n = static_cast<int>(world->particles().size());
     std::vector<double> drop(n), top(n, -1.0);
     std::vector<bool> bounced(n, false), done(n, false);
-    for (int i = 0; i < n; ++i) drop[i] = world->particlePosition(i).y() - world->particles()[i].radius;
+    for (int i = 0; i < n; ++i)
+        drop[i] = world->particlePosition(i).y() - world->particles()[i].radius;
     while (world->time() < scene.simulation.duration - 0.5 * scene.simulation.dt) {
         QVERIFY(world->step());
         for (int i = 0; i < n; ++i) {

@@ -474,8 +474,8 @@ void TestSceneIO::errors_data() {
                                              msg("springs[0].stiffness", "is required")};
     QTest::newRow("solver iteratons")
         << scene(R"("simulation": {"solver": {"iteratons": 8, "engine_private_knob": 1}})")
-        << QStringList{msg("simulation.solver.iteratons",
-                           R"(unknown key; did you mean "iterations"?)")};
+        << QStringList{
+               msg("simulation.solver.iteratons", R"(unknown key; did you mean "iterations"?)")};
     QTest::newRow("gravty") << scene(R"("effects": {"gravty": {"g": [0, -1]}})")
                             << QStringList{msg("effects.gravty",
                                                R"(unknown key; did you mean "gravity"?)")};

@@ -96,8 +96,12 @@ inline void* countedAlignedNew(std::size_t size, std::align_val_t alignment) {
 }
 }  // namespace phasebox::bench::detail
 
-void* operator new(std::size_t size) { return phasebox::bench::detail::countedNew(size); }
-void* operator new[](std::size_t size) { return phasebox::bench::detail::countedNew(size); }
+void* operator new(std::size_t size) {
+    return phasebox::bench::detail::countedNew(size);
+}
+void* operator new[](std::size_t size) {
+    return phasebox::bench::detail::countedNew(size);
+}
 void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
     try {
         return phasebox::bench::detail::countedNew(size);
@@ -114,12 +118,28 @@ void* operator new(std::size_t size, std::align_val_t alignment) {
 void* operator new[](std::size_t size, std::align_val_t alignment) {
     return phasebox::bench::detail::countedAlignedNew(size, alignment);
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+    std::free(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+    std::free(p);
+}
 #endif  // !PHASEBOX_BENCH_NO_COUNTING

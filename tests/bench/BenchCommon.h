@@ -31,7 +31,9 @@ inline double median(std::vector<double> values) {
 
 // Tells the compiler that the memory behind p is read and written here, so stores into it
 // cannot be dropped and loops over it cannot be merged across calls.
-inline void clobber(const void* p) { __asm__ __volatile__("" : : "r"(p) : "memory"); }
+inline void clobber(const void* p) {
+    __asm__ __volatile__("" : : "r"(p) : "memory");
+}
 
 struct Options {
     int steps = 0;   // 0 = the program's default
@@ -63,13 +65,20 @@ inline Options parseOptions(int argc, char** argv, std::string_view usage,
     for (int i = 1; i < argc; ++i) {
         const std::string_view arg = argv[i];
         const bool extra = std::find(extraFlags.begin(), extraFlags.end(), arg) != extraFlags.end();
-        if (arg == "--steps") options.steps = positive(i);
-        else if (arg == "--repeat") options.repeat = positive(i);
-        else if (arg == "--json") options.json = true;
-        else if (extra && arg == "--breakdown") options.breakdown = true;
-        else if (extra && arg == "--quick") options.quick = true;
-        else if (arg == "--help" || arg == "-h") fail("");
-        else fail("unknown option " + std::string(arg));
+        if (arg == "--steps")
+            options.steps = positive(i);
+        else if (arg == "--repeat")
+            options.repeat = positive(i);
+        else if (arg == "--json")
+            options.json = true;
+        else if (extra && arg == "--breakdown")
+            options.breakdown = true;
+        else if (extra && arg == "--quick")
+            options.quick = true;
+        else if (arg == "--help" || arg == "-h")
+            fail("");
+        else
+            fail("unknown option " + std::string(arg));
     }
     return options;
 }
@@ -86,8 +95,10 @@ public:
     void value(std::string_view key, double v) {
         char buf[64];
         // JSON has no NaN or infinity: a figure that does not exist is null.
-        if (std::isfinite(v)) std::snprintf(buf, sizeof buf, "%.6g", v);
-        else std::snprintf(buf, sizeof buf, "null");
+        if (std::isfinite(v))
+            std::snprintf(buf, sizeof buf, "%.6g", v);
+        else
+            std::snprintf(buf, sizeof buf, "null");
         raw(key, buf);
     }
     void value(std::string_view key, long long v) { raw(key, std::to_string(v)); }

@@ -10,10 +10,10 @@
 
 #include "BenchCommon.h"
 
-#include "physics/world/World.h"
 #include "physics/effects/NewtonianGravityEffect.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
+#include "physics/world/World.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -27,10 +27,10 @@
 #include "BenchCommon.h"
 
 #include "physics/contacts/ContactStage.h"
-#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"
 #include "physics/scene/SceneLibrary.h"
+#include "physics/world/World.h"
 
 #include <box2d/box2d.h>
 
@@ -59,7 +59,9 @@ struct Box2dOptions {
     int positionIterations = 3;
 };
 
-b2Vec2 toB2(double x, double y) { return b2Vec2(static_cast<float>(x), static_cast<float>(y)); }
+b2Vec2 toB2(double x, double y) {
+    return b2Vec2(static_cast<float>(x), static_cast<float>(y));
+}
 
 class Box2dWorld {
 public:

@@ -56,9 +56,11 @@ Measurement measure(SceneDesc scene, int frames) {
     }
     m.msPerFrame = total / static_cast<double>(perFrame.size());
     const std::size_t first = std::min<std::size_t>(60, perFrame.size());
-    for (std::size_t k = 0; k < first; ++k) m.firstSecondMs += perFrame[k] / static_cast<double>(first);
+    for (std::size_t k = 0; k < first; ++k)
+        m.firstSecondMs += perFrame[k] / static_cast<double>(first);
     m.medianMsPerFrame = bench::median(perFrame);
-    m.cgPerStep = static_cast<double>(world->integrator().stats().linearIterations - cgBefore) / frames;
+    m.cgPerStep =
+        static_cast<double>(world->integrator().stats().linearIterations - cgBefore) / frames;
     return m;
 }
 
@@ -69,11 +71,16 @@ int main(int argc, char** argv) {
     double stiffness = 2e4;
     bool json = false, implicitOnly = false;
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
-        else if (!std::strcmp(argv[i], "--n") && i + 1 < argc) n = std::atoi(argv[++i]);
-        else if (!std::strcmp(argv[i], "--stiffness") && i + 1 < argc) stiffness = std::atof(argv[++i]);
-        else if (!std::strcmp(argv[i], "--json")) json = true;
-        else if (!std::strcmp(argv[i], "--implicit-only")) implicitOnly = true;
+        if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
+            frames = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--n") && i + 1 < argc)
+            n = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--stiffness") && i + 1 < argc)
+            stiffness = std::atof(argv[++i]);
+        else if (!std::strcmp(argv[i], "--json"))
+            json = true;
+        else if (!std::strcmp(argv[i], "--implicit-only"))
+            implicitOnly = true;
     }
 
     const SceneDesc implicitScene = scenes::cloth(n, stiffness);
@@ -89,9 +96,10 @@ int main(int argc, char** argv) {
     if (implicitOnly) explicitScene.simulation.substeps = 1;  // a token run, not reported
     const Measurement sym = measure(explicitScene, implicitOnly ? 1 : std::min(frames, 60));
     if (implicitOnly) {
-        std::printf("implicit_euler %d x %d, %d frames: %.2f ms per step (median %.2f, first second %.2f), "
-                    "%.1f CG iterations per step\n",
-                    n, n, frames, imp.msPerFrame, imp.medianMsPerFrame, imp.firstSecondMs, imp.cgPerStep);
+        std::printf(
+            "implicit_euler %d x %d, %d frames: %.2f ms per step (median %.2f, first second %.2f), "
+            "%.1f CG iterations per step\n",
+            n, n, frames, imp.msPerFrame, imp.medianMsPerFrame, imp.firstSecondMs, imp.cgPerStep);
         return 0;
     }
     const double framesPerSecond = 1.0 / implicitScene.simulation.dt;
@@ -99,22 +107,29 @@ int main(int argc, char** argv) {
     const double symCost = sym.msPerFrame * framesPerSecond / 1000.0;
 
     if (json) {
-        std::printf("{\"n\": %d, \"stiffness\": %g, \"omega_max\": %g, \"implicit_ms_per_step\": %g, \"implicit_median_ms_per_step\": %g, \"implicit_first_second_ms_per_step\": %g, "
-                    "\"implicit_cg_iterations_per_step\": %g, \"symplectic_substeps\": %d, "
-                    "\"symplectic_ms_per_frame\": %g, \"implicit_cpu_s_per_sim_s\": %g, "
-                    "\"symplectic_cpu_s_per_sim_s\": %g, \"symplectic_diverged\": %s}\n",
-                    n, stiffness, advice.omegaMax, imp.msPerFrame, imp.medianMsPerFrame, imp.firstSecondMs, imp.cgPerStep, sym.substeps,
-                    sym.msPerFrame, impCost, symCost, sym.diverged ? "true" : "false");
+        std::printf(
+            "{\"n\": %d, \"stiffness\": %g, \"omega_max\": %g, \"implicit_ms_per_step\": %g, "
+            "\"implicit_median_ms_per_step\": %g, \"implicit_first_second_ms_per_step\": %g, "
+            "\"implicit_cg_iterations_per_step\": %g, \"symplectic_substeps\": %d, "
+            "\"symplectic_ms_per_frame\": %g, \"implicit_cpu_s_per_sim_s\": %g, "
+            "\"symplectic_cpu_s_per_sim_s\": %g, \"symplectic_diverged\": %s}\n",
+            n, stiffness, advice.omegaMax, imp.msPerFrame, imp.medianMsPerFrame, imp.firstSecondMs,
+            imp.cgPerStep, sym.substeps, sym.msPerFrame, impCost, symCost,
+            sym.diverged ? "true" : "false");
         return 0;
     }
-    std::printf("bench_cloth: %d x %d cloth, 1 kg, structural stiffness %g, dt = 1/60, %d frames "
-                "(symplectic: %d)\n", n, n, stiffness, frames, std::min(frames, 60));
+    std::printf(
+        "bench_cloth: %d x %d cloth, 1 kg, structural stiffness %g, dt = 1/60, %d frames "
+        "(symplectic: %d)\n",
+        n, n, stiffness, frames, std::min(frames, 60));
     std::printf("stiffest mode omega = %.4g rad/s (omega*dt = %.1f)\n\n", advice.omegaMax,
                 advice.omegaMax * implicitScene.simulation.dt);
     std::printf("%-34s %12s %14s\n", "", "ms/frame", "CPU s per sim s");
-    std::printf("%-34s %12.2f %14.2f   (median %.2f ms, first second %.2f ms; %.1f CG iterations per step)\n",
-                "implicit_euler, 1 step", imp.msPerFrame, impCost, imp.medianMsPerFrame, imp.firstSecondMs,
-                imp.cgPerStep);
+    std::printf(
+        "%-34s %12.2f %14.2f   (median %.2f ms, first second %.2f ms; %.1f CG iterations per "
+        "step)\n",
+        "implicit_euler, 1 step", imp.msPerFrame, impCost, imp.medianMsPerFrame, imp.firstSecondMs,
+        imp.cgPerStep);
     std::printf("%-34s %12.2f %14.2f%s\n",
                 ("symplectic_euler, " + std::to_string(sym.substeps) + " sub-steps").c_str(),
                 sym.msPerFrame, symCost, sym.diverged ? "   (diverged!)" : "");

@@ -23,10 +23,10 @@
 #include "BenchCommon.h"
 
 #include "physics/contacts/ContactStage.h"
-#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"
 #include "physics/scene/SceneLibrary.h"
+#include "physics/world/World.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -49,8 +49,7 @@ constexpr int kStackWarmup = 300;  // 5 s: the stacks have settled, the warm sta
 
 // ---- the scenes built here ----------------------------------------------------------------
 
-PlaneDesc wall(const char* id, Point2 point, Point2 normal, double friction,
-               double restitution) {
+PlaneDesc wall(const char* id, Point2 point, Point2 normal, double friction, double restitution) {
     PlaneDesc p;
     p.id = id;
     p.point = point;
@@ -75,7 +74,7 @@ SceneDesc rain(int count) {
     std::mt19937_64 rng(kSeed);
     std::uniform_real_distribution<double> side(0.5, 1.0);
     std::uniform_real_distribution<double> tilt(-0.3, 0.3);
-    constexpr int kColumns = 24;  // the outermost boxes clear the walls
+    constexpr int kColumns = 24;      // the outermost boxes clear the walls
     constexpr double kSpacing = 1.2;  // wider than the largest box, so none starts touching
     for (int i = 0; i < count; ++i) {
         BoxDesc b;
@@ -137,16 +136,16 @@ struct SceneResult {
     const SceneSpec* spec = nullptr;
     int bodies = 0;
     int warmupSteps = 0;
-    double warmupPeakMs = 0.0, warmupPeakTime = 0.0;  // the slowest step while settling
-    double settledSpeed = 0.0;                        // largest |u| component after warm-up
-    double msPerStep = 0.0;                           // median over repeats
-    double timedPeakMs = 0.0;                         // slowest single timed step
-    double contactMsPerStep = 0.0;                    // median over repeats
-    double contactShare = 0.0;                        // median over repeats
-    long long constraints = 0, points = 0;            // after the timed steps
-    long long minConstraints = 0, maxConstraints = 0; // over the timed repeats
-    AllocationCounts allocations;                     // over all timed steps
-    AllocationCounts warmupAllocations;               // while settling (buffers growing)
+    double warmupPeakMs = 0.0, warmupPeakTime = 0.0;   // the slowest step while settling
+    double settledSpeed = 0.0;                         // largest |u| component after warm-up
+    double msPerStep = 0.0;                            // median over repeats
+    double timedPeakMs = 0.0;                          // slowest single timed step
+    double contactMsPerStep = 0.0;                     // median over repeats
+    double contactShare = 0.0;                         // median over repeats
+    long long constraints = 0, points = 0;             // after the timed steps
+    long long minConstraints = 0, maxConstraints = 0;  // over the timed repeats
+    AllocationCounts allocations;                      // over all timed steps
+    AllocationCounts warmupAllocations;                // while settling (buffers growing)
     long long timedSteps = 0;
     long long failedSteps = 0;
 };
@@ -248,39 +247,56 @@ void printTable(std::FILE* out, const std::vector<SceneResult>& results, int ste
         for (const SceneResult& r : results) std::fprintf(out, format, get(r));
         std::fprintf(out, "\n");
     };
-    row("bodies", [](const SceneResult& r) { return r.bodies; }, "%12d");
-    row("warm-up steps (until settled)", [](const SceneResult& r) { return r.warmupSteps; },
+    row(
+        "bodies", [](const SceneResult& r) { return r.bodies; }, "%12d");
+    row(
+        "warm-up steps (until settled)", [](const SceneResult& r) { return r.warmupSteps; },
         "%12d");
-    row("  largest |u| after warm-up", [](const SceneResult& r) { return r.settledSpeed; },
+    row(
+        "  largest |u| after warm-up", [](const SceneResult& r) { return r.settledSpeed; },
         "%12.3f");
-    row("  slowest warm-up step, ms", [](const SceneResult& r) { return r.warmupPeakMs; },
+    row(
+        "  slowest warm-up step, ms", [](const SceneResult& r) { return r.warmupPeakMs; },
         "%12.2f");
-    row("    at simulated time, s", [](const SceneResult& r) { return r.warmupPeakTime; },
+    row(
+        "    at simulated time, s", [](const SceneResult& r) { return r.warmupPeakTime; },
         "%12.2f");
-    row("ms per step (median)", [](const SceneResult& r) { return r.msPerStep; }, "%12.3f");
-    row("  slowest timed step, ms", [](const SceneResult& r) { return r.timedPeakMs; },
+    row(
+        "ms per step (median)", [](const SceneResult& r) { return r.msPerStep; }, "%12.3f");
+    row(
+        "  slowest timed step, ms", [](const SceneResult& r) { return r.timedPeakMs; }, "%12.3f");
+    row(
+        "  of which contacts, ms", [](const SceneResult& r) { return r.contactMsPerStep; },
         "%12.3f");
-    row("  of which contacts, ms", [](const SceneResult& r) { return r.contactMsPerStep; },
-        "%12.3f");
-    row("  contact share of the step", [](const SceneResult& r) { return 100.0 * r.contactShare; },
+    row(
+        "  contact share of the step", [](const SceneResult& r) { return 100.0 * r.contactShare; },
         "%11.1f%%");
-    row("contact constraints (pairs)", [](const SceneResult& r) { return r.constraints; },
+    row(
+        "contact constraints (pairs)", [](const SceneResult& r) { return r.constraints; },
         "%12lld");
-    row("  min..max over repeats: min", [](const SceneResult& r) { return r.minConstraints; },
+    row(
+        "  min..max over repeats: min", [](const SceneResult& r) { return r.minConstraints; },
         "%12lld");
-    row("                         max", [](const SceneResult& r) { return r.maxConstraints; },
+    row(
+        "                         max", [](const SceneResult& r) { return r.maxConstraints; },
         "%12lld");
-    row("contact points", [](const SceneResult& r) { return r.points; }, "%12lld");
-    row("heap allocations per timed step",
+    row(
+        "contact points", [](const SceneResult& r) { return r.points; }, "%12lld");
+    row(
+        "heap allocations per timed step",
         [](const SceneResult& r) { return double(r.allocations.total()) / r.timedSteps; },
         "%12.2f");
-    row("  operator new, total", [](const SceneResult& r) { return r.allocations.operatorNew; },
+    row(
+        "  operator new, total", [](const SceneResult& r) { return r.allocations.operatorNew; },
         "%12lld");
-    row("  malloc/calloc/realloc, total", [](const SceneResult& r) { return r.allocations.malloc; },
+    row(
+        "  malloc/calloc/realloc, total", [](const SceneResult& r) { return r.allocations.malloc; },
         "%12lld");
-    row("heap allocations during warm-up",
+    row(
+        "heap allocations during warm-up",
         [](const SceneResult& r) { return r.warmupAllocations.total(); }, "%12lld");
-    row("steps that reported divergence", [](const SceneResult& r) { return r.failedSteps; },
+    row(
+        "steps that reported divergence", [](const SceneResult& r) { return r.failedSteps; },
         "%12lld");
     if (!kCountsMalloc)
         std::fprintf(out, "(malloc not watched on this platform: Eigen allocations unseen)\n");
@@ -337,8 +353,10 @@ int main(int argc, char** argv) {
     std::vector<std::string> only;
     std::vector<char*> rest{argv[0]};
     for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--scene") == 0 && i + 1 < argc) only.emplace_back(argv[++i]);
-        else rest.push_back(argv[i]);
+        if (std::strcmp(argv[i], "--scene") == 0 && i + 1 < argc)
+            only.emplace_back(argv[++i]);
+        else
+            rest.push_back(argv[i]);
     }
     const Options options =
         parseOptions(static_cast<int>(rest.size()), rest.data(),
@@ -357,8 +375,8 @@ int main(int argc, char** argv) {
          0.0, false},
         {"rain1000", "1,000 boxes rained into a container", [] { return rain(1000); }, 360, 1200,
          0.05, false},
-        {"disks10000", "10,000 disks piled in a box", [] { return disks(10000); }, 240, 600,
-         0.05, true},
+        {"disks10000", "10,000 disks piled in a box", [] { return disks(10000); }, 240, 600, 0.05,
+         true},
     };
     for (const std::string& key : only) {
         const auto named = [&](const SceneSpec& s) { return key == s.key; };

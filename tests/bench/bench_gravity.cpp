@@ -15,9 +15,9 @@
 #include "AllocationCounter.h"
 #include "BenchCommon.h"
 
-#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"
+#include "physics/world/World.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -179,8 +179,7 @@ double passKineticChecked(const HandState& s) {
         twiceKinetic += m[i] * u[i] * u[i];
         check += q[i] * 0.0;
     }
-    return std::isfinite(twiceKinetic) && std::isfinite(check) ? 0.5 * twiceKinetic
-                                                               : std::nan("");
+    return std::isfinite(twiceKinetic) && std::isfinite(check) ? 0.5 * twiceKinetic : std::nan("");
 }
 
 // GravityEffect::potentialEnergy on the new state.
@@ -216,8 +215,7 @@ double passKineticCheckedLanes(const HandState& s) {
         c0 += Lanes::Map(q + i) * 0.0;
     }
     const double twiceKinetic = (k0 + k1).sum(), check = (c0 + c1).sum();
-    return std::isfinite(twiceKinetic) && std::isfinite(check) ? 0.5 * twiceKinetic
-                                                               : std::nan("");
+    return std::isfinite(twiceKinetic) && std::isfinite(check) ? 0.5 * twiceKinetic : std::nan("");
 }
 
 // Proposed GravityEffect::potentialEnergy: the mass moments Σm·x and Σm·y in the two lanes,
@@ -326,8 +324,10 @@ double modelStep(Model model, HandState& s, double h) {
         return result;
     }
     double result = 0.0;
-    if (model == Model::DoubleBuffered) passDoubleBuffered(s, h);
-    else passAccelerationAndUpdate(s, h);
+    if (model == Model::DoubleBuffered)
+        passDoubleBuffered(s, h);
+    else
+        passAccelerationAndUpdate(s, h);
     clobber(s.x1.data());
     clobber(s.v1.data());
     switch (model) {
@@ -376,7 +376,7 @@ struct SizeResult {
     int particles = 0;
     double engineNs = 0, handNs = 0, handDiagNs = 0;  // medians, ns per step per particle
     double engineSmoothNs = 0;  // of engineNs: the smooth step (World::integratorSeconds())
-    double handLiteralNs = 0;  // --breakdown only
+    double handLiteralNs = 0;   // --breakdown only
     double modelNs[std::size(kModels)] = {};
     long long failedSteps = 0;
     AllocationCounts allocations;  // over all timed engine steps of all repeats
@@ -489,47 +489,58 @@ void printTable(std::FILE* out, const std::vector<SizeResult>& results, int step
         for (const SizeResult& r : results) std::fprintf(out, format, get(r));
         std::fprintf(out, "\n");
     };
-    row("engine  World::step()", [](const SizeResult& r) { return r.engineNs; }, "%14.3f");
-    row("  of which smooth step (integrator+effects)",
+    row(
+        "engine  World::step()", [](const SizeResult& r) { return r.engineNs; }, "%14.3f");
+    row(
+        "  of which smooth step (integrator+effects)",
         [](const SizeResult& r) { return r.engineSmoothNs; }, "%14.3f");
-    row("  of which diagnostics and the rest",
+    row(
+        "  of which diagnostics and the rest",
         [](const SizeResult& r) { return r.engineNs - r.engineSmoothNs; }, "%14.3f");
-    row("hand loop", [](const SizeResult& r) { return r.handNs; }, "%14.3f");
-    row("hand loop + diagnostics (same pass)",
-        [](const SizeResult& r) { return r.handDiagNs; }, "%14.3f");
-    row("ratio engine / hand   (target <= 2)",
+    row(
+        "hand loop", [](const SizeResult& r) { return r.handNs; }, "%14.3f");
+    row(
+        "hand loop + diagnostics (same pass)", [](const SizeResult& r) { return r.handDiagNs; },
+        "%14.3f");
+    row(
+        "ratio engine / hand   (target <= 2)",
         [](const SizeResult& r) { return r.engineNs / r.handNs; }, "%13.2fx");
-    row("ratio engine / (hand + diagnostics)",
+    row(
+        "ratio engine / (hand + diagnostics)",
         [](const SizeResult& r) { return r.engineNs / r.handDiagNs; }, "%13.2fx");
-    row("engine heap allocations, timed steps",
+    row(
+        "engine heap allocations, timed steps",
         [](const SizeResult& r) { return r.allocations.total(); }, "%14lld");
-    row("  (timed engine steps)", [](const SizeResult& r) { return r.timedEngineSteps; },
+    row(
+        "  (timed engine steps)", [](const SizeResult& r) { return r.timedEngineSteps; }, "%14lld");
+    row(
+        "engine steps that reported divergence", [](const SizeResult& r) { return r.failedSteps; },
         "%14lld");
-    row("engine steps that reported divergence",
-        [](const SizeResult& r) { return r.failedSteps; }, "%14lld");
     if (!kCountsMalloc)
         std::fprintf(out, "(malloc not watched on this platform: Eigen allocations unseen)\n");
     if (breakdown) {
         std::fprintf(out, "\nbreakdown: hand-written models of the engine's passes\n");
-        row("hand loop, in place (the baseline)", [](const SizeResult& r) { return r.handNs; },
+        row(
+            "hand loop, in place (the baseline)", [](const SizeResult& r) { return r.handNs; },
             "%14.3f");
-        row("hand loop, literal v[i] += h*g; x[i] += h*v[i]",
+        row(
+            "hand loop, literal v[i] += h*g; x[i] += h*v[i]",
             [](const SizeResult& r) { return r.handLiteralNs; }, "%14.3f");
         for (std::size_t k = 0; k < std::size(kModels); ++k) {
             std::fprintf(out, "%-48s", kModels[k].label);
             for (const SizeResult& r : results) std::fprintf(out, "%14.3f", r.modelNs[k]);
             std::fprintf(out, "\n");
         }
-        row("engine World::step() (measured above)",
-            [](const SizeResult& r) { return r.engineNs; }, "%14.3f");
+        row(
+            "engine World::step() (measured above)", [](const SizeResult& r) { return r.engineNs; },
+            "%14.3f");
     }
     std::fprintf(out, "\n(checksums:");
     for (const SizeResult& r : results) std::fprintf(out, " %.6g", r.checksum);
     std::fprintf(out, ")\n");
 }
 
-std::string toJson(const std::vector<SizeResult>& results, int steps, int repeat,
-                   bool breakdown) {
+std::string toJson(const std::vector<SizeResult>& results, int steps, int repeat, bool breakdown) {
     Json json;
     json.beginObject();
     json.value("benchmark", "gravity");

@@ -27,10 +27,10 @@
 #include "AllocationCounter.h"
 #include "BenchCommon.h"
 
-#include "physics/world/World.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"
+#include "physics/world/World.h"
 
 #include <cstdio>
 #include <optional>
@@ -111,11 +111,11 @@ struct MethodResult {
     bool diverged = false;
     long long divergedAtStep = 0;  // 1-based, counting warm-up steps
     double divergedAtTime = 0.0;
-    std::string divergence;  // World::divergence()->what
+    std::string divergence;       // World::divergence()->what
     long long runawayAtStep = 0;  // kinetic energy first above 100 × kEnergyBound; 0 = never
     long long stepsRun = 0;       // by the first (horizon) run
-    int repeats = 0;          // repeats actually run (slow methods stop early)
-    double msPerStep = 0.0;   // median over repeats
+    int repeats = 0;              // repeats actually run (slow methods stop early)
+    double msPerStep = 0.0;       // median over repeats
     double evaluationsPerStep = 0.0;
     double linearSolvesPerStep = 0.0;
     double internalStepsPerStep = 0.0;  // accepted + rejected
@@ -140,7 +140,7 @@ struct Counters {
 struct Run {
     double seconds = 0.0;  // the timed steps
     int timed = 0;
-    Counters counts;       // over the timed steps
+    Counters counts;  // over the timed steps
     AllocationCounts allocations;
     long long stepsRun = 0;
     bool diverged = false;
@@ -218,10 +218,10 @@ MethodResult runMethod(const IntegratorInfo& info, const Config& config, int rep
         // Every repeat integrates the same trajectory from a fresh world, so repeats differ
         // only by timing noise; the first also looks further ahead for a divergence.
         const auto start = Clock::now();
-        const Run run = r == 0 ? runOnce(result.name, config, warmup,
-                                         std::max(timedEnd, config.horizonSteps),
-                                         kHorizonBudgetSeconds)
-                               : runOnce(result.name, config, warmup, timedEnd, 0.0);
+        const Run run =
+            r == 0 ? runOnce(result.name, config, warmup, std::max(timedEnd, config.horizonSteps),
+                             kHorizonBudgetSeconds)
+                   : runOnce(result.name, config, warmup, timedEnd, 0.0);
         spent += secondsBetween(start, Clock::now());
         if (r == 0) {
             result.stepsRun = run.stepsRun;
@@ -273,10 +273,14 @@ void printConfig(std::FILE* out, const Config& config, const std::vector<MethodR
                          r.divergedAtTime, r.divergence.c_str());
         } else {
             std::fprintf(out, "%11.4f %11.2f ", r.msPerStep, r.evaluationsPerStep);
-            if (r.implicit) std::fprintf(out, "%11.2f ", r.linearSolvesPerStep);
-            else std::fprintf(out, "%11s ", "-");
-            if (r.adaptive) std::fprintf(out, "%11.1f ", r.internalStepsPerStep);
-            else std::fprintf(out, "%11s ", "-");
+            if (r.implicit)
+                std::fprintf(out, "%11.2f ", r.linearSolvesPerStep);
+            else
+                std::fprintf(out, "%11s ", "-");
+            if (r.adaptive)
+                std::fprintf(out, "%11.1f ", r.internalStepsPerStep);
+            else
+                std::fprintf(out, "%11s ", "-");
             std::fprintf(out, "%11.1f  ok for %lld steps", r.allocationsPerStep, r.stepsRun);
             if (r.repeats < repeat) std::fprintf(out, " (%d repeats)", r.repeats);
         }
@@ -306,12 +310,11 @@ void writeConfigJson(Json& json, const Config& config, const std::vector<MethodR
         json.value("status", r.diverged ? "diverged" : "ok");
         json.value("ms_per_step", measured ? r.msPerStep : none);
         json.value("force_evaluations_per_step", measured ? r.evaluationsPerStep : none);
-        json.value("linear_solves_per_step", r.implicit && !r.diverged ? r.linearSolvesPerStep
-                                                                        : none);
+        json.value("linear_solves_per_step",
+                   r.implicit && !r.diverged ? r.linearSolvesPerStep : none);
         json.value("internal_steps_per_step",
                    r.adaptive && !r.diverged ? r.internalStepsPerStep : none);
-        json.value("rejected_steps_per_step", r.adaptive && !r.diverged ? r.rejectedPerStep
-                                                                         : none);
+        json.value("rejected_steps_per_step", r.adaptive && !r.diverged ? r.rejectedPerStep : none);
         json.value("allocations_per_step", r.diverged ? none : r.allocationsPerStep);
         json.value("repeats", r.repeats);
         json.value("steps_run", r.stepsRun);
@@ -345,8 +348,10 @@ int main(int argc, char** argv) {
 
     std::FILE* out = options.json ? stderr : stdout;
     std::fprintf(out, "bench_integrators: World::step() per integrator (ms per step)\n");
-    std::fprintf(out, "runaway watch: kinetic energy above 100x %g J (all mass falling the "
-                 "chain's length)\n", kEnergyBound);
+    std::fprintf(out,
+                 "runaway watch: kinetic energy above 100x %g J (all mass falling the "
+                 "chain's length)\n",
+                 kEnergyBound);
     Json json;
     json.beginObject();
     json.value("benchmark", "integrators");

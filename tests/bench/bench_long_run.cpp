@@ -6,9 +6,9 @@
 // Exit status 0 when both runs stay finite, never diverge and grow resident memory by less
 // than 1 MiB between the first and the last simulated minute; 1 otherwise.
 
-#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
+#include "physics/world/World.h"
 #include "tests/bench/BenchCommon.h"
 
 #include <unistd.h>

@@ -4,9 +4,9 @@
 
 #include <QByteArray>
 #include <QFile>
-#include <QTemporaryDir>
 #include <QProcess>
 #include <QStringList>
+#include <QTemporaryDir>
 
 #include <chrono>
 

@@ -18,7 +18,9 @@ namespace {
 
 using Result = phasebox::testing::CliResult;
 
-Result cli(const QStringList& args) { return phasebox::testing::runCli(args); }
+Result cli(const QStringList& args) {
+    return phasebox::testing::runCli(args);
+}
 
 // A unit harmonic oscillator: m = 1 on a spring k = 1 to the origin, x(0) = 1.
 const char* kOscillator = R"({
@@ -54,7 +56,9 @@ class TestCli : public QObject {
 
     QTemporaryDir dir_;
 
-    QString write(const QString& name, const char* text) { return phasebox::testing::writeFile(dir_, name, text); }
+    QString write(const QString& name, const char* text) {
+        return phasebox::testing::writeFile(dir_, name, text);
+    }
 
 private slots:
     void integratorsListsAllTen() {
@@ -62,21 +66,22 @@ private slots:
         QCOMPARE(r.status, 0);
         const QStringList lines = QString::fromUtf8(r.out).split('\n', Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 11);  // header + 10
-        const QStringList names{"explicit_euler", "symplectic_euler", "midpoint", "heun", "rk4",
-                                "velocity_verlet", "implicit_euler", "implicit_midpoint",
-                                "adaptive_euler", "rk45"};
+        const QStringList names{
+            "explicit_euler",  "symplectic_euler", "midpoint",          "heun",           "rk4",
+            "velocity_verlet", "implicit_euler",   "implicit_midpoint", "adaptive_euler", "rk45"};
         for (int i = 0; i < names.size(); ++i)
             QCOMPARE(lines[i + 1].split(' ', Qt::SkipEmptyParts).first(), names[i]);
-        QVERIFY(lines[5].contains(" 4 ") && lines[5].contains("explicit"));       // rk4
-        QVERIFY(lines[7].contains("implicit") && lines[7].contains(" no "));      // implicit_euler
-        QVERIFY(lines[2].contains(" yes "));                                       // symplectic_euler
+        QVERIFY(lines[5].contains(" 4 ") && lines[5].contains("explicit"));   // rk4
+        QVERIFY(lines[7].contains("implicit") && lines[7].contains(" no "));  // implicit_euler
+        QVERIFY(lines[2].contains(" yes "));                                  // symplectic_euler
     }
 
     void infoNamesEffectsAndObjects() {
         const Result r = cli({"info", write("mixed.json", kMixed)});
         QCOMPARE(r.status, 0);
         const QString text = QString::fromUtf8(r.out);
-        QVERIFY2(text.contains("effects that will run: gravity drag springs contacts"), qPrintable(text));
+        QVERIFY2(text.contains("effects that will run: gravity drag springs contacts"),
+                 qPrintable(text));
         QVERIFY(text.contains("symplectic_euler"));
         QVERIFY(text.contains("0.02"));
         QVERIFY(text.contains("cloths     1 (9 nodes"));
@@ -93,8 +98,10 @@ private slots:
         QCOMPARE(o["steps"].toInt(), 50);
         QCOMPARE(o["sim_time"].toDouble(), 1.0);
         QCOMPARE(o["diverged"].toBool(), false);
-        for (const char* key : {"median", "mean", "max"}) QVERIFY(o["step_ms"].toObject().contains(key));
-        for (const char* key : {"initial", "kinetic", "potential", "work_nc", "drift", "max_abs_drift", "correction"})
+        for (const char* key : {"median", "mean", "max"})
+            QVERIFY(o["step_ms"].toObject().contains(key));
+        for (const char* key :
+             {"initial", "kinetic", "potential", "work_nc", "drift", "max_abs_drift", "correction"})
             QVERIFY(o["energy"].toObject().contains(key));
         QStringList effects;
         for (const QJsonValue& e : o["effects"].toArray()) {
@@ -118,7 +125,8 @@ private slots:
         QTest::addColumn<QString>("scene");
         QTest::addColumn<QStringList>("stages");
         // Nothing can touch on the oscillator: no collide, no contact solve.
-        QTest::newRow("oscillator") << QString("oscillator") << QStringList{"integrate", "ledger", "guard"};
+        QTest::newRow("oscillator")
+            << QString("oscillator") << QStringList{"integrate", "ledger", "guard"};
         QTest::newRow("box pyramid")
             << QString("pyramid")
             << QStringList{"integrate", "collide", "solve contacts", "ledger", "guard"};
@@ -164,8 +172,8 @@ private slots:
     }
 
     void runOverridesSettings() {
-        const Result r = cli({"run", write("osc.json", kOscillator), "--json", "--integrator", "heun",
-                              "--dt", "0.05", "--substeps", "2", "--duration", "1"});
+        const Result r = cli({"run", write("osc.json", kOscillator), "--json", "--integrator",
+                              "heun", "--dt", "0.05", "--substeps", "2", "--duration", "1"});
         QCOMPARE(r.status, 0);
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
         QCOMPARE(o["integrator"].toString(), QString("heun"));
@@ -181,25 +189,30 @@ private slots:
         QFile f(csv);
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
-        QCOMPARE(lines.first(), QString("t,kinetic,potential,work_nc,drift,correction,constraint_error,p.x,p.y,p.vx,p.vy,"
-                                        "crate.x,crate.y,crate.angle,crate.vx,crate.vy,crate.omega"));
+        QCOMPARE(
+            lines.first(),
+            QString(
+                "t,kinetic,potential,work_nc,drift,correction,constraint_error,p.x,p.y,p.vx,p.vy,"
+                "crate.x,crate.y,crate.angle,crate.vx,crate.vy,crate.omega"));
         // 50 steps: t = 0, every 7th step (7 … 49), and the end (50).
         QCOMPARE(lines.size(), 1 + 1 + 7 + 1);
         QCOMPARE(lines[1].split(',').first(), QString("0"));
         QCOMPARE(lines.last().split(',').first().toDouble(), 1.0);
         QCOMPARE(lines[2].split(',').size(), 17);
         // The first row holds the initial state exactly.
-        QCOMPARE(lines[1].split(',')[9].toDouble(), 1.0);    // p.vx
-        QCOMPARE(lines[1].split(',')[10].toDouble(), 2.0);   // p.vy
+        QCOMPARE(lines[1].split(',')[9].toDouble(), 1.0);   // p.vx
+        QCOMPARE(lines[1].split(',')[10].toDouble(), 2.0);  // p.vy
     }
 
     void csvTrackChoosesObjects() {
-        const Result r = cli({"run", write("mixed.json", kMixed), "--csv", "-", "--track", "flag[1,1],crate"});
+        const Result r =
+            cli({"run", write("mixed.json", kMixed), "--csv", "-", "--track", "flag[1,1],crate"});
         QCOMPARE(r.status, 0);
         const QString header = QString::fromUtf8(r.out).section('\n', 0, 0);
         // A node id holds a comma, so its columns are quoted (RFC 4180) and the header still has
         // one field per value of a row.
-        QCOMPARE(header, QString("t,kinetic,potential,work_nc,drift,correction,constraint_error,\"flag[1,1].x\",\"flag[1,1].y\","
+        QCOMPARE(header, QString("t,kinetic,potential,work_nc,drift,correction,constraint_error,"
+                                 "\"flag[1,1].x\",\"flag[1,1].y\","
                                  "\"flag[1,1].vx\",\"flag[1,1].vy\",crate.x,crate.y,crate.angle,"
                                  "crate.vx,crate.vy,crate.omega"));
         const QString firstRow = QString::fromUtf8(r.out).section('\n', 1, 1);
@@ -222,7 +235,8 @@ private slots:
         const QByteArray text = f.readAll();
         QVERIFY(text.contains("<svg"));
         QVERIFY(text.contains("</svg>"));
-        const Result bad = cli({"run", write("osc.json", kOscillator), "--plot-phase", "ball.angle", svg});
+        const Result bad =
+            cli({"run", write("osc.json", kOscillator), "--plot-phase", "ball.angle", svg});
         QCOMPARE(bad.status, 2);
     }
 
@@ -241,12 +255,14 @@ private slots:
     }
 
     void stiffSpringStaysBoundedUnderImplicitEuler() {
-        const Result r = cli({"run", write("stiff.json", kStiff), "--json", "--integrator", "implicit_euler"});
+        const Result r =
+            cli({"run", write("stiff.json", kStiff), "--json", "--integrator", "implicit_euler"});
         QCOMPARE(r.status, 0);
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
         QCOMPARE(o["sim_time"].toDouble(), 10.0);
         const QJsonObject e = o["energy"].toObject();
-        QVERIFY(e["kinetic"].toDouble() + e["potential"].toDouble() <= e["initial"].toDouble() + 1e-9);
+        QVERIFY(e["kinetic"].toDouble() + e["potential"].toDouble() <=
+                e["initial"].toDouble() + 1e-9);
     }
 
     void clothBlowUpIsReported() {
@@ -267,10 +283,13 @@ private slots:
         QTest::addColumn<QString>("message");
         QTest::newRow("no command") << QStringList{} << "usage";
         QTest::newRow("unknown command") << QStringList{"fly"} << "unknown command \"fly\"";
-        QTest::newRow("missing file") << QStringList{"run", "/nonexistent/x.json"} << "/nonexistent/x.json";
-        QTest::newRow("unknown option") << QStringList{"run", "SCENE", "--fast"} << "unknown option \"--fast\"";
+        QTest::newRow("missing file")
+            << QStringList{"run", "/nonexistent/x.json"} << "/nonexistent/x.json";
+        QTest::newRow("unknown option")
+            << QStringList{"run", "SCENE", "--fast"} << "unknown option \"--fast\"";
         QTest::newRow("dt zero") << QStringList{"run", "SCENE", "--dt", "0"} << "--dt: must be > 0";
-        QTest::newRow("dt text") << QStringList{"run", "SCENE", "--dt", "abc"} << "--dt: must be a number";
+        QTest::newRow("dt text") << QStringList{"run", "SCENE", "--dt", "abc"}
+                                 << "--dt: must be a number";
         QTest::newRow("substeps") << QStringList{"run", "SCENE", "--substeps", "0"} << "--substeps";
         QTest::newRow("integrator") << QStringList{"run", "SCENE", "--integrator", "rk5"}
                                     << "unknown integrator \"rk5\"; known: explicit_euler";
@@ -292,16 +311,19 @@ private slots:
         QCOMPARE(r.status, 2);
         const QString err = QString::fromUtf8(r.err);
         QVERIFY2(err.startsWith("phasebox-cli: error: "), qPrintable(err));
-        QVERIFY2(err.contains(path) && err.contains("particles[0].mass") && err.contains("must be > 0"),
-                 qPrintable(err));
-        const Result syntax = cli({"info", write("syntax.json", "{\n  \"format\": \"phasebox-scene\",\n  oops\n}")});
+        QVERIFY2(
+            err.contains(path) && err.contains("particles[0].mass") && err.contains("must be > 0"),
+            qPrintable(err));
+        const Result syntax =
+            cli({"info", write("syntax.json", "{\n  \"format\": \"phasebox-scene\",\n  oops\n}")});
         QCOMPARE(syntax.status, 2);
         QVERIFY2(syntax.err.contains("syntax.json:3:"), syntax.err.constData());
     }
 
     void demoSceneRuns() {
-        const Result r = cli({"run", QStringLiteral(PHASEBOX_SOURCE_DIR "/resources/scenes/demo.phasebox.json"),
-                              "--duration", "2"});
+        const Result r =
+            cli({"run", QStringLiteral(PHASEBOX_SOURCE_DIR "/resources/scenes/demo.phasebox.json"),
+                 "--duration", "2"});
         QCOMPARE(r.status, 0);
         QVERIFY(r.out.contains("drift:"));
     }

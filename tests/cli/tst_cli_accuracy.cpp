@@ -20,7 +20,9 @@ namespace {
 
 using Result = phasebox::testing::CliResult;
 
-Result cli(const QStringList& args) { return phasebox::testing::runCli(args); }
+Result cli(const QStringList& args) {
+    return phasebox::testing::runCli(args);
+}
 
 // A unit harmonic oscillator, m = 1 on a spring k = 1 to the origin; one second of it.
 const char* kOscillator = R"({
@@ -57,7 +59,9 @@ class TestCliAccuracy : public QObject {
 
     QTemporaryDir dir_;
 
-    QString write(const QString& name, const char* text) { return phasebox::testing::writeFile(dir_, name, text); }
+    QString write(const QString& name, const char* text) {
+        return phasebox::testing::writeFile(dir_, name, text);
+    }
 
 private slots:
     void csvHasContractColumnsAndDefaultDts() {

@@ -27,7 +27,9 @@ QString firstMessage(const QByteArray& err) {
 }
 
 // With a shorter timeout than the other suites: nothing here may take long.
-Result cli(const QStringList& args, int timeoutMs = 60000) { return phasebox::testing::runCli(args, timeoutMs); }
+Result cli(const QStringList& args, int timeoutMs = 60000) {
+    return phasebox::testing::runCli(args, timeoutMs);
+}
 
 const char* kBall = R"({
   "format": "phasebox-scene", "version": 1, "name": "ball",
@@ -52,7 +54,9 @@ class TestCliRobustness : public QObject {
     QTemporaryDir dir_;
     QString ball_, stiff_;
 
-    QString write(const QString& name, const QByteArray& bytes) { return phasebox::testing::writeFile(dir_, name, bytes); }
+    QString write(const QString& name, const QByteArray& bytes) {
+        return phasebox::testing::writeFile(dir_, name, bytes);
+    }
 
 private slots:
     void initTestCase() {

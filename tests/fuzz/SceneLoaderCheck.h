@@ -14,8 +14,8 @@
 //     good state.
 
 #include "app/io/SceneIO.h"
-#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
+#include "physics/world/World.h"
 
 #include <QByteArray>
 #include <QString>

@@ -25,7 +25,8 @@ void choose(AccuracyDialog& dialog, const QStringList& names) {
     auto* list = dialog.findChild<QListWidget*>();
     for (int i = 0; i < list->count(); ++i) {
         QListWidgetItem* item = list->item(i);
-        item->setCheckState(names.contains(item->data(Qt::UserRole).toString()) ? Qt::Checked : Qt::Unchecked);
+        item->setCheckState(names.contains(item->data(Qt::UserRole).toString()) ? Qt::Checked
+                                                                                : Qt::Unchecked);
     }
 }
 }  // namespace
@@ -75,7 +76,8 @@ private slots:
 
         // Apply sets the scene's integrator and dt.
         emit dialog->applyRequested(QString::fromStdString(best->integrator), best->dt, 1e-6);
-        QCOMPARE(QString::fromStdString(w.document().setup().simulation.integrator), QStringLiteral("rk4"));
+        QCOMPARE(QString::fromStdString(w.document().setup().simulation.integrator),
+                 QStringLiteral("rk4"));
         QCOMPARE(w.document().setup().simulation.dt, best->dt);
 
         // Exports.
@@ -86,7 +88,8 @@ private slots:
         QVERIFY2(dialog->exportTo(dir.filePath("wp.csv"), &error), qPrintable(error));
         QFile csv(dir.filePath("wp.csv"));
         QVERIFY(csv.open(QIODevice::ReadOnly));
-        QVERIFY(csv.readLine().startsWith("integrator,dt,steps,force_evals,cpu_seconds,position_error,energy_drift,order"));
+        QVERIFY(csv.readLine().startsWith(
+            "integrator,dt,steps,force_evals,cpu_seconds,position_error,energy_drift,order"));
     }
 
     void cancelStopsTheStudy() {
@@ -101,7 +104,8 @@ private slots:
         dialog->cancel();
         QVERIFY(finished.wait(30000));
         QVERIFY(dialog->study().result().cancelled);
-        QVERIFY(static_cast<int>(dialog->study().result().records.size()) < dialog->study().result().plannedRuns);
+        QVERIFY(static_cast<int>(dialog->study().result().records.size()) <
+                dialog->study().result().plannedRuns);
         QVERIFY(dialog->study().result().contacts);
     }
 };

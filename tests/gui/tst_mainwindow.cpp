@@ -29,7 +29,9 @@
 using namespace phasebox;
 
 namespace {
-QByteArray serialized(MainWindow& w) { return SceneIO::serialize(w.document().setup()); }
+QByteArray serialized(MainWindow& w) {
+    return SceneIO::serialize(w.document().setup());
+}
 
 // A press, a few moves and a release, as a hand would drag.
 void drag(QWidget* widget, QPoint from, QPoint to) {
@@ -38,7 +40,9 @@ void drag(QWidget* widget, QPoint from, QPoint to) {
     QTest::mouseRelease(widget, Qt::LeftButton, {}, to);
 }
 
-QPointF worldAt(MainWindow& w, QPoint pixel) { return w.canvas()->toWorld(QPointF(pixel)); }
+QPointF worldAt(MainWindow& w, QPoint pixel) {
+    return w.canvas()->toWorld(QPointF(pixel));
+}
 
 int pointsIn(QChartView* view) {
     int points = 0;
@@ -58,7 +62,8 @@ private slots:
         MainWindow w;
         w.show();
         QVERIFY(w.canvas() && !w.canvas()->usingOpenGL());  // offscreen: the raster canvas
-        for (const char* dock : {"parametersDock", "effectsDock", "propertiesDock", "plotsDock", "sceneDock"})
+        for (const char* dock :
+             {"parametersDock", "effectsDock", "propertiesDock", "plotsDock", "sceneDock"})
             QVERIFY2(w.findChild<QDockWidget*>(dock), dock);
         QVERIFY(w.openFile(kDemoScene, true));
         QVERIFY(!w.document().world().particles().empty());
@@ -153,8 +158,10 @@ private slots:
         QVERIFY(w.openFile(kDemoScene, true));
         QVERIFY(w.controller().advance(0.2));
         const World& world = w.document().world();
-        const QPoint ball = w.canvas()->toWidget(QPointF(world.particlePosition(0).x(),
-                                                         world.particlePosition(0).y())).toPoint();
+        const QPoint ball =
+            w.canvas()
+                ->toWidget(QPointF(world.particlePosition(0).x(), world.particlePosition(0).y()))
+                .toPoint();
         const QPoint target = ball + QPoint(150, -100);
         QWidget* canvas = w.canvas();
         QTest::mousePress(canvas, Qt::LeftButton, {}, ball);
@@ -167,7 +174,10 @@ private slots:
         // The spring is stiff against the ball's own spring and gravity: it ends near the mouse.
         QVERIFY2((p - Vec2(goal.x(), goal.y())).norm() < 0.25,
                  qPrintable(QString("ball at (%1, %2), mouse at (%3, %4)")
-                                .arg(p.x()).arg(p.y()).arg(goal.x()).arg(goal.y())));
+                                .arg(p.x())
+                                .arg(p.y())
+                                .arg(goal.x())
+                                .arg(goal.y())));
         QTest::mouseRelease(canvas, Qt::LeftButton, {}, target);
         QVERIFY(!w.document().isGrabbing());
         // Pulling is not an edit of the setup.
@@ -188,7 +198,8 @@ private slots:
         const int rk4 = combo->findData(QStringLiteral("rk4"));
         QVERIFY(rk4 >= 0);
         combo->setCurrentIndex(rk4);
-        QCOMPARE(QString::fromStdString(w.document().world().settings().integrator), QStringLiteral("rk4"));
+        QCOMPARE(QString::fromStdString(w.document().world().settings().integrator),
+                 QStringLiteral("rk4"));
         QVERIFY(w.document().world().positions() == q);
         QVERIFY(w.document().world().velocities() == u);
         QCOMPARE(w.document().world().time(), t);
@@ -305,7 +316,8 @@ private slots:
         const QString bad = dir.filePath("bad.phasebox.json");
         QFile f(bad);
         QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(R"({"format": "phasebox-scene", "version": 1, "particles": [{"position": [0, 0], "mass": -1}]})");
+        f.write(
+            R"({"format": "phasebox-scene", "version": 1, "particles": [{"position": [0, 0], "mass": -1}]})");
         f.close();
         QString error;
         QVERIFY(!w.openFile(bad, true, &error));
@@ -322,7 +334,8 @@ private slots:
         w.document().setSelection({QString::fromStdString(w.document().setup().particles[0].id)});
         QVERIFY(w.controller().advance(1.0));
         QString error;
-        for (auto plot : {ui::PlotsPanel::Plot::Energy, ui::PlotsPanel::Plot::Phase, ui::PlotsPanel::Plot::Error}) {
+        for (auto plot : {ui::PlotsPanel::Plot::Energy, ui::PlotsPanel::Plot::Phase,
+                          ui::PlotsPanel::Plot::Error}) {
             const QString base = dir.filePath(plot == ui::PlotsPanel::Plot::Energy  ? "energy"
                                               : plot == ui::PlotsPanel::Plot::Phase ? "phase"
                                                                                     : "error");
@@ -338,8 +351,10 @@ private slots:
             QVERIFY(csv.open(QIODevice::ReadOnly));
             const QList<QByteArray> lines = csv.readAll().split('\n');
             QVERIFY2(lines.size() > 55, qPrintable(base));
-            if (plot == ui::PlotsPanel::Plot::Energy) QCOMPARE(lines[0], QByteArray("t,kinetic,potential,work_nc,drift,correction"));
-            else QVERIFY(lines[0].startsWith("t,"));
+            if (plot == ui::PlotsPanel::Plot::Energy)
+                QCOMPARE(lines[0], QByteArray("t,kinetic,potential,work_nc,drift,correction"));
+            else
+                QVERIFY(lines[0].startsWith("t,"));
             QCOMPARE(lines[1].count(','), lines[0].count(','));
         }
         QVERIFY2(w.exportCanvas(dir.filePath("canvas.png"), &error), qPrintable(error));
@@ -353,16 +368,18 @@ private slots:
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert("QT_QPA_PLATFORM", "offscreen");
         app.setProcessEnvironment(env);
-        app.start(QStringLiteral(PHASEBOX_DESKTOP),
-                  {"--screenshot", png, "--run-for", "1",
-                   QStringLiteral(PHASEBOX_SOURCE_DIR "/resources/scenes/box-pyramid.phasebox.json")});
+        app.start(
+            QStringLiteral(PHASEBOX_DESKTOP),
+            {"--screenshot", png, "--run-for", "1",
+             QStringLiteral(PHASEBOX_SOURCE_DIR "/resources/scenes/box-pyramid.phasebox.json")});
         QVERIFY(app.waitForFinished(60000));
         QCOMPARE(app.exitCode(), 0);
         const QImage image(png);
         QVERIFY(!image.isNull());
         QVERIFY(image.width() >= 800 && image.height() >= 500);
         // A bad scene: exit 2 with the loader's message, no picture.
-        app.start(QStringLiteral(PHASEBOX_DESKTOP), {"--screenshot", dir.filePath("none.png"), "/no/such.json"});
+        app.start(QStringLiteral(PHASEBOX_DESKTOP),
+                  {"--screenshot", dir.filePath("none.png"), "/no/such.json"});
         QVERIFY(app.waitForFinished(60000));
         QCOMPARE(app.exitCode(), 2);
         QVERIFY(app.readAllStandardError().contains("phasebox: error:"));

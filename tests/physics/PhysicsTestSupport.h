@@ -3,9 +3,9 @@
 // scene description (the public way in), so the suites exercise buildWorld, the effects and
 // World::step exactly as the app and the command line do.
 
-#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"
+#include "physics/world/World.h"
 
 #include <Eigen/Dense>
 

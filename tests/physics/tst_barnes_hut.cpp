@@ -48,7 +48,8 @@ private slots:
 
 void TestBarnesHut::treeIsUsedExactlyAboveTheThreshold() {
     auto at = build(scenes::clusteredBodies(NewtonianGravityEffect::kDefaultTreeThreshold, 1));
-    auto above = build(scenes::clusteredBodies(NewtonianGravityEffect::kDefaultTreeThreshold + 1, 1));
+    auto above =
+        build(scenes::clusteredBodies(NewtonianGravityEffect::kDefaultTreeThreshold + 1, 1));
     auto* direct = static_cast<NewtonianGravityEffect*>(at->findEffect("newtonian_gravity"));
     auto* tree = static_cast<NewtonianGravityEffect*>(above->findEffect("newtonian_gravity"));
     QVERIFY(!direct->usesTree());

@@ -12,9 +12,9 @@
 // order of force accumulation): the failure message prints the new value to paste in. A change
 // that nobody meant is exactly what this test is for.
 
-#include "physics/world/World.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
+#include "physics/world/World.h"
 
 #include <QTest>
 

@@ -44,7 +44,10 @@ private slots:
         const double truth = (got - exact).lpNorm<Eigen::Infinity>();
         // Leading order only: the next term is a factor h (or h² for symmetric methods) smaller.
         QVERIFY2(estimate > 0.5 * truth && estimate < 2.0 * truth,
-                 qPrintable(QString("%1: estimate %2, true local error %3").arg(integrator).arg(estimate).arg(truth)));
+                 qPrintable(QString("%1: estimate %2, true local error %3")
+                                .arg(integrator)
+                                .arg(estimate)
+                                .arg(truth)));
     }
 
     // Estimating after every step leaves the run bit for bit as it was: the clock, the state,
@@ -83,7 +86,8 @@ private slots:
             const int order = coarse->integrator().info().order;
             const double expected = std::pow(2.0, order + 1);
             QVERIFY2(std::abs(std::log2(ratio) - std::log2(expected)) < 0.2,
-                     qPrintable(QString("%1: ratio %2, expected %3").arg(name).arg(ratio).arg(expected)));
+                     qPrintable(
+                         QString("%1: ratio %2, expected %3").arg(name).arg(ratio).arg(expected)));
         }
     }
 };

@@ -14,7 +14,6 @@ using namespace phasebox::testing;
 
 namespace {
 
-
 // Allowed distance between the observed and the theoretical order.
 constexpr double kOrderTolerance = 0.15;
 

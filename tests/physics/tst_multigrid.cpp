@@ -4,12 +4,12 @@
 // preconditioner's grow with the side), and a world whose Jacobian pattern changes mid-run.
 
 #include "../bench/AllocationCounter.h"
-#include "physics/world/World.h"
 #include "physics/effects/MouseSpringEffect.h"
 #include "physics/linear/AggregationMultigrid.h"
 #include "physics/linear/BlockSweeps.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
+#include "physics/world/World.h"
 
 #include <QtTest>
 
@@ -31,7 +31,8 @@ SparseMatrix clothMatrix(int n, int& pairedDofs) {
     Vec force(world->dimension());
     world->forcesAndJacobians(world->time(), world->positions(), world->velocities(), force, jac);
     std::vector<Triplet> triplets;
-    for (const Triplet& t : jac.stiffnessTriplets()) triplets.emplace_back(t.row(), t.col(), -h * h * t.value());
+    for (const Triplet& t : jac.stiffnessTriplets())
+        triplets.emplace_back(t.row(), t.col(), -h * h * t.value());
     for (int i = 0; i < world->dimension(); ++i) triplets.emplace_back(i, i, world->mass()[i]);
     SparseMatrix a(world->dimension(), world->dimension());
     a.setFromTriplets(triplets.begin(), triplets.end());
@@ -46,7 +47,8 @@ SparseMatrix withSingles(const SparseMatrix& a, int extra) {
     const int n = static_cast<int>(a.rows());
     std::vector<Triplet> triplets;
     for (int j = 0; j < n; ++j)
-        for (SparseMatrix::InnerIterator it(a, j); it; ++it) triplets.emplace_back(it.row(), it.col(), it.value());
+        for (SparseMatrix::InnerIterator it(a, j); it; ++it)
+            triplets.emplace_back(it.row(), it.col(), it.value());
     const double scale = a.diagonal().mean();
     for (int e = 0; e < extra; ++e) {
         const int single = n + e, partner = (e * 97) % n;
@@ -123,9 +125,7 @@ class TestMultigrid : public QObject {
 private slots:
     void cleanup() { blocks::setWide(true); }
 
-    void symmetricPositiveDefinite_data() {
-        addKernelRows();
-    }
+    void symmetricPositiveDefinite_data() { addKernelRows(); }
     void symmetricPositiveDefinite() {
         int paired = 0;
         const SparseMatrix a = rowMatrix(paired);
@@ -140,8 +140,9 @@ private slots:
             mg.apply(u, bu);
             mg.apply(v, bv);
             const double uv = u.dot(bv), vu = v.dot(bu);
-            QVERIFY2(std::abs(uv - vu) <= 1e-10 * (std::abs(uv) + std::abs(vu)),
-                     qPrintable(QString("u·Bv %1, v·Bu %2").arg(uv, 0, 'g', 17).arg(vu, 0, 'g', 17)));
+            QVERIFY2(
+                std::abs(uv - vu) <= 1e-10 * (std::abs(uv) + std::abs(vu)),
+                qPrintable(QString("u·Bv %1, v·Bu %2").arg(uv, 0, 'g', 17).arg(vu, 0, 'g', 17)));
             QVERIFY2(u.dot(bu) > 0.0, "u·Bu must be positive");
         }
         // The blocked copy multiplies exactly as the matrix does.
@@ -151,9 +152,7 @@ private slots:
         QVERIFY((y - a * x).norm() <= 1e-12 * (a * x).norm());
     }
 
-    void coarsestSolveIsExact_data() {
-        addKernelRows();
-    }
+    void coarsestSolveIsExact_data() { addKernelRows(); }
     void coarsestSolveIsExact() {
         // The factorised coarsest level (in 2 × 2 blocks, or scalar with single DOFs) solves
         // its Galerkin system to round-off.
@@ -170,9 +169,7 @@ private slots:
         QVERIFY2(residual <= 1e-10, qPrintable(QString("relative residual %1").arg(residual)));
     }
 
-    void agreesWithDirectSolve_data() {
-        addKernelRows();
-    }
+    void agreesWithDirectSolve_data() { addKernelRows(); }
     void agreesWithDirectSolve() {
         int paired = 0;
         const SparseMatrix a = rowMatrix(paired);
@@ -180,13 +177,15 @@ private slots:
         AggregationMultigrid mg;
         mg.setup(a, paired, true);
         Vec x;
-        const int iterations = pcg(a, b, x, 1e-12, 200, [&](const Vec& r, Vec& z) { mg.apply(r, z); });
+        const int iterations =
+            pcg(a, b, x, 1e-12, 200, [&](const Vec& r, Vec& z) { mg.apply(r, z); });
         QVERIFY2(iterations > 0, "multigrid PCG did not converge in 200 iterations");
         Eigen::SimplicialLDLT<SparseMatrix> direct(a);
         QCOMPARE(direct.info(), Eigen::Success);
         const Vec exact = direct.solve(b);
-        QVERIFY2((x - exact).norm() <= 1e-8 * exact.norm(),
-                 qPrintable(QString("relative difference %1").arg((x - exact).norm() / exact.norm())));
+        QVERIFY2(
+            (x - exact).norm() <= 1e-8 * exact.norm(),
+            qPrintable(QString("relative difference %1").arg((x - exact).norm() / exact.norm())));
     }
 
     void iterationsStayNearlyFlat() {
@@ -205,15 +204,17 @@ private slots:
             (side == 40 ? mgSmall : mgLarge) = its;
             if (side == 64) {
                 const Vec inverseDiagonal = a.diagonal().cwiseInverse();
-                jacobiLarge = pcg(a, b, x, 1e-4, 5000,
-                                  [&](const Vec& r, Vec& z) { z = inverseDiagonal.cwiseProduct(r); });
+                jacobiLarge = pcg(a, b, x, 1e-4, 5000, [&](const Vec& r, Vec& z) {
+                    z = inverseDiagonal.cwiseProduct(r);
+                });
                 QVERIFY(jacobiLarge > 0);
             }
         }
         qInfo("PCG iterations to 1e-4: multigrid %d (40 x 40), %d (64 x 64); Jacobi %d (64 x 64)",
               mgSmall, mgLarge, jacobiLarge);
         QVERIFY2(mgLarge <= 1.5 * mgSmall + 2, "multigrid iterations grow with the cloth");
-        QVERIFY2(4 * mgLarge <= jacobiLarge, "multigrid should need a quarter of Jacobi's iterations");
+        QVERIFY2(4 * mgLarge <= jacobiLarge,
+                 "multigrid should need a quarter of Jacobi's iterations");
     }
 
     void clothStepsWithoutAllocating() {
@@ -225,10 +226,11 @@ private slots:
         for (int k = 0; k < 10; ++k) ok = world->step() && ok;
         const bench::AllocationCounts counts = bench::stopCountingAllocations();
         QVERIFY(ok);
-        QVERIFY2(counts.total() == 0, qPrintable(QString("%1 allocations (%2 new, %3 malloc) in 10 steps")
-                                                     .arg(counts.total())
-                                                     .arg(counts.operatorNew)
-                                                     .arg(counts.malloc)));
+        QVERIFY2(counts.total() == 0,
+                 qPrintable(QString("%1 allocations (%2 new, %3 malloc) in 10 steps")
+                                .arg(counts.total())
+                                .arg(counts.operatorNew)
+                                .arg(counts.malloc)));
     }
 
     void iterativePathIsDeterministic() {
@@ -243,7 +245,8 @@ private slots:
         }
         QVERIFY(first->positions() == second->positions());
         QVERIFY(first->velocities() == second->velocities());
-        QCOMPARE(first->integrator().stats().linearIterations, second->integrator().stats().linearIterations);
+        QCOMPARE(first->integrator().stats().linearIterations,
+                 second->integrator().stats().linearIterations);
     }
 
     void scaledWarmStartSavesIterations_data() {
@@ -262,7 +265,8 @@ private slots:
         QVERIFY(world->dimension() >= 2000);  // the iterative path
         const int steps = 120;
         for (int k = 0; k < steps; ++k) QVERIFY(world->step());
-        const double perStep = static_cast<double>(world->integrator().stats().linearIterations) / steps;
+        const double perStep =
+            static_cast<double>(world->integrator().stats().linearIterations) / steps;
         qInfo("%.2f CG iterations per step", perStep);
         QVERIFY2(perStep <= 11.5, qPrintable(QString("%1 CG iterations per step").arg(perStep)));
     }
@@ -280,8 +284,9 @@ private slots:
         for (int k = 0; k < 20; ++k) {
             QVERIFY(world->step());
             const auto& stats = world->integrator().stats();
-            QVERIFY2(stats.lastLinearResidual <= 1e-4,
-                     qPrintable(QString("step %1: residual %2").arg(k).arg(stats.lastLinearResidual)));
+            QVERIFY2(
+                stats.lastLinearResidual <= 1e-4,
+                qPrintable(QString("step %1: residual %2").arg(k).arg(stats.lastLinearResidual)));
         }
         QVERIFY(world->positions().allFinite() && world->velocities().allFinite());
     }
@@ -293,7 +298,8 @@ private slots:
         QVERIFY(world->dimension() >= 2000);  // the iterative path
         for (int k = 0; k < 10; ++k) QVERIFY(world->step());
         const std::string grabbed = "cloth[20,39]";
-        auto spring = std::make_unique<MouseSpringEffect>(grabbed, Vec2::Zero(), Vec2(0.3, -0.2), 50.0);
+        auto spring =
+            std::make_unique<MouseSpringEffect>(grabbed, Vec2::Zero(), Vec2(0.3, -0.2), 50.0);
         const Effect* handle = spring.get();
         world->addEffect(std::move(spring));
         for (int k = 0; k < 60; ++k) QVERIFY(world->step());

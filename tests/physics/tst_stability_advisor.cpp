@@ -89,7 +89,8 @@ private slots:
         const StabilityAdvice a = adviseStability(*world);
         QVERIFY(!a.currentStable);
         for (const StepLimit& l : a.limits)
-            if (l.integrator == "explicit_euler" || l.integrator == "midpoint" || l.integrator == "heun")
+            if (l.integrator == "explicit_euler" || l.integrator == "midpoint" ||
+                l.integrator == "heun")
                 QCOMPARE(l.maxDt, 0.0);
             else if (l.integrator == "implicit_euler")
                 QVERIFY(std::isinf(l.maxDt));

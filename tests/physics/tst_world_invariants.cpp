@@ -411,7 +411,8 @@ void TestWorldInvariants::jacobiansMatchFiniteDifferences() {
     ForceJacobians jac;
     Eigen::VectorXd force(n);
     world->forcesAndJacobians(t, q, u, force, jac);
-    const Eigen::MatrixXd K = dense(jac.stiffnessTriplets(), n), D = dense(jac.dampingTriplets(), n);
+    const Eigen::MatrixXd K = dense(jac.stiffnessTriplets(), n),
+                          D = dense(jac.dampingTriplets(), n);
     Eigen::MatrixXd numK(n, n), numD(n, n);
     Eigen::VectorXd fp(n), fm(n);
     const double delta = 1e-6;

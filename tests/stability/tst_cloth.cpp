@@ -12,7 +12,9 @@
 using namespace phasebox;
 
 namespace {
-double mechanicalEnergy(const World& world) { return world.energy().kinetic + world.energy().potential; }
+double mechanicalEnergy(const World& world) {
+    return world.energy().kinetic + world.energy().potential;
+}
 }  // namespace
 
 class TestCloth : public QObject {
@@ -28,11 +30,12 @@ private slots:
         const double e0 = mechanicalEnergy(*world);
         double highest = e0;
         for (int k = 0; k < 3600; ++k) {  // 60 s
-            QVERIFY2(world->step(), world->divergence() ? world->divergence()->message().c_str() : "");
+            QVERIFY2(world->step(),
+                     world->divergence() ? world->divergence()->message().c_str() : "");
             highest = std::max(highest, mechanicalEnergy(*world));
         }
-        qInfo("40x40 cloth, 60 s of implicit Euler: E0 = %.6f J, highest %.6f J, final %.6f J",
-              e0, highest, mechanicalEnergy(*world));
+        qInfo("40x40 cloth, 60 s of implicit Euler: E0 = %.6f J, highest %.6f J, final %.6f J", e0,
+              highest, mechanicalEnergy(*world));
         QVERIFY(world->positions().allFinite() && world->velocities().allFinite());
         QVERIFY(highest <= e0 + 1e-9 * std::abs(e0) + 1e-12);
         // It hangs: every node below its pinned top edge, none fallen away.

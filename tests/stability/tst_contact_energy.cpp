@@ -49,7 +49,8 @@ private slots:
               qPrintable(integrator), e.correction, m * g * d, e.workNc, e.drift);
         QVERIFY(std::abs(world->boxPosition(0).y() - 0.5) < 0.005);
         // The push ends within the soft contact's sag (under a millimetre here) of d.
-        QVERIFY2(std::abs(e.correction - m * g * d) < 0.05 * m * g * d, qPrintable(QString::number(e.correction)));
+        QVERIFY2(std::abs(e.correction - m * g * d) < 0.05 * m * g * d,
+                 qPrintable(QString::number(e.correction)));
         // The box ends at rest where it should have been: all the energy it gained is the
         // push-out's, so the total changed by exactly the correction. (Under symplectic and
         // implicit Euler a resting box also shows the integrator's own error, ½·m·g²·h² per
@@ -81,7 +82,8 @@ private slots:
         QTest::addColumn<double>("dt");
         for (const char* name : {"symplectic_euler", "velocity_verlet", "rk4", "implicit_euler"})
             for (double dt : {1.0, 0.25, 1.0 / 60.0})
-                QTest::newRow(qPrintable(QString("%1 dt %2").arg(name).arg(dt))) << QString(name) << dt;
+                QTest::newRow(qPrintable(QString("%1 dt %2").arg(name).arg(dt)))
+                    << QString(name) << dt;
     }
     void ballNeverRisesAboveItsDropHeight() {
         // e = 0.5 from 1 m: however large the step, the ball never climbs above 1 m and the
@@ -100,8 +102,8 @@ private slots:
             highest = std::max(highest, world->particlePosition(0).y() - radius);
             most = std::max(most, world->energy().kinetic + world->energy().potential);
         }
-        qInfo("%s at dt %g: highest %.4f m, energy at most %.4f J of %.4f J", qPrintable(integrator),
-              dt, highest, most, e0);
+        qInfo("%s at dt %g: highest %.4f m, energy at most %.4f J of %.4f J",
+              qPrintable(integrator), dt, highest, most, e0);
         QVERIFY2(highest <= 1.0 + 1e-9, qPrintable(QString::number(highest)));
         QVERIFY(most <= e0 + 1e-9 * std::abs(e0));
     }

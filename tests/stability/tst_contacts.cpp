@@ -14,7 +14,9 @@ using namespace phasebox;
 
 namespace {
 
-std::unique_ptr<World> build(const SceneDesc& scene) { return buildWorld(scene).world; }
+std::unique_ptr<World> build(const SceneDesc& scene) {
+    return buildWorld(scene).world;
+}
 
 // Steps for `seconds`; fails the test (returns false) if the world reports divergence.
 bool run(World& world, double seconds) {
@@ -74,8 +76,9 @@ private slots:
         }
         const double height = count * 1.0;
         const double shortening = height - (world->boxPosition(count - 1).y() + 0.5);
-        qInfo("tower of %d after 10 s: sideways %.2e m, tilt %.2e rad, shortened by %.4f m (%.2f%%)",
-              count, sideways, tilt, shortening, 100.0 * shortening / height);
+        qInfo(
+            "tower of %d after 10 s: sideways %.2e m, tilt %.2e rad, shortened by %.4f m (%.2f%%)",
+            count, sideways, tilt, shortening, 100.0 * shortening / height);
         QVERIFY(sideways < 0.01);
         QVERIFY(tilt < 0.01);
         QVERIFY(shortening < 0.005 * height);
@@ -89,7 +92,8 @@ private slots:
         QVERIFY(moved < 0.05);
         auto big = build(scenes::bigOnSmall(100));
         QVERIFY(run(*big, 10.0));
-        qInfo("2 m box 100x on 0.5 m box: largest displacement %.4f m", largestBoxDisplacement(*big));
+        qInfo("2 m box 100x on 0.5 m box: largest displacement %.4f m",
+              largestBoxDisplacement(*big));
         QVERIFY(largestBoxDisplacement(*big) < 0.05);
     }
 
@@ -190,8 +194,9 @@ private slots:
             QVERIFY(world->step());
             furthest = std::max(furthest, world->particlePosition(0).x() + radius);
         }
-        qInfo("bullet: furthest reach %.4f m, wall front face at %.2f m; velocity after 1 s %.1f m/s",
-              furthest, wallFront, world->particleVelocity(0).x());
+        qInfo(
+            "bullet: furthest reach %.4f m, wall front face at %.2f m; velocity after 1 s %.1f m/s",
+            furthest, wallFront, world->particleVelocity(0).x());
         QVERIFY(furthest <= wallFront + 0.01);
         QVERIFY(world->particleVelocity(0).x() < 0.0);  // it bounced back
     }
@@ -201,14 +206,16 @@ private slots:
         QVERIFY(run(*world, 10.0));
         for (int i = 0; i < 30; ++i) {
             const double angle = std::abs(world->boxAngle(i));
-            QVERIFY2(angle > 0.5, qPrintable(QStringLiteral("domino %1 stands (angle %2)").arg(i).arg(angle)));
+            QVERIFY2(angle > 0.5,
+                     qPrintable(QStringLiteral("domino %1 stands (angle %2)").arg(i).arg(angle)));
         }
     }
 
     void everyIntegratorRunsContacts_data() {
         QTest::addColumn<QString>("integrator");
         for (const IntegratorInfo& info : integratorRegistry())
-            QTest::newRow(std::string(info.name).c_str()) << QString::fromLatin1(info.name.data(), info.name.size());
+            QTest::newRow(std::string(info.name).c_str())
+                << QString::fromLatin1(info.name.data(), info.name.size());
     }
     void everyIntegratorRunsContacts() {
         // Contacts act after the smooth step whatever the method: a box dropped on a ball
@@ -249,7 +256,8 @@ private slots:
             hi = std::max(hi, bottom);
             fastest = std::max(fastest, world->boxVelocity(0).norm());
         }
-        qInfo("%s: bottom in [%.2e, %.2e] m, fastest %.2e m/s", qPrintable(integrator), lo, hi, fastest);
+        qInfo("%s: bottom in [%.2e, %.2e] m, fastest %.2e m/s", qPrintable(integrator), lo, hi,
+              fastest);
         QVERIFY(lo > -0.005 && hi < 0.0005);
         QVERIFY(hi - lo < 1e-4);
         QVERIFY(fastest < 1e-3);
@@ -271,8 +279,8 @@ private slots:
             highest = std::max(highest, world->boxPosition(0).y());
             fastest = std::max(fastest, world->boxVelocity(0).norm());
         }
-        qInfo("overlap removal: highest centre %.5f m, fastest %.3f m/s, drift %.2e J",
-              highest, fastest, world->energy().drift);
+        qInfo("overlap removal: highest centre %.5f m, fastest %.3f m/s, drift %.2e J", highest,
+              fastest, world->energy().drift);
         QVERIFY(std::abs(world->boxPosition(0).y() - 0.5) < 0.005);
         QVERIFY(highest < 0.5 + 0.005);  // no jump above resting height
         QVERIFY(fastest < 3.0 + 1e-9);   // the push-out speed limit
@@ -314,7 +322,8 @@ private slots:
         auto withFloor = build(s);
         QVERIFY(withFloor->contacts() != nullptr);
         bool listed = false;
-        for (const EffectCost& c : withFloor->effectCosts()) listed = listed || c.name == "contacts";
+        for (const EffectCost& c : withFloor->effectCosts())
+            listed = listed || c.name == "contacts";
         QVERIFY(listed);
     }
 };

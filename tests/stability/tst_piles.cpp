@@ -84,10 +84,10 @@ void TestPiles::pileAtOnePointIsBounded() {
         QVERIFY2(world->step(), "the world reported divergence");
         const ContactStage& stage = *world->contacts();
         // Equal disks: each pair counts against both disks' caps (overlapping or near).
-        QVERIFY2(static_cast<long long>(stage.contacts().size()) <= pairBound,
-                 qPrintable(QStringLiteral("step %1: %2 constraints")
-                                .arg(step)
-                                .arg(stage.contacts().size())));
+        QVERIFY2(
+            static_cast<long long>(stage.contacts().size()) <= pairBound,
+            qPrintable(
+                QStringLiteral("step %1: %2 constraints").arg(step).arg(stage.contacts().size())));
         QVERIFY(stage.pointCount() <= pairBound);
         mostPoints = std::max<long long>(mostPoints, stage.pointCount());
     }
@@ -102,9 +102,10 @@ void TestPiles::pileAtOnePointIsBounded() {
         fastest = std::max(fastest, world->particleVelocity(i).norm());
         farthest = std::max(farthest, world->particlePosition(i).norm());
     }
-    qInfo("3,000 disks at one point, 60 steps: %.2f s, at most %lld contact points (bound %lld), "
-          "fastest %.2f m/s, farthest %.2f m",
-          seconds, mostPoints, pairBound, fastest, farthest);
+    qInfo(
+        "3,000 disks at one point, 60 steps: %.2f s, at most %lld contact points (bound %lld), "
+        "fastest %.2f m/s, farthest %.2f m",
+        seconds, mostPoints, pairBound, fastest, farthest);
     QVERIFY2(seconds < kSecondsBound, qPrintable(QString::number(seconds)));
     // The pile comes apart (it does not stay a point, nor a line along one shared normal),
     // and no disk is flung off with the energy of thousands of overlaps (about 10 m/s now).
@@ -160,9 +161,10 @@ void TestPiles::columnCostsWhatARowCosts() {
         axis[vertical] = broadPhase.axis();
         pairs[vertical] = static_cast<long long>(world->contacts()->contacts().size());
     }
-    qInfo("20,000 disks: row visits %lld candidates (axis %d), column %lld (axis %d); "
-          "constraints %lld and %lld",
-          visited[0], axis[0], visited[1], axis[1], pairs[0], pairs[1]);
+    qInfo(
+        "20,000 disks: row visits %lld candidates (axis %d), column %lld (axis %d); "
+        "constraints %lld and %lld",
+        visited[0], axis[0], visited[1], axis[1], pairs[0], pairs[1]);
     QCOMPARE(axis[0], 0);
     QCOMPARE(axis[1], 1);
     QVERIFY(visited[0] > 0);

@@ -68,8 +68,8 @@ public:
     // the coarse view of which the effect rows are the finer one. Rows are updated in place.
     void setStageCosts(const std::vector<StageCost>& stages);
     QString stageCostText(const QString& stage) const;  // empty for an unknown stage
-    QStringList effectNames() const;     // the rows' names, in order
-    QStringList addableEffects() const;  // CONTRACT §1 effects not in the rows
+    QStringList effectNames() const;                    // the rows' names, in order
+    QStringList addableEffects() const;                 // CONTRACT §1 effects not in the rows
     bool isEnabled(const QString& name) const;
     QString costText(const QString& name) const;
     QString totalText() const;

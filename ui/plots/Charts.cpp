@@ -175,7 +175,8 @@ QChart* createErrorChart(std::span<const QPointF> samples, const QString& title)
         elo = std::min(elo, p.y());
         ehi = std::max(ehi, p.y());
     }
-    auto* series = addSeries(chart, points, QStringLiteral("local error per step"), energyColor(4), 1.6);
+    auto* series =
+        addSeries(chart, points, QStringLiteral("local error per step"), energyColor(4), 1.6);
     chart->legend()->setVisible(false);
     auto* t = new QValueAxis;
     t->setTitleText(QStringLiteral("time [s]"));
@@ -186,7 +187,8 @@ QChart* createErrorChart(std::span<const QPointF> samples, const QString& title)
     e->setLabelFormat(QStringLiteral("%.0e"));
     if (!std::isfinite(elo)) elo = ehi = 1e-6;
     // Whole decades around the samples, so the axis reads as orders of magnitude.
-    e->setRange(std::pow(10.0, std::floor(std::log10(elo))), std::pow(10.0, std::ceil(std::log10(ehi)) + (ehi == elo ? 1 : 0)));
+    e->setRange(std::pow(10.0, std::floor(std::log10(elo))),
+                std::pow(10.0, std::ceil(std::log10(ehi)) + (ehi == elo ? 1 : 0)));
     chart->addAxis(t, Qt::AlignBottom);
     chart->addAxis(e, Qt::AlignLeft);
     series->attachAxis(t);

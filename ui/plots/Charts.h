@@ -4,10 +4,10 @@
 // `phasebox-cli run --plot-energy/--plot-phase`, so a saved plot is what the app shows.
 
 #include <QColor>
+#include <QPointF>
 #include <QSize>
 #include <QString>
 #include <QVector>
-#include <QPointF>
 
 #include <span>
 

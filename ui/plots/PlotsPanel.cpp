@@ -79,7 +79,8 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
                                               {Plot::Phase, tr("Phase space")},
                                               {Plot::Error, tr("Local error")}};
     for (const auto& [plot, name] : plots) {
-        for (const QString& format : {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("csv")})
+        for (const QString& format :
+             {QStringLiteral("png"), QStringLiteral("svg"), QStringLiteral("csv")})
             menu->addAction(tr("%1 as %2…").arg(name, format.toUpper()), this,
                             [this, plot = plot, format] { emit exportRequested(plot, format); });
         menu->addSeparator();
@@ -103,15 +104,14 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
     coordinateBox_->addItem(tr("x against vx"), QStringLiteral("x"));
     coordinateBox_->addItem(tr("y against vy"), QStringLiteral("y"));
     coordinateBox_->addItem(tr("angle against ω (boxes)"), QStringLiteral("angle"));
-    connect(coordinateBox_, &QComboBox::activated, this, [this] {
-        emit phaseCoordinateRequested(coordinateBox_->currentData().toString());
-    });
+    connect(coordinateBox_, &QComboBox::activated, this,
+            [this] { emit phaseCoordinateRequested(coordinateBox_->currentData().toString()); });
     coordinateRow->addWidget(phaseHint_, 1);
     coordinateRow->addWidget(coordinateBox_);
     phaseLayout->addLayout(coordinateRow);
-    phaseView_ = new QChartView(createPhaseChart({}, QStringLiteral("x"), QStringLiteral("vx"),
-                                                 tr("Phase space")),
-                                phaseBox);
+    phaseView_ = new QChartView(
+        createPhaseChart({}, QStringLiteral("x"), QStringLiteral("vx"), tr("Phase space")),
+        phaseBox);
     phaseLayout->addWidget(phaseView_, 1);
     auto* errorBox = new QWidget(lowerTabs_);
     auto* errorLayout = new QVBoxLayout(errorBox);

@@ -63,8 +63,8 @@ void EffectsPresenter::updateRows() {
     }
     const World& world = document_.world();
     if (!world.springs().empty())
-        rows.push_back({qs(effectName::springs), true, false, 0.0,
-                        tr("Runs because the scene has springs")});
+        rows.push_back(
+            {qs(effectName::springs), true, false, 0.0, tr("Runs because the scene has springs")});
     if (world.contacts())
         rows.push_back({QStringLiteral("contacts"), true, false, 0.0,
                         tr("Runs because the scene holds things that can touch")});
