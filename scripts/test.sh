@@ -12,6 +12,8 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 preset="${1:-release}"
 shift || true
 phasebox_install_dependencies
+# Style first: an unformatted source fails the run before anything is built.
+"$PHASEBOX_ROOT/scripts/check-format.sh"
 phasebox_build "$preset"
 cd "$PHASEBOX_ROOT"
 export QT_QPA_PLATFORM=offscreen
