@@ -87,10 +87,13 @@ void ContactSolver::buildRows(double hertz, double zeta, double h) {
     // conditioning, the softness (each contact's stiffness multiplier: see prepare()).
     const int world = static_cast<int>(bodies_.size());
     rows_.resize(constraints_.size());
+    setup_.resize(constraints_.size());
+    separation_.resize(2 * constraints_.size());
     bouncing_.clear();
     for (std::size_t i = 0; i < constraints_.size(); ++i) {
         const ContactConstraint& c = constraints_[i];
         Row& row = rows_[i];
+        RowSetup& setup = setup_[i];
         row.a = c.bodyA >= 0 ? c.bodyA : world;
         row.b = c.bodyB >= 0 ? c.bodyB : world;
         row.pointCount = c.pointCount;
@@ -98,26 +101,31 @@ void ContactSolver::buildRows(double hertz, double zeta, double h) {
         row.ny = c.normal.y();
         row.friction = c.friction;
         const Softness soft = makeSoft(c.stiffness * hertz, zeta, h);
-        row.biasRate = soft.biasRate;
-        row.massScale = soft.massScale;
-        row.impulseScale = soft.impulseScale;
-        for (int k = 0; k < c.pointCount; ++k) {
-            const ContactPoint& p = c.points[k];
+        setup.biasRate = soft.biasRate;
+        setup.massScale = soft.massScale;
+        setup.impulseScale = soft.impulseScale;
+        for (int k = 0; k < 2; ++k) {
             RowPoint& r = row.p[k];
+            if (k >= c.pointCount) {
+                r = RowPoint{};
+                setup.normalMass[k] = setup.compliance[k] = 0.0;
+                separation_[2 * i + k] = 0.0;
+                continue;
+            }
+            const ContactPoint& p = c.points[k];
             r.rAx = p.anchorA.x();
             r.rAy = p.anchorA.y();
             r.rBx = p.anchorB.x();
             r.rBy = p.anchorB.y();
-            r.baseSeparation = p.baseSeparation;
-            r.separation = p.baseSeparation;
-            r.normalMass = p.normalMass;
+            separation_[2 * i + k] = p.baseSeparation;
+            setup.normalMass[k] = p.normalMass;
             r.tangentMass = p.tangentMass;
             // Converged, the soft update −m·s·(v_n + b) − r·λ = 0 is v_n + b + (r/(s·m))·λ = 0.
-            r.compliance = soft.impulseScale / (soft.massScale * p.normalMass);
+            setup.compliance[k] = soft.impulseScale / (soft.massScale * p.normalMass);
             r.normalImpulse = p.normalImpulse;
             r.tangentImpulse = p.tangentImpulse;
         }
-        row.blockable = false;
+        setup.blockable = false;
         row.k11 = row.k12 = row.k22 = 0.0;
         if (c.pointCount == 2) {
             const Vec2& n = c.normal;
@@ -131,12 +139,56 @@ void ContactSolver::buildRows(double hertz, double zeta, double h) {
             row.k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
             row.k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
             // Nearly coincident points make K singular: the sequential solve handles them.
-            row.blockable =
+            setup.blockable =
                 !(row.k11 * row.k11 >= 1000.0 * (row.k11 * row.k22 - row.k12 * row.k12));
         }
         if (c.restitution != 0.0) bouncing_.push_back(static_cast<int>(i));
     }
     shifted_.resize(2 * rows_.size());
+}
+
+void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& settings) {
+    // Per point: the bias velocity and the soft parameters (a speculative point, or a
+    // penetrating one during relax, is rigid); per row the block's inverse. Separations are
+    // fixed within a phase, so this is done once for all its iterations.
+    const double invH = 1.0 / h;
+    const double maxPushOut = settings.pushOut;
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        Row& c = rows_[i];
+        const RowSetup& setup = setup_[i];
+        double compliance[2] = {0.0, 0.0};
+        bool active[2] = {true, true};
+        for (int k = 0; k < c.pointCount; ++k) {
+            RowPoint& p = c.p[k];
+            const double s = separation_[2 * i + k];
+            double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+            if (s > 0.0) {
+                // Speculative: close at most the gap. Only while solving: relaxing a gap would
+                // brake an approaching body a sub-step early (the next solve sees the gap anew).
+                bias = s * invH;
+                active[k] = useBias;
+            } else if (useBias) {
+                bias = std::max(setup.biasRate * s, -maxPushOut);
+                massScale = setup.massScale;
+                impulseScale = setup.impulseScale;
+                compliance[k] = setup.compliance[k];
+            }
+            p.bias = bias;
+            p.effectiveMass = active[k] ? setup.normalMass[k] * massScale : 0.0;
+            p.impulseScale = active[k] ? impulseScale : 0.0;
+        }
+        c.block = setup.blockable && active[0] && active[1];
+        if (c.block) {
+            const double a11 = c.k11 + compliance[0], a22 = c.k22 + compliance[1], a12 = c.k12;
+            const double invDet = 1.0 / (a11 * a22 - a12 * a12);
+            c.a12 = a12;
+            c.i11 = a22 * invDet;
+            c.i12 = -a12 * invDet;
+            c.i22 = a11 * invDet;
+            c.invA11 = 1.0 / a11;
+            c.invA22 = 1.0 / a22;
+        }
+    }
 }
 
 void ContactSolver::updateSeparations() {
@@ -159,17 +211,19 @@ void ContactSolver::updateSeparations() {
         }
     }
     const BodyMotion* motion = motion_.data();
-    for (Row& c : rows_) {
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        const Row& c = rows_[i];
+        const ContactConstraint& constraint = constraints_[i];
         const BodyMotion& a = motion[c.a];
         const BodyMotion& b = motion[c.b];
         for (int k = 0; k < c.pointCount; ++k) {
-            RowPoint& p = c.p[k];
+            const RowPoint& p = c.p[k];
             // The anchors turn with their bodies: s = s₀ + n·(Δp_B − Δp_A), Δp = Δx + R(Δθ)·r − r.
             double dx = 0.0 - (a.dx + ((a.cos * p.rAx - a.sin * p.rAy) - p.rAx));
             double dy = 0.0 - (a.dy + ((a.sin * p.rAx + a.cos * p.rAy) - p.rAy));
             dx += b.dx + ((b.cos * p.rBx - b.sin * p.rBy) - p.rBx);
             dy += b.dy + ((b.sin * p.rBx + b.cos * p.rBy) - p.rBy);
-            p.separation = p.baseSeparation + (c.nx * dx + c.ny * dy);
+            separation_[2 * i + k] = constraint.points[k].baseSeparation + (c.nx * dx + c.ny * dy);
         }
     }
 }
@@ -247,8 +301,9 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
             BodyState& a = state[c.a];
             BodyState& b = state[c.b];
             for (int k = 0; k < c.pointCount; ++k) {
-                RowPoint& p = c.p[k];
-                const double s = p.separation;
+                const RowPoint& p = c.p[k];
+                const double s = separation_[2 * i + k];
+                const double normalMass = setup_[i].normalMass[k];
                 const double vn = relativeVelocity(a, b, p.rAx, p.rAy, p.rBx, p.rBy, c.nx, c.ny);
                 // The threshold keeps resting contact quiet (gravity presses a box on the floor
                 // at g·h per sub-step); it shrinks with 1 − e, so that e = 1 is exactly elastic
@@ -263,7 +318,7 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
                 const double vi = std::min(vn - smooth * (h - tau) / h, 0.0);
                 const double threshold = settings.restitutionThreshold * (1.0 - restitution);
                 if (vi >= -threshold) continue;
-                const double lambda = -p.normalMass * (1.0 + restitution) * vi;
+                const double lambda = -normalMass * (1.0 + restitution) * vi;
                 removeImpulse(a, p.rAx, p.rAy, lambda * c.nx, lambda * c.ny);
                 applyImpulse(b, p.rBx, p.rBy, lambda * c.nx, lambda * c.ny);
                 any = true;
@@ -277,7 +332,7 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
                 if (s > 0.0 && isolated && !shifted_[2 * i + k]) {
                     shifted_[2 * i + k] = 1;
                     moved = true;
-                    const double shift = (1.0 + restitution) * s * p.normalMass;
+                    const double shift = (1.0 + restitution) * s * normalMass;
                     const double sx = shift * c.nx, sy = shift * c.ny;
                     const Vec2 rA(p.rAx, p.rAy), rB(p.rBx, p.rBy);
                     // A positional impulse: moves the bodies without changing their velocities.
@@ -305,30 +360,27 @@ namespace {
 // constraint is v_n + bias + compliance·λ = 0 (λ ≥ 0, complementary). Solving the points one
 // after the other instead leaves an asymmetry that tips tall stacks over.
 template <class Row, class State>
-inline bool solveBlock(Row& c, State& a, State& b, const double bias[2],
-                       const double compliance[2]) {
+inline bool solveBlock(Row& c, State& a, State& b) {
     auto& p1 = c.p[0];
     auto& p2 = c.p[1];
-    const double k11 = c.k11, k22 = c.k22, k12 = c.k12;
-    const double a11 = k11 + compliance[0], a22 = k22 + compliance[1], a12 = k12;
+    const double k11 = c.k11, k22 = c.k22, k12 = c.k12, a12 = c.a12;
 
     const double vn1 = relativeVelocity(a, b, p1.rAx, p1.rAy, p1.rBx, p1.rBy, c.nx, c.ny);
     const double vn2 = relativeVelocity(a, b, p2.rAx, p2.rAy, p2.rBx, p2.rBy, c.nx, c.ny);
     const double old1 = p1.normalImpulse, old2 = p2.normalImpulse;
     // w = v_n(λ = 0) + bias: the velocity the points would have without any normal impulse.
-    const double w1 = vn1 - (k11 * old1 + k12 * old2) + bias[0];
-    const double w2 = vn2 - (k12 * old1 + k22 * old2) + bias[1];
+    const double w1 = vn1 - (k11 * old1 + k12 * old2) + p1.bias;
+    const double w2 = vn2 - (k12 * old1 + k22 * old2) + p2.bias;
 
-    double x1 = 0.0, x2 = 0.0;
-    const double det = a11 * a22 - a12 * a12;
-    x1 = (-w1 * a22 + w2 * a12) / det;
-    x2 = (-w2 * a11 + w1 * a12) / det;
+    // x = −A⁻¹·w (A⁻¹ from preparePhase).
+    double x1 = -(c.i11 * w1 + c.i12 * w2);
+    double x2 = -(c.i12 * w1 + c.i22 * w2);
     if (!(x1 >= 0.0 && x2 >= 0.0)) {
-        x1 = -w1 / a11;  // point 1 alone
+        x1 = -w1 * c.invA11;  // point 1 alone
         x2 = 0.0;
         if (!(x1 >= 0.0 && a12 * x1 + w2 >= 0.0)) {
             x1 = 0.0;  // point 2 alone
-            x2 = -w2 / a22;
+            x2 = -w2 * c.invA22;
             if (!(x2 >= 0.0 && a12 * x2 + w1 >= 0.0)) {
                 x2 = 0.0;  // neither
                 if (!(w1 >= 0.0 && w2 >= 0.0)) return false;
@@ -346,40 +398,18 @@ inline bool solveBlock(Row& c, State& a, State& b, const double bias[2],
 }
 }  // namespace
 
-void ContactSolver::solve(double h, bool useBias, const ContactSettings& settings) {
-    const double invH = 1.0 / h;
-    const double maxPushOut = settings.pushOut;
+void ContactSolver::solve() {
     BodyState* state = state_.data();
     for (Row& c : rows_) {
         BodyState& a = state[c.a];
         BodyState& b = state[c.b];
-        // Per point: the bias velocity, and the soft parameters (a speculative point, or a
-        // penetrating one during relax, is rigid).
-        double bias[2] = {0.0, 0.0}, massScale[2] = {1.0, 1.0}, impulseScale[2] = {0.0, 0.0};
-        double compliance[2] = {0.0, 0.0};
-        bool active[2] = {true, true};
-        for (int k = 0; k < c.pointCount; ++k) {
-            const double s = c.p[k].separation;
-            if (s > 0.0) {
-                // Speculative: close at most the gap. Only while solving: relaxing a gap would
-                // brake an approaching body a sub-step early (the next solve sees the gap anew).
-                bias[k] = s * invH;
-                active[k] = useBias;
-            } else if (useBias) {
-                bias[k] = std::max(c.biasRate * s, -maxPushOut);
-                massScale[k] = c.massScale;
-                impulseScale[k] = c.impulseScale;
-                compliance[k] = c.p[k].compliance;
-            }
-        }
-        const bool block = c.blockable && active[0] && active[1];
-        if (!block || !solveBlock(c, a, b, bias, compliance)) {
+        if (!c.block || !solveBlock(c, a, b)) {
             for (int k = 0; k < c.pointCount; ++k) {
-                if (!active[k]) continue;
                 RowPoint& p = c.p[k];
+                if (p.effectiveMass == 0.0) continue;  // inactive in this phase
                 const double vn = relativeVelocity(a, b, p.rAx, p.rAy, p.rBx, p.rBy, c.nx, c.ny);
-                double impulse = -p.normalMass * massScale[k] * (vn + bias[k]) -
-                                 impulseScale[k] * p.normalImpulse;
+                double impulse =
+                    -p.effectiveMass * (vn + p.bias) - p.impulseScale * p.normalImpulse;
                 const double accumulated = std::max(p.normalImpulse + impulse, 0.0);
                 impulse = accumulated - p.normalImpulse;
                 p.normalImpulse = accumulated;
@@ -447,7 +477,8 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         }
         if (moved) updateSeparations();
         warmStart();
-        for (int it = 0; it < settings.iterations; ++it) solve(hi, true, settings);
+        preparePhase(hi, true, settings);
+        for (int it = 0; it < settings.iterations; ++it) solve();
         for (std::size_t k = 0; k < count; ++k) {
             SolverBody& b = bodies_[k];
             const BodyState& s = state_[k];
@@ -465,7 +496,8 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         }
         updateSeparations();
         moved = false;
-        for (int it = 0; it < settings.relaxIterations; ++it) solve(hi, false, settings);
+        preparePhase(hi, false, settings);
+        for (int it = 0; it < settings.relaxIterations; ++it) solve();
         for (std::size_t k = 0; k < count; ++k) {
             SolverBody& b = bodies_[k];
             const BodyState& s = state_[k];

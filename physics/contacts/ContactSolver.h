@@ -131,24 +131,36 @@ private:
     struct BodyMotion {
         double dx, dy, cos, sin;
     };
-    // A contact point as the iterations see it.
+    // A contact point as the iterations see it. The phase terms (bias, effectiveMass,
+    // impulseScale) depend only on the separation, which is fixed within a phase (a soft solve
+    // or a relax): preparePhase() sets them once per phase, not once per iteration.
     struct RowPoint {
         double rAx, rAy, rBx, rBy;  // anchors (zero on the static side)
-        double baseSeparation, separation;
-        double normalMass, tangentMass;
-        double compliance;  // of the soft normal constraint, for the block solve
+        double bias;                // the phase's bias velocity
+        double effectiveMass;       // normalMass times the phase's mass scale (0: inactive)
+        double impulseScale;        // the phase's impulse scale
+        double tangentMass;
         double normalImpulse, tangentImpulse;
     };
     // A constraint as the iterations see it: built once per step from ContactConstraint with
-    // everything that does not change within the step (masses, the block's K, the softness).
+    // everything that does not change within the step (masses, the block's K), and per phase
+    // the block's inverse.
     struct Row {
         int a, b;  // BodyState indices
         int pointCount;
-        bool blockable;  // two points whose K is well conditioned
+        bool block;  // the phase solves the two points as a block
         double nx, ny, friction;
-        double biasRate, massScale, impulseScale;
         double k11, k12, k22;
+        // The phase's block matrix A = K + diag(compliance): a12 and A⁻¹ (symmetric), and the
+        // single-point fallbacks 1/a11, 1/a22.
+        double a12, i11, i12, i22, invA11, invA22;
         RowPoint p[2];
+    };
+    // What the phases are built from, per row (cold: read once per phase).
+    struct RowSetup {
+        double biasRate, massScale, impulseScale;
+        double normalMass[2], compliance[2];
+        bool blockable;  // two points whose K is well conditioned
     };
 
     void loadBodies(const Vec& q0, const Vec& u0, const Vec& u);
@@ -158,7 +170,9 @@ private:
     bool bounce(double h, int substeps, const ContactSettings& settings);
     double smoothNormalChange(const Row& c, const RowPoint& p) const;
     static Softness makeSoft(double hertz, double zeta, double h);
-    void solve(double h, bool useBias, const ContactSettings& settings);
+    // The phase's per-row terms from the current separations (useBias: soft solve, else relax).
+    void preparePhase(double h, bool useBias, const ContactSettings& settings);
+    void solve();
     // Separations with the bodies where the solver's path has taken them.
     void updateSeparations();
 
@@ -167,6 +181,8 @@ private:
     std::vector<BodyState> state_;        // bodies_.size() + 1 (the static world last)
     std::vector<BodyMotion> motion_;      // likewise
     std::vector<Row> rows_;               // per constraint, in constraints_'s order
+    std::vector<RowSetup> setup_;         // likewise
+    std::vector<double> separation_;      // per row point (2 per row), where the path is now
     std::vector<int> bouncing_;           // rows with restitution > 0
     std::vector<unsigned char> shifted_;  // per row point (2 per row): moved to its time of impact
 };
