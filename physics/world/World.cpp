@@ -481,10 +481,12 @@ bool World::integrate(double t, double h, int next, StateSummary* summary) {
 }
 
 void World::solveContacts(double h, int next) {
-    // Contacts act after the smooth step as impulses and a bounded position correction. The
-    // energy the impulses change is physical work (friction, restitution losses, the normal
-    // force), booked in work_nc; the energy of the push-out that removes overlap is the
-    // solver's, booked in correction (CONTRACT.md §6).
+    // Contacts act after the smooth step as impulses and a bounded position correction. What
+    // the impulses change (with the motion they cause) is physical work only where it takes
+    // energy out (friction, restitution losses, an inelastic normal impulse): a contact cannot
+    // do positive work. Energy the stage puts in is the solver's own, booked in correction with
+    // the push-out that removes overlap (CONTRACT §6): a pile solved short of convergence, or a
+    // resting body given back what symplectic Euler's step took, is never work_nc.
     const auto start = Clock::now();
     Vec& q = q_[next];
     Vec& u = u_[next];
@@ -497,8 +499,9 @@ void World::solveContacts(double h, int next) {
     const double unpushed = mechanicalEnergy(withoutPushOut_, u);
     effectSeconds_.back() += secondsSince(start);
     if (!std::isfinite(after)) return;  // the guard reports it
-    ledger_.workNc += unpushed - before;
-    ledger_.correction += after - unpushed;
+    const double impulses = unpushed - before;
+    ledger_.workNc += std::min(impulses, 0.0);
+    ledger_.correction += (after - unpushed) + std::max(impulses, 0.0);
 }
 
 StateSummary World::closeLedger(const StateSummary* summed) {

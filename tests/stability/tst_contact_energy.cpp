@@ -37,7 +37,7 @@ private slots:
     void pushOutIsBookedAsCorrection() {
         // A 1 kg box set d = 5 cm into the floor is pushed out to rest on it: the push raises
         // its potential energy by m·g·d, and that is the solver's correction, not physical
-        // work. Nothing else happens, so the correction is m·g·d and the box is at rest.
+        // work.
         QFETCH(QString, integrator);
         SceneDesc scene = atDefaults(scenes::tower(1), qPrintable(integrator));
         const double d = 0.05, m = 1.0, g = 9.81;
@@ -48,16 +48,51 @@ private slots:
         qInfo("%s: correction %.4f J (m·g·d = %.4f J), work_nc %.2e J, drift %.2e J",
               qPrintable(integrator), e.correction, m * g * d, e.workNc, e.drift);
         QVERIFY(std::abs(world->boxPosition(0).y() - 0.5) < 0.005);
-        // The push ends within the soft contact's sag (under a millimetre here) of d.
-        QVERIFY2(std::abs(e.correction - m * g * d) < 0.05 * m * g * d,
-                 qPrintable(QString::number(e.correction)));
-        // The box ends at rest where it should have been: all the energy it gained is the
-        // push-out's, so the total changed by exactly the correction. (Under symplectic and
-        // implicit Euler a resting box also shows the integrator's own error, ½·m·g²·h² per
-        // step, as drift, which the contact's work_nc balances: that is not the push-out.)
+        // The push ends within the soft contact's sag (under a millimetre here) of d, and its
+        // m·g·d is correction. (Under symplectic and implicit Euler a resting box also gets
+        // back, each step, the ½·m·g²·h² that the method's step took, which shows as drift:
+        // that too is the solver's, so correction holds at least the push.)
+        QVERIFY2(e.correction > 0.95 * m * g * d, qPrintable(QString::number(e.correction)));
+        // The box ends at rest on the floor: all it gained is the push's m·g·d, and a contact
+        // never does positive work, so nothing of it is in work_nc.
         const double gained = e.kinetic + e.potential - e.initial;
-        QVERIFY2(std::abs(gained - e.correction) < 0.01 * m * g * d,
-                 qPrintable(QString("gained %1 J, correction %2 J").arg(gained).arg(e.correction)));
+        QVERIFY2(std::abs(gained - m * g * d) < 0.05 * m * g * d,
+                 qPrintable(QString::number(gained)));
+        QVERIFY(e.workNc <= 1e-12);
+    }
+
+    void contactsNeverDoPositiveWork_data() {
+        QTest::addColumn<QString>("integrator");
+        QTest::addColumn<QString>("scene");
+        for (const char* name : {"symplectic_euler", "velocity_verlet", "rk4", "implicit_euler"}) {
+            QTest::newRow(qPrintable(QString("%1 pyramid").arg(name)))
+                << QString(name) << "pyramid";
+            QTest::newRow(qPrintable(QString("%1 bouncing ball").arg(name)))
+                << QString(name) << "ball";
+            QTest::newRow(qPrintable(QString("%1 dominoes").arg(name)))
+                << QString(name) << "dominoes";
+        }
+    }
+    void contactsNeverDoPositiveWork() {
+        // Friction, restitution and the normal force only take energy out: work_nc of a scene
+        // whose only non-conservative forces are contacts never rises, whatever the solver or
+        // the integrator does (what a solver puts in is correction).
+        QFETCH(QString, integrator);
+        QFETCH(QString, scene);
+        const SceneDesc desc = scene == "pyramid" ? scenes::pyramid(10)
+                               : scene == "ball"  ? scenes::ballDrop(1.0, 0.8)
+                                                  : scenes::dominoes(10);
+        auto world = buildWorld(atDefaults(desc, qPrintable(integrator))).world;
+        double previous = world->energy().workNc;
+        for (int k = 0; k < 300; ++k) {
+            QVERIFY(world->step());
+            QVERIFY2(world->energy().workNc <= previous + 1e-12,
+                     qPrintable(QString("step %1: work_nc rose from %2 to %3 J")
+                                    .arg(k)
+                                    .arg(previous)
+                                    .arg(world->energy().workNc)));
+            previous = world->energy().workNc;
+        }
     }
 
     void elasticGasKeepsItsEnergyAtDefaults_data() { addIntegrators(); }
