@@ -4,7 +4,39 @@
 #include <cmath>
 #include <numbers>
 
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define PHASEBOX_WIDE_CONTACTS 1
+#endif
+
 namespace phasebox {
+
+namespace {
+using WideRow = ContactSolver::WideRow;
+using ContactSolverBody = ContactSolver::BodyState;
+
+// The wide sweep where AVX2 is there (chosen at run time; the build is generic x86-64). No
+// fused multiply-add: each lane does the scalar row's operations (solveRow) in the same order.
+#ifdef PHASEBOX_WIDE_CONTACTS
+#pragma GCC push_options
+#pragma GCC target("avx2")
+namespace avx2 {
+typedef double Lanes __attribute__((vector_size(32)));
+#include "physics/contacts/ContactWideLoop.inc"
+}  // namespace avx2
+#pragma GCC pop_options
+#endif
+
+using WideLoop = void (*)(WideRow*, int, ContactSolverBody*);
+// Without AVX2 the rows are solved one by one in the same colour order (the portable build of
+// the four-lane loop, on SSE2 pairs, was slower than that).
+WideLoop chooseWideLoop() {
+#ifdef PHASEBOX_WIDE_CONTACTS
+    if (__builtin_cpu_supports("avx2")) return avx2::solveWideLoop;
+#endif
+    return nullptr;
+}
+const WideLoop wideLoop = chooseWideLoop();
+}  // namespace
 
 namespace {
 constexpr int kMaxCollisionPasses = 32;
@@ -145,6 +177,127 @@ void ContactSolver::buildRows(double hertz, double zeta, double h) {
         if (c.restitution != 0.0) bouncing_.push_back(static_cast<int>(i));
     }
     shifted_.resize(2 * rows_.size());
+    colourRows();
+}
+
+void ContactSolver::colourRows() {
+    // Box2D v3's graph colouring: each row takes the first colour none of whose rows shares a
+    // dynamic body with it (the static world is shared freely); rows no colour can take are
+    // solved alone after the coloured ones. Colour by colour, in the constraints' order: the
+    // sweep order is fixed, so the results are the same run to run.
+    const std::size_t bodyCount = bodies_.size();
+    const int world = static_cast<int>(bodyCount);
+    const std::size_t words = (bodyCount + 63) / 64;
+    colourBits_.assign(kColours * words, 0);
+    colourCount_.assign(kColours + 1, 0);
+    slot_.resize(rows_.size());
+    overflow_.clear();
+    auto taken = [&](int colour, int body) {
+        return body != world && (colourBits_[colour * words + body / 64] >> (body % 64) & 1u) != 0;
+    };
+    auto take = [&](int colour, int body) {
+        if (body != world)
+            colourBits_[colour * words + body / 64] |= std::uint64_t{1} << (body % 64);
+    };
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        const Row& c = rows_[i];
+        int colour = 0;
+        while (colour < kColours && (taken(colour, c.a) || taken(colour, c.b))) ++colour;
+        if (colour == kColours) {
+            slot_[i] = -1;
+            overflow_.push_back(static_cast<int>(i));
+            continue;
+        }
+        take(colour, c.a);
+        take(colour, c.b);
+        slot_[i] = colour;  // the colour for now, the lane below
+        ++colourCount_[colour];
+    }
+    // Each colour starts a new wide row; colourCount_ becomes each colour's next slot.
+    int wideRows = 0;
+    for (int colour = 0; colour < kColours; ++colour) {
+        const int n = colourCount_[colour];
+        colourCount_[colour] = 4 * wideRows;
+        wideRows += (n + 3) / 4;
+    }
+    wide_.resize(wideRows);
+    order_.assign(4 * wideRows, -1);
+    for (WideRow& w : wide_) {
+        w = WideRow{};
+        for (int l = 0; l < 4; ++l) w.a[l] = w.b[l] = world;
+    }
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        if (slot_[i] < 0) continue;
+        const int at = colourCount_[slot_[i]]++;
+        slot_[i] = at;
+        order_[at] = static_cast<int>(i);
+        WideRow& w = wide_[at / 4];
+        const int l = at % 4;
+        const Row& c = rows_[i];
+        const BodyState& a = state_[c.a];
+        const BodyState& b = state_[c.b];
+        w.a[l] = c.a;
+        w.b[l] = c.b;
+        w.nx[l] = c.nx;
+        w.ny[l] = c.ny;
+        w.friction[l] = c.friction;
+        w.mA[l] = a.invMass;
+        w.iA[l] = a.invInertia;
+        w.mB[l] = b.invMass;
+        w.iB[l] = b.invInertia;
+        w.k11[l] = c.k11;
+        w.k12[l] = c.k12;
+        w.k22[l] = c.k22;
+        for (int k = 0; k < 2; ++k) {
+            const RowPoint& p = c.p[k];
+            WideRow::Point& q = w.p[k];
+            q.rAx[l] = p.rAx;
+            q.rAy[l] = p.rAy;
+            q.rBx[l] = p.rBx;
+            q.rBy[l] = p.rBy;
+            q.tangentMass[l] = p.tangentMass;
+        }
+    }
+}
+
+void ContactSolver::packPhase(std::size_t i) {
+    const int at = slot_[i];
+    if (at < 0 || !wideLoop) return;
+    const Row& c = rows_[i];
+    WideRow& w = wide_[at / 4];
+    const int l = at % 4;
+    w.block[l] = c.block ? 1.0 : 0.0;
+    w.a12[l] = c.block ? c.a12 : 0.0;
+    w.i11[l] = c.block ? c.i11 : 0.0;
+    w.i12[l] = c.block ? c.i12 : 0.0;
+    w.i22[l] = c.block ? c.i22 : 0.0;
+    w.invA11[l] = c.block ? c.invA11 : 0.0;
+    w.invA22[l] = c.block ? c.invA22 : 0.0;
+    for (int k = 0; k < 2; ++k) {
+        const RowPoint& p = c.p[k];
+        WideRow::Point& q = w.p[k];
+        const bool used = k < c.pointCount;
+        q.bias[l] = used ? p.bias : 0.0;
+        q.effectiveMass[l] = used ? p.effectiveMass : 0.0;
+        q.impulseScale[l] = used ? p.impulseScale : 0.0;
+        q.normalImpulse[l] = used ? p.normalImpulse : 0.0;
+        q.tangentImpulse[l] = used ? p.tangentImpulse : 0.0;
+    }
+}
+
+void ContactSolver::unpackImpulses() {
+    if (!wideLoop) return;
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        const int at = slot_[i];
+        if (at < 0) continue;
+        Row& c = rows_[i];
+        const WideRow& w = wide_[at / 4];
+        const int l = at % 4;
+        for (int k = 0; k < c.pointCount; ++k) {
+            c.p[k].normalImpulse = w.p[k].normalImpulse[l];
+            c.p[k].tangentImpulse = w.p[k].tangentImpulse[l];
+        }
+    }
 }
 
 void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& settings) {
@@ -188,6 +341,7 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
             c.invA11 = 1.0 / a11;
             c.invA22 = 1.0 / a22;
         }
+        packPhase(i);
     }
 }
 
@@ -399,8 +553,19 @@ inline bool solveBlock(Row& c, State& a, State& b) {
 }  // namespace
 
 void ContactSolver::solve() {
+    // The coloured rows four at a time, then those no colour took, one by one.
+    if (wideLoop) {
+        wideLoop(wide_.data(), static_cast<int>(wide_.size()), state_.data());
+    } else {
+        for (const int i : order_)
+            if (i >= 0) solveRow(rows_[i]);
+    }
+    for (const int i : overflow_) solveRow(rows_[i]);
+}
+
+void ContactSolver::solveRow(Row& c) {
     BodyState* state = state_.data();
-    for (Row& c : rows_) {
+    {
         BodyState& a = state[c.a];
         BodyState& b = state[c.b];
         if (!c.block || !solveBlock(c, a, b)) {
@@ -479,6 +644,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         warmStart();
         preparePhase(hi, true, settings);
         for (int it = 0; it < settings.iterations; ++it) solve();
+        unpackImpulses();
         for (std::size_t k = 0; k < count; ++k) {
             SolverBody& b = bodies_[k];
             const BodyState& s = state_[k];
@@ -498,6 +664,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         moved = false;
         preparePhase(hi, false, settings);
         for (int it = 0; it < settings.relaxIterations; ++it) solve();
+        unpackImpulses();
         for (std::size_t k = 0; k < count; ++k) {
             SolverBody& b = bodies_[k];
             const BodyState& s = state_[k];

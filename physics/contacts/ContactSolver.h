@@ -19,6 +19,9 @@
 // - Friction: Coulomb, each point's tangent impulse clamped to μ times its normal impulse.
 // - Warm starting: accumulated impulses carry over from step to step when a contact's
 //   pair and feature ids persist.
+// - Order: the constraints are graph-coloured each step (no two in a colour share a dynamic
+//   body) and swept colour by colour, four at a time with AVX2 where the CPU has it, one by
+//   one in the same order otherwise (bit-identical either way).
 
 #include "physics/contacts/Geometry.h"
 #include "physics/core/Types.h"
@@ -116,15 +119,31 @@ public:
     static constexpr int kMaxInnerSubsteps = 64;
     static int innerSubsteps(double h, const ContactSettings& settings);
 
-private:
-    struct Softness {
-        double biasRate, massScale, impulseScale;
-    };
     // The hot per-body state the iterations touch (40 bytes). Index bodies_.size() is the
     // static world: zero velocity and zero inverse masses, so a row needs no branch for it.
     struct BodyState {
         double vx, vy, w;
         double invMass, invInertia;
+    };
+    // Four rows of one graph colour side by side (no two share a dynamic body), lane by lane,
+    // for the wide kernels (ContactWideLoop.inc). Unused lanes join the static world to itself
+    // with zero masses.
+    struct alignas(32) WideRow {
+        int a[4], b[4];
+        double nx[4], ny[4], friction[4], mA[4], iA[4], mB[4], iB[4];
+        double k11[4], k12[4], k22[4];
+        double a12[4], i11[4], i12[4], i22[4], invA11[4], invA22[4], block[4];  // the phase's
+        struct Point {
+            double rAx[4], rAy[4], rBx[4], rBy[4];
+            double bias[4], effectiveMass[4], impulseScale[4];  // the phase's
+            double tangentMass[4], normalImpulse[4], tangentImpulse[4];
+        } p[2];
+    };
+    static constexpr int kColours = 24;
+
+private:
+    struct Softness {
+        double biasRate, massScale, impulseScale;
     };
     // Where a body is now relative to where its contacts were found: Δp and R(Δθ), once per
     // solver phase.
@@ -173,17 +192,30 @@ private:
     // The phase's per-row terms from the current separations (useBias: soft solve, else relax).
     void preparePhase(double h, bool useBias, const ContactSettings& settings);
     void solve();
+    void solveRow(Row& c);
+    // Graph colours and the wide rows' step constants (after buildRows).
+    void colourRows();
+    // The phase's terms of row i into its wide lane.
+    void packPhase(std::size_t i);
+    // The wide rows' accumulated impulses back into rows_ (after a phase).
+    void unpackImpulses();
     // Separations with the bodies where the solver's path has taken them.
     void updateSeparations();
 
     std::vector<SolverBody> bodies_;
     std::vector<ContactConstraint> constraints_;
-    std::vector<BodyState> state_;        // bodies_.size() + 1 (the static world last)
-    std::vector<BodyMotion> motion_;      // likewise
-    std::vector<Row> rows_;               // per constraint, in constraints_'s order
-    std::vector<RowSetup> setup_;         // likewise
-    std::vector<double> separation_;      // per row point (2 per row), where the path is now
-    std::vector<int> bouncing_;           // rows with restitution > 0
+    std::vector<BodyState> state_;    // bodies_.size() + 1 (the static world last)
+    std::vector<BodyMotion> motion_;  // likewise
+    std::vector<Row> rows_;           // per constraint, in constraints_'s order
+    std::vector<RowSetup> setup_;     // likewise
+    std::vector<double> separation_;  // per row point (2 per row), where the path is now
+    std::vector<WideRow> wide_;       // the coloured rows, colour by colour
+    std::vector<int> slot_;           // per row: 4·wide row + lane, or −1 (solved alone)
+    std::vector<int> order_;          // per wide slot: its row, or −1 (the sweep order)
+    std::vector<int> overflow_;       // rows no colour could take, solved after the wide ones
+    std::vector<std::uint64_t> colourBits_;  // per colour, a bit per body: taken
+    std::vector<int> colourCount_;           // rows per colour, then the first wide row
+    std::vector<int> bouncing_;              // rows with restitution > 0
     std::vector<unsigned char> shifted_;  // per row point (2 per row): moved to its time of impact
 };
 
