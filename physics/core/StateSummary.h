@@ -21,11 +21,13 @@ struct StateSummary {
     bool finite = true;              // every coordinate and velocity is finite
 };
 
-// Calls update(i, count) to write DOFs [i, i + count) of (q, u) and then sums them, for the
-// whole state: points [0, pairedDofs) in pairs, rigid bodies after them in triples.
-template <typename Update>
-StateSummary sweepState(int pairedDofs, const Vec& mass, const Vec& q, const Vec& u,
-                        Update&& update) {
+// Sums the whole state: points [0, pairedDofs) in pairs, rigid bodies after them in triples.
+// point(i, x, v) yields the (x, y) position and velocity of the point at DOF i (an integrator's
+// fused pass computes and stores them there, and hands them over in registers); body(k) is
+// called before the rigid body at DOF k is read from (q, u).
+template <typename Point, typename Body>
+StateSummary sweepState(int pairedDofs, const Vec& mass, const Vec& q, const Vec& u, Point&& point,
+                        Body&& body) {
     using A2 = Eigen::Array2d;
     const double* m = mass.data();
     const double* qp = q.data();
@@ -37,23 +39,25 @@ StateSummary sweepState(int pairedDofs, const Vec& mass, const Vec& q, const Vec
     A2 ke0 = A2::Zero(), ke1 = A2::Zero(), mom0 = A2::Zero(), mom1 = A2::Zero();
     int i = 0;
     for (; i + 4 <= pairedDofs; i += 4) {
-        update(i, 4);
+        A2 x0, v0, x1, v1;
+        point(i, x0, v0);
+        point(i + 2, x1, v1);
         const A2 m0 = Eigen::Map<const A2>(m + i), m1 = Eigen::Map<const A2>(m + i + 2);
-        const A2 u0 = Eigen::Map<const A2>(up + i), u1 = Eigen::Map<const A2>(up + i + 2);
-        ke0 += m0 * u0 * u0;
-        ke1 += m1 * u1 * u1;
-        mom0 += m0 * Eigen::Map<const A2>(qp + i);
-        mom1 += m1 * Eigen::Map<const A2>(qp + i + 2);
+        ke0 += m0 * v0 * v0;
+        ke1 += m1 * v1 * v1;
+        mom0 += m0 * x0;
+        mom1 += m1 * x1;
     }
     for (; i < pairedDofs; i += 2) {
-        update(i, 2);
-        const A2 m0 = Eigen::Map<const A2>(m + i), u0 = Eigen::Map<const A2>(up + i);
-        ke0 += m0 * u0 * u0;
-        mom0 += m0 * Eigen::Map<const A2>(qp + i);
+        A2 x0, v0;
+        point(i, x0, v0);
+        const A2 m0 = Eigen::Map<const A2>(m + i);
+        ke0 += m0 * v0 * v0;
+        mom0 += m0 * x0;
     }
     double angularKinetic = 0.0, angles = 0.0;
     for (int k = pairedDofs; k < n; k += 3) {
-        update(k, 3);
+        body(k);
         const A2 mb = Eigen::Map<const A2>(m + k), ub = Eigen::Map<const A2>(up + k);
         ke0 += mb * ub * ub;
         mom0 += mb * Eigen::Map<const A2>(qp + k);
@@ -70,7 +74,15 @@ StateSummary sweepState(int pairedDofs, const Vec& mass, const Vec& q, const Vec
 }
 
 inline StateSummary summarizeState(int pairedDofs, const Vec& mass, const Vec& q, const Vec& u) {
-    return sweepState(pairedDofs, mass, q, u, [](int, int) {});
+    const double* qp = q.data();
+    const double* up = u.data();
+    return sweepState(
+        pairedDofs, mass, q, u,
+        [=](int i, Eigen::Array2d& x, Eigen::Array2d& v) {
+            x = Eigen::Map<const Eigen::Array2d>(qp + i);
+            v = Eigen::Map<const Eigen::Array2d>(up + i);
+        },
+        [](int) {});
 }
 
 }  // namespace phasebox

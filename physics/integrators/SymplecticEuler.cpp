@@ -25,45 +25,47 @@ namespace {
 class SymplecticEuler final : public Integrator {
 public:
     const IntegratorInfo& info() const override { return kSymplecticEulerInfo; }
-    void reset(int n) override { a_.setZero(n); }
+    void reset(int) override {}
     bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
                  double& workNc) override {
-        workNc += h * sys.acceleration(t, q0, u0, a_);
+        // The accelerations are written into the output velocities, which the update then
+        // overwrites lane by lane: no array of their own to write, read back and keep in cache.
+        workNc += h * sys.acceleration(t, q0, u0, u);
         // One fused pass: the velocity update and the position update read the same lanes,
         // and when the caller wants the end state summed, the sum reads them from registers.
         const double* __restrict q0p = q0.data();
         const double* __restrict u0p = u0.data();
-        const double* __restrict ap = a_.data();
+        const double* ap = u.data();
         double* __restrict qp = q.data();
-        double* __restrict up = u.data();
-        // Two lanes at a time, so that the sum's 2-lane loads read what these stores wrote
-        // (scalar stores under a vector load stall the store-to-load forwarding).
+        double* up = u.data();
         using A2 = Eigen::Array2d;
-        auto update = [=](Eigen::Index first, Eigen::Index count) {
-            Eigen::Index i = first;
-            for (; i + 2 <= first + count; i += 2) {
-                const A2 v = Eigen::Map<const A2>(u0p + i) + h * Eigen::Map<const A2>(ap + i);
-                Eigen::Map<A2>(up + i) = v;
-                Eigen::Map<A2>(qp + i) = Eigen::Map<const A2>(q0p + i) + h * v;
-            }
-            if (i < first + count) {  // a rigid body's angle
+        // A point: two lanes, handed to the sum in registers.
+        auto point = [=](Eigen::Index i, A2& x, A2& v) {
+            v = Eigen::Map<const A2>(u0p + i) + h * Eigen::Map<const A2>(ap + i);
+            x = Eigen::Map<const A2>(q0p + i) + h * v;
+            Eigen::Map<A2>(up + i) = v;
+            Eigen::Map<A2>(qp + i) = x;
+        };
+        // A rigid body: (x, y, θ).
+        auto body = [=](Eigen::Index k) {
+            for (Eigen::Index i = k; i < k + 3; ++i) {
                 const double v = u0p[i] + h * ap[i];
                 up[i] = v;
                 qp[i] = q0p[i] + h * v;
             }
         };
+        const int paired = sys.pairedDofs();
         if (StateSummary* summary = requestedSummary()) {
-            *summary = sweepState(sys.pairedDofs(), sys.mass(), q, u, update);
+            *summary = sweepState(paired, sys.mass(), q, u, point, body);
             markSummarized();
         } else {
-            update(0, q.size());
+            A2 x, v;
+            for (Eigen::Index i = 0; i < paired; i += 2) point(i, x, v);
+            for (Eigen::Index k = paired; k < q.size(); k += 3) body(k);
         }
         ++stats_.acceptedSteps;
         return true;
     }
-
-private:
-    Vec a_;
 };
 }  // namespace
 
