@@ -4,16 +4,16 @@
 // Box2D gets the very scene Phasebox gets: its boxes, sizes, masses, frictions, restitutions,
 // gravity and ground are read from scenes::pyramid(rows) (ground plane → a two-sided edge
 // wider than the base). Box2D runs at its defaults: dt = 1/60, 8 velocity and 3 position
-// iterations, continuous collision on, single precision. Phasebox runs at the scene's
-// defaults: dt = 1/60, 4 sub-steps of 4 soft iterations and 2 relax iterations, in double.
+// iterations, continuous collision on, single precision. Phasebox runs at the format's
+// defaults: dt = 1/60, one step per frame, in which its contact solver takes 4 inner sub-steps
+// of 3 soft iterations and 1 relax iteration, in double.
 //
 // Box2D puts resting bodies to sleep (after 0.5 s below its sleep tolerances), after which a
 // settled pyramid costs almost nothing per step; Phasebox has no sleeping. The ratio that
 // compares the same work is therefore against Box2D with sleeping off; Box2D with sleeping on
 // (its default) is shown beside it. "Box2D 24 it" runs 24 velocity iterations per step, as
-// many velocity passes as Phasebox makes (4 sub-steps × (4 + 2) at the time of writing; now
-// 4 × (4 + 1)), to separate the cost of an
-// iteration from the number of iterations.
+// the velocity passes Phasebox makes (4 inner sub-steps × (3 + 1) = 16, and 24 when this was
+// written), to separate the cost of an iteration from the number of iterations.
 //
 // The engines take turns inside each repeat, so a disturbance from another process hits all
 // of them alike; the median then drops it.
@@ -233,7 +233,7 @@ struct Box2dEngine {
 
 enum Candidate { kPhasebox, kBox2d, kBox2d24, kBox2dSleeping, kCandidates };
 constexpr const char* kCandidateLabel[kCandidates] = {
-    "Phasebox (scene defaults: 4 sub-steps)",
+    "Phasebox (format defaults, 1 step)",
     "Box2D 2.4.1, 8 vel + 3 pos it, no sleeping",
     "Box2D 2.4.1, 24 vel + 3 pos it, no sleeping",
     "Box2D 2.4.1, 8 + 3, sleeping on (its default)",
