@@ -72,7 +72,10 @@ void TestPiles::pileAtOnePointIsBounded() {
     // (22–35 s and 3.3 GB per simulated second); now 1.3 s and 61 MB on an idle machine. The time
     // bound leaves room for a loaded two-core CI runner and still fails the quadratic code.
     constexpr int kCount = 3000;
-    constexpr double kSecondsBound = 4.5;
+    // Issue 15's bound: one simulated second in under 5 s on this two-core machine. Measured
+    // 1.3 s idle and 3.3–3.9 s inside the CI run (two suites at once, and the checked build);
+    // the quadratic code took 22–35 s.
+    constexpr double kSecondsBound = 5.0;
     auto world = buildWorld(pileAtPoint(kCount)).world;
     QVERIFY(world->contacts() != nullptr);
     const long long pairBound =
