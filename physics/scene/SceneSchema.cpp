@@ -37,6 +37,28 @@ Field<D> idField(std::string_view defaults) {
             .present = hasId<D>};
 }
 
+// The material fields every collider shares (particles, boxes, planes).
+template <typename D>
+Field<D> frictionField(double D::*member) {
+    return {.key = key::friction,
+            .type = T::Number,
+            .member = member,
+            .range = kCoefficient,
+            .label = "Friction",
+            .description = "friction coefficient \u03bc",
+            .editor = kFrictionEditor};
+}
+template <typename D>
+Field<D> restitutionField(double D::*member) {
+    return {.key = key::restitution,
+            .type = T::Number,
+            .member = member,
+            .range = unitInterval(),
+            .label = "Restitution",
+            .description = "bounce, 0 to 1",
+            .editor = kRestitutionEditor};
+}
+
 template <typename D, std::size_t N>
 Table<D> makeTable(std::string_view tableKey, std::string_view description,
                    const Field<D> (&fields)[N], bool implied = false) {
@@ -336,20 +358,8 @@ const Field<ParticleDesc> kParticle[] = {
      .label = "Pinned",
      .description = "held in place",
      .editor = kSwitch},
-    {.key = key::restitution,
-     .type = T::Number,
-     .member = &ParticleDesc::restitution,
-     .range = unitInterval(),
-     .label = "Restitution",
-     .description = "bounce, 0 to 1",
-     .editor = kRestitutionEditor},
-    {.key = key::friction,
-     .type = T::Number,
-     .member = &ParticleDesc::friction,
-     .range = kCoefficient,
-     .label = "Friction",
-     .description = "friction coefficient \u03bc",
-     .editor = kFrictionEditor},
+    restitutionField(&ParticleDesc::restitution),
+    frictionField(&ParticleDesc::friction),
     {.key = key::charge,
      .type = T::Number,
      .member = &ParticleDesc::charge,
@@ -429,20 +439,8 @@ const Field<BoxDesc> kBox[] = {
      .label = "Static",
      .description = "never moves",
      .editor = kSwitch},
-    {.key = key::friction,
-     .type = T::Number,
-     .member = &BoxDesc::friction,
-     .range = kCoefficient,
-     .label = "Friction",
-     .description = "friction coefficient \u03bc",
-     .editor = kFrictionEditor},
-    {.key = key::restitution,
-     .type = T::Number,
-     .member = &BoxDesc::restitution,
-     .range = unitInterval(),
-     .label = "Restitution",
-     .description = "bounce, 0 to 1",
-     .editor = kRestitutionEditor},
+    frictionField(&BoxDesc::friction),
+    restitutionField(&BoxDesc::restitution),
 };
 
 const Field<PlaneDesc> kPlane[] = {
@@ -465,20 +463,8 @@ const Field<PlaneDesc> kPlane[] = {
      .description = "points out of the solid side; normalised on load",
      .need = Need::Required,
      .rule = Rule::NonZeroDirection},
-    {.key = key::friction,
-     .type = T::Number,
-     .member = &PlaneDesc::friction,
-     .range = kCoefficient,
-     .label = "Friction",
-     .description = "friction coefficient \u03bc",
-     .editor = kFrictionEditor},
-    {.key = key::restitution,
-     .type = T::Number,
-     .member = &PlaneDesc::restitution,
-     .range = unitInterval(),
-     .label = "Restitution",
-     .description = "bounce, 0 to 1",
-     .editor = kRestitutionEditor},
+    frictionField(&PlaneDesc::friction),
+    restitutionField(&PlaneDesc::restitution),
 };
 
 const Field<SpringDesc> kSpring[] = {

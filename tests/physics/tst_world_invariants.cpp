@@ -177,14 +177,14 @@ private slots:
     void circularOrbitPeriod();
     void mutualGravityBinaryOrbit();
     void onlyListedEffectsAreConstructed();
-    void freeFallFastPathMatchesTheGenericStep();
-    void freeFallInPlaceNeverLosesTheLastGoodState();
+    void gravityAloneMatchesTheForceChannel();
+    void anOverflowRestoresTheLastGoodState();
 };
 
-// Symplectic Euler under gravity alone takes a fused single-pass step; it must compute exactly
-// what the generic path computes. A drag of zero forces the generic path without changing a
-// single force.
-void TestWorldInvariants::freeFallFastPathMatchesTheGenericStep() {
+// Gravity alone is an acceleration field, written straight into the accelerations; with a drag of
+// zero listed, the force channel runs too (forces summed, times 1/m). Neither changes a single
+// acceleration, so both must compute exactly the same step.
+void TestWorldInvariants::gravityAloneMatchesTheForceChannel() {
     SceneDesc scene;
     scene.simulation = simulation("symplectic_euler", 0.01);
     scene.simulation.substeps = 3;
@@ -220,10 +220,9 @@ void TestWorldInvariants::freeFallFastPathMatchesTheGenericStep() {
     QVERIFY(std::abs(a.drift - b.drift) <= 1e-9 * (std::abs(b.kinetic) + std::abs(b.potential)));
 }
 
-// The free-fall pass steps in place only when it can prove that no value or energy sum can
-// overflow. A state near the top of the double range must therefore still be stepped with the
-// frame start kept, and an overflow must restore it, whatever ran before.
-void TestWorldInvariants::freeFallInPlaceNeverLosesTheLastGoodState() {
+// A state near the top of the double range must be stepped with the frame start kept, and an
+// overflow must restore it, whatever ran before.
+void TestWorldInvariants::anOverflowRestoresTheLastGoodState() {
     SceneDesc scene;
     scene.simulation = simulation("symplectic_euler", 0.01);
     scene.effects.gravity = GravityDesc{{0.0, -9.81}};
@@ -234,7 +233,7 @@ void TestWorldInvariants::freeFallInPlaceNeverLosesTheLastGoodState() {
         scene.particles.push_back(p);
     }
     auto world = build(scene);
-    for (int k = 0; k < 10; ++k) QVERIFY(world->step());  // in place from the second frame on
+    for (int k = 0; k < 10; ++k) QVERIFY(world->step());
     Eigen::VectorXd q = world->positions(), u = world->velocities();
     u[3] = 1e200;  // kinetic energy ½·m·v² overflows to infinity in the next frame's sums
     world->setState(q, u);
