@@ -124,6 +124,20 @@ public:
     // which integrators accumulate into work_nc with their own quadrature weights.
     virtual double acceleration(double t, const Vec& q, const Vec& u, Vec& accel) = 0;
 
+    // The same acceleration split as a = ā + a_rest(q, u, t): ā one vector added to the (x, y)
+    // of every point and body (uniform fields such as gravity, which a velocity update folds in
+    // as a constant, the way Box2D applies gravity in its integrate-velocities loop), and
+    // a_rest written into rest only when `hasRest` (some effect is not uniform). Systems that
+    // do not split report everything as the rest.
+    struct SplitAcceleration {
+        Vec2 uniform = Vec2::Zero();
+        bool hasRest = true;
+        double power = 0.0;  // as acceleration() returns
+    };
+    virtual SplitAcceleration accelerationSplit(double t, const Vec& q, const Vec& u, Vec& rest) {
+        return {Vec2::Zero(), true, acceleration(t, q, u, rest)};
+    }
+
     // Power of the non-conservative forces alone (no accelerations), for methods whose last
     // force evaluation is not at the end point. Costs nothing when every effect is conservative.
     virtual double nonConservativePower(double t, const Vec& q, const Vec& u) = 0;

@@ -55,6 +55,13 @@ public:
     // of the force path. With overwrite the effect assigns instead of adding (it is the first
     // writer of the evaluation), which saves zeroing the array first.
     virtual bool isAccelerationField() const { return false; }
+    // A field that is one acceleration on every dynamic point's and body's (x, y), and nothing
+    // on angles, says so here; the world then hands it to the integrator as a constant
+    // (OdeSystem::accelerationSplit) instead of writing it into every lane.
+    virtual bool uniformAcceleration(Vec2& a) const {
+        (void)a;
+        return false;
+    }
     virtual void addAccelerations(double t, const Vec& q, const Vec& u, Vec& accel,
                                   bool overwrite) {
         (void)t, (void)q, (void)u, (void)accel, (void)overwrite;

@@ -17,6 +17,10 @@ public:
         return true;
     }
     bool isAccelerationField() const override { return true; }
+    bool uniformAcceleration(Vec2& a) const override {
+        a = g_;
+        return true;
+    }
     void addAccelerations(double t, const Vec& q, const Vec& u, Vec& accel,
                           bool overwrite) override;
 

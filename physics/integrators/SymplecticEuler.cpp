@@ -28,28 +28,49 @@ public:
     void reset(int) override {}
     bool advance(OdeSystem& sys, double t, double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
                  double& workNc) override {
-        // The accelerations are written into the output velocities, which the update then
-        // overwrites lane by lane: no array of their own to write, read back and keep in cache.
-        workNc += h * sys.acceleration(t, q0, u0, u);
-        // One fused pass: the velocity update and the position update read the same lanes,
-        // and when the caller wants the end state summed, the sum reads them from registers.
+        // The accelerations beyond the uniform fields are written into the output velocities,
+        // which the update then overwrites lane by lane: no array of their own to write, read
+        // back and keep in cache. The uniform part (gravity) is a constant of the loop.
+        const OdeSystem::SplitAcceleration split = sys.accelerationSplit(t, q0, u0, u);
+        workNc += h * split.power;
+        if (split.hasRest)
+            update<true>(sys, h, split.uniform, q0, u0, q, u);
+        else
+            update<false>(sys, h, split.uniform, q0, u0, q, u);
+        ++stats_.acceptedSteps;
+        return true;
+    }
+
+private:
+    // One fused pass: the velocity update and the position update read the same lanes, and
+    // when the caller wants the end state summed, the sum reads them from registers. With
+    // `Rest` the non-uniform accelerations are read from u (where they were written).
+    template <bool Rest>
+    void update(OdeSystem& sys, double h, const Vec2& uniform, const Vec& q0, const Vec& u0, Vec& q,
+                Vec& u) {
         const double* __restrict q0p = q0.data();
         const double* __restrict u0p = u0.data();
         const double* ap = u.data();
         double* __restrict qp = q.data();
         double* up = u.data();
         using A2 = Eigen::Array2d;
+        const A2 g = uniform.array();
+        const A2 hg = h * g;
         // A point: two lanes, handed to the sum in registers.
         auto point = [=](Eigen::Index i, A2& x, A2& v) {
-            v = Eigen::Map<const A2>(u0p + i) + h * Eigen::Map<const A2>(ap + i);
+            if constexpr (Rest)
+                v = Eigen::Map<const A2>(u0p + i) + h * (g + Eigen::Map<const A2>(ap + i));
+            else
+                v = Eigen::Map<const A2>(u0p + i) + hg;
             x = Eigen::Map<const A2>(q0p + i) + h * v;
             Eigen::Map<A2>(up + i) = v;
             Eigen::Map<A2>(qp + i) = x;
         };
-        // A rigid body: (x, y, θ).
+        // A rigid body: (x, y, θ); the uniform part acts on (x, y).
         auto body = [=](Eigen::Index k) {
             for (Eigen::Index i = k; i < k + 3; ++i) {
-                const double v = u0p[i] + h * ap[i];
+                const double a = i < k + 2 ? g[i - k] : 0.0;
+                const double v = u0p[i] + h * (Rest ? a + ap[i] : a);
                 up[i] = v;
                 qp[i] = q0p[i] + h * v;
             }
@@ -63,8 +84,6 @@ public:
             for (Eigen::Index i = 0; i < paired; i += 2) point(i, x, v);
             for (Eigen::Index k = paired; k < q.size(); k += 3) body(k);
         }
-        ++stats_.acceptedSteps;
-        return true;
     }
 };
 }  // namespace

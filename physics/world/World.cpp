@@ -211,10 +211,15 @@ void World::bindEffects() {
 void World::sortEffectsByChannel() {
     forceEffects_.clear();
     fieldEffects_.clear();
+    restFieldEffects_.clear();
+    uniformEffects_.clear();
     nonConservative_.clear();
     for (int i = 0; i < static_cast<int>(effects_.size()); ++i) {
         Effect& e = *effects_[i];
         (e.isAccelerationField() ? fieldEffects_ : forceEffects_).push_back(i);
+        Vec2 uniform = Vec2::Zero();
+        if (e.isAccelerationField())
+            (e.uniformAcceleration(uniform) ? uniformEffects_ : restFieldEffects_).push_back(i);
         if (e.hasNonConservativePart()) nonConservative_.push_back(i);
     }
     effectSeconds_.assign(effects_.size() + 1, 0.0);  // the last: contacts
@@ -349,6 +354,27 @@ void World::setIntegrator(const std::string& name) {
 double World::acceleration(double t, const Vec& q, const Vec& u, Vec& accel) {
     ++forceEvaluations_;
     double power = 0.0;
+    if (!addAccelerations(t, q, u, accel, fieldEffects_, power)) accel.setZero();
+    return power;
+}
+
+OdeSystem::SplitAcceleration World::accelerationSplit(double t, const Vec& q, const Vec& u,
+                                                      Vec& rest) {
+    ++forceEvaluations_;
+    SplitAcceleration split;
+    for (int i : uniformEffects_) {
+        Vec2 a = Vec2::Zero();
+        effects_[i]->uniformAcceleration(a);
+        split.uniform += a;
+    }
+    split.hasRest = addAccelerations(t, q, u, rest, restFieldEffects_, split.power);
+    return split;
+}
+
+// The force channel, then the given field effects; returns false (accel untouched) when there
+// is nothing to evaluate.
+bool World::addAccelerations(double t, const Vec& q, const Vec& u, Vec& accel,
+                             const std::vector<int>& fields, double& power) {
     bool written = false;
     if (!forceEffects_.empty()) {
         force_.setZero();
@@ -360,14 +386,13 @@ double World::acceleration(double t, const Vec& q, const Vec& u, Vec& accel) {
         accel.array() = invMass_.array() * force_.array();
         written = true;
     }
-    for (int i : fieldEffects_) {
+    for (int i : fields) {
         const auto start = Clock::now();
         effects_[i]->addAccelerations(t, q, u, accel, !written);
         effectSeconds_[i] += secondsSince(start);
         written = true;
     }
-    if (!written) accel.setZero();
-    return power;
+    return written;
 }
 
 double World::nonConservativePower(double t, const Vec& q, const Vec& u) {

@@ -149,6 +149,7 @@ public:
     const Vec& mass() const override { return mass_; }
     int pairedDofs() const override { return layout_.boxBase(); }
     double acceleration(double t, const Vec& q, const Vec& u, Vec& accel) override;
+    SplitAcceleration accelerationSplit(double t, const Vec& q, const Vec& u, Vec& rest) override;
     double nonConservativePower(double t, const Vec& q, const Vec& u) override;
     double forces(double t, const Vec& q, const Vec& u, Vec& force) override;
     double forcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& force,
@@ -164,6 +165,8 @@ private:
     void storeStateInObjects();
     void rebuildSpringEffect();
     void sortEffectsByChannel();
+    bool addAccelerations(double t, const Vec& q, const Vec& u, Vec& accel,
+                          const std::vector<int>& fields, double& power);
     void bindEffects();
 
     // The stages of step(), in the order they run.
@@ -189,6 +192,8 @@ private:
     // Indices into effects_ by how the world calls them.
     std::vector<int> forceEffects_;      // the force channel
     std::vector<int> fieldEffects_;      // the acceleration-field channel
+    std::vector<int> restFieldEffects_;  // of those, the ones that are not uniform
+    std::vector<int> uniformEffects_;    // and the uniform ones (accelerationSplit)
     std::vector<int> nonConservative_;   // those with power to account
     std::vector<double> effectSeconds_;  // parallel to effects_
 

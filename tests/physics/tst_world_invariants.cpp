@@ -157,6 +157,28 @@ Eigen::MatrixXd dense(const std::vector<Triplet>& triplets, int n) {
     return m;
 }
 
+// Particles (ids p0, p1, …) and a spinning box under a slanted gravity, nothing else.
+SceneDesc fallingParticlesAndBox(int particles) {
+    SceneDesc scene;
+    scene.simulation = simulation("symplectic_euler", 0.01);
+    scene.effects.gravity = GravityDesc{{0.3, -9.81}};
+    for (int i = 0; i < particles; ++i) {
+        ParticleDesc p;
+        p.id = "p" + std::to_string(i);
+        p.position = {0.1 * i, 1.0 + i};
+        p.velocity = {1.0 - 0.3 * i, 0.5 * i};
+        p.mass = 1.0 + i;
+        p.radius = 0.0;
+        scene.particles.push_back(p);
+    }
+    BoxDesc box;
+    box.position = {3.0, 4.0};
+    box.angularVelocity = 2.0;
+    box.velocity = {-1.0, 2.0};
+    scene.boxes.push_back(box);
+    return scene;
+}
+
 }  // namespace
 
 class TestWorldInvariants : public QObject {
@@ -178,6 +200,7 @@ private slots:
     void mutualGravityBinaryOrbit();
     void onlyListedEffectsAreConstructed();
     void gravityAloneMatchesTheForceChannel();
+    void splitAccelerationAddsUpToTheWhole();
     void anOverflowRestoresTheLastGoodState();
 };
 
@@ -185,23 +208,8 @@ private slots:
 // zero listed, the force channel runs too (forces summed, times 1/m). Neither changes a single
 // acceleration, so both must compute exactly the same step.
 void TestWorldInvariants::gravityAloneMatchesTheForceChannel() {
-    SceneDesc scene;
-    scene.simulation = simulation("symplectic_euler", 0.01);
+    SceneDesc scene = fallingParticlesAndBox(7);
     scene.simulation.substeps = 3;
-    scene.effects.gravity = GravityDesc{{0.3, -9.81}};
-    for (int i = 0; i < 7; ++i) {
-        ParticleDesc p;
-        p.position = {0.1 * i, 1.0 + i};
-        p.velocity = {1.0 - 0.3 * i, 0.5 * i};
-        p.mass = 1.0 + i;
-        p.radius = 0.0;
-        scene.particles.push_back(p);
-    }
-    BoxDesc box;
-    box.position = {3.0, 4.0};
-    box.angularVelocity = 2.0;
-    box.velocity = {-1.0, 2.0};
-    scene.boxes.push_back(box);
     SceneDesc generic = scene;
     generic.effects.drag = DragDesc{0.0, 0.0, 0.0};
     auto fast = build(scene);
@@ -218,6 +226,41 @@ void TestWorldInvariants::gravityAloneMatchesTheForceChannel() {
     QVERIFY(std::abs(a.kinetic - b.kinetic) <= 1e-12 * std::abs(b.kinetic));
     QVERIFY(std::abs(a.potential - b.potential) <= 1e-12 * std::abs(b.potential));
     QVERIFY(std::abs(a.drift - b.drift) <= 1e-9 * (std::abs(b.kinetic) + std::abs(b.potential)));
+}
+
+// OdeSystem::accelerationSplit: the uniform part (gravity) plus the rest is the whole
+// acceleration, lane for lane; with gravity alone there is no rest to write.
+void TestWorldInvariants::splitAccelerationAddsUpToTheWhole() {
+    SceneDesc scene = fallingParticlesAndBox(3);
+    auto alone = build(scene);
+    const int n = static_cast<int>(alone->positions().size());
+    Eigen::VectorXd rest = Eigen::VectorXd::Constant(n, 7.0), whole(n);
+    const auto onlyGravity =
+        alone->accelerationSplit(0.0, alone->positions(), alone->velocities(), rest);
+    QVERIFY(!onlyGravity.hasRest);
+    QVERIFY(rest == Eigen::VectorXd::Constant(n, 7.0));  // untouched
+    QCOMPARE(onlyGravity.uniform, Vec2(0.3, -9.81));
+
+    scene.effects.drag = DragDesc{0.4, 0.0, 0.0};
+    SpringDesc spring;
+    spring.a = "p0";
+    spring.b = "p2";
+    spring.stiffness = 50.0;
+    spring.damping = 0.5;
+    spring.restLength = 1.2;
+    scene.springs.push_back(spring);
+    auto mixed = build(scene);
+    const Eigen::VectorXd q = mixed->positions(), u = mixed->velocities();
+    const double power = mixed->acceleration(0.0, q, u, whole);
+    const auto split = mixed->accelerationSplit(0.0, q, u, rest);
+    QVERIFY(split.hasRest);
+    QCOMPARE(split.power, power);
+    QVERIFY(power < 0.0);  // drag takes energy
+    for (int i = 0; i < n; ++i) {
+        const bool angle = i >= n - 1;  // the box's θ: no uniform part
+        const double uniform = angle ? 0.0 : split.uniform[i % 2];
+        QCOMPARE(uniform + rest[i], whole[i]);
+    }
 }
 
 // A state near the top of the double range must be stepped with the frame start kept, and an
