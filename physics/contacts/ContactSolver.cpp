@@ -58,6 +58,7 @@ ContactSolver::Softness ContactSolver::makeSoft(double hertz, double zeta, doubl
 }
 
 void ContactSolver::prepare() {
+    largestMassRatio_ = 1.0;
     for (SolverBody& b : bodies_) b.contactCount = 0;
     for (const ContactConstraint& c : constraints_) {
         if (c.bodyA >= 0) ++bodies_[c.bodyA].contactCount;
@@ -76,6 +77,7 @@ void ContactSolver::prepare() {
             const double heavy = std::max(1.0 / a->invMass, 1.0 / b->invMass);
             const double light = std::min(1.0 / a->invMass, 1.0 / b->invMass);
             c.stiffness = std::sqrt(heavy / light);
+            largestMassRatio_ = std::max(largestMassRatio_, heavy / light);
         } else {
             c.stiffness = 2.0;
         }
@@ -114,7 +116,7 @@ void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
     }
 }
 
-void ContactSolver::buildRows(double hertz, double zeta, double h) {
+void ContactSolver::buildRows(double hertz, double zeta, double h, double warmScale) {
     // What does not change within the step, once: the rows' masses, the block's K and its
     // conditioning, the softness (each contact's stiffness multiplier: see prepare()).
     const int world = static_cast<int>(bodies_.size());
@@ -154,8 +156,8 @@ void ContactSolver::buildRows(double hertz, double zeta, double h) {
             r.tangentMass = p.tangentMass;
             // Converged, the soft update −m·s·(v_n + b) − r·λ = 0 is v_n + b + (r/(s·m))·λ = 0.
             setup.compliance[k] = soft.impulseScale / (soft.massScale * p.normalMass);
-            r.normalImpulse = p.normalImpulse;
-            r.tangentImpulse = p.tangentImpulse;
+            r.normalImpulse = warmScale * p.normalImpulse;
+            r.tangentImpulse = warmScale * p.tangentImpulse;
         }
         setup.blockable = false;
         row.k11 = row.k12 = row.k22 = 0.0;
@@ -345,6 +347,24 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
     }
 }
 
+namespace {
+// cos and sin of the turn since the contacts were found: a fraction of a step's rotation, so
+// almost always small. Below 1/4 rad the Taylor polynomials (to x⁹ and x¹⁰) are within 3e-14 of
+// the library's values, at a tenth of the cost (a libm call per body and phase was 5% of a
+// pyramid's solve).
+inline void smallRotation(double x, double& c, double& s) {
+    if (!(std::abs(x) < 0.25)) {
+        c = std::cos(x);
+        s = std::sin(x);
+        return;
+    }
+    const double x2 = x * x;
+    s = x * (1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0))));
+    c = 1.0 -
+        x2 / 2.0 * (1.0 - x2 / 12.0 * (1.0 - x2 / 30.0 * (1.0 - x2 / 56.0 * (1.0 - x2 / 90.0))));
+}
+}  // namespace
+
 void ContactSolver::updateSeparations() {
     // Bodies hold still while the solver iterates (positions move once per inner sub-step), so
     // each point's separation is computed once per phase, not once per iteration: the rotations
@@ -357,8 +377,7 @@ void ContactSolver::updateSeparations() {
         m.dy = dp.y();
         if (b.rotates) {
             const double angle = b.startAngle + b.anglePath + b.angleTimeShift;
-            m.cos = std::cos(angle);
-            m.sin = std::sin(angle);
+            smallRotation(angle, m.cos, m.sin);
         } else {
             m.cos = 1.0;
             m.sin = 0.0;
@@ -607,17 +626,98 @@ int ContactSolver::innerSubsteps(double h, const ContactSettings& settings) {
     return std::clamp(n, 1, kMaxInnerSubsteps);
 }
 
+int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& settings) {
+    predictedSag_ = 0.0;
+    if (lastInnerH_ <= 0.0) return base;
+    // A soft contact of frequency ω carries a force F by sinking F/(m·ω²); a body sinks by what
+    // its supports sink plus its own contact's share. Which body rests on which: the smooth
+    // forces of the step press the upper one into the lower one. The warm-start impulses are
+    // per inner sub-step of the last step, so F = λ/h_last.
+    const double baseHertz = std::min(settings.hertz, 0.25 * base / h);
+    const double omega = 2.0 * std::numbers::pi * baseHertz;
+    const int world = static_cast<int>(bodies_.size());
+    // Each contact once: which body rests on which, and by how much the upper one sinks.
+    supports_.clear();
+    for (const ContactConstraint& c : constraints_) {
+        const double w = omega * c.stiffness;
+        double sink = 0.0;
+        for (int k = 0; k < c.pointCount; ++k) {
+            const ContactPoint& p = c.points[k];
+            if (p.normalMass > 0.0) sink += p.normalImpulse / (p.normalMass * w * w);
+        }
+        if (c.pointCount == 0 || !(sink > 0.0)) continue;
+        sink /= c.pointCount * lastInnerH_;
+        const int a = c.bodyA >= 0 ? c.bodyA : world;
+        const int b = c.bodyB >= 0 ? c.bodyB : world;
+        // The normal points from A to B: B rests on A when its smooth push is against n.
+        if (b < world && c.normal.dot(bodies_[b].smoothDv) < 0.0)
+            supports_.push_back({b, a, sink});
+        else if (a < world && c.normal.dot(bodies_[a].smoothDv) > 0.0)
+            supports_.push_back({a, b, sink});
+    }
+    // Down the support chains: a few passes (the contacts come roughly in the broad phase's
+    // order along the stack) until nothing deepens.
+    depth_.assign(bodies_.size() + 1, 0.0);
+    bool changed = true;
+    for (int pass = 0; changed && pass < kMaxSagPasses; ++pass) {
+        changed = false;
+        for (const Support& s : supports_) {
+            const double d = depth_[s.lower] + s.sink;
+            if (d > depth_[s.upper]) {
+                depth_[s.upper] = d;
+                changed = true;
+            }
+        }
+    }
+    for (double d : depth_) predictedSag_ = std::max(predictedSag_, d);
+    if (settings.substeps > 0) return base;
+    // A change of stiffness moves a resting stack to a new rest, so the count follows the
+    // load, not an impact: it rises when the sag has been predicted too deep for a while (by
+    // the least of those predictions) and falls when fewer have sufficed for longer.
+    const int held = std::clamp(lastSubsteps_, base, kMaxInnerSubsteps);
+    const auto needed = [&](double sag) {
+        if (!(sag > kSagTarget)) return base;
+        // The sag falls with the square of the rate (the stiffness rises with it).
+        const double factor = std::sqrt(sag / kSagTarget);
+        return std::min(kMaxInnerSubsteps, static_cast<int>(std::ceil(base * factor)));
+    };
+    const int wanted = needed(predictedSag_);
+    if (wanted > held) {
+        stepsWantingFewer_ = 0;
+        leastDeepSag_ =
+            stepsWantingMore_ == 0 ? predictedSag_ : std::min(leastDeepSag_, predictedSag_);
+        if (++stepsWantingMore_ < kStepsBeforeMore) return held;
+        stepsWantingMore_ = 0;
+        return std::max(held, needed(leastDeepSag_));
+    }
+    stepsWantingMore_ = 0;
+    if (wanted == held || ++stepsWantingFewer_ < kStepsBeforeFewer) return held;
+    stepsWantingFewer_ = 0;
+    return wanted;
+}
+
 void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
                               const ContactSettings& settings, double positionWeight) {
     if (constraints_.empty()) return;
-    const int n = innerSubsteps(h, settings);
-    const double hi = h / n;
     // The smooth step's velocity change is spread evenly over the inner sub-steps (the
     // smooth forces held constant over the step); its position change is the integrator's, and
     // the solver adds to it only what the contact impulses change.
     loadBodies(q0, u0, u);
-    buildRows(std::min(settings.hertz, 0.25 / hi), settings.dampingRatio, hi);
+    const int base = innerSubsteps(h, settings);
+    const int n = stackSubsteps(h, base, settings);
+    const double hi = h / n;
+    // The warm-start impulses are per inner sub-step: rescaled when its length changes, they
+    // stand for the same forces.
+    const double warmScale = lastInnerH_ > 0.0 ? hi / lastInnerH_ : 1.0;
+    lastInnerH_ = hi;
+    lastSubsteps_ = n;
+    // Sub-steps beyond the base buy stiffness: the frequency rises with the rate.
+    buildRows(std::min(settings.hertz * n / base, 0.25 / hi), settings.dampingRatio, hi, warmScale);
     const std::size_t count = bodies_.size();
+    // Gauss-Seidel converges more slowly where a contact joins very unequal masses (a heavy
+    // box on a light one): there the solve iterates twice as often.
+    const int iterations =
+        settings.iterations * (largestMassRatio_ >= kMassRatioForMoreIterations ? 2 : 1);
     // Positions move only at the end of a sub-step's solve and when a bounce moves a body to
     // its time of impact, so separations are measured only then.
     bool moved = true;
@@ -632,18 +732,20 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
             b.pushV = Vec2(s.vx, s.vy);  // before the bounces
             b.pushW = s.w;
         }
-        if (moved) updateSeparations();
-        moved = bounce(hi, n, settings);
-        for (std::size_t k = 0; k < count; ++k) {
-            SolverBody& b = bodies_[k];
-            const BodyState& s = state_[k];
-            b.bounceDv += Vec2(s.vx, s.vy) - b.pushV;
-            b.bounceDw += s.w - b.pushW;
+        if (!bouncing_.empty()) {
+            if (moved) updateSeparations();
+            moved = bounce(hi, n, settings);
+            for (std::size_t k = 0; k < count; ++k) {
+                SolverBody& b = bodies_[k];
+                const BodyState& s = state_[k];
+                b.bounceDv += Vec2(s.vx, s.vy) - b.pushV;
+                b.bounceDw += s.w - b.pushW;
+            }
         }
         if (moved) updateSeparations();
         warmStart();
         preparePhase(hi, true, settings);
-        for (int it = 0; it < settings.iterations; ++it) solve();
+        for (int it = 0; it < iterations; ++it) solve();
         unpackImpulses();
         for (std::size_t k = 0; k < count; ++k) {
             SolverBody& b = bodies_[k];

@@ -32,10 +32,13 @@
 namespace phasebox {
 
 struct ContactSettings {
-    int substeps = 0;         // inner sub-steps per step; 0 = the solver's choice
-    int iterations = 3;       // soft solve iterations per inner sub-step
+    int substeps = 0;         // inner sub-steps per step; 0 = the solver's choice (deep
+                              // stacks get more: ContactSolver::stackSubsteps)
+    int iterations = 3;       // soft solve iterations per inner sub-step (doubled across mass
+                              // ratios of 10 or more)
     int relaxIterations = 1;  // bias-free iterations per inner sub-step
-    double hertz = 60.0;      // contact stiffness (capped at a quarter of 1/h)
+    double hertz = 60.0;      // contact stiffness (raised with extra sub-steps; capped at a
+                              // quarter of the inner sub-step rate)
     double dampingRatio = 10.0;
     double pushOut = 3.0;               // m/s: the fastest overlap is removed
     double restitutionThreshold = 1.0;  // m/s, times 1 − e: slower impacts do not bounce
@@ -117,7 +120,19 @@ public:
     // overrides).
     static constexpr double kInnerRate = 240.0;
     static constexpr int kMaxInnerSubsteps = 64;
+    // The deepest sag a stack may take at the default stiffness before the solver adds inner
+    // sub-steps (stiffer with each), and the passes that sum sag down support chains.
+    static constexpr double kSagTarget = 0.04;
+    static constexpr int kMaxSagPasses = 256;
+    static constexpr int kStepsBeforeFewer = 120;
+    static constexpr int kStepsBeforeMore = 30;
+    static constexpr double kMassRatioForMoreIterations = 10.0;
     static int innerSubsteps(double h, const ContactSettings& settings);
+    // The inner sub-steps the last solveStep took (innerSubsteps() or more for a deep stack).
+    int lastSubsteps() const { return lastSubsteps_; }
+    // The sag the solver predicted for its deepest stack at innerSubsteps(), from the warm-start
+    // impulses: each contact sinks by its force over its stiffness, summed down support chains.
+    double predictedSag() const { return predictedSag_; }
 
     // The hot per-body state the iterations touch (40 bytes). Index bodies_.size() is the
     // static world: zero velocity and zero inverse masses, so a row needs no branch for it.
@@ -183,7 +198,10 @@ private:
     };
 
     void loadBodies(const Vec& q0, const Vec& u0, const Vec& u);
-    void buildRows(double hertz, double zeta, double h);
+    // Sub-steps for this step: `base`, or more when the stack the warm-start impulses carry
+    // would sag further than kSagTarget at the base stiffness (after loadBodies).
+    int stackSubsteps(double h, int base, const ContactSettings& settings);
+    void buildRows(double hertz, double zeta, double h, double warmScale);
     void warmStart();
     // Restitution in an inner sub-step of h, one of `substeps` of the step.
     bool bounce(double h, int substeps, const ContactSettings& settings);
@@ -217,6 +235,21 @@ private:
     std::vector<int> colourCount_;           // rows per colour, then the first wide row
     std::vector<int> bouncing_;              // rows with restitution > 0
     std::vector<unsigned char> shifted_;  // per row point (2 per row): moved to its time of impact
+    // stackSubsteps: per body (+ the static world) the predicted sag, and per contact that
+    // carries load which body rests on which and how far the upper one sinks into the lower.
+    std::vector<double> depth_;
+    struct Support {
+        int upper, lower;
+        double sink;
+    };
+    std::vector<Support> supports_;
+    double lastInnerH_ = 0.0;  // the last step's inner sub-step (its impulses are per one)
+    int lastSubsteps_ = 0;
+    int stepsWantingFewer_ = 0;
+    int stepsWantingMore_ = 0;
+    double leastDeepSag_ = 0.0;
+    double largestMassRatio_ = 1.0;  // over the contacts between two dynamic bodies (prepare)
+    double predictedSag_ = 0.0;
 };
 
 }  // namespace phasebox

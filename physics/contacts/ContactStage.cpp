@@ -43,7 +43,7 @@ void ContactStage::bind(const Bodies& bodies) {
         planeRestitution_.push_back(p.restitution);
     }
     disks_.assign(colliders_.size(), Disk{Vec2::Zero(), 0.0});
-    boxes_.assign(colliders_.size(), OrientedBox{Vec2::Zero(), 0.0, Vec2::Zero()});
+    boxes_.assign(colliders_.size(), OrientedBox{});
     bounds_.resize(colliders_.size());
     bodyOfCollider_.assign(colliders_.size(), -1);
     // Pairs of disks: capped per disk when particles collide (dynamic disks; a pinned one

@@ -41,6 +41,7 @@ public:
     void addPushOut(Vec& q, double scale) const { solver_.addPushOut(q, scale); }
 
     const std::vector<ContactConstraint>& contacts() const { return solver_.constraints(); }
+    const ContactSolver& solver() const { return solver_; }
     int pointCount() const;
 
     // The most overlapping particle–particle pairs a disk takes part in (partners at least

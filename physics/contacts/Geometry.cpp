@@ -41,7 +41,7 @@ struct PlacedBox {
 };
 
 PlacedBox placeBox(const OrientedBox& box, const Vec2& origin) {
-    const Mat2 r = rotation(box.angle);
+    const Mat2& r = box.rotation;
     const Vec2 center = box.center - origin;
     PlacedBox placed;
     for (int i = 0; i < 4; ++i) {
@@ -108,7 +108,7 @@ Aabb boundingBox(const Disk& disk) {
 }
 
 Aabb boundingBox(const OrientedBox& box) {
-    const double c = std::abs(std::cos(box.angle)), s = std::abs(std::sin(box.angle));
+    const double c = std::abs(box.rotation(0, 0)), s = std::abs(box.rotation(1, 0));
     const Vec2 extent(c * box.halfExtents.x() + s * box.halfExtents.y(),
                       s * box.halfExtents.x() + c * box.halfExtents.y());
     return {box.center - extent, box.center + extent};
@@ -155,7 +155,7 @@ bool collidePlaneDisk(const HalfPlane& a, const Disk& b, double margin, Manifold
 
 bool collideBoxDisk(const OrientedBox& a, const Disk& b, double margin, Manifold& m) {
     m.pointCount = 0;
-    const Mat2 r = rotation(a.angle);
+    const Mat2& r = a.rotation;
     const Vec2& h = a.halfExtents;
     const Vec2 c = r.transpose() * (b.center - a.center);  // disk centre in the box's frame
     Vec2 surface = c.cwiseMax(-h).cwiseMin(h);             // closest point of the box
@@ -186,7 +186,7 @@ bool collideBoxDisk(const OrientedBox& a, const Disk& b, double margin, Manifold
 
 bool collidePlaneBox(const HalfPlane& a, const OrientedBox& b, double margin, Manifold& m) {
     m.pointCount = 0;
-    const Mat2 r = rotation(b.angle);
+    const Mat2& r = b.rotation;
     const double centerHeight = a.normal.dot(b.center - a.point);
     double height[4];
     Vec2 offset[4];  // corner − centre

@@ -21,10 +21,18 @@ struct Disk {
     double radius;
 };
 
+// A box at an angle; its rotation is computed once here, not once per pair it is tested in.
 struct OrientedBox {
-    Vec2 center;
-    double angle;
-    Vec2 halfExtents;
+    OrientedBox() = default;
+    OrientedBox(const Vec2& center_, double angle_, const Vec2& halfExtents_)
+        : center(center_),
+          angle(angle_),
+          halfExtents(halfExtents_),
+          rotation(phasebox::rotation(angle_)) {}
+    Vec2 center = Vec2::Zero();
+    double angle = 0.0;
+    Vec2 halfExtents = Vec2::Zero();
+    Mat2 rotation = Mat2::Identity();
 };
 
 // A static half-plane: solid on the side opposite the unit normal.

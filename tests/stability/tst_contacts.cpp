@@ -43,17 +43,47 @@ class TestContacts : public QObject {
     Q_OBJECT
 
 private slots:
-    void pyramidStands_data() {
-        QTest::addColumn<int>("rows");
-        QTest::newRow("20 rows") << 20;
-        QTest::newRow("40 rows") << 40;
+    void stacksHoldAtTheDefaults_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QString>("integrator");
+        for (const char* scene : {"pyramid 20", "pyramid 40", "tower 30", "tower 40", "1/20/400 kg",
+                                  "1/400 kg", "100x on small"})
+            for (const char* integrator :
+                 {"symplectic_euler", "velocity_verlet", "rk4", "implicit_euler"})
+                QTest::newRow(qPrintable(QString("%1, %2").arg(scene, integrator)))
+                    << QString(scene) << QString(integrator);
     }
-    void pyramidStands() {
-        QFETCH(int, rows);
-        auto world = build(scenes::pyramid(rows));
+    void stacksHoldAtTheDefaults() {
+        // Issue 15: at dt 1/60, substeps 1 and no solver keys, whatever the method, no box of a
+        // pyramid or tower up to 40 high or of a stack with mass ratios up to 1:400 moves more
+        // than 5 cm from its start in 10 s. A soft contact sinks by its load over its
+        // stiffness, summed down a column: the solver must see a tall stack coming and stiffen.
+        QFETCH(QString, scene);
+        QFETCH(QString, integrator);
+        SceneDesc desc;
+        if (scene == "pyramid 20")
+            desc = scenes::pyramid(20);
+        else if (scene == "pyramid 40")
+            desc = scenes::pyramid(40);
+        else if (scene == "tower 30")
+            desc = scenes::tower(30);
+        else if (scene == "tower 40")
+            desc = scenes::tower(40);
+        else if (scene == "1/20/400 kg")
+            desc = scenes::stack({1, 20, 400});
+        else if (scene == "1/400 kg")
+            desc = scenes::stack({1, 400});
+        else
+            desc = scenes::bigOnSmall(100);
+        desc.simulation.integrator = integrator.toStdString();
+        desc.simulation.substeps = 1;
+        desc.simulation.solver.clear();
+        QCOMPARE(desc.simulation.dt, 1.0 / 60.0);
+        auto world = build(desc);
         QVERIFY(run(*world, 10.0));
         const double moved = largestBoxDisplacement(*world);
-        qInfo("%d-row pyramid: largest box displacement after 10 s = %.4f m", rows, moved);
+        qInfo("%s, %s: largest box displacement after 10 s = %.4f m", qPrintable(scene),
+              qPrintable(integrator), moved);
         QVERIFY2(moved < 0.05, qPrintable(QString::number(moved)));
     }
 
@@ -82,19 +112,6 @@ private slots:
         QVERIFY(sideways < 0.01);
         QVERIFY(tilt < 0.01);
         QVERIFY(shortening < 0.005 * height);
-    }
-
-    void heavyOnLightStands() {
-        auto world = build(scenes::stack({1, 20, 400}));
-        QVERIFY(run(*world, 10.0));
-        const double moved = largestBoxDisplacement(*world);
-        qInfo("1/20/400 kg stack: largest displacement %.4f m", moved);
-        QVERIFY(moved < 0.05);
-        auto big = build(scenes::bigOnSmall(100));
-        QVERIFY(run(*big, 10.0));
-        qInfo("2 m box 100x on 0.5 m box: largest displacement %.4f m",
-              largestBoxDisplacement(*big));
-        QVERIFY(largestBoxDisplacement(*big) < 0.05);
     }
 
     void ballBouncesToESquaredHeight() {
