@@ -87,7 +87,8 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
         const int i = order_[k];
         const Aabb& box = boxes[i];
         const double upper = box.upper[axis];
-        const bool limitedI = capped && (*cap.limited)[i];
+        const unsigned char kindI = capped ? (*cap.limited)[i] : PairCap::kFree;
+        const bool limitedI = kindI != PairCap::kFree;
         const double sizeI = limitedI ? (*cap.size)[i] : 0.0;
         int l = k + 1;
         for (; l < count; ++l) {
@@ -95,8 +96,8 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
             const Aabb& o = boxes[j];
             if (o.lower[axis] > upper) break;
             if (o.lower[cross] > box.upper[cross] || box.lower[cross] > o.upper[cross]) continue;
-            if (limitedI && (*cap.limited)[j]) {
-                if (cap.perBox == 0) continue;
+            if (limitedI && (*cap.limited)[j] != PairCap::kFree) {
+                if (kindI == PairCap::kApart && (*cap.limited)[j] == PairCap::kApart) continue;
                 // Overlapping shapes (centres closer than the sum of the sizes; the boxes are
                 // grown symmetrically, so their centres are the shapes') and near ones have
                 // caps of their own, so that the overlapping ones of a pile cannot use up the

@@ -29,8 +29,10 @@ namespace phasebox {
 // overlaps cannot crowd out a contact about to be made. A partner counts against box i's caps
 // when its size is at least half of i's, so a large disk among small ones keeps all of its
 // (many, legitimate) small neighbours while each small one counts the large one.
-// perBox 0 leaves out every pair of two limited boxes (disks when particles do not collide).
+// A box marked kApart is never paired with another kApart box (disks when particles do not
+// collide); a kApart box counts as capped against the others.
 struct PairCap {
+    static constexpr unsigned char kFree = 0, kCapped = 1, kApart = 2;
     const std::vector<unsigned char>* limited = nullptr;  // per box; null: no cap at all
     // Per box: the radius of the shape it bounds, centred on the box (grown symmetrically).
     const std::vector<double>* size = nullptr;

@@ -98,6 +98,7 @@ void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
     const std::size_t count = bodies_.size();
     state_.resize(count + 1);
     motion_.resize(count + 1);
+    deepShift_.resize(count + 1);  // sized here: a first deep overlap must not allocate
     state_[count] = {0.0, 0.0, 0.0, 0.0, 0.0};  // the static world
     motion_[count] = {0.0, 0.0, 1.0, 0.0};
     for (std::size_t i = 0; i < count; ++i) {
@@ -135,6 +136,12 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
         row.ny = c.normal.y();
         row.friction = c.friction;
         const Softness soft = makeSoft(c.stiffness * hertz, zeta, h);
+        setup.deepOverlap = c.deepOverlap;
+        // The push-out speed is a body's, shared among its contacts: in a pile each contact's
+        // push adds up along chains of bodies (200 boxes started at one point left at 20 m/s
+        // with a whole 3 m/s per contact, 13 m/s shared).
+        setup.pushOutShare = 1.0 / std::max({1, c.bodyA >= 0 ? bodies_[c.bodyA].contactCount : 1,
+                                             c.bodyB >= 0 ? bodies_[c.bodyB].contactCount : 1});
         setup.biasRate = soft.biasRate;
         setup.massScale = soft.massScale;
         setup.impulseScale = soft.impulseScale;
@@ -323,7 +330,11 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
                 bias = s * invH;
                 active[k] = useBias;
             } else if (useBias) {
-                bias = std::max(setup.biasRate * s, -maxPushOut);
+                // The push of an overlap deeper than deepOverlap is that of deepOverlap: the rest
+                // is pushed out in positions (deepPushOut). In a pile each contact's push velocity
+                // adds up along chains of bodies (20 boxes started at one point left at 40 m/s).
+                const double depth = std::max(s, -setup.deepOverlap);
+                bias = std::max(setup.biasRate * depth, -setup.pushOutShare * maxPushOut);
                 massScale = setup.massScale;
                 impulseScale = setup.impulseScale;
                 compliance[k] = setup.compliance[k];
@@ -638,6 +649,7 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
     const int world = static_cast<int>(bodies_.size());
     // Each contact once: which body rests on which, and by how much the upper one sinks.
     supports_.clear();
+    supports_.reserve(constraints_.size());  // grown with the contacts, not mid-run
     for (const ContactConstraint& c : constraints_) {
         const double w = omega * c.stiffness;
         double sink = 0.0;
@@ -777,6 +789,8 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         }
     }
 
+    deepPushOut(h, settings);
+
     // The accumulated impulses, for the next step's warm start.
     for (std::size_t i = 0; i < constraints_.size(); ++i) {
         ContactConstraint& c = constraints_[i];
@@ -804,6 +818,43 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
             q[b.dof + 2] += b.angleShift + excess * h * dw + b.angleTimeShift;
             u[b.dof + 2] = s.w;
         }
+    }
+}
+
+void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
+    // Gauss-Seidel on positions, translation only (Box2D 2.4's position solver without its
+    // Baumgarte factor): each deep row moves its bodies apart in proportion to their inverse
+    // masses, by the overlap beyond deepOverlap but at most pushOut·h per pass. Separations
+    // are where the last inner sub-step left them, plus these moves.
+    const int world = static_cast<int>(bodies_.size());
+    bool any = false;
+    for (std::size_t i = 0; i < rows_.size() && !any; ++i)
+        for (int k = 0; k < rows_[i].pointCount; ++k)
+            any = any || separation_[2 * i + k] < -setup_[i].deepOverlap;
+    if (!any) return;
+    deepShift_.assign(bodies_.size() + 1, Vec2::Zero());
+    const double step = settings.pushOut * h;
+    for (int pass = 0; pass < kDeepPushOutPasses; ++pass) {
+        for (std::size_t i = 0; i < rows_.size(); ++i) {
+            const Row& c = rows_[i];
+            const Vec2 n(c.nx, c.ny);
+            const double moved = n.dot(deepShift_[c.b] - deepShift_[c.a]);
+            double deepest = 0.0;
+            for (int k = 0; k < c.pointCount; ++k)
+                deepest = std::min(deepest, separation_[2 * i + k] + moved);
+            const double excess = -(deepest + setup_[i].deepOverlap);
+            if (!(excess > 0.0)) continue;
+            const double wA = c.a < world ? state_[c.a].invMass : 0.0;
+            const double wB = c.b < world ? state_[c.b].invMass : 0.0;
+            if (!(wA + wB > 0.0)) continue;
+            const double push = std::min(excess, step) / (wA + wB);
+            deepShift_[c.a] -= push * wA * n;
+            deepShift_[c.b] += push * wB * n;
+        }
+    }
+    for (int k = 0; k < world; ++k) {
+        bodies_[k].shift += deepShift_[k];
+        bodies_[k].pushOut += deepShift_[k];
     }
 }
 

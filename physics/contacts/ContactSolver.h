@@ -27,6 +27,7 @@
 #include "physics/core/Types.h"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace phasebox {
@@ -93,6 +94,9 @@ struct ContactConstraint {
     double friction = 0.0;
     double restitution = 0.0;
     double stiffness = 1.0;  // multiplier of the contact hertz (see prepare())
+    // Overlap beyond this is pathological (bodies spawned into each other, a pile started at
+    // one point): it is pushed out in positions only, never by a velocity (deepPushOut()).
+    double deepOverlap = std::numeric_limits<double>::infinity();
     int pointCount = 0;
     ContactPoint points[2];
 };
@@ -127,6 +131,7 @@ public:
     static constexpr int kStepsBeforeFewer = 120;
     static constexpr int kStepsBeforeMore = 30;
     static constexpr double kMassRatioForMoreIterations = 10.0;
+    static constexpr int kDeepPushOutPasses = 4;
     static int innerSubsteps(double h, const ContactSettings& settings);
     // The inner sub-steps the last solveStep took (innerSubsteps() or more for a deep stack).
     int lastSubsteps() const { return lastSubsteps_; }
@@ -194,6 +199,8 @@ private:
     struct RowSetup {
         double biasRate, massScale, impulseScale;
         double normalMass[2], compliance[2];
+        double deepOverlap;
+        double pushOutShare;
         bool blockable;  // two points whose K is well conditioned
     };
 
@@ -219,6 +226,9 @@ private:
     void unpackImpulses();
     // Separations with the bodies where the solver's path has taken them.
     void updateSeparations();
+    // Removes overlap beyond each row's deepOverlap by moving the bodies apart along the
+    // normal (no velocity), at most settings.pushOut·h per row and pass.
+    void deepPushOut(double h, const ContactSettings& settings);
 
     std::vector<SolverBody> bodies_;
     std::vector<ContactConstraint> constraints_;
@@ -243,7 +253,8 @@ private:
         double sink;
     };
     std::vector<Support> supports_;
-    double lastInnerH_ = 0.0;  // the last step's inner sub-step (its impulses are per one)
+    std::vector<Vec2> deepShift_;  // per body (+ the static world): deepPushOut's displacement
+    double lastInnerH_ = 0.0;      // the last step's inner sub-step (its impulses are per one)
     int lastSubsteps_ = 0;
     int stepsWantingFewer_ = 0;
     int stepsWantingMore_ = 0;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace phasebox {
 
@@ -46,15 +47,22 @@ void ContactStage::bind(const Bodies& bodies) {
     boxes_.assign(colliders_.size(), OrientedBox{});
     bounds_.resize(colliders_.size());
     bodyOfCollider_.assign(colliders_.size(), -1);
-    // Pairs of disks: capped per disk when particles collide (dynamic disks; a pinned one
-    // meets only dynamic ones, a linear number), left out entirely when they do not.
-    pairLimited_.assign(colliders_.size(), 0);
+    // Pairs between dynamic bodies are capped per body (a static one meets only dynamic ones,
+    // a linear number); pairs of disks are left out entirely when particles do not collide.
+    pairLimited_.assign(colliders_.size(), PairCap::kFree);
     pairSize_.assign(colliders_.size(), 0.0);
     for (int i = 0; i < static_cast<int>(colliders_.size()); ++i) {
         const Collider& c = colliders_[i];
-        if (c.kind != Collider::Kind::Disk) continue;
-        pairLimited_[i] = !particleCollisions_ || c.dof >= 0;
-        pairSize_[i] = particles[c.object].radius;
+        if (c.kind == Collider::Kind::Disk) {
+            pairLimited_[i] = !particleCollisions_ ? PairCap::kApart
+                              : c.dof >= 0         ? PairCap::kCapped
+                                                   : PairCap::kFree;
+            pairSize_[i] = particles[c.object].radius;
+        } else if (c.dof >= 0) {
+            // A box's size for the cap is the radius of its circumscribed circle.
+            pairLimited_[i] = PairCap::kCapped;
+            pairSize_[i] = 0.5 * boxes[c.object].size.norm();
+        }
     }
     previous_.clear();
     solver_.constraints().clear();
@@ -92,6 +100,14 @@ void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB
     const Vec2 centerB = colliders_[colliderB].kind == Collider::Kind::Disk
                              ? disks_[colliderB].center
                              : boxes_[colliderB].center;
+    // A quarter of the smaller body's least half extent (a disk's radius) is an overlap no
+    // contact reaches in a resting scene.
+    const auto size = [&](int i) {
+        if (i < 0) return std::numeric_limits<double>::infinity();
+        return colliders_[i].kind == Collider::Kind::Disk ? disks_[i].radius
+                                                          : boxes_[i].halfExtents.minCoeff();
+    };
+    c.deepOverlap = kDeepOverlapFraction * std::min(size(colliderA), size(colliderB));
     c.pointCount = m.pointCount;
     for (int k = 0; k < m.pointCount; ++k) {
         ContactPoint& p = c.points[k];
@@ -148,10 +164,14 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
     }
 
     Manifold m;
-    const bool capDisks = particleCollisions_;  // else no disk pair is wanted at all
+    // Bodies started at one point: a direction per pair (computed only then).
+    const auto whenCoincident = [](int i, int j, const Vec2& a, const Vec2& b) {
+        return coincident(a, b)
+                   ? coincidentNormal(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j))
+                   : Vec2(0.0, 1.0);
+    };
     broadPhase_.findPairs(bounds_, pairs_,
-                          {&pairLimited_, &pairSize_, capDisks ? kParticlePairCap : 0,
-                           capDisks ? kParticleNearPairCap : 0});
+                          {&pairLimited_, &pairSize_, kOverlappingPairCap, kNearPairCap});
     for (const auto& [i, j] : pairs_) {
         const Collider& a = colliders_[i];
         const Collider& b = colliders_[j];
@@ -168,15 +188,12 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
             const Particle& pb = bodies.particles[b.object];
             if (pa.cloth >= 0 && pa.cloth == pb.cloth) continue;  // no cloth self-collision
             restitution = particleRestitution_;
-            // Disks started at one point: a direction per pair (computed only then).
-            const Vec2 whenCoincident =
-                coincident(disks_[i].center, disks_[j].center)
-                    ? coincidentNormal(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j))
-                    : Vec2(0.0, 1.0);
-            if (collideDisks(disks_[i], disks_[j], margin, m, whenCoincident))
+            if (collideDisks(disks_[i], disks_[j], margin, m,
+                             whenCoincident(i, j, disks_[i].center, disks_[j].center)))
                 addConstraint(key, i, j, m, friction, restitution, q);
         } else if (!diskA && !diskB) {
-            if (collideBoxes(boxes_[i], boxes_[j], margin, m))
+            if (collideBoxes(boxes_[i], boxes_[j], margin, m,
+                             whenCoincident(i, j, boxes_[i].center, boxes_[j].center)))
                 addConstraint(key, i, j, m, friction, restitution, q);
         } else {
             const int box = diskA ? j : i, disk = diskA ? i : j;

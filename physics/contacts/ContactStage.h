@@ -44,13 +44,18 @@ public:
     const ContactSolver& solver() const { return solver_; }
     int pointCount() const;
 
-    // The most overlapping particle–particle pairs a disk takes part in (partners at least
-    // half its radius; see PairCap). A disk in a pile overlaps at most six; thousands started
-    // at one point would otherwise make a quadratic number of contacts (3,000: 4.5 million).
-    static constexpr int kParticlePairCap = 16;
+    // The most overlapping pairs a dynamic body takes part in with other dynamic bodies
+    // (partners at least half its size; see PairCap; a box's size is its circumscribed circle).
+    // A disk in a pile overlaps at most six, a box in a brick wall six and in a grid eight;
+    // thousands started at one point would otherwise make a quadratic number of contacts
+    // (3,000 disks: 4.5 million; 1,000 boxes: half a million).
+    static constexpr int kOverlappingPairCap = 16;
     // And the most near ones (within the speculative margin or a swept box, not overlapping):
-    // about six at rest, a few dozen for a fast disk entering a dense pile.
-    static constexpr int kParticleNearPairCap = 32;
+    // about six at rest, a few dozen for a fast body entering a dense pile.
+    static constexpr int kNearPairCap = 32;
+    // Overlap deeper than this fraction of the smaller body's least half extent (a disk's
+    // radius) is pushed out in positions only (ContactConstraint::deepOverlap).
+    static constexpr double kDeepOverlapFraction = 0.1;
     const BroadPhase& broadPhase() const { return broadPhase_; }
 
 private:

@@ -214,7 +214,8 @@ bool collidePlaneBox(const HalfPlane& a, const OrientedBox& b, double margin, Ma
     return true;
 }
 
-bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Manifold& m) {
+bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Manifold& m,
+                  const Vec2& whenCoincident) {
     m.pointCount = 0;
     const Vec2 origin = a.center;
     const PlacedBox boxA = placeBox(a, origin);
@@ -229,7 +230,16 @@ bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Man
     const double smallest =
         std::min({a.halfExtents.x(), a.halfExtents.y(), b.halfExtents.x(), b.halfExtents.y()});
     const double bias = std::min(kReferenceFaceBias, 0.01 * smallest);
-    const bool referenceIsB = separationB > separationA + bias;
+    bool referenceIsB = separationB > separationA + bias;
+    if (coincident(a.center, b.center)) {
+        referenceIsB = false;
+        double nearest = -std::numeric_limits<double>::infinity();
+        for (int i = 0; i < 4; ++i)
+            if (boxA.normals[i].dot(whenCoincident) > nearest) {
+                nearest = boxA.normals[i].dot(whenCoincident);
+                faceA = i;
+            }
+    }
     const PlacedBox& reference = referenceIsB ? boxB : boxA;
     const PlacedBox& incident = referenceIsB ? boxA : boxB;
     const int referenceFace = referenceIsB ? faceB : faceA;

@@ -82,6 +82,9 @@ bool collideBoxDisk(const OrientedBox& a, const Disk& b, double margin, Manifold
 bool collidePlaneBox(const HalfPlane& a, const OrientedBox& b, double margin, Manifold& m);
 // Separating axes over the four face normals, then the incident face clipped against the
 // reference face's side planes: up to two points.
-bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Manifold& m);
+// Boxes whose centres coincide give SAT a tie on every face; whenCoincident then picks A's face
+// whose normal lies nearest it (a pile started at one point spreads instead of stacking).
+bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Manifold& m,
+                  const Vec2& whenCoincident = Vec2(0.0, 1.0));
 
 }  // namespace phasebox

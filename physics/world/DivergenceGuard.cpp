@@ -7,15 +7,11 @@
 namespace phasebox {
 
 namespace {
-// Divergence by runaway energy: the drift (the integrator's energy error) exceeds this many
-// times the scene's energy scale and has grown by kGrowth per step kStreak steps in a row
-// (exponential blow-up), or exceeds kAbsurd times the scale whatever its growth. The factor is
-// high because a stable method near its limit swings far: symplectic Euler at ω·h = 1.99 is
-// bounded but its energy error reaches 200 times the oscillator's energy.
+// CONTRACT §2: a step diverges when |drift| or |correction| exceeds kRunawayFactor times E₀ (the
+// scene's energy scale plus the physical work put in since it was taken). The factor is high
+// because a stable method near its limit swings far: symplectic Euler at ω·h = 1.99 is bounded
+// but its energy error reaches 200 times the oscillator's energy.
 constexpr double kRunawayFactor = 1e3;
-constexpr double kGrowth = 1.5;
-constexpr int kStreak = 3;
-constexpr double kAbsurd = 1e8;
 }  // namespace
 
 std::string Divergence::message() const {
@@ -33,8 +29,8 @@ void DivergenceGuard::setEnergyScale(double scale) {
 }
 
 void DivergenceGuard::forgetGrowth() {
-    previousDrift_ = 0.0;
-    growthStreak_ = 0;
+    beyondScale_ = false;
+    workPutIn_ = 0.0;
 }
 
 void DivergenceGuard::beginFrame(const SimulationClock& clock, const EnergyLedger& ledger,
@@ -51,26 +47,28 @@ void DivergenceGuard::beginFrame(const SimulationClock& clock, const EnergyLedge
 DivergenceGuard::Verdict DivergenceGuard::judge(const EnergyLedger& ledger, const Vec& frameStartQ,
                                                 const Vec& frameStartU) {
     // Energy a solver creates runs away like energy an integrator creates: both count.
-    const double drift = std::max(ledger.drift, ledger.correction);
-    if (!std::isfinite(drift)) return Verdict::RestoreFrameStart;
-    // The growth rule measures against the scene's own energy, not against work_nc: in a
-    // damped blow-up the damping's work explodes as fast as the drift and would hide it.
-    const bool growing = drift > kRunawayFactor * energyScale_ && drift > kGrowth * previousDrift_;
-    if (growing && growthStreak_ == 0) {
-        // The growth may be a blow-up: remember where it started, the last good state.
-        runawayStart_ = frameStart_;
-        runawayStart_.hasState = true;
-        if (!frameStart_.hasState) {
-            runawayStart_.q = frameStartQ;
-            runawayStart_.u = frameStartU;
+    const double worst = std::max(std::abs(ledger.drift), std::abs(ledger.correction));
+    if (!std::isfinite(worst)) return Verdict::RestoreFrameStart;
+    // E₀ grows with the physical work put in (a motor, the wind): what it adds is not a
+    // runaway of the method.
+    workPutIn_ += std::max(0.0, ledger.workNc - frameStart_.ledger.workNc);
+    const double scale = divergenceScale();
+    if (worst > scale) {
+        if (!beyondScale_) {
+            // The frame start is the last state at which both were still within E₀: where a
+            // runaway begins, and what a divergence restores.
+            runawayStart_ = frameStart_;
+            runawayStart_.hasState = true;
+            if (!frameStart_.hasState) {
+                runawayStart_.q = frameStartQ;
+                runawayStart_.u = frameStartU;
+            }
+            beyondScale_ = true;
         }
+    } else {
+        beyondScale_ = false;
     }
-    growthStreak_ = growing ? growthStreak_ + 1 : 0;
-    previousDrift_ = drift;
-    if (growthStreak_ >= kStreak) return Verdict::RestoreRunawayStart;
-    if (drift > kAbsurd * (energyScale_ + std::abs(ledger.workNc)))
-        return Verdict::RestoreFrameStart;
-    return Verdict::Good;
+    return worst > kRunawayFactor * scale ? Verdict::RestoreRunawayStart : Verdict::Good;
 }
 
 }  // namespace phasebox

@@ -1,7 +1,7 @@
 #pragma once
 // The divergence guard (CONTRACT.md §2): after each step it judges the energy ledger, and when
-// the simulation has blown up it says which good state to go back to: the start of this
-// frame, or the start of the runaway when the energy has been growing for several frames.
+// the simulation has blown up (|drift| or |correction| above 10³·E₀) it says which good state to
+// go back to: the start of the last step at which both were still within E₀.
 
 #include "physics/core/Types.h"
 #include "physics/world/EnergyLedger.h"
@@ -39,9 +39,11 @@ public:
     };
     enum class Verdict { Good, RestoreFrameStart, RestoreRunawayStart };
 
-    // The scale against which drift is judged (set at the baseline); forgets any growth.
+    // E₀ without the work put in since (set at the baseline); forgets any runaway.
     void setEnergyScale(double scale);
     double energyScale() const { return energyScale_; }
+    // E₀ of CONTRACT §2: the scale plus the physical work put in since it was taken.
+    double divergenceScale() const { return energyScale_ + workPutIn_; }
 
     void beginFrame(const SimulationClock& clock, const EnergyLedger& ledger, const Vec& q,
                     const Vec& u, bool copyState);
@@ -51,13 +53,18 @@ public:
     // Judges the ledger at the end of the frame. frameStartQ/U are where the frame start lives
     // when it was not copied (the world's other buffer), kept should the runaway begin here.
     Verdict judge(const EnergyLedger& ledger, const Vec& frameStartQ, const Vec& frameStartU);
-    // After a restore or an edit: growth is measured afresh.
+    // A non-finite value: back to where a runaway began if one is under way, else to the
+    // frame start.
+    Verdict onNonFinite() const {
+        return beyondScale_ ? Verdict::RestoreRunawayStart : Verdict::RestoreFrameStart;
+    }
+    // After a restore or an edit: the runaway and the work put in are measured afresh.
     void forgetGrowth();
 
 private:
     double energyScale_ = 0.0;
-    double previousDrift_ = 0.0;
-    int growthStreak_ = 0;
+    double workPutIn_ = 0.0;    // positive work_nc since the scale was taken
+    bool beyondScale_ = false;  // |drift| or |correction| above E₀ at the last judgement
     Checkpoint frameStart_, runawayStart_;
 };
 

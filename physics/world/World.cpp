@@ -540,7 +540,7 @@ StateSummary World::closeLedger(const StateSummary* summed) {
 
 bool World::guard(const StateSummary& summary) {
     std::string what;
-    DivergenceGuard::Verdict verdict = DivergenceGuard::Verdict::RestoreFrameStart;
+    DivergenceGuard::Verdict verdict = guard_.onNonFinite();
     if (!summary.finite) {
         what = "a non-finite value";
     } else if (!std::isfinite(ledger_.drift)) {
@@ -548,7 +548,7 @@ bool World::guard(const StateSummary& summary) {
     } else {
         verdict = guard_.judge(ledger_, q_[1 - current_], u_[1 - current_]);
         if (verdict == DivergenceGuard::Verdict::Good) return true;
-        what = "energy growing without bound";
+        what = "energy growing without bound";  // past 10³·E₀ (CONTRACT §2)
     }
     Divergence d;
     d.time = clock_.time;
@@ -572,7 +572,10 @@ bool World::failSubstep(double t, bool integratorFailed, int next) {
     d.what = integratorFailed ? std::string(integrator_->info().name) + " failed"
                               : std::string("a non-finite value");
     current_ = next;  // restore() reads the frame start from the right place
-    restore(guard_.frameStart(), true);
+    if (guard_.onNonFinite() == DivergenceGuard::Verdict::RestoreRunawayStart)
+        restore(guard_.runawayStart(), false);
+    else
+        restore(guard_.frameStart(), true);
     d.restoredTime = clock_.time;
     divergence_ = d;
     return false;
@@ -625,7 +628,9 @@ void World::resetEnergyBaseline() {
     ledger_.rebase(kineticEnergy(), potentialEnergy());
     // The scale against which drift is judged: every energy in the scene, and a floor of each
     // body moving at 1 m/s so that a scene at rest at the origin still has a scale.
-    double scale = ledger_.kinetic + mass_.sum() * 0.5;
+    double bodyMass = 0.0;  // Σm over bodies: each point's mass sits on two DOFs, a box's too
+    for (int i = 0; i < layout_.dimension(); i += i < pairedDofs() ? 2 : 3) bodyMass += mass_[i];
+    double scale = ledger_.kinetic + 0.5 * bodyMass;
     for (const auto& e : effects_) scale += std::abs(e->potentialEnergy(q_[current_]));
     guard_.setEnergyScale(scale);
 }

@@ -108,6 +108,9 @@ public:
     // happened where and when.
     bool step();
     const std::optional<Divergence>& divergence() const { return divergence_; }
+    // E₀ of the divergence rule (CONTRACT §2): |drift| or |correction| above 10³ times this
+    // diverges.
+    double divergenceScale() const { return guard_.divergenceScale(); }
 
     double time() const { return clock_.time; }
     // Sets the clock (a rebuilt world continuing a run); steps count on from here.

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 using namespace phasebox;
 using namespace phasebox::testing;
@@ -173,12 +174,14 @@ void TestOscillatorClosedForm::stepMatrixPowers_data() {
     QTest::addColumn<double>("h");
     QTest::addColumn<int>("steps");
     // At h = 0.7 explicit Euler's energy grows 1.49× per step and implicit Euler's amplitude
-    // shrinks likewise; 40 steps keep both far from the divergence guard and from the
-    // spring's 1e-12 length cut-off.
+    // shrinks likewise; 40 steps keep implicit Euler far from the spring's 1e-12 length
+    // cut-off. Explicit Euler's drift (1.49^n) passes 10³·E₀ before step 40, which CONTRACT §2
+    // calls a divergence: it is checked to step 16.
     for (const char* name : {"explicit_euler", "symplectic_euler", "midpoint", "heun", "rk4",
                              "velocity_verlet", "implicit_euler", "implicit_midpoint"}) {
+        const int steps = std::string(name) == "explicit_euler" ? 16 : 40;
         QTest::newRow(qPrintable(QString("%1 h=0.1").arg(name))) << QString(name) << 0.1 << 200;
-        QTest::newRow(qPrintable(QString("%1 h=0.7").arg(name))) << QString(name) << 0.7 << 40;
+        QTest::newRow(qPrintable(QString("%1 h=0.7").arg(name))) << QString(name) << 0.7 << steps;
     }
 }
 
@@ -192,6 +195,7 @@ void TestOscillatorClosedForm::stepMatrixPowers() {
     auto world = oscillator(integrator.toStdString(), h);
     int done = 0;
     for (int checkpoint : {1, 2, 3, 10, 37, steps}) {
+        if (checkpoint > steps) continue;
         for (; done < checkpoint; ++done) QVERIFY(world->step());
         const Mat mn = power(m, checkpoint);
         const double dev = relativeDeviation(*world, mn * kXStart, mn * kYStart);

@@ -6,6 +6,8 @@
 
 #include "PhysicsTestSupport.h"
 
+#include "physics/world/DivergenceGuard.h"
+
 #include <QTest>
 
 #include <algorithm>
@@ -202,6 +204,8 @@ private slots:
     void gravityAloneMatchesTheForceChannel();
     void splitAccelerationAddsUpToTheWhole();
     void anOverflowRestoresTheLastGoodState();
+    void runawayDriftDivergesAsTheContractSays();
+    void runawayCorrectionDivergesAtItsFirstStep();
 };
 
 // Gravity alone is an acceleration field, written straight into the accelerations; with a drag of
@@ -672,6 +676,66 @@ void TestWorldInvariants::onlyListedEffectsAreConstructed() {
     c.resolution = {3, 3};
     cloth.cloths.push_back(c);
     QCOMPARE(effectNames(*build(cloth)), Names{"springs"});
+}
+
+// CONTRACT §2: a step diverges when |drift| exceeds 10³·E₀, and the state goes back to the start
+// of the last step at which it was still within E₀. Explicit Euler multiplies an oscillator's
+// energy by exactly 1 + (ω·h)² per step, so both steps follow in closed form.
+void TestWorldInvariants::runawayDriftDivergesAsTheContractSays() {
+    const double h = 0.7;
+    auto world = build(oscillatorScene("explicit_euler", h, {1.0, 0.0}, {0.0, 0.0}));
+    const double energy = 0.5;        // ½·k·x², k = m = 1
+    const double scale = 2 * energy;  // E₀: the energy plus ½·m·(1 m/s)²
+    QCOMPARE(world->divergenceScale(), scale);
+    const auto drift = [&](int n) { return energy * (std::pow(1.0 + h * h, n) - 1.0); };
+    int diverges = 1, restored = 0;
+    while (!(drift(diverges) > 1e3 * scale)) ++diverges;
+    while (drift(restored + 1) <= scale) ++restored;
+    QCOMPARE(diverges, 20);
+    QCOMPARE(restored, 2);
+    int accepted = 0;
+    while (world->step()) QVERIFY(++accepted < 100);
+    QCOMPARE(accepted, diverges - 1);
+    QVERIFY(world->divergence().has_value());
+    QVERIFY(std::abs(world->divergence()->time - diverges * h) < 1e-9);
+    QVERIFY(std::abs(world->divergence()->restoredTime - restored * h) < 1e-9);
+    QVERIFY(std::abs(world->time() - restored * h) < 1e-9);
+    QVERIFY(std::abs(world->energy().drift - drift(restored)) <= 1e-12);
+}
+
+// Energy a solver creates runs away like an integrator's: correction above 10³·E₀ diverges at
+// the first step that puts it there, back to the start of the last step within E₀.
+void TestWorldInvariants::runawayCorrectionDivergesAtItsFirstStep() {
+    DivergenceGuard guard;
+    guard.setEnergyScale(2.0);
+    const Eigen::VectorXd q = Eigen::VectorXd::Zero(2), u = Eigen::VectorXd::Zero(2);
+    SimulationClock clock;
+    EnergyLedger ledger;
+    const auto frame = [&](double correction) {
+        guard.beginFrame(clock, ledger, q, u, true);
+        ++clock.stepCount;
+        clock.time += 0.1;
+        ledger.correction = correction;
+        return guard.judge(ledger, q, u);
+    };
+    using Verdict = DivergenceGuard::Verdict;
+    QCOMPARE(frame(1.0), Verdict::Good);  // within E₀
+    QCOMPARE(frame(5.0), Verdict::Good);  // beyond E₀: this frame's start is the last good one
+    QCOMPARE(guard.runawayStart().clock.stepCount, 1);
+    QCOMPARE(frame(1500.0), Verdict::Good);                  // 750·E₀
+    QCOMPARE(frame(-2500.0), Verdict::RestoreRunawayStart);  // |correction| counts
+    QCOMPARE(guard.runawayStart().clock.stepCount, 1);
+    guard.forgetGrowth();
+    QCOMPARE(frame(-2.5e6), Verdict::RestoreRunawayStart);  // at once, from a good start
+    QCOMPARE(guard.runawayStart().clock.stepCount, 4);
+    // Physical work put in raises E₀: the wind's energy is not the method's.
+    guard.setEnergyScale(2.0);
+    ledger.workNc = 0.0;
+    guard.beginFrame(clock, ledger, q, u, true);
+    ledger.workNc = 1e4;
+    ledger.correction = 5e6;
+    QCOMPARE(guard.judge(ledger, q, u), Verdict::Good);
+    QCOMPARE(guard.divergenceScale(), 2.0 + 1e4);
 }
 
 QTEST_APPLESS_MAIN(TestWorldInvariants)

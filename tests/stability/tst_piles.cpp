@@ -61,6 +61,7 @@ class TestPiles : public QObject {
 
 private slots:
     void pileAtOnePointIsBounded();
+    void boxPileAtOnePointComesApart();
     void coincidentCentresGiveReproducibleNormals();
     void columnCostsWhatARowCosts();
     void sweepAxisFollowsTheSpread();
@@ -79,7 +80,7 @@ void TestPiles::pileAtOnePointIsBounded() {
     auto world = buildWorld(pileAtPoint(kCount)).world;
     QVERIFY(world->contacts() != nullptr);
     const long long pairBound =
-        (ContactStage::kParticlePairCap + ContactStage::kParticleNearPairCap) * kCount / 2;
+        (ContactStage::kOverlappingPairCap + ContactStage::kNearPairCap) * kCount / 2;
     long long mostPoints = 0;
     QElapsedTimer timer;
     timer.start();
@@ -111,9 +112,54 @@ void TestPiles::pileAtOnePointIsBounded() {
         seconds, mostPoints, pairBound, fastest, farthest);
     QVERIFY2(seconds < kSecondsBound, qPrintable(QString::number(seconds)));
     // The pile comes apart (it does not stay a point, nor a line along one shared normal),
-    // and no disk is flung off with the energy of thousands of overlaps (about 10 m/s now).
+    // and no disk is flung off with the energy of thousands of overlaps: deep overlap is pushed
+    // out in positions and the push-out speed is a body's, not each contact's (17.5 m/s before
+    // that, 2.2 m/s since; issue 15 asks nothing faster than 5 m/s from rest).
     QVERIFY2(farthest > 0.2, qPrintable(QString::number(farthest)));
-    QVERIFY2(fastest < 25.0, qPrintable(QString::number(fastest)));
+    QVERIFY2(fastest < 5.0, qPrintable(QString::number(fastest)));
+}
+
+void TestPiles::boxPileAtOnePointComesApart() {
+    // 1,000 1 m boxes at one point on the ground. The overlap is a thousand square metres of
+    // box in one: it must come apart into a mound, and nothing may be launched. Before the
+    // pair caps, the deep push-out and the shared push-out speed, boxes left at 830 m/s and
+    // were 7 km away after 10 s; the guard now also calls a correction past 10³·E₀ a
+    // divergence, so this run must not diverge either.
+    constexpr int kCount = 1000;
+    SceneDesc s;
+    PlaneDesc ground;
+    ground.point = {0.0, 0.0};
+    ground.normal = {0.0, 1.0};
+    s.planes.push_back(ground);
+    s.effects.gravity = GravityDesc{};
+    for (int i = 0; i < kCount; ++i) {
+        BoxDesc b;
+        b.position = {0.0, 0.5};
+        s.boxes.push_back(b);
+    }
+    auto world = buildWorld(s).world;
+    double rising = 0.0, highest = 0.0, fastest = 0.0;
+    for (int step = 0; step < 360; ++step) {
+        QVERIFY2(world->step(), "the world reported divergence");
+        for (int i = 0; i < kCount; ++i) {
+            rising = std::max(rising, world->boxVelocity(i).y());
+            highest = std::max(highest, world->boxPosition(i).y());
+            fastest = std::max(fastest, world->boxVelocity(i).norm());
+        }
+    }
+    double spread = 0.0;
+    for (int i = 0; i < kCount; ++i) spread = std::max(spread, std::abs(world->boxPosition(i).x()));
+    const double fall = std::sqrt(2.0 * 9.81 * highest);
+    qInfo(
+        "1,000 boxes at one point, 6 s: spread %.1f m, highest %.1f m, fastest rising %.2f m/s, "
+        "fastest %.2f m/s (a fall from the highest point: %.2f m/s)",
+        spread, highest, rising, fastest, fall);
+    // Apart: a thousand unit boxes cover a thousand square metres, a mound some 30 m high.
+    QVERIFY2(spread > 10.0, qPrintable(QString::number(spread)));
+    // Pushed apart, not launched: nothing rises faster than a few push-out speeds (3 m/s
+    // each), and nothing moves faster than a fall from the top of the mound plus that.
+    QVERIFY2(rising < 10.0, qPrintable(QString::number(rising)));
+    QVERIFY2(fastest < fall + 10.0, qPrintable(QString::number(fastest)));
 }
 
 void TestPiles::coincidentCentresGiveReproducibleNormals() {
