@@ -22,6 +22,7 @@ std::optional<std::pair<QString, QString>> positionKeys(ObjectKind kind) {
     switch (kind) {
         case ObjectKind::Particle:
         case ObjectKind::Box:
+        case ObjectKind::Disk:
             return std::pair{QStringLiteral("position.x"), QStringLiteral("position.y")};
         case ObjectKind::Plane:
             return std::pair{QStringLiteral("point.x"), QStringLiteral("point.y")};
@@ -302,7 +303,7 @@ void CanvasTools::finish(QPointF world) {
             const QString key = pinPropertyKey(ref.kind);
             const auto current = propertyValue(document_.setup(), startObject_, key);
             if (!current) {
-                emit message(tr("Only particles can be pinned and boxes made static."));
+                emit message(tr("Only particles can be pinned and boxes and disks made static."));
                 return;
             }
             report(document_.setPinned(startObject_, *current == 0.0, &error), error);

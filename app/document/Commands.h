@@ -92,6 +92,7 @@ private:
     // Removed objects with their indices, ascending, per array.
     std::vector<std::pair<std::size_t, ParticleDesc>> particles_;
     std::vector<std::pair<std::size_t, BoxDesc>> boxes_;
+    std::vector<std::pair<std::size_t, DiskDesc>> disks_;
     std::vector<std::pair<std::size_t, PlaneDesc>> planes_;
     std::vector<std::pair<std::size_t, SpringDesc>> springs_;
     std::vector<std::pair<std::size_t, ClothDesc>> cloths_;

@@ -117,6 +117,9 @@ std::vector<ParticleDesc>& array(SceneDesc& s, const ParticleDesc*) {
 std::vector<BoxDesc>& array(SceneDesc& s, const BoxDesc*) {
     return s.boxes;
 }
+std::vector<DiskDesc>& array(SceneDesc& s, const DiskDesc*) {
+    return s.disks;
+}
 std::vector<PlaneDesc>& array(SceneDesc& s, const PlaneDesc*) {
     return s.planes;
 }
@@ -135,6 +138,8 @@ void visitObject(SceneDesc& scene, ObjectRef ref, Fn&& fn) {
             return fn(scene.particles[ref.index]);
         case ObjectKind::Box:
             return fn(scene.boxes[ref.index]);
+        case ObjectKind::Disk:
+            return fn(scene.disks[ref.index]);
         case ObjectKind::Plane:
             return fn(scene.planes[ref.index]);
         case ObjectKind::Spring:
@@ -151,11 +156,12 @@ std::optional<Point2> bodyPoint(const SceneDesc& scene, const std::string& id,
                                 const Point2& local) {
     const ObjectRef ref = findObject(scene, id);
     if (ref.kind == ObjectKind::Particle) return scene.particles[ref.index].position;
-    if (ref.kind == ObjectKind::Box) {
-        const BoxDesc& b = scene.boxes[ref.index];
-        const double c = std::cos(b.angle), s = std::sin(b.angle);
-        return Point2{b.position[0] + c * local[0] - s * local[1],
-                      b.position[1] + s * local[0] + c * local[1]};
+    if (ref.kind == ObjectKind::Box || ref.kind == ObjectKind::Disk) {
+        const bool box = ref.kind == ObjectKind::Box;
+        const Point2& at = box ? scene.boxes[ref.index].position : scene.disks[ref.index].position;
+        const double angle = box ? scene.boxes[ref.index].angle : scene.disks[ref.index].angle;
+        const double c = std::cos(angle), s = std::sin(angle);
+        return Point2{at[0] + c * local[0] - s * local[1], at[1] + s * local[0] + c * local[1]};
     }
     if (ref.kind == ObjectKind::Cloth) {
         const ClothDesc& cl = scene.cloths[ref.index];
@@ -175,6 +181,8 @@ ObjectRef findObject(const SceneDesc& scene, const std::string& id) {
         if (particleId(scene, i) == id) return {ObjectKind::Particle, i};
     for (std::size_t i = 0; i < scene.boxes.size(); ++i)
         if (boxId(scene, i) == id) return {ObjectKind::Box, i};
+    for (std::size_t i = 0; i < scene.disks.size(); ++i)
+        if (diskId(scene, i) == id) return {ObjectKind::Disk, i};
     for (std::size_t i = 0; i < scene.planes.size(); ++i)
         if (planeId(scene, i) == id) return {ObjectKind::Plane, i};
     for (std::size_t i = 0; i < scene.springs.size(); ++i)
@@ -196,6 +204,8 @@ std::string objectId(const SceneDesc& scene, ObjectRef ref) {
             return particleId(scene, ref.index);
         case ObjectKind::Box:
             return boxId(scene, ref.index);
+        case ObjectKind::Disk:
+            return diskId(scene, ref.index);
         case ObjectKind::Plane:
             return planeId(scene, ref.index);
         case ObjectKind::Spring:
@@ -219,6 +229,8 @@ ObjectDesc objectDesc(const SceneDesc& scene, ObjectRef ref) {
             return scene.particles[ref.index];
         case ObjectKind::Box:
             return scene.boxes[ref.index];
+        case ObjectKind::Disk:
+            return scene.disks[ref.index];
         case ObjectKind::Plane:
             return scene.planes[ref.index];
         case ObjectKind::Spring:
@@ -242,6 +254,8 @@ QString objectKindName(ObjectKind kind) {
             return QStringLiteral("particle");
         case ObjectKind::Box:
             return QStringLiteral("box");
+        case ObjectKind::Disk:
+            return QStringLiteral("disk");
         case ObjectKind::Plane:
             return QStringLiteral("plane");
         case ObjectKind::Spring:
@@ -258,6 +272,7 @@ std::vector<std::string> objectIds(const SceneDesc& scene) {
     std::vector<std::string> ids;
     for (std::size_t i = 0; i < scene.particles.size(); ++i) ids.push_back(particleId(scene, i));
     for (std::size_t i = 0; i < scene.boxes.size(); ++i) ids.push_back(boxId(scene, i));
+    for (std::size_t i = 0; i < scene.disks.size(); ++i) ids.push_back(diskId(scene, i));
     for (std::size_t i = 0; i < scene.planes.size(); ++i) ids.push_back(planeId(scene, i));
     for (std::size_t i = 0; i < scene.springs.size(); ++i) ids.push_back(springId(scene, i));
     for (const ClothDesc& cloth : scene.cloths) ids.push_back(cloth.id);
@@ -278,6 +293,7 @@ void assignDefaultIds(SceneDesc& scene) {
     for (std::size_t i = 0; i < scene.particles.size(); ++i)
         scene.particles[i].id = particleId(scene, i);
     for (std::size_t i = 0; i < scene.boxes.size(); ++i) scene.boxes[i].id = boxId(scene, i);
+    for (std::size_t i = 0; i < scene.disks.size(); ++i) scene.disks[i].id = diskId(scene, i);
     for (std::size_t i = 0; i < scene.planes.size(); ++i) scene.planes[i].id = planeId(scene, i);
     for (std::size_t i = 0; i < scene.springs.size(); ++i) scene.springs[i].id = springId(scene, i);
 }
@@ -313,6 +329,8 @@ std::vector<PropertyRow> propertiesOf(const SceneDesc& scene, const QString& id)
             continue;
         if (ref.kind == ObjectKind::Box && !scene.boxes[ref.index].mass)
             row.value = scene.boxes[ref.index].resolvedMass();
+        if (ref.kind == ObjectKind::Disk && !scene.disks[ref.index].mass)
+            row.value = scene.disks[ref.index].resolvedMass();
         if (ref.kind == ObjectKind::Spring && !scene.springs[ref.index].restLength)
             row.value = initialSpringLength(scene, scene.springs[ref.index]).value_or(0.0);
     }
@@ -343,7 +361,8 @@ bool setPropertyValue(SceneDesc& scene, const QString& id, const QString& key, d
 }
 
 QString pinPropertyKey(ObjectKind kind) {
-    return text(kind == ObjectKind::Box ? schema::key::isStatic : schema::key::pinned);
+    const bool rigid = kind == ObjectKind::Box || kind == ObjectKind::Disk;
+    return text(rigid ? schema::key::isStatic : schema::key::pinned);
 }
 
 bool propertyMovesObject(const SceneDesc& scene, const QString& id, const QString& key) {

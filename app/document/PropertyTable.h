@@ -16,7 +16,7 @@
 
 namespace phasebox {
 
-enum class ObjectKind { None, Particle, Box, Plane, Spring, Cloth };
+enum class ObjectKind { None, Particle, Box, Disk, Plane, Spring, Cloth };
 
 // Where an object sits in a SceneDesc: its array and its index there.
 struct ObjectRef {
@@ -26,7 +26,7 @@ struct ObjectRef {
 };
 
 // One object's description, whatever its kind: what add and delete commands carry.
-using ObjectDesc = std::variant<ParticleDesc, BoxDesc, PlaneDesc, SpringDesc, ClothDesc>;
+using ObjectDesc = std::variant<ParticleDesc, BoxDesc, DiskDesc, PlaneDesc, SpringDesc, ClothDesc>;
 
 // The object with this id; a cloth node id ID[i,j] names its cloth (a node is not an object of
 // the setup). Invalid when nothing has the id.
@@ -36,7 +36,7 @@ ObjectKind objectKind(const ObjectDesc& object);
 ObjectDesc objectDesc(const SceneDesc& scene, ObjectRef ref);
 // Replaces the object at ref; the kinds must match (else nothing happens).
 void setObjectDesc(SceneDesc& scene, ObjectRef ref, const ObjectDesc& object);
-// "particle", "box", "plane", "spring", "cloth".
+// "particle", "box", "disk", "plane", "spring", "cloth".
 QString objectKindName(ObjectKind kind);
 
 // Every id in the scene (defaults included), without cloth nodes: ids of the form ID[i,j]
@@ -44,7 +44,7 @@ QString objectKindName(ObjectKind kind);
 std::vector<std::string> objectIds(const SceneDesc& scene);
 // prefix0, prefix1, … : the first one no object (or cloth node) of the scene uses.
 std::string uniqueObjectId(const SceneDesc& scene, const std::string& prefix);
-// Writes the default ids (p0, b0, plane0, s0 by position) into objects that have none, so
+// Writes the default ids (p0, b0, d0, plane0, s0 by position) into objects that have none, so
 // that ids stay put when an object before them is deleted.
 void assignDefaultIds(SceneDesc& scene);
 // The initial distance between a spring's ends in the setup, its rest length when the scene

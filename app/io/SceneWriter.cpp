@@ -227,7 +227,7 @@ QByteArray SceneIO::serialize(const SceneDesc& scene) {
     Writer w;
     w.beginObject();
     w.field(key::format, std::string(schema::kFormatName));
-    w.field(key::version, SceneDesc::kFormatVersion);
+    w.field(key::version, scene.formatVersion());
     w.field(key::name, scene.name);
     w.field(key::description, scene.description);
     w.key(key::simulation);
@@ -242,6 +242,7 @@ QByteArray SceneIO::serialize(const SceneDesc& scene) {
     });
     w.endObject();
     schema::forEachObjectKind([&](const auto& table, auto array) {
+        if (table.sinceVersion > 1 && (scene.*array).empty()) return;
         w.key(table.key);
         w.beginArray();
         for (const auto& item : scene.*array) writeFields(w, item);

@@ -33,7 +33,10 @@ void ContactStage::bind(const Bodies& bodies) {
     const auto& boxes = bodies.boxes;
     for (int i = 0; i < static_cast<int>(boxes.size()); ++i) {
         const Box& b = boxes[i];
-        colliders_.push_back({Collider::Kind::Box, i, b.dof, b.friction, b.restitution});
+        // A rigid disk collides as a disk but turns: its contacts have lever arms.
+        const bool disk = b.shape == RigidShape::Disk;
+        colliders_.push_back({disk ? Collider::Kind::Disk : Collider::Kind::Box, i, b.dof,
+                              b.friction, b.restitution, true});
     }
     planes_.clear();
     planeFriction_.clear();
@@ -53,12 +56,15 @@ void ContactStage::bind(const Bodies& bodies) {
     pairSize_.assign(colliders_.size(), 0.0);
     for (int i = 0; i < static_cast<int>(colliders_.size()); ++i) {
         const Collider& c = colliders_[i];
-        if (c.kind == Collider::Kind::Disk) {
+        if (c.kind == Collider::Kind::Disk && !c.rigid) {
             pairLimited_[i] = !particleCollisions_ ? PairCap::kApart
                               : c.dof >= 0         ? PairCap::kCapped
                                                    : PairCap::kFree;
             pairSize_[i] = particles[c.object].radius;
-        } else if (c.dof >= 0) {
+        } else if (c.kind == Collider::Kind::Disk && c.dof >= 0) {
+            pairLimited_[i] = PairCap::kCapped;
+            pairSize_[i] = boxes[c.object].radius;
+        } else if (c.kind == Collider::Kind::Box && c.dof >= 0) {
             // A box's size for the cap is the radius of its circumscribed circle.
             pairLimited_[i] = PairCap::kCapped;
             pairSize_[i] = 0.5 * boxes[c.object].size.norm();
@@ -77,7 +83,7 @@ int ContactStage::solverBodyFor(int collider, const Vec& q) {
     index = static_cast<int>(bodies.size());
     SolverBody b;
     b.dof = c.dof;
-    b.rotates = c.kind == Collider::Kind::Box;
+    b.rotates = c.rigid;
     b.collidePosition = q.segment<2>(c.dof);
     if (b.rotates) b.collideAngle = q[c.dof + 2];
     bodies.push_back(b);
@@ -136,8 +142,11 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
     for (int i = 0; i < count; ++i) {
         const Collider& c = colliders_[i];
         if (c.kind == Collider::Kind::Disk) {
-            const Particle& p = bodies.particles[c.object];
-            disks_[i] = {c.dof >= 0 ? Vec2(q.segment<2>(c.dof)) : p.position, p.radius};
+            const Vec2 position =
+                c.rigid ? bodies.boxes[c.object].position : bodies.particles[c.object].position;
+            const double radius =
+                c.rigid ? bodies.boxes[c.object].radius : bodies.particles[c.object].radius;
+            disks_[i] = {c.dof >= 0 ? Vec2(q.segment<2>(c.dof)) : position, radius};
             bounds_[i] = boundingBox(disks_[i]);
         } else {
             const Box& b = bodies.boxes[c.object];
@@ -183,11 +192,15 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
             (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint64_t>(j);
         const bool diskA = a.kind == Collider::Kind::Disk, diskB = b.kind == Collider::Kind::Disk;
         if (diskA && diskB) {
-            if (!particleCollisions_) continue;
-            const Particle& pa = bodies.particles[a.object];
-            const Particle& pb = bodies.particles[b.object];
-            if (pa.cloth >= 0 && pa.cloth == pb.cloth) continue;  // no cloth self-collision
-            restitution = particleRestitution_;
+            // Two particles meet only with particle_collisions (then with its restitution);
+            // a rigid disk meets everything.
+            if (!a.rigid && !b.rigid) {
+                if (!particleCollisions_) continue;
+                const Particle& pa = bodies.particles[a.object];
+                const Particle& pb = bodies.particles[b.object];
+                if (pa.cloth >= 0 && pa.cloth == pb.cloth) continue;  // no cloth self-collision
+                restitution = particleRestitution_;
+            }
             if (collideDisks(disks_[i], disks_[j], margin, m,
                              whenCoincident(i, j, disks_[i].center, disks_[j].center)))
                 addConstraint(key, i, j, m, friction, restitution, q);

@@ -61,10 +61,11 @@ public:
 private:
     struct Collider {
         enum class Kind : unsigned char { Disk, Box } kind;
-        int object;  // particle or box index
+        int object;  // particle index, or rigid body index when rigid
         int dof;     // −1 static
         double friction;
         double restitution;
+        bool rigid = false;  // object indexes the rigid bodies (boxes, rigid disks): it turns
     };
 
     int solverBodyFor(int collider, const Vec& q);

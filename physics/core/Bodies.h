@@ -27,8 +27,14 @@ struct Particle {
     int dof = -1;    // first state index, −1 when pinned
 };
 
+// A rigid body: x, y and an angle. The name is that of the first kind; CONTRACT §6 added disks
+// (the scene's `disks` array), which are the same record with the disk shape.
+enum class RigidShape : unsigned char { Rectangle, Disk };
+
 struct Box {
     std::string id;
+    RigidShape shape = RigidShape::Rectangle;
+    double radius = 0.0;      // a disk's; its size is then its bounding square, 2r × 2r
     Vec2 position{0.0, 0.0};  // setup value; live value in the state unless static
     double angle = 0.0;
     Vec2 velocity{0.0, 0.0};

@@ -21,6 +21,7 @@ void BuoyancyEffect::bind(const EffectWorldView& view) {
     const StateLayout& layout = *view.layout;
     diskRadius_.assign(static_cast<std::size_t>(layout.dynamicParticles), 0.0);
     boxHalfSize_.assign(static_cast<std::size_t>(layout.dynamicBoxes), Vec2::Zero());
+    rigidDiskRadius_.assign(static_cast<std::size_t>(layout.dynamicBoxes), 0.0);
     // Right after addEffect() the world binds with its old layout, before the commit that binds
     // again; a dof outside the current layout is stale then and is skipped, not written past.
     if (view.particles)
@@ -29,8 +30,10 @@ void BuoyancyEffect::bind(const EffectWorldView& view) {
     if (view.boxes)
         for (const Box& b : *view.boxes) {
             const int k = (b.dof - layout.boxBase()) / 3;
-            if (b.dof >= layout.boxBase() && k < layout.dynamicBoxes)
+            if (b.dof >= layout.boxBase() && k < layout.dynamicBoxes) {
                 boxHalfSize_[k] = 0.5 * b.size;
+                if (b.shape == RigidShape::Disk) rigidDiskRadius_[k] = b.radius;
+            }
         }
 }
 
@@ -118,8 +121,15 @@ void BuoyancyEffect::forEachBody(const Vec& q, Fn&& fn) const {
     }
     for (int k = 0; k < layout.dynamicBoxes; ++k) {
         const int dof = layout.boxDof(k);
+        const double depth = surfaceY_ - q[dof + 1];
+        if (const double radius = rigidDiskRadius_[k]; radius > 0.0) {
+            // A disk's submerged segment is symmetric about its centre's vertical: no torque.
+            const SubmergedPart part = submergedDisk(radius, depth);
+            fn(dof, true, part, part.area / (std::numbers::pi * radius * radius));
+            continue;
+        }
         const Vec2& half = boxHalfSize_[k];
-        const SubmergedPart part = submergedBox(half, q[dof + 2], surfaceY_ - q[dof + 1]);
+        const SubmergedPart part = submergedBox(half, q[dof + 2], depth);
         fn(dof, true, part, part.area / (4.0 * half.x() * half.y()));
     }
 }

@@ -71,8 +71,9 @@ private:
     void forEachBody(const Vec& q, Fn&& fn) const;
 
     double density_, surfaceY_, drag_, gravity_;
-    std::vector<double> diskRadius_;  // per dynamic particle
-    std::vector<Vec2> boxHalfSize_;   // per dynamic box
+    std::vector<double> diskRadius_;       // per dynamic particle
+    std::vector<Vec2> boxHalfSize_;        // per dynamic box
+    std::vector<double> rigidDiskRadius_;  // per dynamic box: a disk's radius, 0 for a box
 };
 
 }  // namespace phasebox

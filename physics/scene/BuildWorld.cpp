@@ -182,21 +182,35 @@ BuildResult buildWorld(const SceneDesc& scene) {
         p.charge = d.charge;
         ends[p.id] = {SpringEnd::Kind::Particle, world.addParticle(p), Vec2::Zero()};
     }
-    for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
-        const BoxDesc& d = scene.boxes[i];
+    // A rigid body (box or disk) from what every rigid kind's description holds.
+    const auto rigid = [&](const auto& d, std::string id) {
         Box b;
-        b.id = boxId(scene, i);
+        b.id = std::move(id);
         b.position = vec(d.position);
         b.angle = d.angle;
         b.velocity = vec(d.velocity);
         b.angularVelocity = d.angularVelocity;
-        b.size = vec(d.size);
         b.mass = d.resolvedMass();
         b.inertia = d.momentOfInertia();
         b.isStatic = d.isStatic;
         b.friction = d.friction;
         b.restitution = d.restitution;
+        return b;
+    };
+    const auto addRigid = [&](const Box& b) {
         ends[b.id] = {SpringEnd::Kind::Box, world.addBox(b), Vec2::Zero()};
+    };
+    for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
+        Box b = rigid(scene.boxes[i], boxId(scene, i));
+        b.size = vec(scene.boxes[i].size);
+        addRigid(b);
+    }
+    for (std::size_t i = 0; i < scene.disks.size(); ++i) {
+        Box b = rigid(scene.disks[i], diskId(scene, i));
+        b.shape = RigidShape::Disk;
+        b.radius = scene.disks[i].radius;
+        b.size = Vec2::Constant(2.0 * b.radius);
+        addRigid(b);
     }
     for (std::size_t i = 0; i < scene.planes.size(); ++i) {
         const PlaneDesc& d = scene.planes[i];

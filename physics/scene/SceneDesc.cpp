@@ -1,5 +1,7 @@
 #include "physics/scene/SceneDesc.h"
 
+#include <numbers>
+
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/SceneSchema.h"
 
@@ -221,6 +223,12 @@ std::string particleId(const SceneDesc& s, std::size_t i) {
 std::string boxId(const SceneDesc& s, std::size_t i) {
     return defaultOr(s.boxes[i].id, "b", i);
 }
+std::string diskId(const SceneDesc& s, std::size_t i) {
+    return defaultOr(s.disks[i].id, "d", i);
+}
+double DiskDesc::resolvedMass() const {
+    return mass ? *mass : density * std::numbers::pi * radius * radius;
+}
 std::string planeId(const SceneDesc& s, std::size_t i) {
     return defaultOr(s.planes[i].id, "plane", i);
 }
@@ -261,9 +269,10 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
                    "the scene has " + std::to_string(particleCount) +
                        " particles (cloth nodes included); at most " +
                        std::to_string(SceneLimits::kMaxParticles) + " are allowed");
-    if (static_cast<long long>(scene.boxes.size()) > SceneLimits::kMaxBoxes)
-        check.fail(std::string(key::boxes),
-                   "at most " + std::to_string(SceneLimits::kMaxBoxes) + " boxes are allowed");
+    if (static_cast<long long>(scene.boxes.size() + scene.disks.size()) > SceneLimits::kMaxBoxes)
+        check.fail(std::string(scene.disks.empty() ? key::boxes : key::disks),
+                   "at most " + std::to_string(SceneLimits::kMaxBoxes) +
+                       " rigid bodies (boxes and disks) are allowed");
     if (static_cast<long long>(scene.springs.size()) > SceneLimits::kMaxSprings)
         check.fail(std::string(key::springs),
                    "at most " + std::to_string(SceneLimits::kMaxSprings) + " springs are allowed");
@@ -273,7 +282,7 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     if (!issues.empty() && (particleCount > SceneLimits::kMaxParticles)) return issues;
 
     // ids: unique across the scene (cloth node ids included); springs may refer to particles,
-    // boxes and cloth nodes. Each id remembers who holds it, for the messages.
+    // boxes, disks and cloth nodes. Each id remembers who holds it, for the messages.
     std::map<std::string, std::string> ids;  // id → path of its holder
     std::unordered_set<std::string> bodies;
     auto claim = [&](const std::string& path, const std::string& id, bool body, bool isDefault) {
@@ -298,6 +307,7 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     };
     objects(key::particles, scene.particles, particleId, true);
     objects(key::boxes, scene.boxes, boxId, true);
+    objects(key::disks, scene.disks, diskId, true);
     objects(key::planes, scene.planes, planeId, false);
     for (std::size_t c = 0; c < scene.cloths.size(); ++c) {
         const ClothDesc& cl = scene.cloths[c];
@@ -338,8 +348,9 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
             if (it == ids.end())
                 check.fail(where, "unknown object id \"" + id + "\"");
             else
-                check.fail(where, "\"" + id + "\" is " + it->second +
-                                      "; springs attach to particles, boxes and cloth nodes");
+                check.fail(where,
+                           "\"" + id + "\" is " + it->second +
+                               "; springs attach to particles, boxes, disks and cloth nodes");
         };
         const std::string a = join(path, key::a), b = join(path, key::b);
         if (s.a.empty())

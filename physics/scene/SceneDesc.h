@@ -104,24 +104,37 @@ struct ParticleDesc {
     double charge = 0.0;
 };
 
-struct BoxDesc {
-    std::string id;  // empty = default "b<index>"
+// What every rigid kind's description holds (boxes, disks): its state at load and its
+// material. Exactly one of mass and density is used: mass when set, else density times the
+// shape's area.
+struct RigidDesc {
+    std::string id;  // empty = the kind's default (b0…, d0…)
     Point2 position{0.0, 0.0};
-    Point2 size{1.0, 1.0};
     double angle = 0.0;
     Point2 velocity{0.0, 0.0};
     double angularVelocity = 0.0;
-    // Exactly one of mass / density is used: mass when set, else density·w·h.
     std::optional<double> mass;
     double density = 1.0;
     bool isStatic = false;
     double friction = 0.6;
     double restitution = 0.0;
+};
+
+struct BoxDesc : RigidDesc {
+    Point2 size{1.0, 1.0};
 
     double resolvedMass() const { return mass ? *mass : density * size[0] * size[1]; }
     double momentOfInertia() const {
         return resolvedMass() * (size[0] * size[0] + size[1] * size[1]) / 12.0;
     }
+};
+
+// A rigid disk (CONTRACT §6): unlike a particle it turns, so it can roll. I = ½·m·r².
+struct DiskDesc : RigidDesc {
+    double radius = 0.5;
+
+    double resolvedMass() const;
+    double momentOfInertia() const { return 0.5 * resolvedMass() * radius * radius; }
 };
 
 struct PlaneDesc {
@@ -164,7 +177,10 @@ struct ClothDesc {
 };
 
 struct SceneDesc {
-    static constexpr int kFormatVersion = 1;
+    // The newest format version this program reads; a scene is written as the oldest version
+    // that holds it (formatVersion()), so scenes without version 2's kinds save unchanged.
+    static constexpr int kFormatVersion = 2;
+    int formatVersion() const { return disks.empty() ? 1 : 2; }
 
     std::string name;
     std::string description;
@@ -172,14 +188,16 @@ struct SceneDesc {
     EffectsDesc effects;
     std::vector<ParticleDesc> particles;
     std::vector<BoxDesc> boxes;
+    std::vector<DiskDesc> disks;
     std::vector<PlaneDesc> planes;
     std::vector<SpringDesc> springs;
     std::vector<ClothDesc> cloths;
 };
 
-// Default ids by position (CONTRACT.md §1): p0…, b0…, plane0…, s0….
+// Default ids by position (CONTRACT.md §1, §6): p0…, b0…, d0…, plane0…, s0….
 std::string particleId(const SceneDesc& scene, std::size_t index);
 std::string boxId(const SceneDesc& scene, std::size_t index);
+std::string diskId(const SceneDesc& scene, std::size_t index);
 std::string planeId(const SceneDesc& scene, std::size_t index);
 std::string springId(const SceneDesc& scene, std::size_t index);
 std::string clothNodeId(const std::string& clothId, int i, int j);
@@ -188,7 +206,7 @@ std::string clothNodeId(const std::string& clothId, int i, int j);
 // small enough that a hostile file cannot exhaust memory or hang the program.
 struct SceneLimits {
     static constexpr long long kMaxParticles = 1'000'000;  // cloth nodes included
-    static constexpr long long kMaxBoxes = 100'000;
+    static constexpr long long kMaxBoxes = 100'000;        // rigid bodies: boxes and disks
     static constexpr long long kMaxSprings = 4'000'000;
     static constexpr long long kMaxPlanes = 1'000;
     static constexpr int kMaxSubsteps = 10'000;

@@ -61,8 +61,8 @@ Field<D> restitutionField(double D::*member) {
 
 template <typename D, std::size_t N>
 Table<D> makeTable(std::string_view tableKey, std::string_view description,
-                   const Field<D> (&fields)[N], bool implied = false) {
-    return {tableKey, description, std::span<const Field<D>>(fields), implied};
+                   const Field<D> (&fields)[N], bool implied = false, int sinceVersion = 1) {
+    return {tableKey, description, std::span<const Field<D>>(fields), implied, sinceVersion};
 }
 
 // ---- simulation ----
@@ -370,6 +370,75 @@ const Field<ParticleDesc> kParticle[] = {
      .editor = {-kLarge, kLarge, 3}},
 };
 
+// The fields every rigid body shares (boxes, disks), one helper each.
+template <typename D>
+Field<D> angleField() {
+    return {.key = key::angle,
+            .type = T::Number,
+            .member = &D::angle,
+            .range = symmetric(L::kMaxAngle),
+            .unit = "rad",
+            .label = "Angle",
+            .description = "its initial angle, counter-clockwise",
+            .editor = kPlaces};
+}
+template <typename D>
+Field<D> velocityField() {
+    return {.key = key::velocity,
+            .type = T::Point,
+            .member = &D::velocity,
+            .range = kSpeed,
+            .unit = "m/s",
+            .label = "Velocity",
+            .description = "its initial velocity",
+            .editor = kPlaces};
+}
+template <typename D>
+Field<D> angularVelocityField() {
+    return {.key = key::angularVelocity,
+            .type = T::Number,
+            .member = &D::angularVelocity,
+            .range = kSpeed,
+            .unit = "rad/s",
+            .label = "Angular velocity \u03c9",
+            .description = "its initial angular velocity",
+            .editor = kPlaces};
+}
+// Which of mass and density the author gave is part of the scene: a file that states a density
+// still states one after the body is resized and saved.
+template <typename D>
+Field<D> massField(std::string_view description) {
+    return {.key = key::mass,
+            .type = T::Number,
+            .member = &D::mass,
+            .range = kMass,
+            .unit = "kg",
+            .label = "Mass",
+            .description = description,
+            .editor = kMassEditor,
+            .exclusiveWith = key::density};
+}
+template <typename D>
+Field<D> densityField() {
+    return {.key = key::density,
+            .type = T::Number,
+            .member = &D::density,
+            .range = kMass,
+            .unit = "kg/m\u00b2",
+            .label = "Density",
+            .description = "mass per area, when no mass is given",
+            .present = [](const D& d) { return !d.mass; }};
+}
+template <typename D>
+Field<D> staticField() {
+    return {.key = key::isStatic,
+            .type = T::Bool,
+            .member = &D::isStatic,
+            .label = "Static",
+            .description = "never moves",
+            .editor = kSwitch};
+}
+
 const Field<BoxDesc> kBox[] = {
     idField<BoxDesc>("unique across the scene; default b0, b1, \u2026 by position"),
     {.key = key::position,
@@ -390,57 +459,44 @@ const Field<BoxDesc> kBox[] = {
      .description = "width and height",
      .need = Need::Required,
      .editor = {0.001, kFar, 3}},
-    {.key = key::angle,
-     .type = T::Number,
-     .member = &BoxDesc::angle,
-     .range = symmetric(L::kMaxAngle),
-     .unit = "rad",
-     .label = "Angle",
-     .description = "its initial angle, counter-clockwise",
-     .editor = kPlaces},
-    {.key = key::velocity,
+    angleField<BoxDesc>(),
+    velocityField<BoxDesc>(),
+    angularVelocityField<BoxDesc>(),
+    massField<BoxDesc>("its mass; absent = density \u00b7 w \u00b7 h"),
+    densityField<BoxDesc>(),
+    staticField<BoxDesc>(),
+    frictionField<BoxDesc>(&BoxDesc::friction),
+    restitutionField<BoxDesc>(&BoxDesc::restitution),
+};
+
+const Field<DiskDesc> kDisk[] = {
+    idField<DiskDesc>("unique across the scene; default d0, d1, \u2026 by position"),
+    {.key = key::position,
      .type = T::Point,
-     .member = &BoxDesc::velocity,
-     .range = kSpeed,
-     .unit = "m/s",
-     .label = "Velocity",
-     .description = "its initial velocity",
+     .member = &DiskDesc::position,
+     .range = kLength,
+     .unit = "m",
+     .label = "Position",
+     .description = "where its centre starts",
+     .need = Need::Required,
      .editor = kPlaces},
-    {.key = key::angularVelocity,
+    {.key = key::radius,
      .type = T::Number,
-     .member = &BoxDesc::angularVelocity,
-     .range = kSpeed,
-     .unit = "rad/s",
-     .label = "Angular velocity \u03c9",
-     .description = "its initial angular velocity",
-     .editor = kPlaces},
-    // Which of mass and density the author gave is part of the scene: a file that states a
-    // density still states one after the box is resized and saved.
-    {.key = key::mass,
-     .type = T::Number,
-     .member = &BoxDesc::mass,
-     .range = kMass,
-     .unit = "kg",
-     .label = "Mass",
-     .description = "its mass; absent = density \u00b7 w \u00b7 h",
-     .editor = kMassEditor,
-     .exclusiveWith = key::density},
-    {.key = key::density,
-     .type = T::Number,
-     .member = &BoxDesc::density,
-     .range = kMass,
-     .unit = "kg/m\u00b2",
-     .label = "Density",
-     .description = "mass per area, when no mass is given",
-     .present = [](const BoxDesc& b) { return !b.mass; }},
-    {.key = key::isStatic,
-     .type = T::Bool,
-     .member = &BoxDesc::isStatic,
-     .label = "Static",
-     .description = "never moves",
-     .editor = kSwitch},
-    frictionField(&BoxDesc::friction),
-    restitutionField(&BoxDesc::restitution),
+     .member = &DiskDesc::radius,
+     .range = positive(L::kMaxLength, L::kMinBoxSize),
+     .unit = "m",
+     .label = "Radius",
+     .description = "its radius",
+     .need = Need::Required,
+     .editor = {0.001, kFar, 3}},
+    angleField<DiskDesc>(),
+    velocityField<DiskDesc>(),
+    angularVelocityField<DiskDesc>(),
+    massField<DiskDesc>("its mass; absent = density \u00b7 \u03c0 \u00b7 r\u00b2"),
+    densityField<DiskDesc>(),
+    staticField<DiskDesc>(),
+    frictionField<DiskDesc>(&DiskDesc::friction),
+    restitutionField<DiskDesc>(&DiskDesc::restitution),
 };
 
 const Field<PlaneDesc> kPlane[] = {
@@ -623,8 +679,8 @@ const Field<ClothDesc> kCloth[] = {
 };
 
 constexpr std::string_view kTopKeys[] = {
-    key::format,    key::version, key::name,   key::description, key::simulation, key::effects,
-    key::particles, key::boxes,   key::planes, key::springs,     key::cloths};
+    key::format,    key::version, key::name,  key::description, key::simulation, key::effects,
+    key::particles, key::boxes,   key::disks, key::planes,      key::springs,    key::cloths};
 
 }  // namespace
 
@@ -694,6 +750,7 @@ PB_TABLE(ParticleCollisionsDesc, key::particleCollisions, "Particle\u2013particl
 PB_TABLE(CoulombDesc, key::coulomb, "Coulomb's law between charged particles", kCoulomb, true)
 PB_TABLE(ParticleDesc, key::particles, "point masses, drawn as disks", kParticle)
 PB_TABLE(BoxDesc, key::boxes, "rigid rectangles", kBox)
+PB_TABLE(DiskDesc, key::disks, "rigid disks: they turn, so they roll", kDisk, false, 2)
 PB_TABLE(PlaneDesc, key::planes, "static half-planes, solid opposite the normal", kPlane)
 PB_TABLE(SpringDesc, key::springs, "damped springs between two objects or an anchor", kSpring)
 PB_TABLE(ClothDesc, key::cloths, "grids of particles joined by springs", kCloth)

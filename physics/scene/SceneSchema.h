@@ -37,6 +37,7 @@ inline constexpr std::string_view simulation = "simulation";
 inline constexpr std::string_view effects = "effects";
 inline constexpr std::string_view particles = "particles";
 inline constexpr std::string_view boxes = "boxes";
+inline constexpr std::string_view disks = "disks";
 inline constexpr std::string_view planes = "planes";
 // the array that implies the spring effect, which is named after it
 inline constexpr std::string_view springs = effectName::springs;
@@ -230,6 +231,9 @@ struct Table {
     // Effects only: run because of what the scene holds (the entry sets only constants), so not
     // something a user adds from the effects menu.
     bool implied = false;
+    // The format version that brought the kind (CONTRACT §6): the writer leaves out an empty
+    // array of a kind newer than version 1, so that older scenes save unchanged.
+    int sinceVersion = 1;
 };
 
 // The contact solver's settings (simulation.solver): numbers by name, each with its range;
@@ -254,6 +258,7 @@ const Table<ParticleCollisionsDesc>& tableOf(std::type_identity<ParticleCollisio
 const Table<CoulombDesc>& tableOf(std::type_identity<CoulombDesc>);
 const Table<ParticleDesc>& tableOf(std::type_identity<ParticleDesc>);
 const Table<BoxDesc>& tableOf(std::type_identity<BoxDesc>);
+const Table<DiskDesc>& tableOf(std::type_identity<DiskDesc>);
 const Table<PlaneDesc>& tableOf(std::type_identity<PlaneDesc>);
 const Table<SpringDesc>& tableOf(std::type_identity<SpringDesc>);
 const Table<ClothDesc>& tableOf(std::type_identity<ClothDesc>);
@@ -282,6 +287,7 @@ template <typename Fn>
 void forEachObjectKind(Fn&& fn) {
     fn(table<ParticleDesc>(), &SceneDesc::particles);
     fn(table<BoxDesc>(), &SceneDesc::boxes);
+    fn(table<DiskDesc>(), &SceneDesc::disks);
     fn(table<PlaneDesc>(), &SceneDesc::planes);
     fn(table<SpringDesc>(), &SceneDesc::springs);
     fn(table<ClothDesc>(), &SceneDesc::cloths);

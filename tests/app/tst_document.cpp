@@ -15,6 +15,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <numbers>
+
 #include <cmath>
 
 using namespace phasebox;
@@ -93,6 +95,7 @@ private slots:
     void modifiedFollowsTheUndoStack();
     void defaultIdsAreWrittenOnLoad();
     void selectionIsPrunedByDeletes();
+    void disksAreEditedLikeBoxes();
 };
 
 void TestDocument::addEveryKindOfObject() {
@@ -350,7 +353,7 @@ void TestDocument::setPinnedTogglesParticleAndBox() {
     QVERIFY(!doc.setup().boxes[0].isStatic);
     QString error;
     QVERIFY(!doc.setPinned(QStringLiteral("s0"), true, &error));
-    QVERIFY(error.contains(QStringLiteral("only particles and boxes")));
+    QVERIFY(error.contains(QStringLiteral("only particles, boxes and disks")));
 }
 
 void TestDocument::propertyTableDescribesEachKind() {
@@ -580,6 +583,47 @@ void TestDocument::selectionIsPrunedByDeletes() {
     QVERIFY(doc.deleteObjects({QStringLiteral("a")}));
     QCOMPARE(doc.selection(), QStringList{QStringLiteral("b")});
     QCOMPARE(selection.count(), 2);
+}
+
+// A disk is added, edited (radius, static), moved and deleted with undo and redo like a box;
+// the world holds it as a turning rigid body of that radius.
+void TestDocument::disksAreEditedLikeBoxes() {
+    Document doc;
+    QVERIFY(doc.loadFromDesc(SceneDesc{}));
+    DiskDesc disk;
+    disk.position = {1.0, 2.0};
+    disk.radius = 0.4;
+    QString id;
+    QVERIFY(doc.addObject(disk, nullptr, &id));
+    QCOMPARE(id, QStringLiteral("d0"));
+    QCOMPARE(doc.world().boxes().size(), std::size_t(1));
+    QVERIFY(doc.world().boxes()[0].shape == RigidShape::Disk);
+    QCOMPARE(doc.world().boxes()[0].radius, 0.4);
+    QCOMPARE(doc.world().boxes()[0].inertia, 0.5 * (std::numbers::pi * 0.16) * 0.16);
+
+    QVERIFY(doc.setProperty(id, QStringLiteral("radius"), 0.6));
+    QCOMPARE(doc.setup().disks[0].radius, 0.6);
+    QCOMPARE(doc.world().boxes()[0].radius, 0.6);
+    QVERIFY(doc.setPinned(id, true));
+    QVERIFY(doc.world().boxes()[0].isStatic);
+    QVERIFY(doc.moveObject(id, {3.0, 4.0}));
+    QCOMPARE(doc.world().boxPosition(0), Vec2(3.0, 4.0));
+    QVERIFY(doc.deleteObjects({id}));
+    QVERIFY(doc.setup().disks.empty());
+    QVERIFY(doc.world().boxes().empty());
+
+    doc.undoStack()->undo();  // the delete
+    QCOMPARE(doc.setup().disks.size(), std::size_t(1));
+    doc.undoStack()->undo();  // the move
+    doc.undoStack()->undo();  // static
+    doc.undoStack()->undo();  // the radius
+    QCOMPARE(doc.setup().disks[0].radius, 0.4);
+    QVERIFY(!doc.setup().disks[0].isStatic);
+    QCOMPARE(doc.setup().disks[0].position, (Point2{1.0, 2.0}));
+    doc.undoStack()->redo();
+    QCOMPARE(doc.world().boxes()[0].radius, 0.6);
+    QCOMPARE(propertyValue(doc.setup(), id, QStringLiteral("mass")).value_or(0.0),
+             std::numbers::pi * 0.36);
 }
 
 QTEST_GUILESS_MAIN(TestDocument)

@@ -209,7 +209,7 @@ void TestSceneRobustness::badInput_data() {
         << QByteArray(R"({"format": "phasebox-scene", "version": 1e300})")
         << msg("version",
                "the file is scene format version 1e+300, but this Phasebox reads "
-               "version 1 at most; please update Phasebox");
+               "version 2 at most; please update Phasebox");
 
     // -- counts past the documented limits
     QTest::newRow("cloth of a million nodes")
@@ -256,7 +256,7 @@ void TestSceneRobustness::badInput_data() {
                R"("particles": [{"id": "p", "position": [0, 0]}], "planes": [{"id": "ground", "point": [0, 0], "normal": [0, 1]}],
                     "springs": [{"a": "p", "b": "ground", "stiffness": 1}])")
         << msg("springs[0].b",
-               R"("ground" is planes[0]; springs attach to particles, boxes and cloth nodes)");
+               R"("ground" is planes[0]; springs attach to particles, boxes, disks and cloth nodes)");
     QTest::newRow("pinned node off the grid")
         << scene(
                R"("cloths": [{"id": "c", "resolution": [3, 3], "pinned": [[0, 0], [-1, 2147483647]]}])")

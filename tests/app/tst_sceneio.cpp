@@ -169,6 +169,7 @@ class TestSceneIO : public QObject {
 private slots:
     void richSceneIsValid();
     void roundTripIsByteIdentical();
+    void disksMakeAVersionTwoScene();
     void roundTripKeepsValues();
     void roundTripThroughQJsonDocumentIndented();
     void numbersRoundTripExactly_data();
@@ -204,6 +205,43 @@ void TestSceneIO::roundTripIsByteIdentical() {
     QVERIFY2(loaded.ok(), qPrintable(loaded.errorText()));
     const QByteArray second = SceneIO::serialize(*loaded.scene);
     QCOMPARE(second, first);
+}
+
+// CONTRACT §6: disks make a scene version 2; a scene without them stays version 1 with no
+// `disks` key, so old files save unchanged. Both round-trip byte for byte.
+void TestSceneIO::disksMakeAVersionTwoScene() {
+    SceneDesc scene = richScene();
+    const QByteArray old = SceneIO::serialize(scene);
+    QVERIFY(old.contains(R"("version": 1)"));
+    QVERIFY(!old.contains(R"("disks")"));
+    DiskDesc wheel;
+    wheel.id = "wheel";
+    wheel.position = {1.0, 2.0};
+    wheel.radius = 0.25;
+    wheel.angularVelocity = -3.0;
+    wheel.density = 2.0;
+    scene.disks.push_back(wheel);
+    DiskDesc heavy;
+    heavy.position = {3.0, 0.5};
+    heavy.mass = 7.5;
+    heavy.isStatic = true;
+    scene.disks.push_back(heavy);
+    const QByteArray first = SceneIO::serialize(scene);
+    QVERIFY(first.contains(R"("version": 2)"));
+    const SceneLoadResult loaded = SceneIO::parse(first, kName);
+    QVERIFY2(loaded.ok(), qPrintable(loaded.errorText()));
+    QCOMPARE(loaded.scene->disks.size(), std::size_t(2));
+    QCOMPARE(loaded.scene->disks[0].radius, 0.25);
+    QCOMPARE(*loaded.scene->disks[1].mass, 7.5);
+    QVERIFY(loaded.scene->disks[1].isStatic);
+    QCOMPARE(SceneIO::serialize(*loaded.scene), first);
+    // Bad input keeps its JSON path.
+    const SceneLoadResult bad = SceneIO::parse(
+        R"({"format": "phasebox-scene", "version": 2, "disks": [{"position": [0, 0], "radius": 0}]})",
+        kName);
+    QVERIFY(!bad.ok());
+    QVERIFY2(bad.errorText().contains(QStringLiteral("disks[0].radius: must be")),
+             qPrintable(bad.errorText()));
 }
 
 void TestSceneIO::roundTripKeepsValues() {
@@ -460,7 +498,7 @@ void TestSceneIO::errors_data() {
         << QByteArray(R"({"format": "phasebox-scene", "version": 3, "bodies": [], "x": 1})")
         << QStringList{msg("version",
                            "the file is scene format version 3, but this Phasebox reads "
-                           "version 1 at most; please update Phasebox")};
+                           "version 2 at most; please update Phasebox")};
     QTest::newRow("format and version both wrong")
         << QByteArray(R"({"format": "other", "version": "one"})")
         << QStringList{msg("format", R"(must be "phasebox-scene" (got "other"))"),

@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace phasebox::ui {
 
@@ -187,11 +188,24 @@ void drawTrails(const Frame& f, const TrailHistory& trails) {
     }
 }
 
+// A rigid body's outline: a box's four corners, or a disk's circle (as many sides as keep
+// the outline within half a pixel of the true circle, at least 12).
 QPolygonF boxPolygon(const Frame& f, int i) {
     const Box& box = f.world.boxes()[i];
     const Mat2 r = rotation(f.world.boxAngle(i));
     const Vec2 c = f.world.boxPosition(i), h = 0.5 * box.size;
     QPolygonF polygon;
+    if (box.shape == RigidShape::Disk) {
+        const double pixels = f.view.toPixels(box.radius);
+        const int sides = std::clamp(
+            static_cast<int>(std::ceil(std::numbers::pi / std::sqrt(1.0 / std::max(pixels, 1.0)))),
+            12, 256);
+        for (int k = 0; k < sides; ++k) {
+            const double a = 2.0 * std::numbers::pi * k / sides;
+            polygon << f.screen(c + box.radius * Vec2(std::cos(a), std::sin(a)));
+        }
+        return polygon;
+    }
     for (const Vec2& corner :
          {Vec2(-h.x(), -h.y()), Vec2(h.x(), -h.y()), Vec2(h.x(), h.y()), Vec2(-h.x(), h.y())})
         polygon << f.screen(c + r * corner);
@@ -210,6 +224,14 @@ void drawBoxes(const Frame& f) {
             const double reach = f.view.toPixels(0.5 * box.size.norm());
             if (box.isStatic == isStatic && f.visible(f.screen(f.world.boxPosition(i)), reach))
                 p.drawPolygon(boxPolygon(f, i));
+        }
+        // A disk's spoke, from its centre along its angle, shows it turning.
+        for (int i = 0; i < static_cast<int>(f.world.boxes().size()); ++i) {
+            const Box& box = f.world.boxes()[i];
+            if (box.shape != RigidShape::Disk || box.isStatic != isStatic) continue;
+            const Vec2 c = f.world.boxPosition(i);
+            const double a = f.world.boxAngle(i);
+            p.drawLine(f.screen(c), f.screen(c + box.radius * Vec2(std::cos(a), std::sin(a))));
         }
     }
 }

@@ -171,9 +171,9 @@ public:
                            const RenderOptions& options);
 
     // The object under a widget point: particles first (nearest centre within its drawn radius
-    // plus the tolerance), then boxes (topmost containing it), then springs (within the
-    // tolerance of the segment; cloth springs are left to their nodes), then planes (the one
-    // whose solid side contains it with the nearest border).
+    // plus the tolerance), then rigid bodies, boxes and disks (topmost containing it), then springs
+    // (within the tolerance of the segment; cloth springs are left to their nodes), then planes
+    // (the one whose solid side contains it with the nearest border).
     static PickResult pick(const World& world, const ViewTransform& view, QPointF widgetPoint,
                            double tolerancePixels = 6.0);
 
@@ -219,10 +219,13 @@ inline PickResult SceneRenderer::pick(const World& world, const ViewTransform& v
     for (const bool isStatic : {false, true})
         for (i = static_cast<int>(world.boxes().size()) - 1; i >= 0; --i) {
             const Box& box = world.boxes()[i];
+            if (box.isStatic != isStatic) continue;
             const Vec2 local = rotation(-world.boxAngle(i)) * (point - world.boxPosition(i));
-            if (box.isStatic == isStatic && std::abs(local.x()) <= 0.5 * box.size.x() + tolerance &&
-                std::abs(local.y()) <= 0.5 * box.size.y() + tolerance)
-                return {PickResult::Box, i, box.id};
+            const bool inside = box.shape == RigidShape::Disk
+                                    ? local.norm() <= box.radius + tolerance
+                                    : std::abs(local.x()) <= 0.5 * box.size.x() + tolerance &&
+                                          std::abs(local.y()) <= 0.5 * box.size.y() + tolerance;
+            if (inside) return {PickResult::Box, i, box.id};
         }
 
     i = nearest(world.springs().size(), [&](int k) {

@@ -83,13 +83,14 @@ void PlotsPresenter::refresh() {
                     tr("Phase space of %1").arg(coordinate));
 }
 
-// The phase plot follows the first selected particle, box or cloth node.
+// The phase plot follows the first selected particle, box, disk or cloth node.
 void PlotsPresenter::followSelection() {
     const QStringList selection = document_.selection();
     const QString first = selection.isEmpty() ? QString() : selection.first();
     const ObjectRef ref = findObject(document_.setup(), first.toStdString());
     const bool isNode = first.contains(QLatin1Char('['));
-    if (ref.kind == ObjectKind::Particle || ref.kind == ObjectKind::Box || isNode) {
+    if (ref.kind == ObjectKind::Particle || ref.kind == ObjectKind::Box ||
+        ref.kind == ObjectKind::Disk || isNode) {
         const QString coordinate = defaultPhaseCoordinate(first);
         recorder_.setPhaseTarget(first, coordinate);
         panel_.setPhaseCoordinate(coordinate);
@@ -118,9 +119,10 @@ QString PlotsPresenter::defaultPhaseCoordinate(const QString& id) const {
 void PlotsPresenter::choosePhaseCoordinate(const QString& coordinate) {
     const QString object = recorder_.phaseObject();
     const ObjectRef ref = findObject(document_.setup(), object.toStdString());
-    if (object.isEmpty() || (coordinate == QLatin1String("angle") && ref.kind != ObjectKind::Box)) {
+    const bool turns = ref.kind == ObjectKind::Box || ref.kind == ObjectKind::Disk;
+    if (object.isEmpty() || (coordinate == QLatin1String("angle") && !turns)) {
         emit message(object.isEmpty() ? tr("Click an object first.")
-                                      : tr("Only boxes have an angle."));
+                                      : tr("Only boxes and disks have an angle."));
         panel_.setPhaseCoordinate(recorder_.phaseCoordinate());
         return;
     }
