@@ -57,6 +57,8 @@ QString CanvasTools::toolName(Tool tool) {
             return tr("Add cloth");
         case Tool::Box:
             return tr("Add box");
+        case Tool::Disk:
+            return tr("Add disk");
         case Tool::Plane:
             return tr("Add plane");
         case Tool::Pin:
@@ -79,10 +81,13 @@ QString CanvasTools::toolHelp(Tool tool) {
             return tr("Drag a rectangle: a cloth pinned along its top edge.");
         case Tool::Box:
             return tr("Drag a rectangle: a box of that size.");
+        case Tool::Disk:
+            return tr(
+                "Drag from the centre to the rim: a disk that rolls; click for one of 0.5 m.");
         case Tool::Plane:
             return tr("Drag a line along the surface; the solid side is to the right of the drag.");
         case Tool::Pin:
-            return tr("Click a particle to pin or unpin it, a box to make it static.");
+            return tr("Click a particle to pin or unpin it, a box or disk to make it static.");
     }
     return {};
 }
@@ -216,6 +221,10 @@ void CanvasTools::showPreview(QPointF world) {
             overlay.text = formatLength(std::abs(d.x())) + QStringLiteral(" × ") +
                            formatLength(std::abs(d.y()));
             break;
+        case Tool::Disk:
+            overlay.shape = ui::ToolOverlay::Circle;
+            overlay.text = tr("r = %1").arg(formatLength(std::hypot(d.x(), d.y())));
+            break;
         case Tool::Plane:
             overlay.shape = ui::ToolOverlay::Arrow;
             break;
@@ -286,6 +295,13 @@ void CanvasTools::finish(QPointF world) {
             b.position = {0.5 * (start_.x() + world.x()), 0.5 * (start_.y() + world.y())};
             b.size = {std::abs(d.x()), std::abs(d.y())};
             report(document_.addObject(b, &error, &id), error);
+            break;
+        }
+        case Tool::Disk: {
+            DiskDesc disk;
+            disk.position = point(start_);
+            disk.radius = click ? kClickDiskRadius : std::hypot(d.x(), d.y());
+            report(document_.addObject(disk, &error, &id), error);
             break;
         }
         case Tool::Plane: {

@@ -29,7 +29,7 @@ class CanvasTools : public QObject {
     Q_OBJECT
 
 public:
-    enum class Tool { Select, Particle, Spring, Cloth, Box, Plane, Pin };
+    enum class Tool { Select, Particle, Spring, Cloth, Box, Disk, Plane, Pin };
 
     CanvasTools(Document& document, ui::SceneView& view, QObject* parent = nullptr);
 
@@ -45,6 +45,8 @@ public:
     static constexpr double kVelocityPerMetre = 1.0;
     // A drag shorter than this many pixels is a click.
     static constexpr double kClickPixels = 4.0;
+    // The radius of a disk added with a click rather than a drag (m).
+    static constexpr double kClickDiskRadius = 0.5;
 
 signals:
     void toolChanged(phasebox::CanvasTools::Tool tool);

@@ -131,6 +131,46 @@ private slots:
         QCOMPARE(serialized(w), full);
     }
 
+    // Issue 16: the disk tool. A drag from the centre to the rim gives that radius, a click a
+    // disk of kClickDiskRadius; both are one undo step, and the disk can be selected, made
+    // static with the pin tool and deleted like any object.
+    void diskToolAddsDisks() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QWidget* canvas = w.canvas();
+        const QPoint c = canvas->rect().center();
+        w.action("toolDisk")->trigger();
+        QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Disk);
+        drag(canvas, c, c + QPoint(60, 80));
+        QCOMPARE(w.document().setup().disks.size(), std::size_t(1));
+        const DiskDesc& dragged = w.document().setup().disks[0];
+        const QPointF centre = worldAt(w, c);
+        const QPointF rim = worldAt(w, c + QPoint(60, 80));
+        QVERIFY(std::abs(dragged.position[0] - centre.x()) < 1e-9);
+        QVERIFY(std::abs(dragged.radius - QLineF(centre, rim).length()) < 1e-9);
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(-300, 0));
+        QCOMPARE(w.document().setup().disks.size(), std::size_t(2));
+        QCOMPARE(w.document().setup().disks[1].radius, CanvasTools::kClickDiskRadius);
+        QCOMPARE(w.document().world().boxes().size(), std::size_t(2));
+
+        // The pin tool makes it static; the select tool finds it by its circle.
+        w.action("toolPin")->trigger();
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(10, 10));
+        QVERIFY(w.document().setup().disks[0].isStatic);
+        w.action("toolSelect")->trigger();
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(-300, 20));
+        QCOMPARE(w.document().selection(), QStringList{QStringLiteral("d1")});
+
+        QUndoStack* stack = w.document().undoStack();
+        QCOMPARE(stack->count(), 3);
+        for (int k = 0; k < 3; ++k) w.action("undo")->trigger();
+        QVERIFY(w.document().setup().disks.empty());
+        for (int k = 0; k < 3; ++k) w.action("redo")->trigger();
+        QCOMPARE(w.document().setup().disks.size(), std::size_t(2));
+        QVERIFY(w.document().setup().disks[0].isStatic);
+    }
+
     void draggingAnObjectIsOneUndoStep() {
         MainWindow w;
         w.resize(1200, 800);

@@ -39,9 +39,9 @@ CanvasPresenter::CanvasPresenter(ui::SceneView& view, CanvasTools& tools, Docume
 
 void CanvasPresenter::createActions(QWidget& window) {
     auto* group = new QActionGroup(this);
-    for (int i = 0; i < 7; ++i) {  // CanvasTools::Tool's order
-        static const char* const names[] = {"toolSelect", "toolParticle", "toolSpring", "toolCloth",
-                                            "toolBox",    "toolPlane",    "toolPin"};
+    static const char* const names[] = {"toolSelect", "toolParticle", "toolSpring", "toolCloth",
+                                        "toolBox",    "toolDisk",     "toolPlane",  "toolPin"};
+    for (int i = 0; i < static_cast<int>(std::size(names)); ++i) {  // CanvasTools::Tool's order
         const auto tool = static_cast<CanvasTools::Tool>(i);
         const QKeySequence key(Qt::Key_1 + i);
         QAction* a = addWindowAction(window, names[i], CanvasTools::toolName(tool), key);
