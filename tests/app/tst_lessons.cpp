@@ -35,6 +35,7 @@ const QStringList kLessons = {QStringLiteral("cloth-springs.phasebox.json"),
                               QStringLiteral("impulse-spin.phasebox.json"),
                               QStringLiteral("midpoint-vs-rk4.phasebox.json"),
                               QStringLiteral("restitution-friction.phasebox.json"),
+                              QStringLiteral("rolling-race.phasebox.json"),
                               QStringLiteral("stiff-spring-implicit.phasebox.json")};
 
 SceneDesc load(const QString& file) {
@@ -96,7 +97,7 @@ class TestLessons : public QObject {
     Q_OBJECT
 
 private slots:
-    void theSixLessonsAreCompiledInAndOnDisk();
+    void theSevenLessonsAreCompiledInAndOnDisk();
     void everyLessonHasNotesAndRunsItsDuration_data();
     void everyLessonHasNotesAndRunsItsDuration();
     void eulerSpiralsOutWhileRk4StaysOnTheOrbit();
@@ -106,9 +107,10 @@ private slots:
     void clothWithoutShearOrBendSpringsDeformsMore();
     void offCentreHitSpinsTheBoxAndKeepsAngularMomentum();
     void coulombConstantsRoundTripThroughTheSceneFormat();
+    void theRollingRaceFinishesInTheOrderOfItsClosedForms();
 };
 
-void TestLessons::theSixLessonsAreCompiledInAndOnDisk() {
+void TestLessons::theSevenLessonsAreCompiledInAndOnDisk() {
     const QStringList compiledIn =
         QDir(kResourceDir).entryList({QStringLiteral("*.phasebox.json")}, QDir::Files, QDir::Name);
     const QStringList onDisk =
@@ -370,6 +372,49 @@ void TestLessons::coulombConstantsRoundTripThroughTheSceneFormat() {
         R"({"format": "phasebox-scene", "version": 1, "effects": {"coulomb": {"k": -1}}})",
         QStringLiteral("charges.json"));
     QVERIFY(!negative.ok());
+}
+
+// The rolling race: on the same 20° slope a frictionless disk slides at g·sin θ, a disk that
+// rolls at ⅔·g·sin θ and a box with μ = 0.2 at g·(sin θ − μ·cos θ); each covers its 5 m in
+// √(2L/a), and they finish in that order.
+void TestLessons::theRollingRaceFinishesInTheOrderOfItsClosedForms() {
+    const SceneDesc scene = load(QStringLiteral("rolling-race.phasebox.json"));
+    const double theta = 20.0 * std::numbers::pi / 180.0, length = 5.0;
+    const Vec2 down(-std::cos(theta), -std::sin(theta));
+    const struct {
+        const char* id;
+        double acceleration;
+    } racers[] = {{"slider", kG * std::sin(theta)},
+                  {"disk", 2.0 / 3.0 * kG * std::sin(theta)},
+                  {"box", kG * (std::sin(theta) - 0.2 * std::cos(theta))}};
+    auto world = build(scene);
+    std::vector<int> index;
+    std::vector<Vec2> start;
+    for (const auto& r : racers) {
+        index.push_back(indexOf(*world, r.id, true));
+        start.push_back(world->boxPosition(index.back()));
+    }
+    std::vector<double> finished(std::size(racers), -1.0);
+    while (world->time() < scene.simulation.duration - 1e-9) {
+        const double before = world->time();
+        std::vector<double> was;
+        for (std::size_t k = 0; k < index.size(); ++k)
+            was.push_back((world->boxPosition(index[k]) - start[k]).dot(down));
+        QVERIFY(world->step());
+        for (std::size_t k = 0; k < index.size(); ++k) {
+            const double now = (world->boxPosition(index[k]) - start[k]).dot(down);
+            if (finished[k] < 0.0 && now >= length)  // interpolated within the step
+                finished[k] =
+                    before + (world->time() - before) * (length - was[k]) / (now - was[k]);
+        }
+    }
+    for (std::size_t k = 0; k < index.size(); ++k) {
+        const double expected = std::sqrt(2.0 * length / racers[k].acceleration);
+        qInfo("%s: 5 m in %.3f s, sqrt(2L/a) = %.3f s", racers[k].id, finished[k], expected);
+        QVERIFY2(finished[k] > 0.0 && std::abs(finished[k] / expected - 1.0) < 0.01,
+                 qPrintable(QString::number(finished[k])));
+    }
+    QVERIFY(finished[0] < finished[1] && finished[1] < finished[2]);
 }
 
 QTEST_GUILESS_MAIN(TestLessons)
