@@ -9,6 +9,7 @@
 #include <QLineF>
 
 #include <cmath>
+#include <numbers>
 
 namespace phasebox {
 
@@ -23,6 +24,7 @@ std::optional<std::pair<QString, QString>> positionKeys(ObjectKind kind) {
         case ObjectKind::Particle:
         case ObjectKind::Box:
         case ObjectKind::Disk:
+        case ObjectKind::Polygon:
             return std::pair{QStringLiteral("position.x"), QStringLiteral("position.y")};
         case ObjectKind::Plane:
             return std::pair{QStringLiteral("point.x"), QStringLiteral("point.y")};
@@ -59,6 +61,8 @@ QString CanvasTools::toolName(Tool tool) {
             return tr("Add box");
         case Tool::Disk:
             return tr("Add disk");
+        case Tool::Polygon:
+            return tr("Add polygon");
         case Tool::Plane:
             return tr("Add plane");
         case Tool::Pin:
@@ -84,6 +88,8 @@ QString CanvasTools::toolHelp(Tool tool) {
         case Tool::Disk:
             return tr(
                 "Drag from the centre to the rim: a disk that rolls; click for one of 0.5 m.");
+        case Tool::Polygon:
+            return tr("Drag from the centre to a corner: a regular hexagon, flat side down.");
         case Tool::Plane:
             return tr("Drag a line along the surface; the solid side is to the right of the drag.");
         case Tool::Pin:
@@ -221,6 +227,7 @@ void CanvasTools::showPreview(QPointF world) {
             overlay.text = formatLength(std::abs(d.x())) + QStringLiteral(" × ") +
                            formatLength(std::abs(d.y()));
             break;
+        case Tool::Polygon:
         case Tool::Disk:
             overlay.shape = ui::ToolOverlay::Circle;
             overlay.text = tr("r = %1").arg(formatLength(std::hypot(d.x(), d.y())));
@@ -302,6 +309,18 @@ void CanvasTools::finish(QPointF world) {
             disk.position = point(start_);
             disk.radius = click ? kClickDiskRadius : std::hypot(d.x(), d.y());
             report(document_.addObject(disk, &error, &id), error);
+            break;
+        }
+        case Tool::Polygon: {
+            if (click) return;
+            PolygonDesc polygon;
+            polygon.position = point(start_);
+            const double r = std::hypot(d.x(), d.y());
+            for (int k = 0; k < kPolygonSides; ++k) {
+                const double a = 2.0 * std::numbers::pi * k / kPolygonSides;
+                polygon.vertices.push_back({r * std::cos(a), r * std::sin(a)});
+            }
+            report(document_.addObject(polygon, &error, &id), error);
             break;
         }
         case Tool::Plane: {

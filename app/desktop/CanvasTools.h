@@ -29,7 +29,7 @@ class CanvasTools : public QObject {
     Q_OBJECT
 
 public:
-    enum class Tool { Select, Particle, Spring, Cloth, Box, Disk, Plane, Pin };
+    enum class Tool { Select, Particle, Spring, Cloth, Box, Disk, Polygon, Plane, Pin };
 
     CanvasTools(Document& document, ui::SceneView& view, QObject* parent = nullptr);
 
@@ -47,6 +47,8 @@ public:
     static constexpr double kClickPixels = 4.0;
     // The radius of a disk added with a click rather than a drag (m).
     static constexpr double kClickDiskRadius = 0.5;
+    // The polygon tool's regular polygon: this many sides.
+    static constexpr int kPolygonSides = 6;
 
 signals:
     void toolChanged(phasebox::CanvasTools::Tool tool);

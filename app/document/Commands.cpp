@@ -43,6 +43,9 @@ std::vector<BoxDesc>& arrayOf(SceneDesc& s, const BoxDesc&) {
 std::vector<DiskDesc>& arrayOf(SceneDesc& s, const DiskDesc&) {
     return s.disks;
 }
+std::vector<PolygonDesc>& arrayOf(SceneDesc& s, const PolygonDesc&) {
+    return s.polygons;
+}
 std::vector<PlaneDesc>& arrayOf(SceneDesc& s, const PlaneDesc&) {
     return s.planes;
 }
@@ -123,7 +126,8 @@ AddObjectCommand::AddObjectCommand(Document& document, ObjectDesc object)
     std::visit(
         [&](auto& desc) {
             if (desc.id.empty()) {
-                static constexpr const char* prefixes[] = {"p", "b", "d", "plane", "s", "cloth"};
+                static constexpr const char* prefixes[] = {"p",     "b", "d",    "poly",
+                                                           "plane", "s", "cloth"};
                 static_assert(std::size(prefixes) == std::variant_size_v<ObjectDesc>,
                               "a default id prefix per object kind");
                 desc.id = uniqueObjectId(setup(), prefixes[object_.index()]);
@@ -150,8 +154,8 @@ DeleteObjectsCommand::DeleteObjectsCommand(Document& document, const QStringList
     : DocumentCommand(document, {}) {
     const SceneDesc& scene = setup();
     std::vector<bool> particle(scene.particles.size()), box(scene.boxes.size()),
-        disk(scene.disks.size()), plane(scene.planes.size()), spring(scene.springs.size()),
-        cloth(scene.cloths.size());
+        disk(scene.disks.size()), polygon(scene.polygons.size()), plane(scene.planes.size()),
+        spring(scene.springs.size()), cloth(scene.cloths.size());
     std::vector<std::pair<std::string, bool>> bodies;  // deleted bodies (id, is a cloth)
     QStringList names;
     for (const QString& qid : ids) {
@@ -166,6 +170,9 @@ DeleteObjectsCommand::DeleteObjectsCommand(Document& document, const QStringList
                 break;
             case ObjectKind::Disk:
                 disk[ref.index] = true;
+                break;
+            case ObjectKind::Polygon:
+                polygon[ref.index] = true;
                 break;
             case ObjectKind::Plane:
                 plane[ref.index] = true;
@@ -198,6 +205,7 @@ DeleteObjectsCommand::DeleteObjectsCommand(Document& document, const QStringList
     collect(scene.particles, particle, particles_);
     collect(scene.boxes, box, boxes_);
     collect(scene.disks, disk, disks_);
+    collect(scene.polygons, polygon, polygons_);
     collect(scene.planes, plane, planes_);
     collect(scene.springs, spring, springs_);
     collect(scene.cloths, cloth, cloths_);
@@ -215,6 +223,7 @@ void DeleteObjectsCommand::apply(SceneDesc& scene) const {
     eraseAt(scene.particles, particles_);
     eraseAt(scene.boxes, boxes_);
     eraseAt(scene.disks, disks_);
+    eraseAt(scene.polygons, polygons_);
     eraseAt(scene.planes, planes_);
     eraseAt(scene.springs, springs_);
     eraseAt(scene.cloths, cloths_);
@@ -224,6 +233,7 @@ void DeleteObjectsCommand::revert(SceneDesc& scene) const {
     insertAt(scene.particles, particles_);
     insertAt(scene.boxes, boxes_);
     insertAt(scene.disks, disks_);
+    insertAt(scene.polygons, polygons_);
     insertAt(scene.planes, planes_);
     insertAt(scene.springs, springs_);
     insertAt(scene.cloths, cloths_);
@@ -246,6 +256,9 @@ MoveObjectCommand::MoveObjectCommand(Document& document, const QString& id, cons
             break;
         case ObjectKind::Disk:
             from_ = scene.disks[ref_.index].position;
+            break;
+        case ObjectKind::Polygon:
+            from_ = scene.polygons[ref_.index].position;
             break;
         case ObjectKind::Plane:
             from_ = scene.planes[ref_.index].point;
@@ -289,6 +302,9 @@ void MoveObjectCommand::place(SceneDesc& scene, const Point2& position) const {
             break;
         case ObjectKind::Disk:
             scene.disks[ref_.index].position = position;
+            break;
+        case ObjectKind::Polygon:
+            scene.polygons[ref_.index].position = position;
             break;
         case ObjectKind::Plane:
             scene.planes[ref_.index].point = position;
@@ -377,13 +393,15 @@ SetPinnedCommand::SetPinnedCommand(Document& document, const QString& id, bool p
     if (ref_.kind == ObjectKind::Particle) {
         before_ = setup().particles[ref_.index].pinned;
         setText(pinned ? QObject::tr("Pin %1").arg(id) : QObject::tr("Unpin %1").arg(id));
-    } else if (ref_.kind == ObjectKind::Box || ref_.kind == ObjectKind::Disk) {
-        before_ = ref_.kind == ObjectKind::Box ? setup().boxes[ref_.index].isStatic
-                                               : setup().disks[ref_.index].isStatic;
+    } else if (ref_.kind == ObjectKind::Box || ref_.kind == ObjectKind::Disk ||
+               ref_.kind == ObjectKind::Polygon) {
+        before_ = ref_.kind == ObjectKind::Box    ? setup().boxes[ref_.index].isStatic
+                  : ref_.kind == ObjectKind::Disk ? setup().disks[ref_.index].isStatic
+                                                  : setup().polygons[ref_.index].isStatic;
         setText(pinned ? QObject::tr("Make %1 static").arg(id)
                        : QObject::tr("Make %1 dynamic").arg(id));
     } else {
-        refuse(ref_.isValid() ? QObject::tr("only particles, boxes and disks can be pinned")
+        refuse(ref_.isValid() ? QObject::tr("only particles and rigid bodies can be pinned")
                               : QObject::tr("unknown object id %1").arg(quoted(id.toStdString())));
     }
 }
@@ -395,6 +413,8 @@ void SetPinnedCommand::set(SceneDesc& scene, bool pinned) const {
         scene.boxes[ref_.index].isStatic = pinned;
     else if (ref_.kind == ObjectKind::Disk)
         scene.disks[ref_.index].isStatic = pinned;
+    else if (ref_.kind == ObjectKind::Polygon)
+        scene.polygons[ref_.index].isStatic = pinned;
 }
 
 void SetPinnedCommand::apply(SceneDesc& scene) const {

@@ -93,6 +93,7 @@ private:
     std::vector<std::pair<std::size_t, ParticleDesc>> particles_;
     std::vector<std::pair<std::size_t, BoxDesc>> boxes_;
     std::vector<std::pair<std::size_t, DiskDesc>> disks_;
+    std::vector<std::pair<std::size_t, PolygonDesc>> polygons_;
     std::vector<std::pair<std::size_t, PlaneDesc>> planes_;
     std::vector<std::pair<std::size_t, SpringDesc>> springs_;
     std::vector<std::pair<std::size_t, ClothDesc>> cloths_;

@@ -120,6 +120,9 @@ std::vector<BoxDesc>& array(SceneDesc& s, const BoxDesc*) {
 std::vector<DiskDesc>& array(SceneDesc& s, const DiskDesc*) {
     return s.disks;
 }
+std::vector<PolygonDesc>& array(SceneDesc& s, const PolygonDesc*) {
+    return s.polygons;
+}
 std::vector<PlaneDesc>& array(SceneDesc& s, const PlaneDesc*) {
     return s.planes;
 }
@@ -140,6 +143,8 @@ void visitObject(SceneDesc& scene, ObjectRef ref, Fn&& fn) {
             return fn(scene.boxes[ref.index]);
         case ObjectKind::Disk:
             return fn(scene.disks[ref.index]);
+        case ObjectKind::Polygon:
+            return fn(scene.polygons[ref.index]);
         case ObjectKind::Plane:
             return fn(scene.planes[ref.index]);
         case ObjectKind::Spring:
@@ -156,10 +161,14 @@ std::optional<Point2> bodyPoint(const SceneDesc& scene, const std::string& id,
                                 const Point2& local) {
     const ObjectRef ref = findObject(scene, id);
     if (ref.kind == ObjectKind::Particle) return scene.particles[ref.index].position;
-    if (ref.kind == ObjectKind::Box || ref.kind == ObjectKind::Disk) {
-        const bool box = ref.kind == ObjectKind::Box;
-        const Point2& at = box ? scene.boxes[ref.index].position : scene.disks[ref.index].position;
-        const double angle = box ? scene.boxes[ref.index].angle : scene.disks[ref.index].angle;
+    if (ref.kind == ObjectKind::Box || ref.kind == ObjectKind::Disk ||
+        ref.kind == ObjectKind::Polygon) {
+        const RigidDesc& body = ref.kind == ObjectKind::Box ? scene.boxes[ref.index]
+                                : ref.kind == ObjectKind::Disk
+                                    ? static_cast<const RigidDesc&>(scene.disks[ref.index])
+                                    : scene.polygons[ref.index];
+        const Point2& at = body.position;
+        const double angle = body.angle;
         const double c = std::cos(angle), s = std::sin(angle);
         return Point2{at[0] + c * local[0] - s * local[1], at[1] + s * local[0] + c * local[1]};
     }
@@ -183,6 +192,8 @@ ObjectRef findObject(const SceneDesc& scene, const std::string& id) {
         if (boxId(scene, i) == id) return {ObjectKind::Box, i};
     for (std::size_t i = 0; i < scene.disks.size(); ++i)
         if (diskId(scene, i) == id) return {ObjectKind::Disk, i};
+    for (std::size_t i = 0; i < scene.polygons.size(); ++i)
+        if (polygonId(scene, i) == id) return {ObjectKind::Polygon, i};
     for (std::size_t i = 0; i < scene.planes.size(); ++i)
         if (planeId(scene, i) == id) return {ObjectKind::Plane, i};
     for (std::size_t i = 0; i < scene.springs.size(); ++i)
@@ -206,6 +217,8 @@ std::string objectId(const SceneDesc& scene, ObjectRef ref) {
             return boxId(scene, ref.index);
         case ObjectKind::Disk:
             return diskId(scene, ref.index);
+        case ObjectKind::Polygon:
+            return polygonId(scene, ref.index);
         case ObjectKind::Plane:
             return planeId(scene, ref.index);
         case ObjectKind::Spring:
@@ -231,6 +244,8 @@ ObjectDesc objectDesc(const SceneDesc& scene, ObjectRef ref) {
             return scene.boxes[ref.index];
         case ObjectKind::Disk:
             return scene.disks[ref.index];
+        case ObjectKind::Polygon:
+            return scene.polygons[ref.index];
         case ObjectKind::Plane:
             return scene.planes[ref.index];
         case ObjectKind::Spring:
@@ -256,6 +271,8 @@ QString objectKindName(ObjectKind kind) {
             return QStringLiteral("box");
         case ObjectKind::Disk:
             return QStringLiteral("disk");
+        case ObjectKind::Polygon:
+            return QStringLiteral("polygon");
         case ObjectKind::Plane:
             return QStringLiteral("plane");
         case ObjectKind::Spring:
@@ -273,6 +290,7 @@ std::vector<std::string> objectIds(const SceneDesc& scene) {
     for (std::size_t i = 0; i < scene.particles.size(); ++i) ids.push_back(particleId(scene, i));
     for (std::size_t i = 0; i < scene.boxes.size(); ++i) ids.push_back(boxId(scene, i));
     for (std::size_t i = 0; i < scene.disks.size(); ++i) ids.push_back(diskId(scene, i));
+    for (std::size_t i = 0; i < scene.polygons.size(); ++i) ids.push_back(polygonId(scene, i));
     for (std::size_t i = 0; i < scene.planes.size(); ++i) ids.push_back(planeId(scene, i));
     for (std::size_t i = 0; i < scene.springs.size(); ++i) ids.push_back(springId(scene, i));
     for (const ClothDesc& cloth : scene.cloths) ids.push_back(cloth.id);
@@ -294,6 +312,8 @@ void assignDefaultIds(SceneDesc& scene) {
         scene.particles[i].id = particleId(scene, i);
     for (std::size_t i = 0; i < scene.boxes.size(); ++i) scene.boxes[i].id = boxId(scene, i);
     for (std::size_t i = 0; i < scene.disks.size(); ++i) scene.disks[i].id = diskId(scene, i);
+    for (std::size_t i = 0; i < scene.polygons.size(); ++i)
+        scene.polygons[i].id = polygonId(scene, i);
     for (std::size_t i = 0; i < scene.planes.size(); ++i) scene.planes[i].id = planeId(scene, i);
     for (std::size_t i = 0; i < scene.springs.size(); ++i) scene.springs[i].id = springId(scene, i);
 }
@@ -331,6 +351,8 @@ std::vector<PropertyRow> propertiesOf(const SceneDesc& scene, const QString& id)
             row.value = scene.boxes[ref.index].resolvedMass();
         if (ref.kind == ObjectKind::Disk && !scene.disks[ref.index].mass)
             row.value = scene.disks[ref.index].resolvedMass();
+        if (ref.kind == ObjectKind::Polygon && !scene.polygons[ref.index].mass)
+            row.value = scene.polygons[ref.index].resolvedMass();
         if (ref.kind == ObjectKind::Spring && !scene.springs[ref.index].restLength)
             row.value = initialSpringLength(scene, scene.springs[ref.index]).value_or(0.0);
     }
@@ -361,7 +383,8 @@ bool setPropertyValue(SceneDesc& scene, const QString& id, const QString& key, d
 }
 
 QString pinPropertyKey(ObjectKind kind) {
-    const bool rigid = kind == ObjectKind::Box || kind == ObjectKind::Disk;
+    const bool rigid =
+        kind == ObjectKind::Box || kind == ObjectKind::Disk || kind == ObjectKind::Polygon;
     return text(rigid ? schema::key::isStatic : schema::key::pinned);
 }
 

@@ -16,7 +16,7 @@
 
 namespace phasebox {
 
-enum class ObjectKind { None, Particle, Box, Disk, Plane, Spring, Cloth };
+enum class ObjectKind { None, Particle, Box, Disk, Polygon, Plane, Spring, Cloth };
 
 // Where an object sits in a SceneDesc: its array and its index there.
 struct ObjectRef {
@@ -26,7 +26,8 @@ struct ObjectRef {
 };
 
 // One object's description, whatever its kind: what add and delete commands carry.
-using ObjectDesc = std::variant<ParticleDesc, BoxDesc, DiskDesc, PlaneDesc, SpringDesc, ClothDesc>;
+using ObjectDesc =
+    std::variant<ParticleDesc, BoxDesc, DiskDesc, PolygonDesc, PlaneDesc, SpringDesc, ClothDesc>;
 
 // The object with this id; a cloth node id ID[i,j] names its cloth (a node is not an object of
 // the setup). Invalid when nothing has the id.
@@ -36,7 +37,7 @@ ObjectKind objectKind(const ObjectDesc& object);
 ObjectDesc objectDesc(const SceneDesc& scene, ObjectRef ref);
 // Replaces the object at ref; the kinds must match (else nothing happens).
 void setObjectDesc(SceneDesc& scene, ObjectRef ref, const ObjectDesc& object);
-// "particle", "box", "disk", "plane", "spring", "cloth".
+// "particle", "box", "disk", "polygon", "plane", "spring", "cloth".
 QString objectKindName(ObjectKind kind);
 
 // Every id in the scene (defaults included), without cloth nodes: ids of the form ID[i,j]

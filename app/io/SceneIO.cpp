@@ -391,6 +391,13 @@ void readFields(Fields& f, D& d) {
                     readPinning(f, key, v);
                 } else if constexpr (std::is_same_v<V, std::map<std::string, double>>) {
                     readSolver(f, key, v);
+                } else if constexpr (std::is_same_v<V, std::vector<Point2>>) {
+                    QJsonArray array;
+                    const QJsonValue value = f.get(key, need);
+                    if (value.isUndefined() || !f.reader().array(value, f.at(key), array)) return;
+                    v.assign(static_cast<std::size_t>(array.size()), Point2{0.0, 0.0});
+                    for (qsizetype k = 0; k < array.size(); ++k)
+                        f.reader().pair(array[k], index(f.at(key), k), v[k], kXY);
                 }
             },
             field.member);
@@ -525,6 +532,8 @@ SceneLoadResult SceneIO::parse(const QByteArray& text, const QString& sourceName
         for (const SceneIssue& issue : validateScene(scene))
             r.fail(QString::fromStdString(issue.path), QString::fromStdString(issue.message));
     }
+    // A polygon's state is its centroid's (CONTRACT §6); saving then writes the centred form.
+    if (r.clean()) recentrePolygons(scene);
     result.errors = r.takeErrors();
     if (result.errors.isEmpty()) result.scene = std::move(scene);
     return result;

@@ -213,6 +213,10 @@ void writeFields(Writer& w, const D& d) {
                     w.beginObject();
                     for (const auto& [name, value] : v) w.field(name, value);
                     w.endObject();
+                } else if constexpr (std::is_same_v<V, std::vector<Point2>>) {
+                    w.beginArray(true);
+                    for (const Point2& p : v) w.point(p);
+                    w.endArray();
                 }
             },
             field.member);

@@ -34,9 +34,10 @@ void ContactStage::bind(const Bodies& bodies) {
     for (int i = 0; i < static_cast<int>(boxes.size()); ++i) {
         const Box& b = boxes[i];
         // A rigid disk collides as a disk but turns: its contacts have lever arms.
-        const bool disk = b.shape == RigidShape::Disk;
-        colliders_.push_back({disk ? Collider::Kind::Disk : Collider::Kind::Box, i, b.dof,
-                              b.friction, b.restitution, true});
+        const Collider::Kind kind = b.shape == RigidShape::Disk      ? Collider::Kind::Disk
+                                    : b.shape == RigidShape::Polygon ? Collider::Kind::Polygon
+                                                                     : Collider::Kind::Box;
+        colliders_.push_back({kind, i, b.dof, b.friction, b.restitution, true});
     }
     planes_.clear();
     planeFriction_.clear();
@@ -48,6 +49,7 @@ void ContactStage::bind(const Bodies& bodies) {
     }
     disks_.assign(colliders_.size(), Disk{Vec2::Zero(), 0.0});
     boxes_.assign(colliders_.size(), OrientedBox{});
+    polygons_.assign(colliders_.size(), OrientedPolygon{});
     bounds_.resize(colliders_.size());
     bodyOfCollider_.assign(colliders_.size(), -1);
     // Pairs between dynamic bodies are capped per body (a static one meets only dynamic ones,
@@ -64,6 +66,9 @@ void ContactStage::bind(const Bodies& bodies) {
         } else if (c.kind == Collider::Kind::Disk && c.dof >= 0) {
             pairLimited_[i] = PairCap::kCapped;
             pairSize_[i] = boxes[c.object].radius;
+        } else if (c.kind == Collider::Kind::Polygon && c.dof >= 0) {
+            pairLimited_[i] = PairCap::kCapped;
+            pairSize_[i] = 0.5 * boxes[c.object].size.x();  // the farthest corner
         } else if (c.kind == Collider::Kind::Box && c.dof >= 0) {
             // A box's size for the cap is the radius of its circumscribed circle.
             pairLimited_[i] = PairCap::kCapped;
@@ -99,19 +104,32 @@ void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB
     c.restitution = restitution;
     c.bodyA = colliderA >= 0 ? solverBodyFor(colliderA, q) : -1;
     c.bodyB = solverBodyFor(colliderB, q);
-    const Vec2 centerA = colliderA >= 0 ? (colliders_[colliderA].kind == Collider::Kind::Disk
-                                               ? disks_[colliderA].center
-                                               : boxes_[colliderA].center)
-                                        : Vec2::Zero();
-    const Vec2 centerB = colliders_[colliderB].kind == Collider::Kind::Disk
-                             ? disks_[colliderB].center
-                             : boxes_[colliderB].center;
-    // A quarter of the smaller body's least half extent (a disk's radius) is an overlap no
-    // contact reaches in a resting scene.
+    const auto center = [&](int i) -> Vec2 {
+        switch (colliders_[i].kind) {
+            case Collider::Kind::Disk:
+                return disks_[i].center;
+            case Collider::Kind::Polygon:
+                return polygons_[i].center;
+            case Collider::Kind::Box:
+                break;
+        }
+        return boxes_[i].center;
+    };
+    const Vec2 centerA = colliderA >= 0 ? center(colliderA) : Vec2::Zero();
+    const Vec2 centerB = center(colliderB);
+    // A tenth of the smaller body's least half extent (a disk's radius, a polygon's inradius)
+    // is an overlap no contact reaches in a resting scene.
     const auto size = [&](int i) {
         if (i < 0) return std::numeric_limits<double>::infinity();
-        return colliders_[i].kind == Collider::Kind::Disk ? disks_[i].radius
-                                                          : boxes_[i].halfExtents.minCoeff();
+        switch (colliders_[i].kind) {
+            case Collider::Kind::Disk:
+                return disks_[i].radius;
+            case Collider::Kind::Polygon:
+                return polygons_[i].inradius;
+            case Collider::Kind::Box:
+                break;
+        }
+        return boxes_[i].halfExtents.minCoeff();
     };
     c.deepOverlap = kDeepOverlapFraction * std::min(size(colliderA), size(colliderB));
     c.pointCount = m.pointCount;
@@ -148,6 +166,16 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
                 c.rigid ? bodies.boxes[c.object].radius : bodies.particles[c.object].radius;
             disks_[i] = {c.dof >= 0 ? Vec2(q.segment<2>(c.dof)) : position, radius};
             bounds_[i] = boundingBox(disks_[i]);
+        } else if (c.kind == Collider::Kind::Polygon) {
+            const Box& b = bodies.boxes[c.object];
+            OrientedPolygon& p = polygons_[i];
+            p.center = c.dof >= 0 ? Vec2(q.segment<2>(c.dof)) : b.position;
+            p.rotation = rotation(c.dof >= 0 ? q[c.dof + 2] : b.angle);
+            p.count = static_cast<int>(b.vertices.size());
+            p.vertices = b.vertices.data();
+            p.normals = b.normals.data();
+            p.inradius = b.inradius;
+            bounds_[i] = boundingBox(p);
         } else {
             const Box& b = bodies.boxes[c.object];
             boxes_[i] = c.dof >= 0 ? OrientedBox{q.segment<2>(c.dof), q[c.dof + 2], 0.5 * b.size}
@@ -165,6 +193,8 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
             double speed = std::hypot(reach(c.dof), reach(c.dof + 1));
             if (c.kind == Collider::Kind::Box)
                 speed += reach(c.dof + 2) * boxes_[i].halfExtents.norm();
+            if (c.kind == Collider::Kind::Polygon)
+                speed += reach(c.dof + 2) * 0.5 * bodies.boxes[c.object].size.x();
             sweep[i] = speed * dt;
         }
         const Vec2 grow = Vec2::Constant(settings.speculativeDistance + sweep[i]);
@@ -191,7 +221,29 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
         const std::uint64_t key =
             (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint64_t>(j);
         const bool diskA = a.kind == Collider::Kind::Disk, diskB = b.kind == Collider::Kind::Disk;
-        if (diskA && diskB) {
+        const bool polygonA = a.kind == Collider::Kind::Polygon,
+                   polygonB = b.kind == Collider::Kind::Polygon;
+        // A polygon's pairs: it is body A of the constraint unless both are polygons.
+        const auto pairKey = [](int first, int second) {
+            return (static_cast<std::uint64_t>(first) << 32) | static_cast<std::uint64_t>(second);
+        };
+        if (polygonA || polygonB) {
+            const int polygon = polygonA ? i : j, other = polygonA ? j : i;
+            const Collider& o = colliders_[other];
+            bool hit = false;
+            if (o.kind == Collider::Kind::Polygon)
+                hit = collidePolygons(
+                    polygons_[polygon], polygons_[other], margin, m,
+                    whenCoincident(i, j, polygons_[polygon].center, polygons_[other].center));
+            else if (o.kind == Collider::Kind::Box)
+                hit = collidePolygonBox(
+                    polygons_[polygon], boxes_[other], margin, m,
+                    whenCoincident(i, j, polygons_[polygon].center, boxes_[other].center));
+            else
+                hit = collidePolygonDisk(polygons_[polygon], disks_[other], margin, m);
+            if (hit)
+                addConstraint(pairKey(polygon, other), polygon, other, m, friction, restitution, q);
+        } else if (diskA && diskB) {
             // Two particles meet only with particle_collisions (then with its restitution);
             // a rigid disk meets everything.
             if (!a.rigid && !b.rigid) {
@@ -229,6 +281,8 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
                 (static_cast<std::uint64_t>(count + k) << 32) | static_cast<std::uint64_t>(i);
             const bool hit = c.kind == Collider::Kind::Disk
                                  ? collidePlaneDisk(plane, disks_[i], margin, m)
+                             : c.kind == Collider::Kind::Polygon
+                                 ? collidePlanePolygon(plane, polygons_[i], margin, m)
                                  : collidePlaneBox(plane, boxes_[i], margin, m);
             if (hit) addConstraint(key, -1, i, m, friction, restitution, q);
         }

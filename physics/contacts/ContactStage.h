@@ -60,7 +60,7 @@ public:
 
 private:
     struct Collider {
-        enum class Kind : unsigned char { Disk, Box } kind;
+        enum class Kind : unsigned char { Disk, Box, Polygon } kind;
         int object;  // particle index, or rigid body index when rigid
         int dof;     // −1 static
         double friction;
@@ -75,8 +75,9 @@ private:
     bool particleCollisions_;
     double particleRestitution_;
     std::vector<Collider> colliders_;
-    std::vector<Disk> disks_;         // per collider, when a disk
-    std::vector<OrientedBox> boxes_;  // per collider, when a box
+    std::vector<Disk> disks_;                // per collider, when a disk
+    std::vector<OrientedBox> boxes_;         // per collider, when a box
+    std::vector<OrientedPolygon> polygons_;  // per collider, when a polygon (vertices: its body's)
     std::vector<Aabb> bounds_;
     std::vector<double> sweep_;  // per collider: how far it can move in this step
     std::vector<std::pair<int, int>> pairs_;

@@ -29,15 +29,14 @@ Vec2 localCorner(const Vec2& halfExtents, int i) {
     return {kCornerSign[i][0] * halfExtents.x(), kCornerSign[i][1] * halfExtents.y()};
 }
 
-int nextFace(int i) {
-    return (i + 1) & 3;
-}
-
-// A box's corners and outward face normals, relative to an origin near the pair (so that large
-// coordinates cancel before anything is multiplied).
+// A convex shape's corners and outward face normals (a box's four, a polygon's up to 16),
+// counter-clockwise, relative to an origin near the pair (so that large coordinates cancel
+// before anything is multiplied). Face i runs from corner i to corner i + 1.
 struct PlacedBox {
-    Vec2 corners[4];
-    Vec2 normals[4];
+    int count = 4;
+    Vec2 corners[kMaxPolygonVertices];
+    Vec2 normals[kMaxPolygonVertices];
+    int next(int i) const { return i + 1 == count ? 0 : i + 1; }
 };
 
 PlacedBox placeBox(const OrientedBox& box, const Vec2& origin) {
@@ -51,15 +50,27 @@ PlacedBox placeBox(const OrientedBox& box, const Vec2& origin) {
     return placed;
 }
 
+PlacedBox placePolygon(const OrientedPolygon& polygon, const Vec2& origin) {
+    const Mat2& r = polygon.rotation;
+    const Vec2 center = polygon.center - origin;
+    PlacedBox placed;
+    placed.count = polygon.count;
+    for (int i = 0; i < polygon.count; ++i) {
+        placed.corners[i] = center + r * polygon.vertices[i];
+        placed.normals[i] = r * polygon.normals[i];
+    }
+    return placed;
+}
+
 // The face of `box` along whose normal `other` lies farthest out, and that separation (the
 // depth of `other`'s deepest corner below the face's plane; negative when overlapping).
 double maxSeparation(const PlacedBox& box, const PlacedBox& other, int& bestFace) {
     double best = -std::numeric_limits<double>::infinity();
     bestFace = 0;
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < box.count; ++i) {
         double deepest = std::numeric_limits<double>::infinity();
-        for (const Vec2& corner : other.corners) {
-            deepest = std::min(deepest, box.normals[i].dot(corner - box.corners[i]));
+        for (int k = 0; k < other.count; ++k) {
+            deepest = std::min(deepest, box.normals[i].dot(other.corners[k] - box.corners[i]));
         }
         if (deepest > best) {
             best = deepest;
@@ -89,7 +100,7 @@ bool clipSegment(Vec2 (&v)[2], const Vec2& dir, double offset) {
 // face, bit 0 which end of the incident edge. None of it depends on the point's position, so
 // a resting contact keeps its ids while it jitters.
 std::uint32_t boxFeatureId(bool referenceIsB, int referenceFace, int incidentFace, int end) {
-    return (referenceIsB ? 1u << 5 : 0u) | static_cast<std::uint32_t>(referenceFace) << 3 |
+    return (referenceIsB ? 1u << 9 : 0u) | static_cast<std::uint32_t>(referenceFace) << 5 |
            static_cast<std::uint32_t>(incidentFace) << 1 | static_cast<std::uint32_t>(end);
 }
 
@@ -184,15 +195,17 @@ bool collideBoxDisk(const OrientedBox& a, const Disk& b, double margin, Manifold
     return true;
 }
 
-bool collidePlaneBox(const HalfPlane& a, const OrientedBox& b, double margin, Manifold& m) {
+namespace {
+// A convex shape's corners (offsets from its centre, turned) against a plane: the two deepest
+// within the margin. Two points are enough: the two deepest corners of a convex polygon on a
+// plane share an edge, and a third corner within the margin adds nothing the solver needs.
+bool collidePlaneCorners(const HalfPlane& a, const Vec2& center, const Vec2* offset, int count,
+                         double margin, Manifold& m) {
     m.pointCount = 0;
-    const Mat2& r = b.rotation;
-    const double centerHeight = a.normal.dot(b.center - a.point);
-    double height[4];
-    Vec2 offset[4];  // corner − centre
+    const double centerHeight = a.normal.dot(center - a.point);
+    double height[kMaxPolygonVertices];
     int deepest = -1, second = -1;
-    for (int i = 0; i < 4; ++i) {
-        offset[i] = r * localCorner(b.halfExtents, i);
+    for (int i = 0; i < count; ++i) {
         height[i] = centerHeight + a.normal.dot(offset[i]);
         if (!(height[i] < margin)) continue;
         if (deepest < 0 || height[i] < height[deepest]) {
@@ -203,38 +216,42 @@ bool collidePlaneBox(const HalfPlane& a, const OrientedBox& b, double margin, Ma
         }
     }
     if (deepest < 0) return false;
-    // Two points are enough: the two deepest corners of a rectangle always share an edge, and
-    // a third corner within the margin adds nothing the solver needs.
     m.normal = a.normal;
     for (const int i : {deepest, second}) {
         if (i < 0) break;
-        const Vec2 midway = b.center + offset[i] - (0.5 * height[i]) * a.normal;
+        const Vec2 midway = center + offset[i] - (0.5 * height[i]) * a.normal;
         addPoint(m, midway, height[i], static_cast<std::uint32_t>(i));
     }
     return true;
 }
+}  // namespace
 
-bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Manifold& m,
-                  const Vec2& whenCoincident) {
+bool collidePlaneBox(const HalfPlane& a, const OrientedBox& b, double margin, Manifold& m) {
+    Vec2 offset[4];  // corner − centre
+    for (int i = 0; i < 4; ++i) offset[i] = b.rotation * localCorner(b.halfExtents, i);
+    return collidePlaneCorners(a, b.center, offset, 4, margin, m);
+}
+
+namespace {
+// Separating axes over both shapes' face normals, then the incident face clipped against the
+// reference face's side planes: up to two points. smallest: the smaller shape's least half
+// extent (a polygon's inradius), which bounds the reference-face bias.
+bool collidePlaced(const PlacedBox& boxA, const PlacedBox& boxB, const Vec2& origin,
+                   double smallest, bool centresCoincide, const Vec2& whenCoincident, double margin,
+                   Manifold& m) {
     m.pointCount = 0;
-    const Vec2 origin = a.center;
-    const PlacedBox boxA = placeBox(a, origin);
-    const PlacedBox boxB = placeBox(b, origin);
-
     int faceA = 0, faceB = 0;
     const double separationA = maxSeparation(boxA, boxB, faceA);
     if (!(separationA < margin)) return false;  // no clipped point can be closer than this
     const double separationB = maxSeparation(boxB, boxA, faceB);
     if (!(separationB < margin)) return false;
 
-    const double smallest =
-        std::min({a.halfExtents.x(), a.halfExtents.y(), b.halfExtents.x(), b.halfExtents.y()});
     const double bias = std::min(kReferenceFaceBias, 0.01 * smallest);
     bool referenceIsB = separationB > separationA + bias;
-    if (coincident(a.center, b.center)) {
+    if (centresCoincide) {
         referenceIsB = false;
         double nearest = -std::numeric_limits<double>::infinity();
-        for (int i = 0; i < 4; ++i)
+        for (int i = 0; i < boxA.count; ++i)
             if (boxA.normals[i].dot(whenCoincident) > nearest) {
                 nearest = boxA.normals[i].dot(whenCoincident);
                 faceA = i;
@@ -246,10 +263,10 @@ bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Man
     const Vec2& normal = reference.normals[referenceFace];
 
     // The incident face is the one most anti-parallel to the reference normal: its edge is the
-    // part of the other box that faces the reference face.
+    // part of the other shape that faces the reference face.
     int incidentFace = 0;
     double mostOpposed = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < incident.count; ++i) {
         const double d = normal.dot(incident.normals[i]);
         if (d < mostOpposed) {
             mostOpposed = d;
@@ -259,9 +276,9 @@ bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Man
 
     // Sutherland–Hodgman against the reference face's two side planes: what remains of the
     // incident edge lies over the reference face.
-    Vec2 v[2] = {incident.corners[incidentFace], incident.corners[nextFace(incidentFace)]};
+    Vec2 v[2] = {incident.corners[incidentFace], incident.corners[incident.next(incidentFace)]};
     const Vec2& start = reference.corners[referenceFace];
-    const Vec2& end = reference.corners[nextFace(referenceFace)];
+    const Vec2& end = reference.corners[reference.next(referenceFace)];
     const Vec2 tangent = perp(normal);  // from start to end (faces run counter-clockwise)
     if (!clipSegment(v, -tangent, -tangent.dot(start))) return false;
     if (!clipSegment(v, tangent, tangent.dot(end))) return false;
@@ -275,6 +292,89 @@ bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Man
                  boxFeatureId(referenceIsB, referenceFace, incidentFace, k));
     }
     return m.pointCount > 0;
+}
+}  // namespace
+
+bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Manifold& m,
+                  const Vec2& whenCoincident) {
+    const Vec2 origin = a.center;
+    const double smallest =
+        std::min({a.halfExtents.x(), a.halfExtents.y(), b.halfExtents.x(), b.halfExtents.y()});
+    return collidePlaced(placeBox(a, origin), placeBox(b, origin), origin, smallest,
+                         coincident(a.center, b.center), whenCoincident, margin, m);
+}
+
+bool collidePolygons(const OrientedPolygon& a, const OrientedPolygon& b, double margin, Manifold& m,
+                     const Vec2& whenCoincident) {
+    const Vec2 origin = a.center;
+    return collidePlaced(placePolygon(a, origin), placePolygon(b, origin), origin,
+                         std::min(a.inradius, b.inradius), coincident(a.center, b.center),
+                         whenCoincident, margin, m);
+}
+
+bool collidePolygonBox(const OrientedPolygon& a, const OrientedBox& b, double margin, Manifold& m,
+                       const Vec2& whenCoincident) {
+    const Vec2 origin = a.center;
+    const double smallest = std::min({a.inradius, b.halfExtents.x(), b.halfExtents.y()});
+    return collidePlaced(placePolygon(a, origin), placeBox(b, origin), origin, smallest,
+                         coincident(a.center, b.center), whenCoincident, margin, m);
+}
+
+bool collidePolygonDisk(const OrientedPolygon& a, const Disk& b, double margin, Manifold& m) {
+    // Box2D's b2CollidePolygonAndCircle: the face the centre lies farthest out of, then the
+    // centre's region of it (a vertex beyond either end, else the face).
+    m.pointCount = 0;
+    const Mat2& r = a.rotation;
+    const Vec2 c = r.transpose() * (b.center - a.center);  // the centre in the polygon's frame
+    int face = 0;
+    double separation = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < a.count; ++i) {
+        const double s = a.normals[i].dot(c - a.vertices[i]);
+        if (s > separation) {
+            separation = s;
+            face = i;
+        }
+    }
+    if (!(separation - b.radius < margin)) return false;
+    const Vec2& v1 = a.vertices[face];
+    const Vec2& v2 = a.vertices[face + 1 == a.count ? 0 : face + 1];
+    Vec2 normal, surface;
+    if (separation <= 0.0) {  // the centre is inside: out through the nearest face
+        normal = a.normals[face];
+        surface = c - separation * normal;
+    } else if ((c - v1).dot(v2 - v1) <= 0.0 || (c - v2).dot(v1 - v2) <= 0.0) {
+        surface = (c - v1).dot(v2 - v1) <= 0.0 ? v1 : v2;
+        const Vec2 outside = c - surface;
+        const double distance = outside.norm();
+        if (!(distance - b.radius < margin)) return false;
+        normal = distance > kMinLength ? Vec2(outside / distance) : a.normals[face];
+        separation = distance;
+    } else {
+        normal = a.normals[face];
+        surface = c - separation * normal;
+    }
+    const double gap = separation - b.radius;
+    if (!(gap < margin)) return false;
+    m.normal = r * normal;
+    const Vec2 midway = 0.5 * (surface + c - b.radius * normal);
+    addPoint(m, a.center + r * midway, gap, 0);
+    return true;
+}
+
+bool collidePlanePolygon(const HalfPlane& a, const OrientedPolygon& b, double margin, Manifold& m) {
+    Vec2 offset[kMaxPolygonVertices];
+    for (int i = 0; i < b.count; ++i) offset[i] = b.rotation * b.vertices[i];
+    return collidePlaneCorners(a, b.center, offset, b.count, margin, m);
+}
+
+Aabb boundingBox(const OrientedPolygon& polygon) {
+    Vec2 lower = Vec2::Constant(std::numeric_limits<double>::infinity()), upper = -lower;
+    for (int i = 0; i < polygon.count; ++i) {
+        const Vec2 p = polygon.center + polygon.rotation * polygon.vertices[i];
+        lower = lower.cwiseMin(p);
+        upper = upper.cwiseMax(p);
+    }
+    return {lower, upper};
 }
 
 }  // namespace phasebox

@@ -35,6 +35,21 @@ struct OrientedBox {
     Mat2 rotation = Mat2::Identity();
 };
 
+// The most vertices a convex polygon may have (CONTRACT §6).
+inline constexpr int kMaxPolygonVertices = 16;
+
+// A convex polygon at an angle: its vertices counter-clockwise about its centroid and the
+// outward normals of its faces (face i from vertex i to vertex i + 1), both in its own frame,
+// held by the caller; inradius bounds the reference-face bias as a box's half extent does.
+struct OrientedPolygon {
+    Vec2 center = Vec2::Zero();
+    Mat2 rotation = Mat2::Identity();
+    int count = 0;
+    const Vec2* vertices = nullptr;
+    const Vec2* normals = nullptr;
+    double inradius = 0.0;
+};
+
 // A static half-plane: solid on the side opposite the unit normal.
 struct HalfPlane {
     Vec2 point;
@@ -86,5 +101,13 @@ bool collidePlaneBox(const HalfPlane& a, const OrientedBox& b, double margin, Ma
 // whose normal lies nearest it (a pile started at one point spreads instead of stacking).
 bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Manifold& m,
                   const Vec2& whenCoincident = Vec2(0.0, 1.0));
+// The same for convex polygons, and a polygon against a box (the box's faces are four more).
+bool collidePolygons(const OrientedPolygon& a, const OrientedPolygon& b, double margin, Manifold& m,
+                     const Vec2& whenCoincident = Vec2(0.0, 1.0));
+bool collidePolygonBox(const OrientedPolygon& a, const OrientedBox& b, double margin, Manifold& m,
+                       const Vec2& whenCoincident = Vec2(0.0, 1.0));
+bool collidePolygonDisk(const OrientedPolygon& a, const Disk& b, double margin, Manifold& m);
+bool collidePlanePolygon(const HalfPlane& a, const OrientedPolygon& b, double margin, Manifold& m);
+Aabb boundingBox(const OrientedPolygon& polygon);
 
 }  // namespace phasebox

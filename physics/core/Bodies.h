@@ -29,12 +29,16 @@ struct Particle {
 
 // A rigid body: x, y and an angle. The name is that of the first kind; CONTRACT §6 added disks
 // (the scene's `disks` array), which are the same record with the disk shape.
-enum class RigidShape : unsigned char { Rectangle, Disk };
+enum class RigidShape : unsigned char { Rectangle, Disk, Polygon };
 
 struct Box {
     std::string id;
     RigidShape shape = RigidShape::Rectangle;
-    double radius = 0.0;      // a disk's; its size is then its bounding square, 2r × 2r
+    double radius = 0.0;  // a disk's; its size is then its bounding square, 2r × 2r
+    // A polygon's corners counter-clockwise about its centroid, and its faces' outward normals
+    // (face i from corner i to i + 1); its size is then its bounding square about the centroid.
+    std::vector<Vec2> vertices, normals;
+    double inradius = 0.0;    // a polygon's: the least distance from its centroid to a face
     Vec2 position{0.0, 0.0};  // setup value; live value in the state unless static
     double angle = 0.0;
     Vec2 velocity{0.0, 0.0};

@@ -22,6 +22,8 @@ void BuoyancyEffect::bind(const EffectWorldView& view) {
     diskRadius_.assign(static_cast<std::size_t>(layout.dynamicParticles), 0.0);
     boxHalfSize_.assign(static_cast<std::size_t>(layout.dynamicBoxes), Vec2::Zero());
     rigidDiskRadius_.assign(static_cast<std::size_t>(layout.dynamicBoxes), 0.0);
+    rigidPolygon_.assign(static_cast<std::size_t>(layout.dynamicBoxes), nullptr);
+    rigidPolygonArea_.assign(static_cast<std::size_t>(layout.dynamicBoxes), 0.0);
     // Right after addEffect() the world binds with its old layout, before the commit that binds
     // again; a dof outside the current layout is stale then and is skipped, not written past.
     if (view.particles)
@@ -33,6 +35,13 @@ void BuoyancyEffect::bind(const EffectWorldView& view) {
             if (b.dof >= layout.boxBase() && k < layout.dynamicBoxes) {
                 boxHalfSize_[k] = 0.5 * b.size;
                 if (b.shape == RigidShape::Disk) rigidDiskRadius_[k] = b.radius;
+                if (b.shape == RigidShape::Polygon) {
+                    rigidPolygon_[k] = &b;
+                    double twiceArea = 0.0;
+                    for (std::size_t i = 0; i < b.vertices.size(); ++i)
+                        twiceArea += cross(b.vertices[i], b.vertices[(i + 1) % b.vertices.size()]);
+                    rigidPolygonArea_[k] = 0.5 * twiceArea;
+                }
             }
         }
 }
@@ -55,29 +64,20 @@ SubmergedPart BuoyancyEffect::submergedDisk(double radius, double depth) {
     return part;
 }
 
-SubmergedPart BuoyancyEffect::submergedBox(const Vec2& halfSize, double angle, double depth) {
+namespace {
+// The part of a convex polygon (corners counter-clockwise, relative to its centre, already
+// turned) below the line y = depth: Sutherland–Hodgman against that one line (a convex polygon
+// of n corners cut by a line leaves at most n + 1), then area and centroid by the shoelace.
+template <std::size_t N>
+SubmergedPart clipBelow(const std::array<Vec2, N>& corners, int n, double depth) {
     SubmergedPart part;
-    const double cosA = std::cos(angle), sinA = std::sin(angle);
-    // Half the box's vertical extent: the clip is skipped for a box wholly above or below.
-    const double extent = halfSize.x() * std::abs(sinA) + halfSize.y() * std::abs(cosA);
-    if (!(depth > -extent)) return part;  // dry (and a non-finite state feels nothing)
-    if (depth >= extent) {
-        part.area = 4.0 * halfSize.x() * halfSize.y();
-        return part;
-    }
-    // Sutherland–Hodgman against the single line y = depth, keeping y ≤ depth: a rectangle cut
-    // by a line leaves at most five corners. Corners counter-clockwise, relative to the centre.
-    const Mat2 r = rotation(angle);
-    const std::array<Vec2, 4> corners = {
-        Vec2(r * Vec2(-halfSize.x(), -halfSize.y())), Vec2(r * Vec2(halfSize.x(), -halfSize.y())),
-        Vec2(r * Vec2(halfSize.x(), halfSize.y())), Vec2(r * Vec2(-halfSize.x(), halfSize.y()))};
-    std::array<Vec2, 6> clipped;
+    std::array<Vec2, N + 2> clipped;
     int count = 0;
     double wetFrom = 0.0, wetTo = 0.0;
     int crossings = 0;
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < n; ++i) {
         const Vec2& a = corners[i];
-        const Vec2& b = corners[(i + 1) % 4];
+        const Vec2& b = corners[(i + 1) % n];
         const bool aIn = a.y() <= depth, bIn = b.y() <= depth;
         if (aIn) clipped[count++] = a;
         if (aIn != bIn) {
@@ -87,7 +87,6 @@ SubmergedPart BuoyancyEffect::submergedBox(const Vec2& halfSize, double angle, d
             (crossings++ == 0 ? wetFrom : wetTo) = cut.x();
         }
     }
-    // Area and centroid of the clipped polygon by the shoelace formula.
     double twiceArea = 0.0;
     Vec2 moment = Vec2::Zero();
     for (int i = 0; i < count; ++i) {
@@ -105,6 +104,44 @@ SubmergedPart BuoyancyEffect::submergedBox(const Vec2& halfSize, double angle, d
         part.waterlineTo = std::max(wetFrom, wetTo);
     }
     return part;
+}
+}  // namespace
+
+SubmergedPart BuoyancyEffect::submergedBox(const Vec2& halfSize, double angle, double depth) {
+    SubmergedPart part;
+    const double cosA = std::cos(angle), sinA = std::sin(angle);
+    // Half the box's vertical extent: the clip is skipped for a box wholly above or below.
+    const double extent = halfSize.x() * std::abs(sinA) + halfSize.y() * std::abs(cosA);
+    if (!(depth > -extent)) return part;  // dry (and a non-finite state feels nothing)
+    if (depth >= extent) {
+        part.area = 4.0 * halfSize.x() * halfSize.y();
+        return part;
+    }
+    const Mat2 r = rotation(angle);
+    const std::array<Vec2, 4> corners = {
+        Vec2(r * Vec2(-halfSize.x(), -halfSize.y())), Vec2(r * Vec2(halfSize.x(), -halfSize.y())),
+        Vec2(r * Vec2(halfSize.x(), halfSize.y())), Vec2(r * Vec2(-halfSize.x(), halfSize.y()))};
+    return clipBelow(corners, 4, depth);
+}
+
+SubmergedPart BuoyancyEffect::submergedPolygon(const std::vector<Vec2>& vertices, double area,
+                                               double angle, double depth) {
+    const Mat2 r = rotation(angle);
+    std::array<Vec2, kMaxVertices> corners;
+    const int n = std::min(static_cast<int>(vertices.size()), kMaxVertices);
+    double lowest = 0.0, highest = 0.0;
+    for (int i = 0; i < n; ++i) {
+        corners[i] = r * vertices[i];
+        lowest = std::min(lowest, corners[i].y());
+        highest = std::max(highest, corners[i].y());
+    }
+    SubmergedPart part;
+    if (!(depth > lowest)) return part;  // dry (and a non-finite state feels nothing)
+    if (depth >= highest) {
+        part.area = area;  // the centroid is the body's own
+        return part;
+    }
+    return clipBelow(corners, n, depth);
 }
 
 template <typename Fn>
@@ -126,6 +163,12 @@ void BuoyancyEffect::forEachBody(const Vec& q, Fn&& fn) const {
             // A disk's submerged segment is symmetric about its centre's vertical: no torque.
             const SubmergedPart part = submergedDisk(radius, depth);
             fn(dof, true, part, part.area / (std::numbers::pi * radius * radius));
+            continue;
+        }
+        if (const Box* polygon = rigidPolygon_[k]) {
+            const double area = rigidPolygonArea_[k];
+            const SubmergedPart part = submergedPolygon(polygon->vertices, area, q[dof + 2], depth);
+            fn(dof, true, part, part.area / area);
             continue;
         }
         const Vec2& half = boxHalfSize_[k];

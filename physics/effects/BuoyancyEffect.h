@@ -33,6 +33,8 @@
 
 namespace phasebox {
 
+struct Box;
+
 // The part of a body below the surface, relative to the body's centre.
 struct SubmergedPart {
     double area = 0.0;
@@ -61,6 +63,10 @@ public:
     static SubmergedPart submergedBox(const Vec2& halfSize, double angle, double depth);
     // A disk of this radius whose centre is `depth` below the surface.
     static SubmergedPart submergedDisk(double radius, double depth);
+    // A convex polygon's (corners counter-clockwise about its centroid, of this area).
+    static constexpr int kMaxVertices = 16;
+    static SubmergedPart submergedPolygon(const std::vector<Vec2>& vertices, double area,
+                                          double angle, double depth);
 
     double fluidDensity() const { return density_; }
     double surfaceY() const { return surfaceY_; }
@@ -71,9 +77,11 @@ private:
     void forEachBody(const Vec& q, Fn&& fn) const;
 
     double density_, surfaceY_, drag_, gravity_;
-    std::vector<double> diskRadius_;       // per dynamic particle
-    std::vector<Vec2> boxHalfSize_;        // per dynamic box
-    std::vector<double> rigidDiskRadius_;  // per dynamic box: a disk's radius, 0 for a box
+    std::vector<double> diskRadius_;        // per dynamic particle
+    std::vector<Vec2> boxHalfSize_;         // per dynamic box
+    std::vector<double> rigidDiskRadius_;   // per dynamic box: a disk's radius, 0 for a box
+    std::vector<const Box*> rigidPolygon_;  // per dynamic box: a polygon's record, or null
+    std::vector<double> rigidPolygonArea_;  // and its area
 };
 
 }  // namespace phasebox

@@ -9,6 +9,7 @@
 #include "physics/effects/WindEffect.h"
 #include "physics/scene/SceneSchema.h"
 
+#include <algorithm>
 #include <unordered_map>
 
 namespace phasebox {
@@ -124,8 +125,16 @@ ContactSettings contactSettings(const std::map<std::string, double>& solver) {
 SceneError::SceneError(std::vector<SceneIssue> issues)
     : std::runtime_error(summarize(issues)), issues_(std::move(issues)) {}
 
-BuildResult buildWorld(const SceneDesc& scene) {
-    if (auto issues = validateScene(scene); !issues.empty()) throw SceneError(std::move(issues));
+BuildResult buildWorld(const SceneDesc& setup) {
+    if (auto issues = validateScene(setup); !issues.empty()) throw SceneError(std::move(issues));
+    // A polygon's state is its centroid's: a description not read from a file (a test's, the
+    // library's) may not be centred yet.
+    SceneDesc centred;
+    if (!setup.polygons.empty()) {
+        centred = setup;
+        recentrePolygons(centred);
+    }
+    const SceneDesc& scene = setup.polygons.empty() ? setup : centred;
 
     BuildResult result;
     result.world = std::make_unique<World>();
@@ -203,6 +212,29 @@ BuildResult buildWorld(const SceneDesc& scene) {
     for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
         Box b = rigid(scene.boxes[i], boxId(scene, i));
         b.size = vec(scene.boxes[i].size);
+        addRigid(b);
+    }
+    for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
+        const PolygonDesc& d = scene.polygons[i];
+        Box b = rigid(d, polygonId(scene, i));
+        b.shape = RigidShape::Polygon;
+        // About the centroid (recentrePolygons moved the frame there), counter-clockwise.
+        double reach = 0.0;
+        for (const Point2& v : d.vertices) {
+            b.vertices.emplace_back(v[0], v[1]);
+            reach = std::max(reach, b.vertices.back().norm());
+        }
+        double signedArea = 0.0;
+        for (std::size_t k = 0; k < b.vertices.size(); ++k)
+            signedArea += cross(b.vertices[k], b.vertices[(k + 1) % b.vertices.size()]);
+        if (signedArea < 0.0) std::reverse(b.vertices.begin(), b.vertices.end());
+        b.inradius = reach;
+        for (std::size_t k = 0; k < b.vertices.size(); ++k) {
+            const Vec2 e = b.vertices[(k + 1) % b.vertices.size()] - b.vertices[k];
+            b.normals.push_back(Vec2(e.y(), -e.x()).normalized());
+            b.inradius = std::min(b.inradius, b.normals.back().dot(b.vertices[k]));
+        }
+        b.size = Vec2::Constant(2.0 * reach);
         addRigid(b);
     }
     for (std::size_t i = 0; i < scene.disks.size(); ++i) {

@@ -165,6 +165,54 @@ void checkSolver(Checker& check, const std::string& path,
     }
 }
 
+// A polygon's vertices (CONTRACT §6): 3 to 16, convex, either winding, no three in a line, with
+// an area; the vertex where that fails is named (`polygons[2].vertices[4]: the polygon is not
+// convex here`). Turning the same way at every vertex is not enough (a star turns the same way
+// twice round), so the turns must also add up to one full turn.
+void checkPolygon(Checker& check, const std::string& path, const std::vector<Point2>& v) {
+    const std::size_t n = v.size();
+    if (n < 3 || n > static_cast<std::size_t>(L::kMaxPolygonVertices)) {
+        check.fail(path, "must have 3 to " + std::to_string(L::kMaxPolygonVertices) +
+                             " vertices (got " + std::to_string(n) + ")");
+        return;
+    }
+    for (const Point2& p : v)
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1])) return;  // reported by the ranges
+    double size = 0.0;
+    for (const Point2& p : v) size = std::max({size, std::abs(p[0]), std::abs(p[1])});
+    const auto edge = [&](std::size_t i) {
+        const Point2& a = v[i];
+        const Point2& b = v[(i + 1) % n];
+        return std::array<double, 2>{b[0] - a[0], b[1] - a[1]};
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto in = edge((i + n - 1) % n);
+        if (!(std::hypot(in[0], in[1]) > 1e-12 * size)) {
+            check.fail(at(path, i), "repeats the vertex before it");
+            return;
+        }
+    }
+    double sign = 0.0, turning = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto in = edge((i + n - 1) % n), out = edge(i);
+        const double lengths = std::hypot(in[0], in[1]) * std::hypot(out[0], out[1]);
+        const double cross = in[0] * out[1] - in[1] * out[0];
+        const std::string here = at(path, i);
+        if (!(std::abs(cross) > 1e-9 * lengths)) {
+            check.fail(here, "three vertices in a line here");
+            return;
+        }
+        if (sign == 0.0) sign = cross > 0.0 ? 1.0 : -1.0;
+        if (cross * sign < 0.0) {
+            check.fail(here, "the polygon is not convex here");
+            return;
+        }
+        turning += std::atan2(cross, in[0] * out[0] + in[1] * out[1]);
+    }
+    if (!(std::abs(std::abs(turning) - 2.0 * std::numbers::pi) < 1e-6))
+        check.fail(path, "the polygon is not convex: its edges cross");
+}
+
 // Every field of d whose table gives a range or rule, in the table's order; arrays of nested
 // objects after the plain fields. Strings, booleans and a cloth's pinning are the callers'.
 template <typename D>
@@ -205,6 +253,11 @@ void checkFields(Checker& check, const std::string& path, const D& d) {
                             checkFields(check, at(here, i), v[i]);
                     } else if constexpr (std::is_same_v<V, std::map<std::string, double>>) {
                         checkSolver(check, here, v);
+                    } else if constexpr (std::is_same_v<V, std::vector<Point2>>) {
+                        for (std::size_t i = 0; i < v.size(); ++i)
+                            for (std::size_t k = 0; k < 2; ++k)
+                                checkNumber(check, at(here, i) + "[" + std::to_string(k) + "]",
+                                            v[i][k], f.range);
                     } else if constexpr (std::is_same_v<V, std::string>) {
                         if (f.rule == schema::Rule::KnownIntegrator && !findIntegrator(v))
                             check.fail(here, "unknown integrator \"" + v +
@@ -229,6 +282,75 @@ std::string diskId(const SceneDesc& s, std::size_t i) {
 double DiskDesc::resolvedMass() const {
     return mass ? *mass : density * std::numbers::pi * radius * radius;
 }
+std::string polygonId(const SceneDesc& s, std::size_t i) {
+    return defaultOr(s.polygons[i].id, "poly", i);
+}
+
+namespace {
+// The polygon's signed area and first moments (Σ over the triangle fan from the origin).
+struct PolygonMoments {
+    double area = 0.0;          // signed: > 0 counter-clockwise
+    double mx = 0.0, my = 0.0;  // ∫x dA, ∫y dA
+    double ixx = 0.0;           // ∫(x² + y²) dA about the origin
+};
+PolygonMoments momentsOf(const std::vector<Point2>& v) {
+    PolygonMoments m;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const Point2& a = v[i];
+        const Point2& b = v[(i + 1) % v.size()];
+        const double cross = a[0] * b[1] - b[0] * a[1];
+        m.area += 0.5 * cross;
+        m.mx += cross * (a[0] + b[0]) / 6.0;
+        m.my += cross * (a[1] + b[1]) / 6.0;
+        m.ixx +=
+            cross *
+            (a[0] * a[0] + a[0] * b[0] + b[0] * b[0] + a[1] * a[1] + a[1] * b[1] + b[1] * b[1]) /
+            12.0;
+    }
+    return m;
+}
+}  // namespace
+
+double PolygonDesc::area() const {
+    return std::abs(momentsOf(vertices).area);
+}
+Point2 PolygonDesc::centroid() const {
+    const PolygonMoments m = momentsOf(vertices);
+    return m.area != 0.0 ? Point2{m.mx / m.area, m.my / m.area} : Point2{0.0, 0.0};
+}
+double PolygonDesc::resolvedMass() const {
+    return mass ? *mass : density * area();
+}
+double PolygonDesc::momentOfInertia() const {
+    const PolygonMoments m = momentsOf(vertices);
+    if (m.area == 0.0) return 0.0;
+    // ∫r² dA about the origin, moved to the centroid (parallel axes), per unit area times mass.
+    const double cx = m.mx / m.area, cy = m.my / m.area;
+    const double perArea = m.ixx / m.area - (cx * cx + cy * cy);
+    return resolvedMass() * perArea;
+}
+
+void recentrePolygons(SceneDesc& scene) {
+    for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
+        PolygonDesc& p = scene.polygons[i];
+        const Point2 c = p.centroid();
+        double size = 0.0;
+        for (const Point2& v : p.vertices) size = std::max({size, std::abs(v[0]), std::abs(v[1])});
+        if (!(std::hypot(c[0], c[1]) > 1e-12 * size)) continue;
+        const std::string id = polygonId(scene, i);
+        for (Point2& v : p.vertices) v = {v[0] - c[0], v[1] - c[1]};
+        const double cosA = std::cos(p.angle), sinA = std::sin(p.angle);
+        const Point2 rc{cosA * c[0] - sinA * c[1], sinA * c[0] + cosA * c[1]};
+        p.position = {p.position[0] + rc[0], p.position[1] + rc[1]};
+        p.velocity = {p.velocity[0] - p.angularVelocity * rc[1],
+                      p.velocity[1] + p.angularVelocity * rc[0]};
+        for (SpringDesc& s : scene.springs) {
+            if (s.a == id) s.aPoint = {s.aPoint[0] - c[0], s.aPoint[1] - c[1]};
+            if (s.b && *s.b == id) s.bPoint = {s.bPoint[0] - c[0], s.bPoint[1] - c[1]};
+        }
+    }
+}
+
 std::string planeId(const SceneDesc& s, std::size_t i) {
     return defaultOr(s.planes[i].id, "plane", i);
 }
@@ -269,10 +391,13 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
                    "the scene has " + std::to_string(particleCount) +
                        " particles (cloth nodes included); at most " +
                        std::to_string(SceneLimits::kMaxParticles) + " are allowed");
-    if (static_cast<long long>(scene.boxes.size() + scene.disks.size()) > SceneLimits::kMaxBoxes)
-        check.fail(std::string(scene.disks.empty() ? key::boxes : key::disks),
+    if (static_cast<long long>(scene.boxes.size() + scene.disks.size() + scene.polygons.size()) >
+        SceneLimits::kMaxBoxes)
+        check.fail(std::string(!scene.polygons.empty() ? key::polygons
+                               : !scene.disks.empty()  ? key::disks
+                                                       : key::boxes),
                    "at most " + std::to_string(SceneLimits::kMaxBoxes) +
-                       " rigid bodies (boxes and disks) are allowed");
+                       " rigid bodies (boxes, disks and polygons) are allowed");
     if (static_cast<long long>(scene.springs.size()) > SceneLimits::kMaxSprings)
         check.fail(std::string(key::springs),
                    "at most " + std::to_string(SceneLimits::kMaxSprings) + " springs are allowed");
@@ -308,6 +433,9 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     objects(key::particles, scene.particles, particleId, true);
     objects(key::boxes, scene.boxes, boxId, true);
     objects(key::disks, scene.disks, diskId, true);
+    objects(key::polygons, scene.polygons, polygonId, true);
+    for (std::size_t i = 0; i < scene.polygons.size(); ++i)
+        checkPolygon(check, join(at(key::polygons, i), key::vertices), scene.polygons[i].vertices);
     objects(key::planes, scene.planes, planeId, false);
     for (std::size_t c = 0; c < scene.cloths.size(); ++c) {
         const ClothDesc& cl = scene.cloths[c];
@@ -348,9 +476,10 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
             if (it == ids.end())
                 check.fail(where, "unknown object id \"" + id + "\"");
             else
-                check.fail(where,
-                           "\"" + id + "\" is " + it->second +
-                               "; springs attach to particles, boxes, disks and cloth nodes");
+                check.fail(
+                    where,
+                    "\"" + id + "\" is " + it->second +
+                        "; springs attach to particles, boxes, disks, polygons and cloth nodes");
         };
         const std::string a = join(path, key::a), b = join(path, key::b);
         if (s.a.empty())

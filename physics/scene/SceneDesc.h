@@ -137,6 +137,18 @@ struct DiskDesc : RigidDesc {
     double momentOfInertia() const { return 0.5 * resolvedMass() * radius * radius; }
 };
 
+// A rigid convex polygon (CONTRACT §6): 3 to 16 vertices in its own frame, either winding. Its
+// mass and moment of inertia come from its area; its state is that of its centroid, which the
+// reader moves its frame to (recentrePolygons).
+struct PolygonDesc : RigidDesc {
+    std::vector<Point2> vertices;
+
+    double area() const;             // > 0 for either winding
+    Point2 centroid() const;         // in its own frame
+    double resolvedMass() const;     // mass, else density·area
+    double momentOfInertia() const;  // about the centroid
+};
+
 struct PlaneDesc {
     std::string id;  // empty = default "plane<index>"
     Point2 point{0.0, 0.0};
@@ -180,7 +192,7 @@ struct SceneDesc {
     // The newest format version this program reads; a scene is written as the oldest version
     // that holds it (formatVersion()), so scenes without version 2's kinds save unchanged.
     static constexpr int kFormatVersion = 2;
-    int formatVersion() const { return disks.empty() ? 1 : 2; }
+    int formatVersion() const { return disks.empty() && polygons.empty() ? 1 : 2; }
 
     std::string name;
     std::string description;
@@ -189,15 +201,23 @@ struct SceneDesc {
     std::vector<ParticleDesc> particles;
     std::vector<BoxDesc> boxes;
     std::vector<DiskDesc> disks;
+    std::vector<PolygonDesc> polygons;
     std::vector<PlaneDesc> planes;
     std::vector<SpringDesc> springs;
     std::vector<ClothDesc> cloths;
 };
 
-// Default ids by position (CONTRACT.md §1, §6): p0…, b0…, d0…, plane0…, s0….
+// Default ids by position (CONTRACT.md §1, §6): p0…, b0…, d0…, poly0…, plane0…, s0….
 std::string particleId(const SceneDesc& scene, std::size_t index);
 std::string boxId(const SceneDesc& scene, std::size_t index);
 std::string diskId(const SceneDesc& scene, std::size_t index);
+std::string polygonId(const SceneDesc& scene, std::size_t index);
+
+// CONTRACT §6: a polygon's state is its centroid's. Moves each polygon whose vertices are not
+// centred on its origin (beyond 1e-12 of its size) so that they are: vertices and the points
+// springs attach to shift by −c, its position by R(angle)·c, its velocity by ω × R(angle)·c.
+// Call on a valid scene (the reader does, after validating).
+void recentrePolygons(SceneDesc& scene);
 std::string planeId(const SceneDesc& scene, std::size_t index);
 std::string springId(const SceneDesc& scene, std::size_t index);
 std::string clothNodeId(const std::string& clothId, int i, int j);
@@ -206,7 +226,8 @@ std::string clothNodeId(const std::string& clothId, int i, int j);
 // small enough that a hostile file cannot exhaust memory or hang the program.
 struct SceneLimits {
     static constexpr long long kMaxParticles = 1'000'000;  // cloth nodes included
-    static constexpr long long kMaxBoxes = 100'000;        // rigid bodies: boxes and disks
+    static constexpr long long kMaxBoxes = 100'000;        // rigid bodies: boxes, disks, polygons
+    static constexpr int kMaxPolygonVertices = 16;
     static constexpr long long kMaxSprings = 4'000'000;
     static constexpr long long kMaxPlanes = 1'000;
     static constexpr int kMaxSubsteps = 10'000;

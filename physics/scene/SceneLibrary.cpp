@@ -60,6 +60,28 @@ SceneDesc pyramid(int rows) {
     return s;
 }
 
+SceneDesc hexagonPyramid(int rows) {
+    SceneDesc s = contactScene(name("Pyramid of hexagons, ", rows) + " rows",
+                               "Hexagons 1 m across the flats, pointy side up, stacked like a "
+                               "honeycomb: each rests in the groove between two below.");
+    s.planes.push_back(ground());
+    const double r = 1.0 / std::sqrt(3.0);  // centre to corner
+    for (int row = 0; row < rows; ++row) {
+        const int count = rows - row;
+        for (int i = 0; i < count; ++i) {
+            PolygonDesc h;
+            h.id = name("r", row) + name("h", i);
+            h.position = {(i - 0.5 * (count - 1)) * 1.0, r + 1.5 * r * row};
+            for (int k = 0; k < 6; ++k) {
+                const double a = std::numbers::pi / 2.0 + std::numbers::pi / 3.0 * k;
+                h.vertices.push_back({r * std::cos(a), r * std::sin(a)});
+            }
+            s.polygons.push_back(h);
+        }
+    }
+    return s;
+}
+
 SceneDesc tower(int count) {
     SceneDesc s =
         contactScene(name("Tower of ", count) + " boxes",
@@ -277,6 +299,7 @@ const std::vector<NamedScene>& library() {
     static const std::vector<NamedScene> scenes{
         {"pyramid", "20-row box pyramid", [] { return pyramid(20); }},
         {"pyramid40", "40-row box pyramid", [] { return pyramid(40); }},
+        {"hexagons", "20-row pyramid of hexagons", [] { return hexagonPyramid(20); }},
         {"tower", "tower of 40 boxes", [] { return tower(40); }},
         {"heavy-on-light", "1, 20 and 400 kg boxes stacked",
          [] {

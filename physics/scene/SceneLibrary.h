@@ -12,6 +12,9 @@ namespace phasebox::scenes {
 
 // A pyramid of `rows` rows of 1 m boxes on a ground plane (friction 0.6), base centred at x = 0.
 SceneDesc pyramid(int rows);
+// The same pyramid of hexagons (1 m across the flats, pointy side up), stacked like a
+// honeycomb, rows 0.866 m apart.
+SceneDesc hexagonPyramid(int rows);
 // A single column of `count` 1 m boxes on the ground.
 SceneDesc tower(int count);
 // Three boxes stacked bottom to top with these masses (e.g. 1, 20, 400 kg): heavy on light.

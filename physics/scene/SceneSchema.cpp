@@ -499,6 +499,35 @@ const Field<DiskDesc> kDisk[] = {
     restitutionField<DiskDesc>(&DiskDesc::restitution),
 };
 
+const Field<PolygonDesc> kPolygon[] = {
+    idField<PolygonDesc>("unique across the scene; default poly0, poly1, \u2026 by position"),
+    {.key = key::position,
+     .type = T::Point,
+     .member = &PolygonDesc::position,
+     .range = kLength,
+     .unit = "m",
+     .label = "Position",
+     .description = "where its centroid starts (the origin of its vertices before loading)",
+     .need = Need::Required,
+     .editor = kPlaces},
+    {.key = key::vertices,
+     .type = T::PointList,
+     .member = &PolygonDesc::vertices,
+     .range = kLength,
+     .unit = "m",
+     .label = "Vertices",
+     .description = "3 to 16 corners in its own frame, convex, either winding",
+     .need = Need::Required},
+    angleField<PolygonDesc>(),
+    velocityField<PolygonDesc>(),
+    angularVelocityField<PolygonDesc>(),
+    massField<PolygonDesc>("its mass; absent = density \u00b7 area"),
+    densityField<PolygonDesc>(),
+    staticField<PolygonDesc>(),
+    frictionField<PolygonDesc>(&PolygonDesc::friction),
+    restitutionField<PolygonDesc>(&PolygonDesc::restitution),
+};
+
 const Field<PlaneDesc> kPlane[] = {
     idField<PlaneDesc>("unique across the scene; default plane0, plane1, \u2026 by position"),
     {.key = key::point,
@@ -679,8 +708,9 @@ const Field<ClothDesc> kCloth[] = {
 };
 
 constexpr std::string_view kTopKeys[] = {
-    key::format,    key::version, key::name,  key::description, key::simulation, key::effects,
-    key::particles, key::boxes,   key::disks, key::planes,      key::springs,    key::cloths};
+    key::format,  key::version,   key::name,  key::description, key::simulation,
+    key::effects, key::particles, key::boxes, key::disks,       key::polygons,
+    key::planes,  key::springs,   key::cloths};
 
 }  // namespace
 
@@ -751,6 +781,7 @@ PB_TABLE(CoulombDesc, key::coulomb, "Coulomb's law between charged particles", k
 PB_TABLE(ParticleDesc, key::particles, "point masses, drawn as disks", kParticle)
 PB_TABLE(BoxDesc, key::boxes, "rigid rectangles", kBox)
 PB_TABLE(DiskDesc, key::disks, "rigid disks: they turn, so they roll", kDisk, false, 2)
+PB_TABLE(PolygonDesc, key::polygons, "rigid convex polygons", kPolygon, false, 2)
 PB_TABLE(PlaneDesc, key::planes, "static half-planes, solid opposite the normal", kPlane)
 PB_TABLE(SpringDesc, key::springs, "damped springs between two objects or an anchor", kSpring)
 PB_TABLE(ClothDesc, key::cloths, "grids of particles joined by springs", kCloth)

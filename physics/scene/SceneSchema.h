@@ -38,6 +38,8 @@ inline constexpr std::string_view effects = "effects";
 inline constexpr std::string_view particles = "particles";
 inline constexpr std::string_view boxes = "boxes";
 inline constexpr std::string_view disks = "disks";
+inline constexpr std::string_view polygons = "polygons";
+inline constexpr std::string_view vertices = "vertices";
 inline constexpr std::string_view planes = "planes";
 // the array that implies the spring effect, which is named after it
 inline constexpr std::string_view springs = effectName::springs;
@@ -130,6 +132,7 @@ enum class Type {
     ObjectArray,  // an array of objects with their own table
     Pinning,      // a cloth's pinning: a mode name or a list of [i, j] nodes
     NumberMap,    // an object of numbers by name (the contact solver's settings)
+    PointList,    // an array of [x, y] points (a polygon's vertices)
 };
 
 // A value's range, checked by validateScene() with these messages (pairs: each number):
@@ -201,7 +204,7 @@ using Member = std::variant<double D::*, int D::*, bool D::*, std::string D::*, 
                             std::array<int, 2> D::*, std::optional<double> D::*,
                             std::optional<std::string> D::*, std::optional<Point2> D::*,
                             ClothStiffnessDesc D::*, std::vector<AttractorDesc> D::*, Pinning D::*,
-                            std::map<std::string, double> D::*>;
+                            std::map<std::string, double> D::*, std::vector<Point2> D::*>;
 
 template <typename D>
 struct Field {
@@ -259,6 +262,7 @@ const Table<CoulombDesc>& tableOf(std::type_identity<CoulombDesc>);
 const Table<ParticleDesc>& tableOf(std::type_identity<ParticleDesc>);
 const Table<BoxDesc>& tableOf(std::type_identity<BoxDesc>);
 const Table<DiskDesc>& tableOf(std::type_identity<DiskDesc>);
+const Table<PolygonDesc>& tableOf(std::type_identity<PolygonDesc>);
 const Table<PlaneDesc>& tableOf(std::type_identity<PlaneDesc>);
 const Table<SpringDesc>& tableOf(std::type_identity<SpringDesc>);
 const Table<ClothDesc>& tableOf(std::type_identity<ClothDesc>);
@@ -288,6 +292,7 @@ void forEachObjectKind(Fn&& fn) {
     fn(table<ParticleDesc>(), &SceneDesc::particles);
     fn(table<BoxDesc>(), &SceneDesc::boxes);
     fn(table<DiskDesc>(), &SceneDesc::disks);
+    fn(table<PolygonDesc>(), &SceneDesc::polygons);
     fn(table<PlaneDesc>(), &SceneDesc::planes);
     fn(table<SpringDesc>(), &SceneDesc::springs);
     fn(table<ClothDesc>(), &SceneDesc::cloths);

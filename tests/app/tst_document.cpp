@@ -353,7 +353,7 @@ void TestDocument::setPinnedTogglesParticleAndBox() {
     QVERIFY(!doc.setup().boxes[0].isStatic);
     QString error;
     QVERIFY(!doc.setPinned(QStringLiteral("s0"), true, &error));
-    QVERIFY(error.contains(QStringLiteral("only particles, boxes and disks")));
+    QVERIFY(error.contains(QStringLiteral("only particles and rigid bodies")));
 }
 
 void TestDocument::propertyTableDescribesEachKind() {

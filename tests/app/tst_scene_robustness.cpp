@@ -256,7 +256,7 @@ void TestSceneRobustness::badInput_data() {
                R"("particles": [{"id": "p", "position": [0, 0]}], "planes": [{"id": "ground", "point": [0, 0], "normal": [0, 1]}],
                     "springs": [{"a": "p", "b": "ground", "stiffness": 1}])")
         << msg("springs[0].b",
-               R"("ground" is planes[0]; springs attach to particles, boxes, disks and cloth nodes)");
+               R"("ground" is planes[0]; springs attach to particles, boxes, disks, polygons and cloth nodes)");
     QTest::newRow("pinned node off the grid")
         << scene(
                R"("cloths": [{"id": "c", "resolution": [3, 3], "pinned": [[0, 0], [-1, 2147483647]]}])")

@@ -170,6 +170,7 @@ private slots:
     void richSceneIsValid();
     void roundTripIsByteIdentical();
     void disksMakeAVersionTwoScene();
+    void polygonsAreCheckedAndCentred();
     void roundTripKeepsValues();
     void roundTripThroughQJsonDocumentIndented();
     void numbersRoundTripExactly_data();
@@ -242,6 +243,50 @@ void TestSceneIO::disksMakeAVersionTwoScene() {
     QVERIFY(!bad.ok());
     QVERIFY2(bad.errorText().contains(QStringLiteral("disks[0].radius: must be")),
              qPrintable(bad.errorText()));
+}
+
+// CONTRACT §6: a bad polygon is refused at the vertex that breaks it; a good one is moved to
+// its centroid on load, and saves in that form, byte for byte thereafter.
+void TestSceneIO::polygonsAreCheckedAndCentred() {
+    const auto errorsOf = [](const char* vertices) {
+        const QByteArray text = QByteArray(R"({"format": "phasebox-scene", "version": 2, )") +
+                                R"("polygons": [{"position": [0, 0], "vertices": )" + vertices +
+                                "}]}";
+        return SceneIO::parse(text, kName).errorText();
+    };
+    const auto expect = [&](const char* vertices, const QString& message) {
+        const QString text = errorsOf(vertices);
+        QVERIFY2(text.contains(message), qPrintable(text));
+    };
+    expect("[[0, 0], [2, 0], [1, 0.5], [2, 2], [0, 2]]",
+           QStringLiteral("polygons[0].vertices[2]: the polygon is not convex here"));
+    expect("[[0, 0], [1, 0], [2, 0], [1, 1]]",
+           QStringLiteral("polygons[0].vertices[1]: three vertices in a line here"));
+    expect("[[0, 0], [1, 0]]", QStringLiteral("polygons[0].vertices: must have 3 to 16 vertices "
+                                              "(got 2)"));
+    expect("[[0, 0], [1, 0], [1, 1], [1, 1]]",
+           QStringLiteral("polygons[0].vertices[3]: repeats the vertex before it"));
+    // A pentagram turns the same way at every vertex, twice round.
+    expect("[[1, 0], [-0.809, 0.588], [0.309, -0.951], [0.309, 0.951], [-0.809, -0.588]]",
+           QStringLiteral("polygons[0].vertices: the polygon is not convex: its edges cross"));
+    expect("[[0, 0], [1e300, 0], [0, 1]]",
+           QStringLiteral("polygons[0].vertices[1][0]: must be between"));
+
+    const QByteArray offCentre =
+        R"({"format": "phasebox-scene", "version": 2, "polygons": [{"id": "tri", )"
+        R"("position": [2, 1], "vertices": [[0, 0], [0, 4], [3, 0]], "angle": 0, )"
+        R"("angular_velocity": 3}]})";
+    const SceneLoadResult loaded = SceneIO::parse(offCentre, kName);
+    QVERIFY2(loaded.ok(), qPrintable(loaded.errorText()));
+    const PolygonDesc& tri = loaded.scene->polygons[0];
+    QVERIFY(std::abs(tri.position[0] - 3.0) < 1e-15 &&
+            std::abs(tri.position[1] - 7.0 / 3.0) < 1e-15);
+    QVERIFY(std::abs(tri.centroid()[0]) < 1e-15 && std::abs(tri.centroid()[1]) < 1e-15);
+    QVERIFY(std::abs(tri.velocity[0] + 4.0) < 1e-15 && std::abs(tri.velocity[1] - 3.0) < 1e-15);
+    const QByteArray first = SceneIO::serialize(*loaded.scene);
+    const SceneLoadResult again = SceneIO::parse(first, kName);
+    QVERIFY2(again.ok(), qPrintable(again.errorText()));
+    QCOMPARE(SceneIO::serialize(*again.scene), first);
 }
 
 void TestSceneIO::roundTripKeepsValues() {

@@ -171,6 +171,35 @@ private slots:
         QVERIFY(w.document().setup().disks[0].isStatic);
     }
 
+    // The polygon tool: a drag from the centre to a corner gives a regular hexagon of that
+    // size, centred there, as one undo step; the canvas picks it inside its outline.
+    void polygonToolAddsHexagons() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QWidget* canvas = w.canvas();
+        const QPoint c = canvas->rect().center();
+        w.action("toolPolygon")->trigger();
+        QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Polygon);
+        drag(canvas, c, c + QPoint(80, 0));
+        QCOMPARE(w.document().setup().polygons.size(), std::size_t(1));
+        const PolygonDesc& hexagon = w.document().setup().polygons[0];
+        QCOMPARE(hexagon.vertices.size(), std::size_t(CanvasTools::kPolygonSides));
+        const QPointF centre = worldAt(w, c), corner = worldAt(w, c + QPoint(80, 0));
+        QVERIFY(std::abs(hexagon.position[0] - centre.x()) < 1e-9);
+        QVERIFY(std::abs(std::hypot(hexagon.vertices[0][0], hexagon.vertices[0][1]) -
+                         QLineF(centre, corner).length()) < 1e-9);
+        QCOMPARE(w.document().world().boxes().size(), std::size_t(1));
+        QVERIFY(w.document().world().boxes()[0].shape == RigidShape::Polygon);
+        w.action("toolSelect")->trigger();
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(20, 20));
+        QCOMPARE(w.document().selection(), QStringList{QStringLiteral("poly0")});
+        w.action("undo")->trigger();
+        QVERIFY(w.document().setup().polygons.empty());
+        w.action("redo")->trigger();
+        QCOMPARE(w.document().setup().polygons.size(), std::size_t(1));
+    }
+
     void draggingAnObjectIsOneUndoStep() {
         MainWindow w;
         w.resize(1200, 800);

@@ -206,6 +206,10 @@ QPolygonF boxPolygon(const Frame& f, int i) {
         }
         return polygon;
     }
+    if (box.shape == RigidShape::Polygon) {
+        for (const Vec2& corner : box.vertices) polygon << f.screen(c + r * corner);
+        return polygon;
+    }
     for (const Vec2& corner :
          {Vec2(-h.x(), -h.y()), Vec2(h.x(), -h.y()), Vec2(h.x(), h.y()), Vec2(-h.x(), h.y())})
         polygon << f.screen(c + r * corner);

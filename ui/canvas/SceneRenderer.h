@@ -221,10 +221,17 @@ inline PickResult SceneRenderer::pick(const World& world, const ViewTransform& v
             const Box& box = world.boxes()[i];
             if (box.isStatic != isStatic) continue;
             const Vec2 local = rotation(-world.boxAngle(i)) * (point - world.boxPosition(i));
-            const bool inside = box.shape == RigidShape::Disk
-                                    ? local.norm() <= box.radius + tolerance
-                                    : std::abs(local.x()) <= 0.5 * box.size.x() + tolerance &&
-                                          std::abs(local.y()) <= 0.5 * box.size.y() + tolerance;
+            bool inside = false;
+            if (box.shape == RigidShape::Disk) {
+                inside = local.norm() <= box.radius + tolerance;
+            } else if (box.shape == RigidShape::Polygon) {
+                inside = true;
+                for (std::size_t k = 0; k < box.vertices.size() && inside; ++k)
+                    inside = box.normals[k].dot(local - box.vertices[k]) <= tolerance;
+            } else {
+                inside = std::abs(local.x()) <= 0.5 * box.size.x() + tolerance &&
+                         std::abs(local.y()) <= 0.5 * box.size.y() + tolerance;
+            }
             if (inside) return {PickResult::Box, i, box.id};
         }
 

@@ -39,8 +39,9 @@ CanvasPresenter::CanvasPresenter(ui::SceneView& view, CanvasTools& tools, Docume
 
 void CanvasPresenter::createActions(QWidget& window) {
     auto* group = new QActionGroup(this);
-    static const char* const names[] = {"toolSelect", "toolParticle", "toolSpring", "toolCloth",
-                                        "toolBox",    "toolDisk",     "toolPlane",  "toolPin"};
+    static const char* const names[] = {"toolSelect",  "toolParticle", "toolSpring",
+                                        "toolCloth",   "toolBox",      "toolDisk",
+                                        "toolPolygon", "toolPlane",    "toolPin"};
     for (int i = 0; i < static_cast<int>(std::size(names)); ++i) {  // CanvasTools::Tool's order
         const auto tool = static_cast<CanvasTools::Tool>(i);
         const QKeySequence key(Qt::Key_1 + i);

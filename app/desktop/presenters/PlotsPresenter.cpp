@@ -90,7 +90,7 @@ void PlotsPresenter::followSelection() {
     const ObjectRef ref = findObject(document_.setup(), first.toStdString());
     const bool isNode = first.contains(QLatin1Char('['));
     if (ref.kind == ObjectKind::Particle || ref.kind == ObjectKind::Box ||
-        ref.kind == ObjectKind::Disk || isNode) {
+        ref.kind == ObjectKind::Disk || ref.kind == ObjectKind::Polygon || isNode) {
         const QString coordinate = defaultPhaseCoordinate(first);
         recorder_.setPhaseTarget(first, coordinate);
         panel_.setPhaseCoordinate(coordinate);
@@ -119,10 +119,11 @@ QString PlotsPresenter::defaultPhaseCoordinate(const QString& id) const {
 void PlotsPresenter::choosePhaseCoordinate(const QString& coordinate) {
     const QString object = recorder_.phaseObject();
     const ObjectRef ref = findObject(document_.setup(), object.toStdString());
-    const bool turns = ref.kind == ObjectKind::Box || ref.kind == ObjectKind::Disk;
+    const bool turns = ref.kind == ObjectKind::Box || ref.kind == ObjectKind::Disk ||
+                       ref.kind == ObjectKind::Polygon;
     if (object.isEmpty() || (coordinate == QLatin1String("angle") && !turns)) {
         emit message(object.isEmpty() ? tr("Click an object first.")
-                                      : tr("Only boxes and disks have an angle."));
+                                      : tr("Only rigid bodies have an angle."));
         panel_.setPhaseCoordinate(recorder_.phaseCoordinate());
         return;
     }
