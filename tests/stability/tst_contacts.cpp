@@ -179,6 +179,52 @@ private slots:
         QVERIFY2(std::abs(top - 0.64) < 0.02 * 0.64, qPrintable(QString::number(top)));
     }
 
+    void reboundsMatchESquaredHUnderEveryMethod_data() {
+        QTest::addColumn<QString>("integrator");
+        for (const char* name : {"symplectic_euler", "velocity_verlet", "rk4", "implicit_euler"})
+            QTest::newRow(name) << QString(name);
+    }
+    void reboundsMatchESquaredHUnderEveryMethod() {
+        // e = 0.8 from 1 m: the bounce law is exact (velocity reflected at the impact), so the
+        // rebound differs from e²·h = 0.64 m only by the method's own error in flight. Second
+        // order methods are within 2% at dt = 1/60; the first-order ones (symplectic and
+        // implicit Euler) are off by O(h) of the flight, 8% at 1/60, and that error falls in
+        // proportion to dt: a quarter at 1/240, within 1% at 1/600.
+        QFETCH(QString, integrator);
+        const auto rebound = [&](double dt) {
+            SceneDesc scene = scenes::ballDrop(1.0, 0.8);
+            scene.simulation.integrator = integrator.toStdString();
+            scene.simulation.dt = dt;
+            auto world = build(scene);
+            const double radius = world->particles()[0].radius;
+            double top = 0.0;
+            bool bounced = false;
+            for (int k = 0; k < static_cast<int>(10.0 / dt); ++k) {
+                if (!world->step()) return -1.0;
+                const double vy = world->particleVelocity(0).y();
+                if (vy > 0.0) bounced = true;
+                if (bounced) top = std::max(top, world->particlePosition(0).y() - radius);
+                if (bounced && vy < 0.0) break;
+            }
+            return top;
+        };
+        const bool firstOrder = integrator == "symplectic_euler" || integrator == "implicit_euler";
+        const double coarse = rebound(1.0 / 60.0);
+        qInfo("%s: rebound %.4f m at dt 1/60 (e^2 h = 0.64)", qPrintable(integrator), coarse);
+        if (!firstOrder) {
+            QVERIFY2(std::abs(coarse - 0.64) < 0.02 * 0.64, qPrintable(QString::number(coarse)));
+            return;
+        }
+        const double fine = rebound(1.0 / 240.0), finest = rebound(1.0 / 600.0);
+        const double ratio = (0.64 - coarse) / (0.64 - fine);
+        qInfo(
+            "%s: %.4f m at 1/240, %.4f m at 1/600; error ratio 1/60 : 1/240 = %.2f (first "
+            "order: 4)",
+            qPrintable(integrator), fine, finest, ratio);
+        QVERIFY2(ratio > 3.5 && ratio < 4.5, qPrintable(QString::number(ratio)));
+        QVERIFY2(std::abs(finest - 0.64) < 0.01 * 0.64, qPrintable(QString::number(finest)));
+    }
+
     void inelasticBallRestsWithoutJitter() {
         auto world = build(scenes::ballDrop(1.0, 0.0));
         QVERIFY(run(*world, 2.0));
