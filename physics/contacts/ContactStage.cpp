@@ -104,34 +104,29 @@ void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB
     c.restitution = restitution;
     c.bodyA = colliderA >= 0 ? solverBodyFor(colliderA, q) : -1;
     c.bodyB = solverBodyFor(colliderB, q);
-    const auto center = [&](int i) -> Vec2 {
+    // Each collider's centre, and its least half extent (a disk's radius, a polygon's
+    // inradius): a tenth of the smaller one is an overlap no contact reaches in a resting
+    // scene.
+    struct Extent {
+        Vec2 center;
+        double size;
+    };
+    const auto extent = [&](int i) -> Extent {
         switch (colliders_[i].kind) {
             case Collider::Kind::Disk:
-                return disks_[i].center;
+                return {disks_[i].center, disks_[i].radius};
             case Collider::Kind::Polygon:
-                return polygons_[i].center;
+                return {polygons_[i].center, polygons_[i].inradius};
             case Collider::Kind::Box:
                 break;
         }
-        return boxes_[i].center;
+        return {boxes_[i].center, boxes_[i].halfExtents.minCoeff()};
     };
-    const Vec2 centerA = colliderA >= 0 ? center(colliderA) : Vec2::Zero();
-    const Vec2 centerB = center(colliderB);
-    // A tenth of the smaller body's least half extent (a disk's radius, a polygon's inradius)
-    // is an overlap no contact reaches in a resting scene.
-    const auto size = [&](int i) {
-        if (i < 0) return std::numeric_limits<double>::infinity();
-        switch (colliders_[i].kind) {
-            case Collider::Kind::Disk:
-                return disks_[i].radius;
-            case Collider::Kind::Polygon:
-                return polygons_[i].inradius;
-            case Collider::Kind::Box:
-                break;
-        }
-        return boxes_[i].halfExtents.minCoeff();
-    };
-    c.deepOverlap = kDeepOverlapFraction * std::min(size(colliderA), size(colliderB));
+    const Extent b = extent(colliderB);
+    const Extent a = colliderA >= 0 ? extent(colliderA)
+                                    : Extent{Vec2::Zero(), std::numeric_limits<double>::infinity()};
+    const Vec2 centerA = a.center, centerB = b.center;
+    c.deepOverlap = kDeepOverlapFraction * std::min(a.size, b.size);
     c.pointCount = m.pointCount;
     for (int k = 0; k < m.pointCount; ++k) {
         ContactPoint& p = c.points[k];

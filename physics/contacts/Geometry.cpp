@@ -32,17 +32,17 @@ Vec2 localCorner(const Vec2& halfExtents, int i) {
 // A convex shape's corners and outward face normals (a box's four, a polygon's up to 16),
 // counter-clockwise, relative to an origin near the pair (so that large coordinates cancel
 // before anything is multiplied). Face i runs from corner i to corner i + 1.
-struct PlacedBox {
+struct PlacedShape {
     int count = 4;
     Vec2 corners[kMaxPolygonVertices];
     Vec2 normals[kMaxPolygonVertices];
     int next(int i) const { return i + 1 == count ? 0 : i + 1; }
 };
 
-PlacedBox placeBox(const OrientedBox& box, const Vec2& origin) {
+PlacedShape placeBox(const OrientedBox& box, const Vec2& origin) {
     const Mat2& r = box.rotation;
     const Vec2 center = box.center - origin;
-    PlacedBox placed;
+    PlacedShape placed;
     for (int i = 0; i < 4; ++i) {
         placed.corners[i] = center + r * localCorner(box.halfExtents, i);
         placed.normals[i] = r * Vec2(kFaceNormal[i][0], kFaceNormal[i][1]);
@@ -50,10 +50,10 @@ PlacedBox placeBox(const OrientedBox& box, const Vec2& origin) {
     return placed;
 }
 
-PlacedBox placePolygon(const OrientedPolygon& polygon, const Vec2& origin) {
+PlacedShape placePolygon(const OrientedPolygon& polygon, const Vec2& origin) {
     const Mat2& r = polygon.rotation;
     const Vec2 center = polygon.center - origin;
-    PlacedBox placed;
+    PlacedShape placed;
     placed.count = polygon.count;
     for (int i = 0; i < polygon.count; ++i) {
         placed.corners[i] = center + r * polygon.vertices[i];
@@ -64,7 +64,7 @@ PlacedBox placePolygon(const OrientedPolygon& polygon, const Vec2& origin) {
 
 // The face of `box` along whose normal `other` lies farthest out, and that separation (the
 // depth of `other`'s deepest corner below the face's plane; negative when overlapping).
-double maxSeparation(const PlacedBox& box, const PlacedBox& other, int& bestFace) {
+double maxSeparation(const PlacedShape& box, const PlacedShape& other, int& bestFace) {
     double best = -std::numeric_limits<double>::infinity();
     bestFace = 0;
     for (int i = 0; i < box.count; ++i) {
@@ -95,11 +95,11 @@ bool clipSegment(Vec2 (&v)[2], const Vec2& dir, double offset) {
     return true;
 }
 
-// Feature id of a box–box point, like Box2D's b2ContactFeature packed into six bits:
-// bit 5 whether B holds the reference face, bits 3–4 the reference face, bits 1–2 the incident
-// face, bit 0 which end of the incident edge. None of it depends on the point's position, so
-// a resting contact keeps its ids while it jitters.
-std::uint32_t boxFeatureId(bool referenceIsB, int referenceFace, int incidentFace, int end) {
+// Feature id of a point between two boxes or polygons, like Box2D's b2ContactFeature packed
+// into ten bits: bit 9 whether B holds the reference face, bits 5–8 the reference face, bits 1–4
+// the incident face (up to 16 faces each), bit 0 which end of the incident edge. None of it depends
+// on the point's position, so a resting contact keeps its ids while it jitters.
+std::uint32_t featureId(bool referenceIsB, int referenceFace, int incidentFace, int end) {
     return (referenceIsB ? 1u << 9 : 0u) | static_cast<std::uint32_t>(referenceFace) << 5 |
            static_cast<std::uint32_t>(incidentFace) << 1 | static_cast<std::uint32_t>(end);
 }
@@ -236,7 +236,7 @@ namespace {
 // Separating axes over both shapes' face normals, then the incident face clipped against the
 // reference face's side planes: up to two points. smallest: the smaller shape's least half
 // extent (a polygon's inradius), which bounds the reference-face bias.
-bool collidePlaced(const PlacedBox& boxA, const PlacedBox& boxB, const Vec2& origin,
+bool collidePlaced(const PlacedShape& boxA, const PlacedShape& boxB, const Vec2& origin,
                    double smallest, bool centresCoincide, const Vec2& whenCoincident, double margin,
                    Manifold& m) {
     m.pointCount = 0;
@@ -257,8 +257,8 @@ bool collidePlaced(const PlacedBox& boxA, const PlacedBox& boxB, const Vec2& ori
                 faceA = i;
             }
     }
-    const PlacedBox& reference = referenceIsB ? boxB : boxA;
-    const PlacedBox& incident = referenceIsB ? boxA : boxB;
+    const PlacedShape& reference = referenceIsB ? boxB : boxA;
+    const PlacedShape& incident = referenceIsB ? boxA : boxB;
     const int referenceFace = referenceIsB ? faceB : faceA;
     const Vec2& normal = reference.normals[referenceFace];
 
@@ -289,7 +289,7 @@ bool collidePlaced(const PlacedBox& boxA, const PlacedBox& boxB, const Vec2& ori
         if (!(separation < margin)) continue;
         // v[k] is on the incident surface; the reference surface is `separation` behind it.
         addPoint(m, origin + v[k] - (0.5 * separation) * normal, separation,
-                 boxFeatureId(referenceIsB, referenceFace, incidentFace, k));
+                 featureId(referenceIsB, referenceFace, incidentFace, k));
     }
     return m.pointCount > 0;
 }

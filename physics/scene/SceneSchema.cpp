@@ -317,17 +317,23 @@ const Field<CoulombDesc> kCoulomb[] = {
 
 // ---- objects ----
 
+// Where a body starts: required, in metres.
+template <typename D>
+Field<D> positionField(std::string_view description) {
+    return {.key = key::position,
+            .type = T::Point,
+            .member = &D::position,
+            .range = kLength,
+            .unit = "m",
+            .label = "Position",
+            .description = description,
+            .need = Need::Required,
+            .editor = kPlaces};
+}
+
 const Field<ParticleDesc> kParticle[] = {
     idField<ParticleDesc>("unique across the scene; default p0, p1, \u2026 by position"),
-    {.key = key::position,
-     .type = T::Point,
-     .member = &ParticleDesc::position,
-     .range = kLength,
-     .unit = "m",
-     .label = "Position",
-     .description = "where the particle starts",
-     .need = Need::Required,
-     .editor = kPlaces},
+    positionField<ParticleDesc>("where the particle starts"),
     {.key = key::velocity,
      .type = T::Point,
      .member = &ParticleDesc::velocity,
@@ -370,7 +376,7 @@ const Field<ParticleDesc> kParticle[] = {
      .editor = {-kLarge, kLarge, 3}},
 };
 
-// The fields every rigid body shares (boxes, disks), one helper each.
+// The fields every rigid body shares (boxes, disks, polygons), one helper each.
 template <typename D>
 Field<D> angleField() {
     return {.key = key::angle,
@@ -441,15 +447,7 @@ Field<D> staticField() {
 
 const Field<BoxDesc> kBox[] = {
     idField<BoxDesc>("unique across the scene; default b0, b1, \u2026 by position"),
-    {.key = key::position,
-     .type = T::Point,
-     .member = &BoxDesc::position,
-     .range = kLength,
-     .unit = "m",
-     .label = "Position",
-     .description = "where its centre starts",
-     .need = Need::Required,
-     .editor = kPlaces},
+    positionField<BoxDesc>("where its centre starts"),
     {.key = key::size,
      .type = T::Size,
      .member = &BoxDesc::size,
@@ -471,15 +469,7 @@ const Field<BoxDesc> kBox[] = {
 
 const Field<DiskDesc> kDisk[] = {
     idField<DiskDesc>("unique across the scene; default d0, d1, \u2026 by position"),
-    {.key = key::position,
-     .type = T::Point,
-     .member = &DiskDesc::position,
-     .range = kLength,
-     .unit = "m",
-     .label = "Position",
-     .description = "where its centre starts",
-     .need = Need::Required,
-     .editor = kPlaces},
+    positionField<DiskDesc>("where its centre starts"),
     {.key = key::radius,
      .type = T::Number,
      .member = &DiskDesc::radius,
@@ -501,15 +491,8 @@ const Field<DiskDesc> kDisk[] = {
 
 const Field<PolygonDesc> kPolygon[] = {
     idField<PolygonDesc>("unique across the scene; default poly0, poly1, \u2026 by position"),
-    {.key = key::position,
-     .type = T::Point,
-     .member = &PolygonDesc::position,
-     .range = kLength,
-     .unit = "m",
-     .label = "Position",
-     .description = "where its centroid starts (the origin of its vertices before loading)",
-     .need = Need::Required,
-     .editor = kPlaces},
+    positionField<PolygonDesc>(
+        "where its centroid starts (the origin of its vertices before loading)"),
     {.key = key::vertices,
      .type = T::PointList,
      .member = &PolygonDesc::vertices,
