@@ -3,9 +3,11 @@
 #include "app/document/Document.h"
 #include "app/document/PropertyTable.h"
 #include "physics/effects/MouseSpringEffect.h"
+#include "physics/scene/SceneDesc.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
 
+#include <QKeyEvent>
 #include <QLineF>
 
 #include <cmath>
@@ -38,6 +40,20 @@ std::optional<std::pair<QString, QString>> positionKeys(ObjectKind kind) {
 QString formatLength(double metres) {
     return QString::number(metres, 'f', 2) + QStringLiteral(" m");
 }
+
+// Why a corner cannot join the outline, in a user's words, from validatePolygonVertices().
+QString outlineRefusal(const SceneIssue& issue) {
+    const QString what = QString::fromStdString(issue.message);
+    if (what.contains(QStringLiteral("convex")))
+        return CanvasTools::tr(
+            "That corner would make the polygon non-convex; polygons must be convex (build a "
+            "concave shape from convex pieces).");
+    if (what.contains(QStringLiteral("line")))
+        return CanvasTools::tr("That corner is in a line with two others: move it off the line.");
+    if (what.contains(QStringLiteral("repeats")))
+        return CanvasTools::tr("That corner is on top of another one.");
+    return CanvasTools::tr("That corner is refused: %1").arg(what);
+}
 }  // namespace
 
 CanvasTools::CanvasTools(Document& document, ui::SceneView& view, QObject* parent)
@@ -45,6 +61,13 @@ CanvasTools::CanvasTools(Document& document, ui::SceneView& view, QObject* paren
     connect(&view_, &ui::SceneView::worldMousePressed, this, &CanvasTools::pressed);
     connect(&view_, &ui::SceneView::worldMouseMoved, this, &CanvasTools::moved);
     connect(&view_, &ui::SceneView::worldMouseReleased, this, &CanvasTools::released);
+    view_.installEventFilter(this);  // Enter, Backspace and Esc for an outline in progress
+    // A double click on the last corner closes the outline.
+    connect(&view_, &ui::SceneView::worldMouseDoubleClicked, this,
+            [this](QPointF, Qt::MouseButton button) {
+                if (button == Qt::LeftButton && tool_ == Tool::Polygon && outline_.size() >= 3)
+                    closeOutline();
+            });
 }
 
 QString CanvasTools::toolName(Tool tool) {
@@ -89,13 +112,21 @@ QString CanvasTools::toolHelp(Tool tool) {
             return tr(
                 "Drag from the centre to the rim: a disk that rolls; click for one of 0.5 m.");
         case Tool::Polygon:
-            return tr("Drag from the centre to a corner: a regular hexagon, flat side down.");
+            return tr(
+                "Drag from the centre to a corner: a regular polygon, flat side down; or click "
+                "the corners and close on the first (double click or Enter closes, Backspace "
+                "undoes a corner, "
+                "Esc drops the outline).");
         case Tool::Plane:
             return tr("Drag a line along the surface; the solid side is to the right of the drag.");
         case Tool::Pin:
             return tr("Click a particle to pin or unpin it, a box or disk to make it static.");
     }
     return {};
+}
+
+void CanvasTools::setPolygonSides(int sides) {
+    polygonSides_ = std::clamp(sides, 3, SceneLimits::kMaxPolygonVertices);
 }
 
 void CanvasTools::setTool(Tool tool) {
@@ -177,6 +208,10 @@ void CanvasTools::pressed(QPointF world, Qt::MouseButton button, Qt::KeyboardMod
 }
 
 void CanvasTools::moved(QPointF world, Qt::MouseButtons buttons, Qt::KeyboardModifiers) {
+    if (!outline_.isEmpty()) {
+        showOutline(world);  // the outline follows the cursor; a drag adds no corner
+        return;
+    }
     if (!dragging_ || !(buttons & Qt::LeftButton)) return;
     if (!moved_ && isClick(world)) return;
     moved_ = true;
@@ -198,8 +233,11 @@ void CanvasTools::refreshGrabOverlay() {
     if (!grabbing_ || !spring || !spring->isAttached()) return;
     const Vec2 from = spring->grabbedPoint(document_.world().positions());
     const Vec2 to = spring->target();
-    view_.setOverlay({ui::ToolOverlay::Line, QPointF(from.x(), from.y()), QPointF(to.x(), to.y()),
-                      tr("pulling %1").arg(startObject_)});
+    view_.setOverlay({ui::ToolOverlay::Line,
+                      QPointF(from.x(), from.y()),
+                      QPointF(to.x(), to.y()),
+                      tr("pulling %1").arg(startObject_),
+                      {}});
 }
 
 void CanvasTools::showPreview(QPointF world) {
@@ -243,9 +281,9 @@ void CanvasTools::showPreview(QPointF world) {
 
 void CanvasTools::released(QPointF world, Qt::MouseButton button, Qt::KeyboardModifiers) {
     if (button != Qt::LeftButton || !dragging_) return;
+    view_.setOverlay({});
     finish(world);
     dragging_ = false;
-    view_.setOverlay({});
     document_.finishInteraction();
 }
 
@@ -312,12 +350,17 @@ void CanvasTools::finish(QPointF world) {
             break;
         }
         case Tool::Polygon: {
-            if (click) return;
+            if (click || !outline_.isEmpty()) {
+                addOutlineCorner(start_);
+                return;
+            }
             PolygonDesc polygon;
             polygon.position = point(start_);
             const double r = std::hypot(d.x(), d.y());
-            for (int k = 0; k < kPolygonSides; ++k) {
-                const double a = 2.0 * std::numbers::pi * k / kPolygonSides;
+            // Flat side down: the lowest edge runs between -90° -/+ 180°/n.
+            const int n = polygonSides_;
+            for (int k = 0; k < n; ++k) {
+                const double a = std::numbers::pi * (2.0 * k - 1.0) / n - 0.5 * std::numbers::pi;
                 polygon.vertices.push_back({r * std::cos(a), r * std::sin(a)});
             }
             report(document_.addObject(polygon, &error, &id), error);
@@ -348,7 +391,108 @@ void CanvasTools::finish(QPointF world) {
     if (!id.isEmpty()) document_.setSelection({id});
 }
 
+void CanvasTools::addOutlineCorner(QPointF world) {
+    const bool nearFirst =
+        !outline_.isEmpty() &&
+        QLineF(view_.toWidget(outline_.front()), view_.toWidget(world)).length() <
+            kCloseOutlinePixels;
+    if (nearFirst) {
+        if (outline_.size() >= 3) {
+            closeOutline();
+        } else {
+            emit message(tr("A polygon needs at least three corners."));
+        }
+        return;
+    }
+    QList<QPointF> candidate = outline_;
+    candidate.append(world);
+    // Each corner is checked as it comes: the corners so far must already make a convex
+    // polygon (a convex polygon's corners, any of them dropped, still do), so the first
+    // corner that breaks the rule is the one refused.
+    if (candidate.size() >= 3) {
+        std::vector<Point2> vertices;
+        for (const QPointF& q : candidate)
+            vertices.push_back({q.x() - candidate.front().x(), q.y() - candidate.front().y()});
+        if (const auto issues = validatePolygonVertices(vertices); !issues.empty()) {
+            emit message(outlineRefusal(issues.front()));
+            return;
+        }
+    }
+    outline_ = candidate;
+    if (outline_.size() == SceneLimits::kMaxPolygonVertices) {
+        closeOutline();
+        return;
+    }
+    showOutline(world);
+    emit message(outline_.size() < 3
+                     ? tr("Corner %1: click the next corner.").arg(outline_.size())
+                     : tr("Corner %1: click the next, or the first corner (or Enter) to close.")
+                           .arg(outline_.size()));
+}
+
+void CanvasTools::showOutline(QPointF cursor) {
+    ui::ToolOverlay overlay;
+    overlay.shape = ui::ToolOverlay::Polyline;
+    overlay.points = outline_;
+    overlay.a = outline_.front();
+    overlay.b = cursor;
+    overlay.text = tr("%n corner(s)", nullptr, static_cast<int>(outline_.size()));
+    view_.setOverlay(overlay);
+}
+
+bool CanvasTools::closeOutline() {
+    if (outline_.size() < 3) {
+        emit message(tr("A polygon needs at least three corners."));
+        return false;
+    }
+    PolygonDesc polygon;
+    polygon.position = point(outline_.front());
+    for (const QPointF& q : std::as_const(outline_))
+        polygon.vertices.push_back({q.x() - outline_.front().x(), q.y() - outline_.front().y()});
+    if (const auto issues = validatePolygonVertices(polygon.vertices); !issues.empty()) {
+        emit message(outlineRefusal(issues.front()));
+        return false;
+    }
+    // The body's frame at the centroid, as a loaded file has it.
+    const Point2 c = polygon.centroid();
+    for (Point2& v : polygon.vertices) v = {v[0] - c[0], v[1] - c[1]};
+    polygon.position = {polygon.position[0] + c[0], polygon.position[1] + c[1]};
+    outline_.clear();
+    view_.setOverlay({});
+    QString error, id;
+    const bool ok = document_.addObject(polygon, &error, &id);
+    report(ok, error);
+    if (ok) document_.setSelection({id});
+    return ok;
+}
+
+bool CanvasTools::eventFilter(QObject* watched, QEvent* event) {
+    if (watched != &view_ || event->type() != QEvent::KeyPress || outline_.isEmpty())
+        return QObject::eventFilter(watched, event);
+    switch (static_cast<QKeyEvent*>(event)->key()) {
+        case Qt::Key_Return:
+        case Qt::Key_Enter:
+            closeOutline();
+            return true;
+        case Qt::Key_Backspace:
+            outline_.removeLast();
+            if (outline_.isEmpty())
+                view_.setOverlay({});
+            else
+                showOutline(view_.overlay().b);
+            return true;
+        case Qt::Key_Escape:
+            outline_.clear();
+            view_.setOverlay({});
+            emit message(tr("Outline dropped."));
+            return true;
+        default:
+            return QObject::eventFilter(watched, event);
+    }
+}
+
 void CanvasTools::cancel() {
+    outline_.clear();
     if (grabbing_) document_.releaseGrab();
     grabbing_ = false;
     dragging_ = false;

@@ -9,12 +9,19 @@
 //   Spring   drag from an object to another object, or to empty space for an anchor
 //   Cloth    drag a rectangle: a cloth pinned along its top edge
 //   Box      drag a rectangle: a box of that size
+//   Disk     drag from the centre to the rim; a click drops one of 0.5 m
+//   Polygon  drag from the centre to a corner: a regular n-gon, flat side down; or click the
+//            corners one by one and close on the first (Enter closes, Backspace takes the
+//            last corner back, Esc drops the outline). A corner that would make the outline
+//            non-convex, put three corners in a line or repeat one is refused with the reason.
 //   Plane    drag a line along the surface; the solid side is to the right of the drag
-//   Pin      click a particle to pin or unpin it, a box to make it static or dynamic
+//   Pin      click a particle to pin or unpin it, a rigid body to make it static or dynamic
 
 #include <QObject>
 #include <QPointF>
 #include <QString>
+
+#include <QList>
 
 #include <optional>
 
@@ -47,8 +54,16 @@ public:
     static constexpr double kClickPixels = 4.0;
     // The radius of a disk added with a click rather than a drag (m).
     static constexpr double kClickDiskRadius = 0.5;
-    // The polygon tool's regular polygon: this many sides.
+    // The polygon tool's regular polygon: this many sides unless set (3 to 16).
     static constexpr int kPolygonSides = 6;
+    int polygonSides() const { return polygonSides_; }
+    void setPolygonSides(int sides);
+    // The corners clicked so far with the polygon tool (world coordinates).
+    const QList<QPointF>& outline() const { return outline_; }
+    // Closes the clicked outline into a polygon (Enter); false, with a message, when refused.
+    bool closeOutline();
+    // A click within this many pixels of the first corner closes the outline.
+    static constexpr double kCloseOutlinePixels = 8.0;
 
 signals:
     void toolChanged(phasebox::CanvasTools::Tool tool);
@@ -60,6 +75,9 @@ private:
     void moved(QPointF world, Qt::MouseButtons buttons, Qt::KeyboardModifiers modifiers);
     void released(QPointF world, Qt::MouseButton button, Qt::KeyboardModifiers modifiers);
     void finish(QPointF world);
+    bool eventFilter(QObject* watched, QEvent* event) override;
+    void addOutlineCorner(QPointF world);
+    void showOutline(QPointF cursor);
     void cancel();
     bool isClick(QPointF world) const;
     void report(bool ok, const QString& error);
@@ -78,6 +96,9 @@ private:
     QPointF grabOffset_;  // the moved object's position minus the press point
     bool grabbing_ = false;
     bool moved_ = false;
+
+    int polygonSides_ = kPolygonSides;
+    QList<QPointF> outline_;  // the polygon tool's clicked corners
 };
 
 }  // namespace phasebox

@@ -104,6 +104,9 @@ void MainWindow::createActions() {
     }
     make("delete", tr("&Delete"), QKeySequence::Delete,
          [this] { browserPresenter_->deleteSelection(); });
+    make("copy", tr("&Copy"), QKeySequence::Copy, [this] { browserPresenter_->copySelection(); });
+    make("cut", tr("Cu&t"), QKeySequence::Cut, [this] { browserPresenter_->cutSelection(); });
+    make("paste", tr("&Paste"), QKeySequence::Paste, [this] { browserPresenter_->paste(); });
     make("accuracyLab", tr("&Accuracy Lab…"), Qt::CTRL | Qt::SHIFT | Qt::Key_A, [this] {
         showAccuracyLab();
     })->setToolTip(tr("Error against CPU time for every integrator, on this scene"));
@@ -137,7 +140,8 @@ void MainWindow::createMenus() {
     exports->addAction(action("exportCanvas"));
     plotsPresenter_->addExportActions(*exports);
     addNamedActions(file, *this, {"", "quit"});
-    addNamedActions(menuBar()->addMenu(tr("&Edit")), *this, {"undo", "redo", "", "delete"});
+    addNamedActions(menuBar()->addMenu(tr("&Edit")), *this,
+                    {"undo", "redo", "", "cut", "copy", "paste", "delete"});
     addNamedActions(menuBar()->addMenu(tr("&Simulation")), *this,
                     {"play", "step", "reset", "", "nextIntegrator", "previousIntegrator",
                      "doubleDt", "halveDt", "moreSubsteps", "fewerSubsteps", "faster", "slower"});
@@ -163,6 +167,7 @@ void MainWindow::createToolBar() {
     bar->setObjectName(QStringLiteral("mainToolBar"));
     addNamedActions(bar, *this, {"new", "open", "save", "", "play", "step", "reset", ""});
     bar->addActions(canvasPresenter_->toolActions());
+    bar->addWidget(canvasPresenter_->polygonSidesBox());
 }
 
 QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QString& name,

@@ -33,29 +33,6 @@ void insertAt(std::vector<T>& v, const std::vector<std::pair<std::size_t, T>>& r
         v.insert(v.begin() + static_cast<std::ptrdiff_t>(index), object);
 }
 
-// The scene array an object of this type lives in.
-std::vector<ParticleDesc>& arrayOf(SceneDesc& s, const ParticleDesc&) {
-    return s.particles;
-}
-std::vector<BoxDesc>& arrayOf(SceneDesc& s, const BoxDesc&) {
-    return s.boxes;
-}
-std::vector<DiskDesc>& arrayOf(SceneDesc& s, const DiskDesc&) {
-    return s.disks;
-}
-std::vector<PolygonDesc>& arrayOf(SceneDesc& s, const PolygonDesc&) {
-    return s.polygons;
-}
-std::vector<PlaneDesc>& arrayOf(SceneDesc& s, const PlaneDesc&) {
-    return s.planes;
-}
-std::vector<SpringDesc>& arrayOf(SceneDesc& s, const SpringDesc&) {
-    return s.springs;
-}
-std::vector<ClothDesc>& arrayOf(SceneDesc& s, const ClothDesc&) {
-    return s.cloths;
-}
-
 // Whether a spring end names this body: the object itself or, for a cloth, one of its nodes.
 bool attachedTo(const std::string& end, const std::string& id, bool cloth) {
     if (end == id) return true;
@@ -119,33 +96,39 @@ void DocumentCommand::validate() {
     if (const auto issues = validateScene(trial); !issues.empty()) refuse(joinIssues(issues));
 }
 
-// ---- AddObjectCommand ------------------------------------------------------------------------
+// ---- AddObjectsCommand -----------------------------------------------------------------------
 
-AddObjectCommand::AddObjectCommand(Document& document, ObjectDesc object)
-    : DocumentCommand(document, {}), object_(std::move(object)) {
-    std::visit(
-        [&](auto& desc) {
-            if (desc.id.empty()) {
-                static constexpr const char* prefixes[] = {"p",     "b", "d",    "poly",
-                                                           "plane", "s", "cloth"};
-                static_assert(std::size(prefixes) == std::variant_size_v<ObjectDesc>,
-                              "a default id prefix per object kind");
-                desc.id = uniqueObjectId(setup(), prefixes[object_.index()]);
-            }
-            id_ = desc.id;
-        },
-        object_);
-    setText(QObject::tr("Add %1 %2").arg(objectKindName(objectKind(object_)), objectId()));
+AddObjectsCommand::AddObjectsCommand(Document& document, std::vector<ObjectDesc> objects)
+    : DocumentCommand(document, {}), objects_(std::move(objects)) {
+    // Fresh ids are taken one after another, so that two new boxes become b3 and b4.
+    SceneDesc trial = setup();
+    for (ObjectDesc& object : objects_) {
+        std::visit(
+            [&](auto& desc) {
+                if (desc.id.empty())
+                    desc.id = uniqueObjectId(trial, defaultIdPrefix(objectKind(object)));
+                ids_ << QString::fromStdString(desc.id);
+                arrayOf(trial, desc).push_back(desc);
+            },
+            object);
+    }
+    if (objects_.size() == 1)
+        setText(QObject::tr("Add %1 %2").arg(objectKindName(objectKind(objects_[0])), ids_[0]));
+    else
+        setText(QObject::tr("Paste %n objects", nullptr, static_cast<int>(objects_.size())));
+    if (objects_.empty()) refuse(QObject::tr("nothing to add"));
     validate();
 }
 
-void AddObjectCommand::apply(SceneDesc& scene) const {
-    std::visit([&](const auto& desc) { arrayOf(scene, desc).push_back(desc); }, object_);
+void AddObjectsCommand::apply(SceneDesc& scene) const {
+    for (const ObjectDesc& object : objects_)
+        std::visit([&](const auto& desc) { arrayOf(scene, desc).push_back(desc); }, object);
 }
 
-void AddObjectCommand::revert(SceneDesc& scene) const {
-    // The stack undoes in reverse order, so the object is the last of its array again.
-    std::visit([&](const auto& desc) { arrayOf(scene, desc).pop_back(); }, object_);
+void AddObjectsCommand::revert(SceneDesc& scene) const {
+    // The stack undoes in reverse order, so the objects are the last of their arrays again.
+    for (auto it = objects_.rbegin(); it != objects_.rend(); ++it)
+        std::visit([&](const auto& desc) { arrayOf(scene, desc).pop_back(); }, *it);
 }
 
 // ---- DeleteObjectsCommand --------------------------------------------------------------------

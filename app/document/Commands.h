@@ -62,20 +62,21 @@ private:
 // Merge ids (QUndoCommand::id): commands of one kind merge with each other only.
 enum CommandId : int { kMoveObjectId = 1, kSetPropertyId, kSetSimulationId, kSetEffectId };
 
-// Adds a particle, box, plane, spring or cloth. An empty id is replaced by the first free one
-// of its kind: p0, p1…, b0…, plane0…, s0…, cloth0….
-class AddObjectCommand final : public DocumentCommand {
+// Adds objects of any kind in one undo step: one from a tool, or a pasted group. An empty id
+// is replaced by the first free one of its kind (p0, p1…, b0…, d0…, poly0…, plane0…, s0…,
+// cloth0…), taken in order, so a spring among the objects must name its ends' final ids.
+class AddObjectsCommand final : public DocumentCommand {
 public:
-    AddObjectCommand(Document& document, ObjectDesc object);
-    QString objectId() const { return QString::fromStdString(id_); }
+    AddObjectsCommand(Document& document, std::vector<ObjectDesc> objects);
+    const QStringList& objectIds() const { return ids_; }
 
 protected:
     void apply(SceneDesc& scene) const override;
     void revert(SceneDesc& scene) const override;
 
 private:
-    ObjectDesc object_;
-    std::string id_;
+    std::vector<ObjectDesc> objects_;
+    QStringList ids_;
 };
 
 // Deletes objects; a particle, box or cloth takes the springs attached to it along. Undo puts

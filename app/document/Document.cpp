@@ -160,10 +160,17 @@ bool Document::push(DocumentCommand* command, QString* error) {
 }
 
 bool Document::addObject(const ObjectDesc& object, QString* error, QString* newId) {
-    auto* command = new AddObjectCommand(*this, object);
-    const QString id = command->objectId();
+    QStringList ids;
+    if (!addObjects({object}, error, &ids)) return false;
+    if (newId) *newId = ids.front();
+    return true;
+}
+
+bool Document::addObjects(std::vector<ObjectDesc> objects, QString* error, QStringList* newIds) {
+    auto* command = new AddObjectsCommand(*this, std::move(objects));
+    const QStringList ids = command->objectIds();
     if (!push(command, error)) return false;
-    if (newId) *newId = id;
+    if (newIds) *newIds = ids;
     return true;
 }
 

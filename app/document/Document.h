@@ -24,6 +24,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace phasebox {
 
@@ -73,6 +74,9 @@ public:
 
     // ---- edits: each pushes one undoable command; false and *error when refused ----------
     bool addObject(const ObjectDesc& object, QString* error = nullptr, QString* newId = nullptr);
+    // Several objects in one undo step (a paste); *newIds in their order.
+    bool addObjects(std::vector<ObjectDesc> objects, QString* error = nullptr,
+                    QStringList* newIds = nullptr);
     bool deleteObjects(const QStringList& ids, QString* error = nullptr);
     // Moves a particle, box, plane (its point), cloth (its origin) or a spring's anchor.
     bool moveObject(const QString& id, const Point2& position, QString* error = nullptr);

@@ -110,29 +110,6 @@ void forEachProperty(D& d, Fn&& fn, const QString& prefix = {}) {
     }
 }
 
-// The scene's array for a kind, by the desc type.
-std::vector<ParticleDesc>& array(SceneDesc& s, const ParticleDesc*) {
-    return s.particles;
-}
-std::vector<BoxDesc>& array(SceneDesc& s, const BoxDesc*) {
-    return s.boxes;
-}
-std::vector<DiskDesc>& array(SceneDesc& s, const DiskDesc*) {
-    return s.disks;
-}
-std::vector<PolygonDesc>& array(SceneDesc& s, const PolygonDesc*) {
-    return s.polygons;
-}
-std::vector<PlaneDesc>& array(SceneDesc& s, const PlaneDesc*) {
-    return s.planes;
-}
-std::vector<SpringDesc>& array(SceneDesc& s, const SpringDesc*) {
-    return s.springs;
-}
-std::vector<ClothDesc>& array(SceneDesc& s, const ClothDesc*) {
-    return s.cloths;
-}
-
 // Calls fn(desc) for the object at ref.
 template <typename Fn>
 void visitObject(SceneDesc& scene, ObjectRef ref, Fn&& fn) {
@@ -231,6 +208,28 @@ std::string objectId(const SceneDesc& scene, ObjectRef ref) {
     return {};
 }
 
+std::vector<ParticleDesc>& arrayOf(SceneDesc& s, const ParticleDesc&) {
+    return s.particles;
+}
+std::vector<BoxDesc>& arrayOf(SceneDesc& s, const BoxDesc&) {
+    return s.boxes;
+}
+std::vector<DiskDesc>& arrayOf(SceneDesc& s, const DiskDesc&) {
+    return s.disks;
+}
+std::vector<PolygonDesc>& arrayOf(SceneDesc& s, const PolygonDesc&) {
+    return s.polygons;
+}
+std::vector<PlaneDesc>& arrayOf(SceneDesc& s, const PlaneDesc&) {
+    return s.planes;
+}
+std::vector<SpringDesc>& arrayOf(SceneDesc& s, const SpringDesc&) {
+    return s.springs;
+}
+std::vector<ClothDesc>& arrayOf(SceneDesc& s, const ClothDesc&) {
+    return s.cloths;
+}
+
 ObjectKind objectKind(const ObjectDesc& object) {
     // The variant's alternatives are in the order of ObjectKind after None.
     return static_cast<ObjectKind>(object.index() + 1);
@@ -260,7 +259,7 @@ ObjectDesc objectDesc(const SceneDesc& scene, ObjectRef ref) {
 
 void setObjectDesc(SceneDesc& scene, ObjectRef ref, const ObjectDesc& object) {
     if (objectKind(object) != ref.kind) return;
-    std::visit([&](const auto& desc) { array(scene, &desc)[ref.index] = desc; }, object);
+    std::visit([&](const auto& desc) { arrayOf(scene, desc)[ref.index] = desc; }, object);
 }
 
 QString objectKindName(ObjectKind kind) {
@@ -305,6 +304,28 @@ std::string uniqueObjectId(const SceneDesc& scene, const std::string& prefix) {
         std::string id = prefix + std::to_string(n);
         if (!used.count(id)) return id;
     }
+}
+
+std::string defaultIdPrefix(ObjectKind kind) {
+    switch (kind) {
+        case ObjectKind::Particle:
+            return "p";
+        case ObjectKind::Box:
+            return "b";
+        case ObjectKind::Disk:
+            return "d";
+        case ObjectKind::Polygon:
+            return "poly";
+        case ObjectKind::Plane:
+            return "plane";
+        case ObjectKind::Spring:
+            return "s";
+        case ObjectKind::Cloth:
+            return "cloth";
+        case ObjectKind::None:
+            break;
+    }
+    return "object";
 }
 
 void assignDefaultIds(SceneDesc& scene) {

@@ -34,6 +34,14 @@ using ObjectDesc =
 ObjectRef findObject(const SceneDesc& scene, const std::string& id);
 std::string objectId(const SceneDesc& scene, ObjectRef ref);
 ObjectKind objectKind(const ObjectDesc& object);
+// The scene array an object of this type lives in.
+std::vector<ParticleDesc>& arrayOf(SceneDesc& scene, const ParticleDesc&);
+std::vector<BoxDesc>& arrayOf(SceneDesc& scene, const BoxDesc&);
+std::vector<DiskDesc>& arrayOf(SceneDesc& scene, const DiskDesc&);
+std::vector<PolygonDesc>& arrayOf(SceneDesc& scene, const PolygonDesc&);
+std::vector<PlaneDesc>& arrayOf(SceneDesc& scene, const PlaneDesc&);
+std::vector<SpringDesc>& arrayOf(SceneDesc& scene, const SpringDesc&);
+std::vector<ClothDesc>& arrayOf(SceneDesc& scene, const ClothDesc&);
 ObjectDesc objectDesc(const SceneDesc& scene, ObjectRef ref);
 // Replaces the object at ref; the kinds must match (else nothing happens).
 void setObjectDesc(SceneDesc& scene, ObjectRef ref, const ObjectDesc& object);
@@ -45,6 +53,9 @@ QString objectKindName(ObjectKind kind);
 std::vector<std::string> objectIds(const SceneDesc& scene);
 // prefix0, prefix1, … : the first one no object (or cloth node) of the scene uses.
 std::string uniqueObjectId(const SceneDesc& scene, const std::string& prefix);
+// The prefix of the ids the editor gives new objects of this kind: p, b, d, poly, plane, s,
+// cloth.
+std::string defaultIdPrefix(ObjectKind kind);
 // Writes the default ids (p0, b0, d0, plane0, s0 by position) into objects that have none, so
 // that ids stay put when an object before them is deleted.
 void assignDefaultIds(SceneDesc& scene);

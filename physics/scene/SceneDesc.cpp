@@ -361,6 +361,17 @@ std::string clothNodeId(const std::string& clothId, int i, int j) {
     return clothId + "[" + std::to_string(i) + "," + std::to_string(j) + "]";
 }
 
+std::vector<SceneIssue> validatePolygonVertices(const std::vector<Point2>& vertices,
+                                                const std::string& path) {
+    std::vector<SceneIssue> issues;
+    Checker check(issues);
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+        for (int k = 0; k < 2; ++k)
+            if (!std::isfinite(vertices[i][k])) check.fail(at(path, i), "must be a finite number");
+    if (issues.empty()) checkPolygon(check, path, vertices);
+    return issues;
+}
+
 std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     namespace key = schema::key;
     std::vector<SceneIssue> issues;

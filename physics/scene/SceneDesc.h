@@ -262,4 +262,10 @@ struct SceneIssue {
 // Empty result = the scene can be built.
 std::vector<SceneIssue> validateScene(const SceneDesc& scene);
 
+// The polygon rule alone (CONTRACT §6: 3 to 16 finite vertices, convex, either winding, no
+// three in a line, no repeats), its problem named at path or path[i]; empty = a valid outline.
+// For editors that build an outline vertex by vertex.
+std::vector<SceneIssue> validatePolygonVertices(const std::vector<Point2>& vertices,
+                                                const std::string& path = "vertices");
+
 }  // namespace phasebox

@@ -6,6 +6,7 @@
 
 #include "app/document/Commands.h"
 #include "app/document/Document.h"
+#include "app/document/ObjectClipboard.h"
 #include "app/document/PropertyTable.h"
 #include "app/io/SceneIO.h"
 #include "physics/world/World.h"
@@ -96,6 +97,7 @@ private slots:
     void defaultIdsAreWrittenOnLoad();
     void selectionIsPrunedByDeletes();
     void disksAreEditedLikeBoxes();
+    void copiesKeepTheirSpringsAndPasteUnderFreshIds();
 };
 
 void TestDocument::addEveryKindOfObject() {
@@ -628,3 +630,59 @@ void TestDocument::disksAreEditedLikeBoxes() {
 
 QTEST_GUILESS_MAIN(TestDocument)
 #include "tst_document.moc"
+
+// A copy takes the chosen bodies (a node id its cloth), the springs between them or to fixed
+// anchors, and leaves a spring to a body left behind; the paste renames everything to free
+// ids (cloth node ends included) and shifts every position, anchor and origin.
+void TestDocument::copiesKeepTheirSpringsAndPasteUnderFreshIds() {
+    SceneDesc s;
+    ClothDesc cloth;
+    cloth.id = "flag";
+    cloth.resolution = {3, 3};
+    s.cloths = {cloth};
+    s.particles = {particle(3.0, 3.0, "weight"), particle(5.0, 3.0, "other")};
+    SpringDesc anchored;
+    anchored.id = "hook";
+    anchored.a = "weight";
+    anchored.anchor = Point2{3.0, 5.0};
+    anchored.stiffness = 10.0;
+    s.springs = {bodySpring("weight", "flag[2,2]", 10.0), bodySpring("weight", "other", 10.0),
+                 anchored};
+    s.planes = {PlaneDesc{}};
+    s.planes[0].id = "floor";
+
+    const SceneDesc copy = copyObjects(s, {QStringLiteral("flag[1,1]"), QStringLiteral("weight")});
+    QCOMPARE(copy.cloths.size(), std::size_t(1));
+    QCOMPARE(copy.particles.size(), std::size_t(1));
+    QVERIFY(copy.planes.empty());
+    QCOMPARE(copy.springs.size(), std::size_t(2));  // to the cloth node and to the anchor
+    QVERIFY(validateScene(copy).empty());
+    // A spring alone, without its ends, is not copied.
+    QVERIFY(copyObjects(s, {QStringLiteral("s1")}).springs.empty());
+
+    const std::vector<ObjectDesc> pasted = pastedObjects(s, copy, {1.0, -2.0});
+    QCOMPARE(pasted.size(), std::size_t(4));
+    const auto& p = std::get<ParticleDesc>(pasted[0]);
+    const auto& c = std::get<ClothDesc>(pasted[1]);
+    const auto& toNode = std::get<SpringDesc>(pasted[2]);
+    const auto& toAnchor = std::get<SpringDesc>(pasted[3]);
+    QCOMPARE(p.id, std::string("p0"));
+    QCOMPARE(p.position, (Point2{4.0, 1.0}));
+    QCOMPARE(c.id, std::string("cloth0"));
+    QCOMPARE(c.origin, (Point2{cloth.origin[0] + 1.0, cloth.origin[1] - 2.0}));
+    QCOMPARE(toNode.a, std::string("p0"));
+    QCOMPARE(*toNode.b, std::string("cloth0[2,2]"));
+    QCOMPARE(toAnchor.a, std::string("p0"));
+    QCOMPARE(*toAnchor.anchor, (Point2{4.0, 3.0}));
+    QVERIFY(toNode.id != toAnchor.id);
+
+    Document doc;
+    QVERIFY(doc.loadFromDesc(s));
+    const QByteArray before = bytes(doc);
+    QStringList ids;
+    QVERIFY(doc.addObjects(pasted, nullptr, &ids));
+    QCOMPARE(ids.size(), 4);
+    QCOMPARE(doc.world().particles().size(), std::size_t(2 + 1 + 2 * 9));
+    doc.undoStack()->undo();
+    QCOMPARE(bytes(doc), before);
+}

@@ -14,13 +14,17 @@
 #include <QAction>
 #include <QChart>
 #include <QChartView>
+#include <QClipboard>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFile>
+#include <QGuiApplication>
 #include <QImage>
+#include <QLabel>
 #include <QLineSeries>
 #include <QMenu>
 #include <QProcess>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -198,6 +202,159 @@ private slots:
         QVERIFY(w.document().setup().polygons.empty());
         w.action("redo")->trigger();
         QCOMPARE(w.document().setup().polygons.size(), std::size_t(1));
+    }
+
+    // The sides box sets the regular polygon's n; it is drawn flat side down (its two lowest
+    // corners level) with every corner at the dragged radius.
+    void polygonToolTakesItsNumberOfSides() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QWidget* canvas = w.canvas();
+        const QPoint c = canvas->rect().center();
+        auto* sides = w.findChild<QSpinBox*>(QStringLiteral("polygonSides"));
+        QVERIFY(sides);
+        for (const int n : {3, 5, 16}) {
+            sides->setValue(n);
+            QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Polygon);
+            w.document().newScene();
+            drag(canvas, c, c + QPoint(90, 0));
+            QCOMPARE(w.document().setup().polygons.size(), std::size_t(1));
+            std::vector<Point2> v = w.document().setup().polygons[0].vertices;
+            QCOMPARE(v.size(), std::size_t(n));
+            std::sort(v.begin(), v.end(),
+                      [](const Point2& a, const Point2& b) { return a[1] < b[1]; });
+            QVERIFY2(std::abs(v[0][1] - v[1][1]) < 1e-9, qPrintable(QString::number(n)));
+        }
+    }
+
+    // Corners clicked one by one make a convex polygon, closed by a click on the first corner
+    // or by Enter; a corner that would make it non-convex is refused with the reason and the
+    // outline stays as it was; Backspace takes a corner back and Esc drops the outline.
+    void polygonToolClicksCorners() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QWidget* canvas = w.canvas();
+        const QPoint c = canvas->rect().center();
+        const auto* status = w.findChild<QLabel*>(QStringLiteral("statusMessage"));
+        QVERIFY(status);
+        w.action("toolPolygon")->trigger();
+        const QPoint a = c, b = c + QPoint(100, 0), d = c + QPoint(100, -100);
+        const QPoint dent = c + QPoint(70, -30);  // inside the triangle a b d: a dent
+        const QPoint e = c + QPoint(0, -100);
+        for (const QPoint& p : {a, b, d}) QTest::mouseClick(canvas, Qt::LeftButton, {}, p);
+        QCOMPARE(w.tools()->outline().size(), 3);
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, dent);
+        QCOMPARE(w.tools()->outline().size(), 3);
+        QVERIFY2(status->text().contains(QStringLiteral("non-convex")), qPrintable(status->text()));
+        QVERIFY(w.document().setup().polygons.empty());
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, e);
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, a + QPoint(2, 1));  // on the first: close
+        QVERIFY(w.tools()->outline().isEmpty());
+        QCOMPARE(w.document().setup().polygons.size(), std::size_t(1));
+        const PolygonDesc& square = w.document().setup().polygons[0];
+        QCOMPARE(square.vertices.size(), std::size_t(4));
+        // Its frame at the centroid (the square's centre), the area that of the clicks.
+        const QPointF centre = worldAt(w, c + QPoint(50, -50));
+        QVERIFY(std::abs(square.position[0] - centre.x()) < 1e-9);
+        QVERIFY(std::abs(square.position[1] - centre.y()) < 1e-9);
+        const double side = QLineF(worldAt(w, a), worldAt(w, b)).length();
+        QVERIFY(std::abs(square.area() - side * side) < 1e-9 * side * side);
+        QCOMPARE(w.document().selection(), QStringList{QStringLiteral("poly0")});
+        w.action("undo")->trigger();
+        QVERIFY(w.document().setup().polygons.empty());
+        w.action("redo")->trigger();
+        QCOMPARE(w.document().setup().polygons.size(), std::size_t(1));
+
+        // Three corners in a line are refused; Backspace and Esc; Enter closes a triangle.
+        canvas->setFocus();
+        for (const QPoint& p : {a, b})
+            QTest::mouseClick(canvas, Qt::LeftButton, {}, p + QPoint(0, 150));
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(200, 150));
+        QCOMPARE(w.tools()->outline().size(), 2);
+        QVERIFY2(status->text().contains(QStringLiteral("line")), qPrintable(status->text()));
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(50, 250));
+        QCOMPARE(w.tools()->outline().size(), 3);
+        QTest::keyClick(canvas, Qt::Key_Backspace);
+        QCOMPARE(w.tools()->outline().size(), 2);
+        QTest::keyClick(canvas, Qt::Key_Escape);
+        QVERIFY(w.tools()->outline().isEmpty());
+        for (const QPoint& p : {a, b, d})
+            QTest::mouseClick(canvas, Qt::LeftButton, {}, p + QPoint(-300, 0));
+        QTest::keyClick(canvas, Qt::Key_Return);
+        QCOMPARE(w.document().setup().polygons.size(), std::size_t(2));
+        QCOMPARE(w.document().setup().polygons[1].vertices.size(), std::size_t(3));
+    }
+
+    // Copy and paste: a disk and a box joined by a spring come back as a new pair under fresh
+    // ids, joined by their own spring, 0.5 m up and right, as one undo step; the clipboard
+    // holds a scene file's text, so a scene pasted as text adds its objects too.
+    void copyAndPasteObjects() {
+        MainWindow w;
+        w.show();
+        SceneDesc scene;
+        DiskDesc disk;
+        disk.id = "wheel";
+        disk.position = {0.0, 2.0};
+        disk.radius = 0.3;
+        BoxDesc box;
+        box.id = "crate";
+        box.position = {2.0, 2.0};
+        box.size = {0.5, 0.5};
+        SpringDesc spring;
+        spring.id = "link";
+        spring.a = "wheel";
+        spring.b = "crate";
+        spring.stiffness = 20.0;
+        scene.disks = {disk};
+        scene.boxes = {box};
+        scene.springs = {spring};
+        QVERIFY(w.document().loadFromDesc(scene));
+        w.document().setSelection({"wheel", "crate"});
+        w.action("copy")->trigger();
+        const int steps = w.document().undoStack()->count();
+        w.action("paste")->trigger();
+        QCOMPARE(w.document().undoStack()->count(), steps + 1);
+        const SceneDesc& s = w.document().setup();
+        QCOMPARE(s.disks.size(), std::size_t(2));
+        QCOMPARE(s.boxes.size(), std::size_t(2));
+        QCOMPARE(s.springs.size(), std::size_t(2));
+        QCOMPARE(s.disks[1].id, std::string("d0"));
+        QCOMPARE(s.boxes[1].id, std::string("b0"));
+        QCOMPARE(s.springs[1].a, std::string("d0"));
+        QCOMPARE(*s.springs[1].b, std::string("b0"));
+        QCOMPARE(s.disks[1].position[0], 0.5);
+        QCOMPARE(s.disks[1].position[1], 2.5);
+        QCOMPARE(s.disks[1].radius, 0.3);
+        QCOMPARE(w.document().selection().size(), 3);
+        // A second paste lands further on, not on the first.
+        w.action("paste")->trigger();
+        QCOMPARE(w.document().setup().disks[2].position[0], 1.0);
+        w.action("undo")->trigger();
+        w.action("undo")->trigger();
+        QCOMPARE(serialized(w), SceneIO::serialize([&] {
+                     SceneDesc original = scene;
+                     return original;
+                 }()));
+        // Cut takes the objects away (and their spring); paste brings them back.
+        w.document().setSelection({"wheel"});
+        w.action("cut")->trigger();
+        QVERIFY(w.document().setup().disks.empty());
+        QVERIFY(w.document().setup().springs.empty());
+        w.action("paste")->trigger();
+        QCOMPARE(w.document().setup().disks.size(), std::size_t(1));
+        // Plain text holding a scene pastes its objects; other text is refused with a message.
+        QGuiApplication::clipboard()->setText(QString::fromUtf8(SceneIO::serialize(scene)));
+        w.action("paste")->trigger();
+        QCOMPARE(w.document().setup().disks.size(), std::size_t(2));
+        QCOMPARE(w.document().setup().boxes.size(), std::size_t(2));
+        QGuiApplication::clipboard()->setText(QStringLiteral("not a scene"));
+        const QByteArray before = serialized(w);
+        w.action("paste")->trigger();
+        QCOMPARE(serialized(w), before);
+        const auto* status = w.findChild<QLabel*>(QStringLiteral("statusMessage"));
+        QVERIFY2(status->text().contains(QStringLiteral("clipboard")), qPrintable(status->text()));
     }
 
     void draggingAnObjectIsOneUndoStep() {

@@ -501,7 +501,7 @@ void TestSceneRenderer::overlayIsDrawn() {
     view.show();
     QVERIFY(QTest::qWaitForWindowExposed(&view));
     const QImage before = view.grab().toImage();
-    view.setOverlay({ToolOverlay::Rect, QPointF(-1.0, -1.0), QPointF(1.0, 1.0), "2 m"});
+    view.setOverlay({ToolOverlay::Rect, QPointF(-1.0, -1.0), QPointF(1.0, 1.0), "2 m", {}});
     view.setHudText("t = 3.20 s");
     const QImage after = view.grab().toImage().convertToFormat(before.format());
     int changed = 0;

@@ -8,6 +8,7 @@
 #include <QOpenGLFunctions>
 #include <QOpenGLWidget>
 #include <QPainter>
+#include <QPolygonF>
 #include <QSurfaceFormat>
 #include <QVBoxLayout>
 #include <QWheelEvent>
@@ -128,6 +129,19 @@ void drawOverlay(QPainter& p, const ViewTransform& view, const ToolOverlay& over
                 p.drawLine(b, b + u * h + n * (0.45 * h));
                 p.drawLine(b, b + u * h - n * (0.45 * h));
             }
+            break;
+        }
+        case ToolOverlay::Polyline: {
+            if (overlay.points.isEmpty()) break;
+            QPolygonF line;
+            for (const QPointF& q : overlay.points) line << view.toScreen(q);
+            line << b;
+            p.drawPolyline(line);
+            pen.setStyle(Qt::SolidLine);
+            p.setPen(pen);
+            for (const QPointF& q : std::as_const(line).first(line.size() - 1))
+                p.drawEllipse(q, 2.5 * lw, 2.5 * lw);
+            p.drawEllipse(line.front(), 6.0 * lw, 6.0 * lw);  // click here to close
             break;
         }
         case ToolOverlay::None:

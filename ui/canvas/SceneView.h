@@ -13,6 +13,7 @@
 
 #include <QCursor>
 #include <QImage>
+#include <QList>
 #include <QPointF>
 #include <QString>
 #include <QWidget>
@@ -22,13 +23,15 @@ namespace phasebox::ui {
 enum class CanvasBackend { Auto, Raster, OpenGL };
 
 // A tool's preview drawn dashed over the scene, in world coordinates: a line, a rubber band
-// (Rect with corners a and b), an arrow from a to b, a circle with centre a through b. The
-// text is written next to b (e.g. "1.20 m" or "k = 50 N/m").
+// (Rect with corners a and b), an arrow from a to b, a circle with centre a through b, an
+// outline in progress (Polyline: points joined in order, then on to b, with a ring round the
+// first point where a click closes it). The text is written next to b (e.g. "1.20 m").
 struct ToolOverlay {
-    enum Shape { None, Line, Rect, Arrow, Circle };
+    enum Shape { None, Line, Rect, Arrow, Circle, Polyline };
     Shape shape = None;
     QPointF a, b;
     QString text;
+    QList<QPointF> points;
 };
 
 class SceneView : public QWidget {

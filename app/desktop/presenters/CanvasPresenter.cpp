@@ -3,6 +3,7 @@
 #include "app/desktop/CanvasTools.h"
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
+#include "physics/scene/SceneDesc.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
 
@@ -12,6 +13,7 @@
 #include <QFileDialog>
 #include <QMessageBox>
 #include <QSettings>
+#include <QSpinBox>
 #include <QStandardPaths>
 
 #include <tuple>
@@ -54,6 +56,17 @@ void CanvasPresenter::createActions(QWidget& window) {
         group->addAction(a);
     }
     toolActions_ = group->actions();
+    auto* sides = new QSpinBox(&window);
+    sides->setObjectName(QStringLiteral("polygonSides"));
+    sides->setRange(3, SceneLimits::kMaxPolygonVertices);
+    sides->setValue(tools_.polygonSides());
+    sides->setSuffix(tr(" sides"));
+    sides->setToolTip(tr("Sides of the regular polygon the Add polygon tool draws"));
+    connect(sides, &QSpinBox::valueChanged, this, [this](int n) {
+        tools_.setPolygonSides(n);
+        tools_.setTool(CanvasTools::Tool::Polygon);
+    });
+    polygonSides_ = sides;
     connect(&tools_, &CanvasTools::toolChanged, this, [this](CanvasTools::Tool tool) {
         toolActions_[static_cast<int>(tool)]->setChecked(true);
     });

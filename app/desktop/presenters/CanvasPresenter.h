@@ -34,6 +34,8 @@ public:
     // velocity arrows, labels, grid) and the picture export.
     void createActions(QWidget& window);
     QList<QAction*> toolActions() const { return toolActions_; }
+    // The polygon tool's number of sides, for the tool bar (made by createActions).
+    QWidget* polygonSidesBox() const { return polygonSides_; }
     // Thicker lines and larger labels for a projector.
     void setPresentation(bool on);
     // The drawing options are the user's, not the scene's: they outlive the session.
@@ -58,6 +60,7 @@ private:
     CanvasTools& tools_;
     Document& document_;
     QList<QAction*> toolActions_;
+    QWidget* polygonSides_ = nullptr;
     std::vector<ViewOption> options_;
 };
 

@@ -15,6 +15,7 @@ StatusPresenter::StatusPresenter(QStatusBar& bar, Document& document,
                                  SimulationController& controller, QObject* parent)
     : Presenter(parent), document_(document), controller_(controller) {
     message_ = new QLabel(&bar);
+    message_->setObjectName(QStringLiteral("statusMessage"));
     message_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     bar.addWidget(message_, 1);
     error_ = new QLabel(&bar);
