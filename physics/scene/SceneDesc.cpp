@@ -357,6 +357,9 @@ std::string planeId(const SceneDesc& s, std::size_t i) {
 std::string springId(const SceneDesc& s, std::size_t i) {
     return defaultOr(s.springs[i].id, "s", i);
 }
+std::string jointId(const SceneDesc& s, std::size_t i) {
+    return defaultOr(s.joints[i].id, "j", i);
+}
 std::string clothNodeId(const std::string& clothId, int i, int j) {
     return clothId + "[" + std::to_string(i) + "," + std::to_string(j) + "]";
 }

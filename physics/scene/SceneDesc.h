@@ -169,6 +169,49 @@ struct SpringDesc {
     std::optional<double> restLength;  // absent = initial distance
 };
 
+// A joint (CONTRACT §6): holds body a (required) to body b (absent = the fixed world). A body
+// is a particle, box, disk, polygon or cloth node, by id; points on a body are in its own frame
+// (a particle's is ignored), `anchor` is a world point at load time.
+enum class JointType { Hinge, Rod, Rope, Weld, Pulley, Track };
+
+struct JointMotorDesc {
+    double speed = 0.0;      // rad/s: the joint angle's rate it drives toward
+    double maxTorque = 0.0;  // N·m
+};
+
+struct TrackCircleDesc {
+    Point2 center{0.0, 0.0};
+    double radius = 1.0;
+};
+
+struct TrackLineDesc {
+    Point2 point{0.0, 0.0};
+    Point2 direction{1.0, 0.0};
+};
+
+struct JointDesc {
+    std::string id;  // empty = default "j<index>"
+    JointType type = JointType::Hinge;
+    std::string a;
+    std::optional<std::string> b;  // absent = the world
+    Point2 aPoint{0.0, 0.0};
+    Point2 bPoint{0.0, 0.0};
+    // hinge: the pivot (required); rod, rope: the world end when b is absent (else a_point and
+    // b_point give the ends).
+    std::optional<Point2> anchor;
+    std::optional<double> length;  // rod, rope: absent = the initial distance
+    // hinge
+    std::optional<std::array<double, 2>> limits;  // [lower, upper] of the joint angle (rad)
+    std::optional<JointMotorDesc> motor;
+    // pulley: |ground_a − p_a| + ratio·|ground_b − p_b| stays at its initial value
+    Point2 groundA{0.0, 0.0};
+    Point2 groundB{0.0, 0.0};
+    double ratio = 1.0;
+    // track: exactly one curve; a is a particle, b absent
+    std::optional<TrackCircleDesc> circle;
+    std::optional<TrackLineDesc> line;
+};
+
 struct ClothStiffnessDesc {
     double structural = 1000.0;
     double shear = 100.0;
@@ -192,7 +235,9 @@ struct SceneDesc {
     // The newest format version this program reads; a scene is written as the oldest version
     // that holds it (formatVersion()), so scenes without version 2's kinds save unchanged.
     static constexpr int kFormatVersion = 2;
-    int formatVersion() const { return disks.empty() && polygons.empty() ? 1 : 2; }
+    int formatVersion() const {
+        return disks.empty() && polygons.empty() && joints.empty() ? 1 : 2;
+    }
 
     std::string name;
     std::string description;
@@ -205,6 +250,7 @@ struct SceneDesc {
     std::vector<PlaneDesc> planes;
     std::vector<SpringDesc> springs;
     std::vector<ClothDesc> cloths;
+    std::vector<JointDesc> joints;
 };
 
 // Default ids by position (CONTRACT.md §1, §6): p0…, b0…, d0…, poly0…, plane0…, s0….
@@ -221,6 +267,7 @@ void recentrePolygons(SceneDesc& scene);
 std::string planeId(const SceneDesc& scene, std::size_t index);
 std::string springId(const SceneDesc& scene, std::size_t index);
 std::string clothNodeId(const std::string& clothId, int i, int j);
+std::string jointId(const SceneDesc& scene, std::size_t index);
 
 // Sizes past which a scene is refused: far beyond what runs interactively on a laptop, and
 // small enough that a hostile file cannot exhaust memory or hang the program.
