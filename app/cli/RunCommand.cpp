@@ -260,7 +260,7 @@ private:
 };
 
 void writeCsvHeader(QTextStream& s, const std::vector<Tracked>& tracked) {
-    // CONTRACT §4 and §6; constraint_error is 0 until the scene format has joints.
+    // CONTRACT §4 and §6; constraint_error is the joints' largest positional error (0 without).
     s << "t,kinetic,potential,work_nc,drift,correction,constraint_error";
     for (const Tracked& t : tracked) {
         const QStringList cols = t.isBox ? QStringList{"x", "y", "angle", "vx", "vy", "omega"}
@@ -274,7 +274,7 @@ void writeCsvRow(QTextStream& s, const World& world, const std::vector<Tracked>&
     const EnergyLedger& e = world.energy();
     s << formatNumber(world.time()) << ',' << formatNumber(e.kinetic) << ','
       << formatNumber(e.potential) << ',' << formatNumber(e.workNc) << ',' << formatNumber(e.drift)
-      << ',' << formatNumber(e.correction) << ",0";
+      << ',' << formatNumber(e.correction) << ',' << formatNumber(world.jointErrors().position);
     for (const Tracked& t : tracked) {
         if (t.isBox) {
             const Vec2 p = world.boxPosition(t.index), v = world.boxVelocity(t.index);
@@ -441,6 +441,8 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     const auto wallStart = Clock::now();
     long long done = 0;
     bool diverged = false;
+    // The joints' largest errors over the run, at the end of every step (CONTRACT §6).
+    JointErrors worstJoint;
     for (long long k = 1; k <= steps; ++k) {
         const auto start = Clock::now();
         const bool ok = world.step();
@@ -454,6 +456,11 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             break;
         }
         done = k;
+        if (world.jointSolver()) {
+            const JointErrors now = world.jointErrors();
+            worstJoint.position = std::max(worstJoint.position, now.position);
+            worstJoint.angle = std::max(worstJoint.angle, now.angle);
+        }
         if (!o.csv.isEmpty() && (k % o.every == 0 || k == steps))
             writeCsvRow(csv.stream(), world, tracked);
         if (plotting && (energy.due(k) || k == steps)) sample();
@@ -524,6 +531,10 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             {"objects", objectsJson(world)},
             {"force_evaluations", static_cast<double>(world.forceEvaluations())},
         };
+        if (world.jointSolver())
+            report.insert("constraints", QJsonObject{{"max_error", worstJoint.position},
+                                                     {"final_error", world.jointErrors().position},
+                                                     {"max_angle_error", worstJoint.angle}});
         if (world.integrator().info().implicit) {
             // The implicit solve's work: Newton iterations, linear solves and (for large systems)
             // conjugate-gradient iterations per step, and the last relative residual.
@@ -562,6 +573,10 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             << QString::number(e.correction, 'g', 6) << " J\n"
             << "drift:      " << QString::number(e.drift, 'g', 3) << " J (largest |drift| "
             << QString::number(e.maxAbsDrift, 'g', 3) << " J)\n";
+        if (world.jointSolver())
+            out << "joints:     largest error " << QString::number(worstJoint.position, 'g', 3)
+                << " m, " << QString::number(worstJoint.angle, 'g', 3) << " rad; at the end "
+                << QString::number(world.jointErrors().position, 'g', 3) << " m\n";
         out << "effects:   ";
         if (world.effectCosts().empty()) out << " none";
         for (const EffectCost& cost : world.effectCosts())

@@ -44,6 +44,8 @@ const char* pairHint(schema::Type type) {
             return "[nx, ny]";
         case schema::Type::Pinning:
             return "[i, j]";
+        case schema::Type::Interval:
+            return "[lower, upper]";
         default:
             return kXY;
     }
@@ -122,6 +124,7 @@ public:
     void failFile(const QString& what) { errors_ << source_ + QStringLiteral(": ") + what; }
 
     bool clean() const { return errors_.isEmpty(); }
+    qsizetype errorCount() const { return errors_.size(); }
     QStringList takeErrors() { return std::exchange(errors_, {}); }
 
     // A key that is close to a known one is a typo that would silently drop a value (a
@@ -264,10 +267,28 @@ public:
         const QJsonValue v = get(key, need);
         if (!v.isUndefined()) r_.pair(v, at(key), out, hint);
     }
-    void point(std::string_view key, std::optional<Point2>& out) {
+    void point(std::string_view key, std::optional<Point2>& out, const char* hint = kXY) {
         const QJsonValue v = get(key);
         Point2 p{0.0, 0.0};
-        if (!v.isUndefined() && r_.pair(v, at(key), p, kXY)) out = p;
+        if (!v.isUndefined() && r_.pair(v, at(key), p, hint)) out = p;
+    }
+    // One of choices by name, stored as the enum value of its index.
+    template <typename E>
+    void choice(std::string_view key, E& out, std::span<const std::string_view> choices,
+                Need need) {
+        const QJsonValue v = get(key, need);
+        if (v.isUndefined()) return;
+        const std::string name = v.toString().toStdString();
+        const auto it = std::find(choices.begin(), choices.end(), name);
+        if (v.isString() && it != choices.end()) {
+            out = static_cast<E>(it - choices.begin());
+            return;
+        }
+        QStringList names;
+        for (std::string_view c : choices) names << toQString(c);
+        QString what = QStringLiteral("must be one of ") + names.join(QStringLiteral(", "));
+        if (v.isString()) what += QStringLiteral(" (got \"%1\")").arg(v.toString());
+        r_.fail(at(key), what);
     }
     // A nested object with its own keys; nullopt when absent or not an object.
     std::optional<Fields> object(std::string_view key, KeyList known) {
@@ -350,12 +371,17 @@ void readPinning(Fields& f, std::string_view key, schema::Pinning& pinned) {
     pinned = std::move(nodes);
 }
 
-// Every field of d's table, in its order. Absent fields keep d's value, the default.
+// Every field of d's table, in its order. Absent fields keep d's value, the default. A field
+// that d does not use (Field::uses, decided by the fields before it) is not required, and is
+// refused when given.
 template <typename D>
 void readFields(Fields& f, D& d) {
+    const qsizetype errorsBefore = f.reader().errorCount();
     for (const schema::Field<D>& field : schema::table<D>().fields) {
         const std::string_view key = field.key;
-        const Need need = field.need == schema::Need::Required ? Need::Required : Need::Optional;
+        const bool used = !field.uses || field.uses(d);
+        const Need need =
+            field.need == schema::Need::Required && used ? Need::Required : Need::Optional;
         if (!field.exclusiveWith.empty() && f.has(key) && f.has(field.exclusiveWith))
             f.reader().fail(f.path(), QStringLiteral("give %1 or %2, not both")
                                           .arg(toQString(key), toQString(field.exclusiveWith)));
@@ -378,13 +404,22 @@ void readFields(Fields& f, D& d) {
                 } else if constexpr (std::is_same_v<V, Point2>) {
                     f.point(key, v, need, pairHint(field.type));
                 } else if constexpr (std::is_same_v<V, std::optional<Point2>>) {
-                    f.point(key, v);
+                    f.point(key, v, pairHint(field.type));
                 } else if constexpr (std::is_same_v<V, std::array<int, 2>>) {
                     if (const QJsonValue value = f.get(key); !value.isUndefined())
                         f.reader().intPair(value, f.at(key), v, pairHint(field.type));
-                } else if constexpr (std::is_same_v<V, ClothStiffnessDesc>) {
+                } else if constexpr (std::is_enum_v<V>) {
+                    f.choice(key, v, field.choices, need);
+                } else if constexpr (schema::Described<V>) {
                     if (auto nested = f.object(key, schema::keysOf(schema::table<V>())))
                         readFields(*nested, v);
+                } else if constexpr (schema::OptionalDescribed<V>) {
+                    using Nested = typename V::value_type;
+                    if (auto nested = f.object(key, schema::keysOf(schema::table<Nested>()))) {
+                        Nested value;
+                        readFields(*nested, value);
+                        v = std::move(value);
+                    }
                 } else if constexpr (std::is_same_v<V, std::vector<AttractorDesc>>) {
                     readObjects(f, key, v);
                 } else if constexpr (std::is_same_v<V, schema::Pinning>) {
@@ -402,6 +437,13 @@ void readFields(Fields& f, D& d) {
             },
             field.member);
     }
+    // What d uses depends on fields read above (a joint's type); after an error there they
+    // hold defaults, which would make a correct key look out of place.
+    if (f.reader().errorCount() != errorsBefore) return;
+    for (const schema::Field<D>& field : schema::table<D>().fields)
+        if (field.uses && f.has(field.key) && !field.uses(d))
+            f.reader().fail(f.at(field.key),
+                            QStringLiteral("is only for ") + toQString(field.usedBy));
 }
 
 // An effect is present when given as an object (its fields) or as true (all defaults); false

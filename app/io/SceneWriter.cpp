@@ -194,8 +194,13 @@ void writeFields(Writer& w, const D& d) {
                     w.point(*v);
                 else if constexpr (std::is_same_v<V, std::array<int, 2>>)
                     w.intPair(v);
-                else if constexpr (std::is_same_v<V, ClothStiffnessDesc>)
+                else if constexpr (std::is_enum_v<V>) {
+                    const auto index = static_cast<std::size_t>(v);
+                    w.string(index < field.choices.size() ? field.choices[index] : "");
+                } else if constexpr (schema::Described<V>)
                     writeFields(w, v);
+                else if constexpr (schema::OptionalDescribed<V>)
+                    writeFields(w, *v);
                 else if constexpr (std::is_same_v<V, std::vector<AttractorDesc>>) {
                     w.beginArray();
                     for (const AttractorDesc& item : v) writeFields(w, item);

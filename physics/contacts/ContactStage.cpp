@@ -39,6 +39,31 @@ void ContactStage::bind(const Bodies& bodies) {
                                                                      : Collider::Kind::Box;
         colliders_.push_back({kind, i, b.dof, b.friction, b.restitution, true});
     }
+    // Two bodies a joint holds do not collide (CONTRACT §6).
+    jointedPairs_.clear();
+    if (!bodies.joints.empty()) {
+        std::vector<int> particleCollider(particles.size(), -1), rigidCollider(boxes.size(), -1);
+        for (int c = 0; c < static_cast<int>(colliders_.size()); ++c)
+            (colliders_[c].rigid ? rigidCollider : particleCollider)[colliders_[c].object] = c;
+        const auto colliderOf = [&](const JointBody& body) {
+            switch (body.kind) {
+                case JointBody::Kind::Particle:
+                    return particleCollider[body.index];
+                case JointBody::Kind::Rigid:
+                    return rigidCollider[body.index];
+                case JointBody::Kind::World:
+                    break;
+            }
+            return -1;
+        };
+        for (const Joint& j : bodies.joints) {
+            const int a = colliderOf(j.a), b = colliderOf(j.b);
+            if (a < 0 || b < 0) continue;
+            jointedPairs_.push_back((static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+                                    static_cast<std::uint64_t>(std::max(a, b)));
+        }
+        std::sort(jointedPairs_.begin(), jointedPairs_.end());
+    }
     planes_.clear();
     planeFriction_.clear();
     planeRestitution_.clear();
@@ -210,6 +235,11 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
         const Collider& a = colliders_[i];
         const Collider& b = colliders_[j];
         if (a.dof < 0 && b.dof < 0) continue;
+        if (!jointedPairs_.empty() &&
+            std::binary_search(jointedPairs_.begin(), jointedPairs_.end(),
+                               (static_cast<std::uint64_t>(std::min(i, j)) << 32) |
+                                   static_cast<std::uint64_t>(std::max(i, j))))
+            continue;
         const double margin = settings.speculativeDistance + sweep[i] + sweep[j];
         const double friction = std::sqrt(a.friction * b.friction);
         double restitution = std::max(a.restitution, b.restitution);

@@ -87,6 +87,8 @@ private:
     std::vector<double> planeFriction_, planeRestitution_;
     std::vector<int> bodyOfCollider_;  // solver body index in this step, −1 none yet
     std::vector<ContactConstraint> previous_;
+    // Collider pairs (lower index first, as one key) held by a joint: they never collide.
+    std::vector<std::uint64_t> jointedPairs_;
     BroadPhase broadPhase_;
     ContactSolver solver_;
 };

@@ -85,6 +85,39 @@ struct Cloth {
     int springCount = 0;
 };
 
+// One body a joint holds: a particle (or cloth node), a rigid body, or the fixed world; the
+// point is in the body's own frame (a particle's is unused), or a world point for the world.
+struct JointBody {
+    enum class Kind : unsigned char { Particle, Rigid, World };
+    Kind kind = Kind::World;
+    int index = -1;        // particle or rigid body (Box record) index
+    Vec2 point{0.0, 0.0};  // in the body's frame; for the world, where it is
+};
+
+// A joint (CONTRACT §6). Equality joints (hinge, rod, weld, pulley, track, and a rope while it
+// is taut) enter every derivative evaluation as constraint forces; a hinge's limits and motor
+// act after the step (JointSolver).
+struct Joint {
+    enum class Type : unsigned char { Hinge, Rod, Rope, Weld, Pulley, Track };
+    std::string id;
+    Type type = Type::Hinge;
+    JointBody a, b;
+    double length = 0.0;  // rod, rope; pulley: the constant |ga − pa| + ratio·|gb − pb|
+    double referenceAngle = 0.0;  // hinge, weld: θb − θa at load
+    Vec2 offset{0.0, 0.0};        // hinge, weld: pa − pb kept (nonzero only between particles)
+    bool hasLimits = false;
+    double lower = 0.0, upper = 0.0;  // hinge: bounds of θb − θa − referenceAngle
+    bool hasMotor = false;
+    double motorSpeed = 0.0, maxMotorTorque = 0.0;
+    Vec2 groundA{0.0, 0.0}, groundB{0.0, 0.0};  // pulley
+    double ratio = 1.0;
+    // track: a circle (centre, radius) or a line (point, unit normal)
+    bool circle = true;
+    Vec2 center{0.0, 0.0};
+    double radius = 0.0;
+    Vec2 linePoint{0.0, 0.0}, lineNormal{0.0, 1.0};
+};
+
 // Every object of a world, by kind, in the order added (the scene file's order).
 struct Bodies {
     std::vector<Particle> particles;
@@ -92,6 +125,7 @@ struct Bodies {
     std::vector<Plane> planes;
     std::vector<Spring> springs;
     std::vector<Cloth> cloths;
+    std::vector<Joint> joints;
 };
 
 }  // namespace phasebox

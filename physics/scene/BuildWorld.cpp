@@ -300,6 +300,100 @@ BuildResult buildWorld(const SceneDesc& setup) {
         world.addSpring(s);
     }
 
+    // Joints: their points are resolved against the bodies where the scene sets them.
+    const auto position = [&](const JointBody& body) -> Vec2 {
+        switch (body.kind) {
+            case JointBody::Kind::Particle:
+                return world.particles()[body.index].position;
+            case JointBody::Kind::Rigid: {
+                const Box& b = world.boxes()[body.index];
+                return b.position + rotation(b.angle) * body.point;
+            }
+            case JointBody::Kind::World:
+                break;
+        }
+        return body.point;
+    };
+    const auto angle = [&](const JointBody& body) {
+        return body.kind == JointBody::Kind::Rigid ? world.boxes()[body.index].angle : 0.0;
+    };
+    // The point of body at a world point w (a rigid body's frame; the world's is w itself).
+    const auto pointAt = [&](JointBody& body, const Vec2& w) {
+        if (body.kind == JointBody::Kind::Rigid) {
+            const Box& b = world.boxes()[body.index];
+            body.point = rotation(-b.angle) * (w - b.position);
+        } else if (body.kind == JointBody::Kind::World) {
+            body.point = w;
+        }
+    };
+    for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+        const JointDesc& d = scene.joints[i];
+        Joint j;
+        j.id = jointId(scene, i);
+        const auto body = [&](const std::string& id, const Point2& point) {
+            const SpringEnd& e = ends.at(id);
+            return e.kind == SpringEnd::Kind::Particle
+                       ? JointBody{JointBody::Kind::Particle, e.index, Vec2::Zero()}
+                       : JointBody{JointBody::Kind::Rigid, e.index, vec(point)};
+        };
+        j.a = body(d.a, d.aPoint);
+        j.b = d.b ? body(*d.b, d.bPoint)
+                  : JointBody{JointBody::Kind::World, -1, d.anchor ? vec(*d.anchor) : Vec2::Zero()};
+        switch (d.type) {
+            case JointType::Hinge:
+            case JointType::Weld: {
+                j.type = d.type == JointType::Hinge ? Joint::Type::Hinge : Joint::Type::Weld;
+                // A hinge's pivot is its anchor; a weld holds at a's centre.
+                const Vec2 pivot = d.type == JointType::Hinge && d.anchor
+                                       ? vec(*d.anchor)
+                                       : position(JointBody{j.a.kind, j.a.index, Vec2::Zero()});
+                pointAt(j.a, pivot);
+                pointAt(j.b, pivot);
+                j.offset = position(j.a) - position(j.b);  // nonzero only for particle ends
+                j.referenceAngle = angle(j.b) - angle(j.a);
+                if (d.limits) {
+                    j.hasLimits = true;
+                    j.lower = (*d.limits)[0];
+                    j.upper = (*d.limits)[1];
+                }
+                if (d.motor) {
+                    j.hasMotor = true;
+                    j.motorSpeed = d.motor->speed;
+                    j.maxMotorTorque = d.motor->maxTorque;
+                }
+                break;
+            }
+            case JointType::Rod:
+            case JointType::Rope:
+                j.type = d.type == JointType::Rod ? Joint::Type::Rod : Joint::Type::Rope;
+                j.length = d.length ? *d.length : (position(j.a) - position(j.b)).norm();
+                break;
+            case JointType::Pulley:
+                j.type = Joint::Type::Pulley;
+                j.groundA = vec(d.groundA);
+                j.groundB = vec(d.groundB);
+                j.ratio = d.ratio;
+                j.length = (position(j.a) - j.groundA).norm() +
+                           j.ratio * (position(j.b) - j.groundB).norm();
+                break;
+            case JointType::Track:
+                j.type = Joint::Type::Track;
+                j.b = JointBody{};
+                if (d.circle) {
+                    j.circle = true;
+                    j.center = vec(d.circle->center);
+                    j.radius = d.circle->radius;
+                } else if (d.line) {
+                    j.circle = false;
+                    j.linePoint = vec(d.line->point);
+                    const Vec2 dir = vec(d.line->direction).normalized();
+                    j.lineNormal = Vec2(-dir.y(), dir.x());
+                }
+                break;
+        }
+        world.addJoint(j);
+    }
+
     const SimulationDesc& sim = scene.simulation;
     world.setSettings({sim.integrator, sim.dt, sim.substeps, sim.tolerance, sim.newtonIterations,
                        contactSettings(sim.solver)});

@@ -5,11 +5,15 @@
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/SceneSchema.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
+#include <span>
 #include <sstream>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace phasebox {
@@ -154,6 +158,19 @@ void checkDirection(Checker& check, const std::string& path, const Point2& p) {
                              fmt(L::kMinNormalLength) + ")");
 }
 
+// [lower, upper] (a hinge's limits): each number has had its range checked.
+void checkInterval(Checker& check, const std::string& path, const Point2& p) {
+    if (std::isfinite(p[0]) && std::isfinite(p[1]) && p[0] > p[1])
+        check.fail(path, "must be [lower, upper] with lower <= upper (got [" + fmt(p[0]) + ", " +
+                             fmt(p[1]) + "])");
+}
+
+std::string joinNames(std::span<const std::string_view> names) {
+    std::string out;
+    for (std::string_view name : names) out += (out.empty() ? "" : ", ") + std::string(name);
+    return out;
+}
+
 // The contact solver's settings (engine-defined); others are ignored like any unknown key.
 void checkSolver(Checker& check, const std::string& path,
                  const std::map<std::string, double>& solver) {
@@ -243,11 +260,19 @@ void checkFields(Checker& check, const std::string& path, const D& d) {
                         for (std::size_t k = 0; k < 2; ++k)
                             checkNumber(check, here + "[" + std::to_string(k) + "]", pair[k],
                                         f.range);
-                        if constexpr (!std::is_same_v<V, std::array<int, 2>>)
+                        if constexpr (!std::is_same_v<V, std::array<int, 2>>) {
                             if (f.rule == schema::Rule::NonZeroDirection)
                                 checkDirection(check, here, pair);
-                    } else if constexpr (std::is_same_v<V, ClothStiffnessDesc>) {
+                            if (f.type == schema::Type::Interval) checkInterval(check, here, pair);
+                        }
+                    } else if constexpr (schema::Described<V>) {
                         checkFields(check, here, v);
+                    } else if constexpr (schema::OptionalDescribed<V>) {
+                        checkFields(check, here, *v);
+                    } else if constexpr (std::is_enum_v<V>) {
+                        // Only a description made in code can hold a value past the names.
+                        if (static_cast<std::size_t>(v) >= f.choices.size())
+                            check.fail(here, "must be one of " + joinNames(f.choices));
                     } else if constexpr (std::is_same_v<V, std::vector<AttractorDesc>>) {
                         for (std::size_t i = 0; i < v.size(); ++i)
                             checkFields(check, at(here, i), v[i]);
@@ -344,9 +369,14 @@ void recentrePolygons(SceneDesc& scene) {
         p.position = {p.position[0] + rc[0], p.position[1] + rc[1]};
         p.velocity = {p.velocity[0] - p.angularVelocity * rc[1],
                       p.velocity[1] + p.angularVelocity * rc[0]};
+        const auto shift = [&](Point2& q) { q = {q[0] - c[0], q[1] - c[1]}; };
         for (SpringDesc& s : scene.springs) {
-            if (s.a == id) s.aPoint = {s.aPoint[0] - c[0], s.aPoint[1] - c[1]};
-            if (s.b && *s.b == id) s.bPoint = {s.bPoint[0] - c[0], s.bPoint[1] - c[1]};
+            if (s.a == id) shift(s.aPoint);
+            if (s.b && *s.b == id) shift(s.bPoint);
+        }
+        for (JointDesc& j : scene.joints) {
+            if (j.a == id) shift(j.aPoint);
+            if (j.b && *j.b == id) shift(j.bPoint);
         }
     }
 }
@@ -363,6 +393,189 @@ std::string jointId(const SceneDesc& s, std::size_t i) {
 std::string clothNodeId(const std::string& clothId, int i, int j) {
     return clothId + "[" + std::to_string(i) + "," + std::to_string(j) + "]";
 }
+
+bool clothNodePinned(const ClothDesc& cloth, int i, int j) {
+    if (const auto* mode = std::get_if<std::string>(&cloth.pinned)) {
+        if (*mode == "top") return j == 0;
+        if (*mode == "top_corners") return j == 0 && (i == 0 || i == cloth.resolution[0] - 1);
+        if (*mode == "left") return i == 0;
+        return false;
+    }
+    const auto& nodes = std::get<std::vector<std::array<int, 2>>>(cloth.pinned);
+    return std::find(nodes.begin(), nodes.end(), std::array<int, 2>{i, j}) != nodes.end();
+}
+
+namespace {
+
+// A body as the joint checks see it at load: where it is, and whether it moves and turns.
+struct BodyAtLoad {
+    Point2 position{0.0, 0.0};
+    double angle = 0.0;
+    bool rigid = false;  // a box, disk or polygon: it has a frame and turns
+    bool fixed = false;  // pinned or static
+
+    bool turns() const { return rigid && !fixed; }
+    // Where a point given in the body's own frame is (a particle has no frame: its position).
+    Point2 pointAt(const Point2& local) const {
+        if (!rigid) return position;
+        const double c = std::cos(angle), s = std::sin(angle);
+        return {position[0] + c * local[0] - s * local[1],
+                position[1] + s * local[0] + c * local[1]};
+    }
+    std::string fixedWord() const { return rigid ? "static" : "pinned"; }
+};
+
+// Finds bodies by id, cloth nodes included, without listing every node of every cloth.
+class BodiesAtLoad {
+public:
+    explicit BodiesAtLoad(const SceneDesc& scene) : scene_(scene) {
+        for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+            const ParticleDesc& p = scene.particles[i];
+            bodies_[particleId(scene, i)] = {p.position, 0.0, false, p.pinned};
+        }
+        const auto rigid = [&](const RigidDesc& d, std::string id) {
+            bodies_[std::move(id)] = {d.position, d.angle, true, d.isStatic};
+        };
+        for (std::size_t i = 0; i < scene.boxes.size(); ++i) rigid(scene.boxes[i], boxId(scene, i));
+        for (std::size_t i = 0; i < scene.disks.size(); ++i)
+            rigid(scene.disks[i], diskId(scene, i));
+        for (std::size_t i = 0; i < scene.polygons.size(); ++i)
+            rigid(scene.polygons[i], polygonId(scene, i));
+        for (std::size_t c = 0; c < scene.cloths.size(); ++c) cloths_[scene.cloths[c].id] = c;
+    }
+
+    // nullopt for an id that is not a body.
+    std::optional<BodyAtLoad> find(const std::string& id) const {
+        if (const auto it = bodies_.find(id); it != bodies_.end()) return it->second;
+        // A cloth node: ID[i,j]. The cloth's id may itself hold brackets, the node's are last.
+        const std::size_t open = id.rfind('[');
+        if (open == std::string::npos || id.back() != ']') return std::nullopt;
+        const auto cloth = cloths_.find(id.substr(0, open));
+        if (cloth == cloths_.end()) return std::nullopt;
+        int i = -1, j = -1;
+        const char* end = id.data() + id.size() - 1;
+        const auto [comma, ok] = std::from_chars(id.data() + open + 1, end, i);
+        if (ok != std::errc() || comma == end || *comma != ',' ||
+            std::from_chars(comma + 1, end, j).ptr != end)
+            return std::nullopt;
+        const ClothDesc& cl = scene_.cloths[cloth->second];
+        const int nx = cl.resolution[0], ny = cl.resolution[1];
+        if (i < 0 || i >= nx || j < 0 || j >= ny || nx < 2 || ny < 2) return std::nullopt;
+        const Point2 position{cl.origin[0] + i * cl.size[0] / (nx - 1),
+                              cl.origin[1] - j * cl.size[1] / (ny - 1)};
+        return BodyAtLoad{position, 0.0, false, clothNodePinned(cl, i, j)};
+    }
+
+private:
+    const SceneDesc& scene_;
+    std::unordered_map<std::string, BodyAtLoad> bodies_;
+    std::unordered_map<std::string, std::size_t> cloths_;
+};
+
+bool finitePoint(const Point2& p) {
+    return std::isfinite(p[0]) && std::isfinite(p[1]);
+}
+
+// Whether two points computed from the setup are one, up to the rounding of computing them.
+bool samePoint(const Point2& p, const Point2& q) {
+    if (!finitePoint(p) || !finitePoint(q)) return false;  // the ranges report those
+    const double scale =
+        std::max({1.0, std::abs(p[0]), std::abs(p[1]), std::abs(q[0]), std::abs(q[1])});
+    return std::hypot(p[0] - q[0], p[1] - q[1]) <= 1e-12 * scale;
+}
+
+// The joints (CONTRACT §6): their ids and bodies, then what each type needs of its fields and of
+// the setup. claim and reference are validateScene's, for the ids.
+template <typename Claim, typename Reference>
+void checkJoints(Checker& check, const SceneDesc& scene, Claim& claim, Reference& reference) {
+    namespace key = schema::key;
+    const BodiesAtLoad bodies(scene);
+    const std::string_view holds = "joints hold";
+    for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+        const JointDesc& j = scene.joints[i];
+        const std::string path = at(key::joints, i);
+        const auto here = [&](std::string_view field) { return join(path, field); };
+        claim(path, jointId(scene, i), false, j.id.empty());
+        bool aKnown = false, bKnown = false;
+        if (j.a.empty())
+            check.fail(here(key::a), "is required");
+        else
+            aKnown = reference(here(key::a), j.a, holds);
+        if (j.b) bKnown = reference(here(key::b), *j.b, holds);
+        if (j.b && *j.b == j.a) {
+            check.fail(here(key::b), "must differ from a");
+            bKnown = false;
+        }
+        checkFields(check, path, j);
+        if (static_cast<std::size_t>(j.type) >= std::size(schema::kJointTypeNames)) continue;
+
+        // The two ends; b absent is the fixed world. Rules about the setup need both known.
+        const std::optional<BodyAtLoad> a = aKnown ? bodies.find(j.a) : std::nullopt;
+        const std::optional<BodyAtLoad> b = bKnown ? bodies.find(*j.b) : std::nullopt;
+        const bool endsKnown = a && (!j.b || b);
+        if (endsKnown && a->fixed && (!b || b->fixed))
+            check.fail(path, "a joint needs a dynamic body: \"" + j.a + "\" is " + a->fixedWord() +
+                                 " and " +
+                                 (b ? "\"" + *j.b + "\" is " + b->fixedWord() : "b is the world"));
+
+        switch (j.type) {
+            case JointType::Hinge:
+                if (!j.anchor) check.fail(here(key::anchor), "is required");
+                // The joint angle is θb − θa: with no body that turns it never changes.
+                if (endsKnown && !a->turns() && !(b && b->turns()))
+                    for (const auto& [field, given] : {std::pair{key::limits, j.limits.has_value()},
+                                                       std::pair{key::motor, j.motor.has_value()}})
+                        if (given)
+                            check.fail(here(field),
+                                       "neither body can turn, so the joint angle cannot change; "
+                                       "limits and a motor need a dynamic box, disk or polygon");
+                break;
+            case JointType::Rod:
+            case JointType::Rope:
+                if (j.b && j.anchor) {
+                    check.fail(path, "has both b and anchor; give one");
+                } else if (!j.b && !j.anchor) {
+                    check.fail(path, "needs either b (an object id) or anchor [x, y]");
+                } else if (endsKnown && !j.length) {
+                    const Point2 pb = b ? b->pointAt(j.bPoint) : *j.anchor;
+                    if (samePoint(a->pointAt(j.aPoint), pb))
+                        check.fail(path,
+                                   "its two ends start at the same point, so its length would be "
+                                   "0; give a length > 0");
+                }
+                break;
+            case JointType::Pulley:
+                if (!j.b) {
+                    check.fail(here(key::b), "is required: a pulley holds two bodies");
+                } else if (endsKnown) {
+                    const std::string atLoad =
+                        " at load, so the rope there would have no direction";
+                    if (samePoint(j.groundA, a->pointAt(j.aPoint)))
+                        check.fail(here(key::groundA), "is where the point on a is" + atLoad);
+                    if (samePoint(j.groundB, b->pointAt(j.bPoint)))
+                        check.fail(here(key::groundB), "is where the point on b is" + atLoad);
+                }
+                break;
+            case JointType::Track:
+                if (a && a->rigid)
+                    check.fail(here(key::a),
+                               "\"" + j.a +
+                                   "\" is not a particle; a track holds a particle or "
+                                   "a cloth node");
+                if (j.b) check.fail(here(key::b), "a track has no b: it holds a on a fixed curve");
+                if (j.circle && j.line)
+                    check.fail(path, "has both circle and line; give one");
+                else if (!j.circle && !j.line)
+                    check.fail(path,
+                               "needs either circle {center, radius} or line {point, direction}");
+                break;
+            case JointType::Weld:
+                break;
+        }
+    }
+}
+
+}  // namespace
 
 std::vector<SceneIssue> validatePolygonVertices(const std::vector<Point2>& vertices,
                                                 const std::string& path) {
@@ -418,10 +631,14 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     if (static_cast<long long>(scene.planes.size()) > SceneLimits::kMaxPlanes)
         check.fail(std::string(key::planes),
                    "at most " + std::to_string(SceneLimits::kMaxPlanes) + " planes are allowed");
+    if (static_cast<long long>(scene.joints.size()) > SceneLimits::kMaxJoints)
+        check.fail(std::string(key::joints),
+                   "at most " + std::to_string(SceneLimits::kMaxJoints) + " joints are allowed");
     if (!issues.empty() && (particleCount > SceneLimits::kMaxParticles)) return issues;
 
-    // ids: unique across the scene (cloth node ids included); springs may refer to particles,
-    // boxes, disks and cloth nodes. Each id remembers who holds it, for the messages.
+    // ids: unique across the scene (cloth node ids included); springs and joints may refer to
+    // particles, boxes, disks, polygons and cloth nodes. Each id remembers who holds it, for the
+    // messages.
     std::map<std::string, std::string> ids;  // id → path of its holder
     std::unordered_set<std::string> bodies;
     auto claim = [&](const std::string& path, const std::string& id, bool body, bool isDefault) {
@@ -480,34 +697,35 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
                 for (int i = 0; i < cl.resolution[0]; ++i)
                     claim(path, clothNodeId(cl.id, i, j), true, false);
     }
+    // Whether id names a body; if not, says so at where. what: who refers to it, and to what.
+    auto reference = [&](const std::string& where, const std::string& id, std::string_view what) {
+        if (bodies.count(id)) return true;
+        const auto it = ids.find(id);
+        if (it == ids.end())
+            check.fail(where, "unknown object id \"" + id + "\"");
+        else
+            check.fail(where, "\"" + id + "\" is " + it->second + "; " + std::string(what) +
+                                  " particles, boxes, disks, polygons and cloth nodes");
+        return false;
+    };
     for (std::size_t i = 0; i < scene.springs.size(); ++i) {
         const SpringDesc& s = scene.springs[i];
         const std::string path = at(key::springs, i);
         claim(path, springId(scene, i), false, s.id.empty());
-        auto reference = [&](const std::string& where, const std::string& id) {
-            if (bodies.count(id)) return;
-            const auto it = ids.find(id);
-            if (it == ids.end())
-                check.fail(where, "unknown object id \"" + id + "\"");
-            else
-                check.fail(
-                    where,
-                    "\"" + id + "\" is " + it->second +
-                        "; springs attach to particles, boxes, disks, polygons and cloth nodes");
-        };
         const std::string a = join(path, key::a), b = join(path, key::b);
         if (s.a.empty())
             check.fail(a, "is required");
         else
-            reference(a, s.a);
+            reference(a, s.a, "springs attach to");
         if (s.b && s.anchor)
             check.fail(path, "has both b and anchor; give one");
         else if (!s.b && !s.anchor)
             check.fail(path, "needs either b (an object id) or anchor [x, y]");
-        if (s.b) reference(b, *s.b);
+        if (s.b) reference(b, *s.b, "springs attach to");
         if (s.b && *s.b == s.a) check.fail(b, "must differ from a");
         checkFields(check, path, s);
     }
+    if (!scene.joints.empty()) checkJoints(check, scene, claim, reference);
     return issues;
 }
 

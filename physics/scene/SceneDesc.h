@@ -261,12 +261,15 @@ std::string polygonId(const SceneDesc& scene, std::size_t index);
 
 // CONTRACT §6: a polygon's state is its centroid's. Moves each polygon whose vertices are not
 // centred on its origin (beyond 1e-12 of its size) so that they are: vertices and the points
-// springs attach to shift by −c, its position by R(angle)·c, its velocity by ω × R(angle)·c.
+// springs and joints attach to shift by −c, its position by R(angle)·c, its velocity by
+// ω × R(angle)·c.
 // Call on a valid scene (the reader does, after validating).
 void recentrePolygons(SceneDesc& scene);
 std::string planeId(const SceneDesc& scene, std::size_t index);
 std::string springId(const SceneDesc& scene, std::size_t index);
 std::string clothNodeId(const std::string& clothId, int i, int j);
+// Whether node (i, j) of the cloth is pinned by its `pinned` mode or list.
+bool clothNodePinned(const ClothDesc& cloth, int i, int j);
 std::string jointId(const SceneDesc& scene, std::size_t index);
 
 // Sizes past which a scene is refused: far beyond what runs interactively on a laptop, and
@@ -277,6 +280,7 @@ struct SceneLimits {
     static constexpr int kMaxPolygonVertices = 16;
     static constexpr long long kMaxSprings = 4'000'000;
     static constexpr long long kMaxPlanes = 1'000;
+    static constexpr long long kMaxJoints = 1'000'000;
     static constexpr int kMaxSubsteps = 10'000;
     static constexpr int kMaxNewtonIterations = 100;
 

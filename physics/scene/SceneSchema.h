@@ -9,13 +9,15 @@
 //
 // Defaults are not repeated here: they are the Desc structs' member initialisers (SceneDesc.h),
 // reached through the same member pointers from a default-made Desc. Rules that tie fields together
-// (a spring's ends, unique ids, a cloth's pinning) stay in validateScene(), which names them by
-// these keys.
+// (a spring's ends, unique ids, a cloth's pinning, what a joint's type needs of its bodies) stay
+// in validateScene(), which names them by these keys.
 
 #include "physics/core/EffectNames.h"
 #include "physics/scene/SceneDesc.h"
 
+#include <iterator>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <type_traits>
@@ -44,6 +46,7 @@ inline constexpr std::string_view planes = "planes";
 // the array that implies the spring effect, which is named after it
 inline constexpr std::string_view springs = effectName::springs;
 inline constexpr std::string_view cloths = "cloths";
+inline constexpr std::string_view joints = "joints";
 // simulation, and its contact solver settings
 inline constexpr std::string_view integrator = "integrator";
 inline constexpr std::string_view dt = "dt";
@@ -115,7 +118,26 @@ inline constexpr std::string_view resolution = "resolution";
 inline constexpr std::string_view structural = "structural";
 inline constexpr std::string_view shear = "shear";
 inline constexpr std::string_view bend = "bend";
+// joint fields (CONTRACT §6)
+inline constexpr std::string_view type = "type";
+inline constexpr std::string_view length = "length";
+inline constexpr std::string_view limits = "limits";
+inline constexpr std::string_view motor = "motor";
+inline constexpr std::string_view speed = "speed";
+inline constexpr std::string_view maxTorque = "max_torque";
+inline constexpr std::string_view groundA = "ground_a";
+inline constexpr std::string_view groundB = "ground_b";
+inline constexpr std::string_view ratio = "ratio";
+inline constexpr std::string_view circle = "circle";
+inline constexpr std::string_view center = "center";
+inline constexpr std::string_view line = "line";
+inline constexpr std::string_view direction = "direction";
 }  // namespace key
+
+// The values of a joint's "type", in JointType's order (a Choice field's choices).
+inline constexpr std::string_view kJointTypeNames[] = {"hinge", "rod",    "rope",
+                                                       "weld",  "pulley", "track"};
+static_assert(std::size(kJointTypeNames) == static_cast<std::size_t>(JointType::Track) + 1);
 
 // How a value is written in JSON. Point, Size and Grid are pairs; the name says what the two
 // numbers are in messages ([x, y], [w, h], [nx, ny]) and in the property editor.
@@ -128,7 +150,9 @@ enum class Type {
     Point,        // [x, y]
     Size,         // [w, h]
     Grid,         // [nx, ny], integers
-    Object,       // a nested object with its own table
+    Choice,       // a string naming one of the field's choices, held as an enum
+    Interval,     // [lower, upper], lower <= upper (a hinge's limits)
+    Object,       // a nested object with its own table; in std::optional, absent until given
     ObjectArray,  // an array of objects with their own table
     Pinning,      // a cloth's pinning: a mode name or a list of [i, j] nodes
     NumberMap,    // an object of numbers by name (the contact solver's settings)
@@ -204,7 +228,9 @@ using Member = std::variant<double D::*, int D::*, bool D::*, std::string D::*, 
                             std::array<int, 2> D::*, std::optional<double> D::*,
                             std::optional<std::string> D::*, std::optional<Point2> D::*,
                             ClothStiffnessDesc D::*, std::vector<AttractorDesc> D::*, Pinning D::*,
-                            std::map<std::string, double> D::*, std::vector<Point2> D::*>;
+                            std::map<std::string, double> D::*, std::vector<Point2> D::*,
+                            JointType D::*, std::optional<JointMotorDesc> D::*,
+                            std::optional<TrackCircleDesc> D::*, std::optional<TrackLineDesc> D::*>;
 
 template <typename D>
 struct Field {
@@ -223,6 +249,15 @@ struct Field {
     // The key this one may not be given together with ("give mass or density, not both").
     std::string_view exclusiveWith{};
     Rule rule = Rule::None;
+    // Choice fields: the names in the file, the enum's values in order (0, 1, …).
+    std::span<const std::string_view> choices{};
+    // A field that only some objects of its kind use (a joint's fields by its type): whether d
+    // uses it, which may look at the fields before it in the table. One that d does not use is
+    // neither written nor checked, nor required when Need::Required; given in a file anyway,
+    // it is refused as "is only for " + usedBy, since dropping it would lose what its author
+    // meant.
+    bool (*uses)(const D&) = nullptr;
+    std::string_view usedBy{};
 };
 
 // One object kind, effect or section: its key in the file and its fields in the file's order.
@@ -267,11 +302,28 @@ const Table<PlaneDesc>& tableOf(std::type_identity<PlaneDesc>);
 const Table<SpringDesc>& tableOf(std::type_identity<SpringDesc>);
 const Table<ClothDesc>& tableOf(std::type_identity<ClothDesc>);
 const Table<ClothStiffnessDesc>& tableOf(std::type_identity<ClothStiffnessDesc>);
+const Table<JointDesc>& tableOf(std::type_identity<JointDesc>);
+const Table<JointMotorDesc>& tableOf(std::type_identity<JointMotorDesc>);
+const Table<TrackCircleDesc>& tableOf(std::type_identity<TrackCircleDesc>);
+const Table<TrackLineDesc>& tableOf(std::type_identity<TrackLineDesc>);
 
 template <typename D>
 const Table<D>& table() {
     return tableOf(std::type_identity<D>{});
 }
+
+// A value that is a nested object (Type::Object): one with a table of its own, such as a
+// cloth's stiffness, or one in std::optional, such as a hinge's motor.
+template <typename V>
+concept Described = requires {
+    tableOf(std::type_identity<V>{});
+};
+template <typename V>
+struct IsOptional : std::false_type {};
+template <typename V>
+struct IsOptional<std::optional<V>> : std::true_type {};
+template <typename V>
+concept OptionalDescribed = IsOptional<V>::value && Described<typename V::value_type>;
 
 // The effects in the contract's order: fn(table<XDesc>(), &EffectsDesc::x).
 template <typename Fn>
@@ -296,6 +348,7 @@ void forEachObjectKind(Fn&& fn) {
     fn(table<PlaneDesc>(), &SceneDesc::planes);
     fn(table<SpringDesc>(), &SceneDesc::springs);
     fn(table<ClothDesc>(), &SceneDesc::cloths);
+    fn(table<JointDesc>(), &SceneDesc::joints);
 }
 
 // The keys of the top level, and of the effects object, in the file's order.
@@ -310,9 +363,10 @@ std::vector<std::string_view> keysOf(const Table<D>& t) {
     return keys;
 }
 
-// Whether field f is given in d (see Field::present).
+// Whether field f is given in d (see Field::present and Field::uses).
 template <typename D>
 bool isPresent(const Field<D>& f, const D& d) {
+    if (f.uses && !f.uses(d)) return false;
     if (f.present) return f.present(d);
     return std::visit(
         [&]<typename T>(T D::*m) {

@@ -9,13 +9,20 @@
 
 namespace phasebox {
 
-enum class StepStage : unsigned char { Integrate, Collide, SolveContacts, Ledger, Guard };
+enum class StepStage : unsigned char {
+    Integrate,
+    Collide,
+    SolveContacts,
+    SolveJoints,
+    Ledger,
+    Guard
+};
 
 struct StepProfile {
-    static constexpr int kStageCount = 5;
+    static constexpr int kStageCount = 6;
     // Names in the order the stages run; these are the `stages[].name` of --json.
     static constexpr std::array<std::string_view, kStageCount> kStageNames = {
-        "integrate", "collide", "solve contacts", "ledger", "guard"};
+        "integrate", "collide", "solve contacts", "solve joints", "ledger", "guard"};
 
     std::array<double, kStageCount> seconds{};  // summed since the last reset
     long long steps = 0;                        // steps timed since the last reset

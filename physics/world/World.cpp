@@ -77,6 +77,13 @@ int World::addSpring(const Spring& spring) {
     return static_cast<int>(bodies_.springs.size()) - 1;
 }
 
+int World::addJoint(const Joint& joint) {
+    storeStateInObjects();
+    bodies_.joints.push_back(joint);
+    layoutDirty_ = true;
+    return static_cast<int>(bodies_.joints.size()) - 1;
+}
+
 int World::addCloth(const Cloth& cloth) {
     bodies_.cloths.push_back(cloth);
     return static_cast<int>(bodies_.cloths.size()) - 1;
@@ -154,6 +161,13 @@ void World::commit() {
         contacts_->bind(bodies_);
     } else {
         contacts_.reset();
+    }
+    if (!bodies_.joints.empty()) {
+        if (!joints_) joints_ = std::make_unique<JointSolver>();
+        joints_->bind(bodies_);
+        jointScratch_.setZero(n);
+    } else {
+        joints_.reset();
     }
     integrator_->reset(n);
     layoutDirty_ = false;
@@ -355,13 +369,19 @@ double World::acceleration(double t, const Vec& q, const Vec& u, Vec& accel) {
     ++forceEvaluations_;
     double power = 0.0;
     if (!addAccelerations(t, q, u, accel, fieldEffects_, power)) accel.setZero();
+    if (joints_) joints_->constrainAccelerations(q, u, invMass_, accel);
     return power;
 }
 
 OdeSystem::SplitAcceleration World::accelerationSplit(double t, const Vec& q, const Vec& u,
                                                       Vec& rest) {
-    ++forceEvaluations_;
     SplitAcceleration split;
+    if (joints_) {
+        // The constraint forces answer the whole acceleration: nothing is split off.
+        split.power = acceleration(t, q, u, rest);
+        return split;
+    }
+    ++forceEvaluations_;
     for (int i : uniformEffects_) {
         Vec2 a = Vec2::Zero();
         effects_[i]->uniformAcceleration(a);
@@ -410,6 +430,7 @@ double World::forces(double t, const Vec& q, const Vec& u, Vec& force) {
         power += effects_[i]->addForces(t, q, u, force);
         effectSeconds_[i] += secondsSince(start);
     }
+    if (joints_) joints_->constrainForces(q, u, invMass_, force, jointScratch_);
     return power;
 }
 
@@ -423,6 +444,7 @@ double World::forcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& forc
         power += effects_[i]->addForcesAndJacobians(t, q, u, force, jacobians);
         effectSeconds_[i] += secondsSince(start);
     }
+    if (joints_) joints_->constrainForces(q, u, invMass_, force, jointScratch_);
     return power;
 }
 
@@ -452,31 +474,41 @@ std::string World::objectAtDof(int dof) const {
 bool World::step() {
     ensureLayout();
     divergence_.reset();
-    const double h = settings_.dt / settings_.substeps;
+    // Joints that turn fast (a chain's whip) take more sub-steps of their own, chosen from the
+    // frame's start: the user's dt stays what it is.
+    const int substeps =
+        settings_.substeps * (joints_ ? joints_->substepsFor(settings_.dt / settings_.substeps,
+                                                             q_[current_], u_[current_])
+                                      : 1);
+    const double h = settings_.dt / substeps;
     // With one sub-step the other state buffer keeps the frame start for free.
-    guard_.beginFrame(clock_, ledger_, q_[current_], u_[current_], settings_.substeps > 1);
+    guard_.beginFrame(clock_, ledger_, q_[current_], u_[current_], substeps > 1);
     StageTimer timer(profile_);
     ++profile_.steps;
     StateSummary summary;
     bool summed = false;
-    for (int s = 0; s < settings_.substeps; ++s) {
+    for (int s = 0; s < substeps; ++s) {
         const double t = guard_.frameStart().clock.time + s * h;
         const int next = 1 - current_;
         // Without contacts to move it afterwards, the last sub-step's end state is the frame's:
         // the integrator sums it for the ledger in its last pass.
-        const bool sumHere = s + 1 == settings_.substeps && !contacts_;
+        const bool sumHere = s + 1 == substeps && !contacts_ && !joints_;
         timer.start(StepStage::Integrate);
         const bool ok = integrate(t, h, next, sumHere ? &summary : nullptr);
         if (ok && contacts_ && s == 0) {
             // Once per frame, after the first smooth step shows where the bodies are heading.
             timer.start(StepStage::Collide);
-            collide(next);
+            collide(next, substeps);
         }
         if (ok && contacts_) {
             timer.start(StepStage::SolveContacts);
             solveContacts(h, next);
         }
-        if (!ok || (settings_.substeps > 1 && !(q_[next].allFinite() && u_[next].allFinite())))
+        if (ok && joints_) {
+            timer.start(StepStage::SolveJoints);
+            solveJoints(h, next);
+        }
+        if (!ok || (substeps > 1 && !(q_[next].allFinite() && u_[next].allFinite())))
             return failSubstep(t + h, !ok, next);
         current_ = next;
         summed = sumHere;
@@ -493,10 +525,10 @@ bool World::step() {
     return good;
 }
 
-void World::collide(int next) {
+void World::collide(int next, int substeps) {
     const auto start = Clock::now();
-    contacts_->collide(bodies_, invMass_, q_[current_], u_[current_], u_[next],
-                       1.0 / settings_.substeps, settings_.dt, settings_.contacts);
+    contacts_->collide(bodies_, invMass_, q_[current_], u_[current_], u_[next], 1.0 / substeps,
+                       settings_.dt, settings_.contacts);
     effectSeconds_.back() += secondsSince(start);
 }
 
@@ -527,6 +559,32 @@ void World::solveContacts(double h, int next) {
     const double impulses = unpushed - before;
     ledger_.workNc += std::min(impulses, 0.0);
     ledger_.correction += (after - unpushed) + std::max(impulses, 0.0);
+}
+
+void World::solveJoints(double h, int next) {
+    // The booking (CONTRACT §6): SHAKE and the velocities' projection onto the tangent are the
+    // discrete constraint forces of the method, so what they change is the method's own (it
+    // stays in drift); moving positions further (what SHAKE could not reach, inequalities past
+    // their bounds) is error correction; an inequality catching a body takes energy out like
+    // an inelastic contact (work_nc) and never puts it in (correction); a motor's push is work.
+    Vec& q = q_[next];
+    Vec& u = u_[next];
+    joints_->shake(h, q_[current_], q, u, invMass_);
+    const double beforeCorrection = mechanicalEnergy(q, u);
+    joints_->correctPositions(q, u, invMass_);
+    const double afterCorrection = mechanicalEnergy(q, u);
+    const bool caught = joints_->projectVelocities(q, u, invMass_);
+    const double projected = caught ? mechanicalEnergy(q, u) : afterCorrection;
+    const double motorWork = joints_->driveMotors(h, q, u, mass_, invMass_);
+    if (!std::isfinite(projected) || !std::isfinite(motorWork)) return;  // the guard reports it
+    ledger_.correction += afterCorrection - beforeCorrection;
+    const double catchEnergy = projected - afterCorrection;
+    ledger_.workNc += std::min(catchEnergy, 0.0) + motorWork;
+    ledger_.correction += std::max(catchEnergy, 0.0);
+}
+
+JointErrors World::jointErrors() const {
+    return joints_ && !layoutDirty_ ? joints_->errors(q_[current_]) : JointErrors{};
 }
 
 StateSummary World::closeLedger(const StateSummary* summed) {

@@ -13,6 +13,7 @@
 #include "physics/core/OdeSystem.h"
 #include "physics/effects/Effect.h"
 #include "physics/integrators/Integrator.h"
+#include "physics/joints/JointSolver.h"
 #include "physics/world/DivergenceGuard.h"
 #include "physics/world/EnergyLedger.h"
 #include "physics/world/ErrorEstimate.h"
@@ -56,6 +57,7 @@ public:
     int addPlane(const Plane& plane);
     int addSpring(const Spring& spring);
     int addCloth(const Cloth& cloth);  // its particles and springs are added separately
+    int addJoint(const Joint& joint);
     // Builds the state layout after objects were added; step() does it when needed, and the
     // state accessors need it done. Live state is carried over, the energy drift too.
     void commit();
@@ -66,6 +68,11 @@ public:
     const std::vector<Plane>& planes() const { return bodies_.planes; }
     const std::vector<Spring>& springs() const { return bodies_.springs; }
     const std::vector<Cloth>& cloths() const { return bodies_.cloths; }
+    const std::vector<Joint>& joints() const { return bodies_.joints; }
+    // The joints' solver, or nullptr when the scene has none.
+    const JointSolver* jointSolver() const { return joints_.get(); }
+    // The joints' violation in the current state (zero without joints).
+    JointErrors jointErrors() const;
 
     Vec2 particlePosition(int i) const;
     Vec2 particleVelocity(int i) const;
@@ -173,9 +180,10 @@ private:
     void bindEffects();
 
     // The stages of step(), in the order they run.
-    void collide(int next);
+    void collide(int next, int substeps);
     bool integrate(double t, double h, int next, StateSummary* summary);
     void solveContacts(double h, int next);
+    void solveJoints(double h, int next);
     StateSummary closeLedger(const StateSummary* summed);
     bool guard(const StateSummary& summary);
     bool failSubstep(double t, bool integratorFailed, int next);
@@ -201,6 +209,8 @@ private:
     std::vector<double> effectSeconds_;  // parallel to effects_
 
     std::unique_ptr<ContactStage> contacts_;
+    std::unique_ptr<JointSolver> joints_;
+    Vec jointScratch_;
     bool particleCollisions_ = false;
     double particleRestitution_ = 1.0;
 

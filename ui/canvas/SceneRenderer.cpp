@@ -341,6 +341,93 @@ void drawSprings(const Frame& f) {
     p.drawPath(anchors);
 }
 
+// Joints (CONTRACT §6): a hinge is a pivot ring, a weld a small square, a rod a bar, a rope a
+// cord that sags when slack, a pulley two wheels with the rope over them, a track its wire.
+void drawJoints(const Frame& f) {
+    const JointSolver* solver = f.world.jointSolver();
+    if (!solver) return;
+    QPainter& p = f.painter;
+    const Vec& q = f.world.positions();
+    const auto& joints = f.world.joints();
+    QPainterPath anchors;
+    const double ring = 4.5 * f.lw;
+    for (int i = 0; i < static_cast<int>(joints.size()); ++i) {
+        const Joint& j = joints[i];
+        const QPointF a = f.screen(solver->pointA(i, q)), b = f.screen(solver->pointB(i, q));
+        const bool toWorld = j.b.kind == JointBody::Kind::World;
+        p.setBrush(Qt::NoBrush);
+        switch (j.type) {
+            case Joint::Type::Hinge:
+                if (toWorld) addAnchor(anchors, a, 10.0 * f.lw);
+                p.setPen(f.pen(f.o.colors.joint, 1.5));
+                p.setBrush(f.o.background);
+                p.drawEllipse(a, ring, ring);
+                p.setBrush(f.o.colors.joint);
+                p.drawEllipse(a, 1.2 * f.lw, 1.2 * f.lw);
+                break;
+            case Joint::Type::Weld:
+                p.setPen(f.pen(f.o.colors.joint, 1.5));
+                p.setBrush(f.o.colors.joint);
+                p.drawRect(QRectF(a - QPointF(ring, ring) * 0.7, a + QPointF(ring, ring) * 0.7));
+                break;
+            case Joint::Type::Rod:
+                if (toWorld) addAnchor(anchors, b, 9.0 * f.lw);
+                p.setPen(f.pen(f.o.colors.joint, 3.0));
+                p.drawLine(a, b);
+                break;
+            case Joint::Type::Rope: {
+                if (toWorld) addAnchor(anchors, b, 9.0 * f.lw);
+                p.setPen(f.pen(f.o.colors.rope, 1.5));
+                const double chord = (solver->pointA(i, q) - solver->pointB(i, q)).norm();
+                if (chord >= j.length * (1.0 - 1e-3)) {
+                    p.drawLine(a, b);
+                    break;
+                }
+                // Slack: a parabola with the rope's length, sag s from c + 8s²/(3c) = L.
+                const double sag = std::sqrt(3.0 * chord * (j.length - chord) / 8.0);
+                const QPointF mid =
+                    0.5 * (a + b) + QPointF(0.0, 2.0 * sag * f.view.pixelsPerMetre());
+                QPainterPath cord(a);
+                cord.quadTo(mid, b);
+                p.drawPath(cord);
+                break;
+            }
+            case Joint::Type::Pulley: {
+                const QPointF ga = f.screen(j.groundA), gb = f.screen(j.groundB);
+                p.setPen(f.pen(f.o.colors.rope, 1.5));
+                p.drawLine(ga, a);
+                p.drawLine(gb, b);
+                p.drawLine(ga, gb);
+                p.setPen(f.pen(f.o.colors.joint, 1.5));
+                p.setBrush(f.o.background);
+                for (const QPointF& g : {ga, gb}) {
+                    p.drawEllipse(g, 2.0 * ring, 2.0 * ring);
+                    addAnchor(anchors, g - QPointF(0.0, 2.0 * ring), 8.0 * f.lw);
+                }
+                break;
+            }
+            case Joint::Type::Track: {
+                QPen wire = f.pen(f.o.colors.track, 2.0);
+                p.setPen(wire);
+                if (j.circle) {
+                    const double r = j.radius * f.view.pixelsPerMetre();
+                    p.drawEllipse(f.screen(j.center), r, r);
+                } else {
+                    QLineF line;
+                    const QPointF d = QPointF(-j.lineNormal.y(), j.lineNormal.x());
+                    const QPointF base = f.screen(j.linePoint);
+                    if (clipLineToRect(base, QPointF(d.x(), -d.y()), f.viewport, line))
+                        p.drawLine(line);
+                }
+                break;
+            }
+        }
+    }
+    p.setPen(Qt::NoPen);
+    p.setBrush(f.o.colors.anchor);
+    p.drawPath(anchors);
+}
+
 struct Disc {
     QPointF centre;
     double radius;  // pixels
@@ -608,6 +695,7 @@ void SceneRenderer::paint(QPainter& painter, const ViewTransform& view, QSize vi
     drawCloths(frame);
     drawSprings(frame);
     drawParticles(frame);
+    drawJoints(frame);
     drawArrows(frame);
     drawHighlights(frame);
     if (options.labels) drawLabels(frame);

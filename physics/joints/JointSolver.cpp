@@ -1,0 +1,621 @@
+#include "physics/joints/JointSolver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <utility>
+
+namespace phasebox {
+
+namespace {
+// Newton steps of the position projection, and the error below which it stops (m, rad).
+constexpr int kProjectionIterations = 12;
+constexpr double kProjectionTolerance = 1e-12;
+// A rope counts as taut within this fraction of its length.
+constexpr double kTautFraction = 1e-9;
+// Motor impulses and the velocity projection alternate this many times.
+constexpr int kMotorIterations = 4;
+// SHAKE acts while the step's violation is below this fraction of the smallest joint size.
+constexpr double kShakeReach = 0.1;
+
+// A row of J for a point's motion along n: [n, arm × n], scaled.
+Eigen::RowVector3d pointRow(const Vec2& n, const Vec2& arm, double scale) {
+    return Eigen::RowVector3d(scale * n.x(), scale * n.y(), scale * cross(arm, n));
+}
+}  // namespace
+
+// ---- binding: ends and the elimination order ------------------------------------------------
+
+void JointSolver::bind(const Bodies& bodies) {
+    joints_ = bodies.joints;
+    const int m = static_cast<int>(joints_.size());
+    const auto resolve = [&](const JointBody& body) {
+        End e;
+        switch (body.kind) {
+            case JointBody::Kind::Particle: {
+                const Particle& p = bodies.particles[body.index];
+                if (p.dof >= 0)
+                    e.dof = p.dof;
+                else
+                    e.fixed = p.position;
+                break;
+            }
+            case JointBody::Kind::Rigid: {
+                const Box& b = bodies.boxes[body.index];
+                e.rigid = true;
+                if (b.dof >= 0) {
+                    e.dof = b.dof;
+                    e.turns = true;
+                    e.local = body.point;
+                } else {
+                    e.fixed = b.position + rotation(b.angle) * body.point;
+                    e.angle0 = b.angle;
+                }
+                break;
+            }
+            case JointBody::Kind::World:
+                e.rigid = true;  // the world has an angle: 0
+                e.fixed = body.point;
+                break;
+        }
+        return e;
+    };
+    endA_.clear();
+    endB_.clear();
+    hasMotors_ = hasInequalities_ = false;
+    for (const Joint& j : joints_) {
+        endA_.push_back(resolve(j.a));
+        endB_.push_back(resolve(j.b));
+        hasMotors_ = hasMotors_ || j.hasMotor;
+        hasInequalities_ = hasInequalities_ || j.hasLimits || j.type == Joint::Type::Rope;
+    }
+    // SHAKE's reach: a tenth of the smallest length a joint holds (a rod's, a lever arm).
+    double smallest = std::numeric_limits<double>::infinity();
+    const auto arm = [](const JointBody& b) {
+        return b.kind == JointBody::Kind::Rigid ? b.point.norm() : 0.0;
+    };
+    for (const Joint& j : joints_)
+        for (const double length : {j.length, j.radius, arm(j.a), arm(j.b)})
+            if (length > 0.0) smallest = std::min(smallest, length);
+    shakeReach_ = kShakeReach * (std::isfinite(smallest) ? smallest : 1.0);
+    rows_.assign(m, Rows{});
+    rhs_.assign(m, Vec3::Zero());
+    lambda_.assign(m, Vec3::Zero());
+    forces_.assign(m, 0.0);
+    motorImpulse_.assign(m, 0.0);
+
+    // The joint graph: two joints are adjacent when they hold a common dynamic body.
+    std::map<int, std::vector<std::pair<int, int>>> byBody;  // dof → (joint, side)
+    for (int k = 0; k < m; ++k) {
+        if (endA_[k].dof >= 0) byBody[endA_[k].dof].push_back({k, 0});
+        if (endB_[k].dof >= 0) byBody[endB_[k].dof].push_back({k, 1});
+    }
+    std::vector<std::set<int>> graph(m);
+    for (const auto& [dof, list] : byBody)
+        for (const auto& [k1, s1] : list)
+            for (const auto& [k2, s2] : list)
+                if (k1 != k2) graph[k1].insert(k2);
+
+    // Minimum-degree elimination; each eliminated joint's remaining neighbours become a clique
+    // (the fill), and they are the later joints its column of L couples.
+    std::vector<std::vector<int>> later(m);
+    std::set<std::pair<int, int>> queue;
+    std::vector<int> degree(m);
+    for (int k = 0; k < m; ++k) {
+        degree[k] = static_cast<int>(graph[k].size());
+        queue.insert({degree[k], k});
+    }
+    order_.clear();
+    std::vector<int> position(m, -1);
+    while (!queue.empty()) {
+        const int k = queue.begin()->second;
+        queue.erase(queue.begin());
+        position[k] = static_cast<int>(order_.size());
+        order_.push_back(k);
+        const std::vector<int> neighbours(graph[k].begin(), graph[k].end());
+        later[k] = neighbours;
+        for (int x : neighbours) graph[x].erase(k);
+        for (std::size_t s = 0; s < neighbours.size(); ++s)
+            for (std::size_t t = s + 1; t < neighbours.size(); ++t)
+                if (graph[neighbours[s]].insert(neighbours[t]).second)
+                    graph[neighbours[t]].insert(neighbours[s]);
+        for (int x : neighbours) {
+            queue.erase({degree[x], x});
+            degree[x] = static_cast<int>(graph[x].size());
+            queue.insert({degree[x], x});
+        }
+    }
+    upperStart_.assign(m + 1, 0);
+    upper_.clear();
+    for (int p = 0; p < m; ++p) {
+        std::vector<int> list;
+        for (int x : later[order_[p]]) list.push_back(position[x]);
+        std::sort(list.begin(), list.end());
+        upper_.insert(upper_.end(), list.begin(), list.end());
+        upperStart_[p + 1] = static_cast<int>(upper_.size());
+    }
+    const auto blockIndex = [&](int p, int i) {  // block (i, p), i later than p
+        const auto begin = upper_.begin() + upperStart_[p],
+                   end = upper_.begin() + upperStart_[p + 1];
+        return static_cast<int>(std::lower_bound(begin, end, i) - upper_.begin());
+    };
+    updateStart_.assign(m + 1, 0);
+    updates_.clear();
+    for (int p = 0; p < m; ++p) {
+        for (int t1 = upperStart_[p]; t1 < upperStart_[p + 1]; ++t1)
+            for (int t2 = upperStart_[p]; t2 < upperStart_[p + 1]; ++t2) {
+                const int i = upper_[t1], j = upper_[t2];
+                if (i == j)
+                    updates_.push_back({t1, t2, -1});
+                else if (j < i)
+                    updates_.push_back({t1, t2, blockIndex(j, i)});
+            }
+        updateStart_[p + 1] = static_cast<int>(updates_.size());
+    }
+    couplings_.clear();
+    for (const auto& [dof, list] : byBody)
+        for (const auto& [k1, s1] : list)
+            for (const auto& [k2, s2] : list)
+                if (position[k1] > position[k2])
+                    couplings_.push_back({blockIndex(position[k2], position[k1]), k1, s1, k2, s2});
+    diag_.assign(m, Mat3::Identity());
+    dinv_.assign(m, Mat3::Identity());
+    off_.assign(upper_.size(), Mat3::Zero());
+    l_.assign(upper_.size(), Mat3::Zero());
+    y_.assign(m, Vec3::Zero());
+}
+
+// ---- rows ------------------------------------------------------------------------------------
+
+JointSolver::EndState JointSolver::evaluate(const End& e, const Vec& q, const Vec& u) const {
+    EndState s;
+    if (e.dof < 0) {
+        s.p = e.fixed;
+        s.angle = e.angle0;
+        return s;
+    }
+    if (!e.turns) {
+        s.p = q.segment<2>(e.dof);
+        s.v = u.segment<2>(e.dof);
+        return s;
+    }
+    s.angle = q[e.dof + 2];
+    s.omega = u[e.dof + 2];
+    s.arm = rotation(s.angle) * e.local;
+    s.p = q.segment<2>(e.dof) + s.arm;
+    s.v = u.segment<2>(e.dof) + s.omega * perp(s.arm);
+    return s;
+}
+
+void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r) const {
+    const Joint& j = joints_[k];
+    const End& ea = endA_[k];
+    const End& eb = endB_[k];
+    const EndState a = evaluate(ea, q, u), b = evaluate(eb, q, u);
+    r.count = 0;
+    r.ja.setZero();
+    r.jb.setZero();
+    r.c.setZero();
+    r.bias.setZero();
+    // The centripetal part of each point's acceleration, −ω²·arm: J̇·u of a point row.
+    const Vec2 centripetalA = -a.omega * a.omega * a.arm, centripetalB = -b.omega * b.omega * b.arm;
+    // A row that keeps a distance: d = pa − pb, C = |d| − length.
+    const auto distanceRow = [&](const Vec2& pb, const Vec2& vb, const Vec2& armB,
+                                 const Vec2& centripetal, double length) {
+        const Vec2 d = a.p - pb;
+        const double len = d.norm();
+        const Vec2 n = len > 0.0 ? Vec2(d / len) : Vec2(1.0, 0.0);
+        const Vec2 dv = a.v - vb;
+        r.ja.row(0) = pointRow(n, a.arm, 1.0);
+        r.jb.row(0) = pointRow(n, armB, -1.0);
+        r.c[0] = len - length;
+        const double along = n.dot(dv);
+        r.bias[0] = n.dot(centripetalA - centripetal) +
+                    (len > 0.0 ? (dv.squaredNorm() - along * along) / len : 0.0);
+        r.count = 1;
+        return along;
+    };
+    switch (j.type) {
+        case Joint::Type::Hinge:
+        case Joint::Type::Weld: {
+            const Vec2 c = a.p - b.p - j.offset;
+            for (int i = 0; i < 2; ++i) {
+                const Vec2 axis = i == 0 ? Vec2(1.0, 0.0) : Vec2(0.0, 1.0);
+                r.ja.row(i) = pointRow(axis, a.arm, 1.0);
+                r.jb.row(i) = pointRow(axis, b.arm, -1.0);
+                r.c[i] = c[i];
+                r.bias[i] = (centripetalA - centripetalB)[i];
+            }
+            r.count = 2;
+            const bool angular = ea.rigid && eb.rigid && (ea.turns || eb.turns);
+            if (!angular) break;
+            const double angle = b.angle - a.angle - j.referenceAngle;
+            double target = 0.0;
+            bool active = j.type == Joint::Type::Weld;
+            if (!active && j.hasLimits && mode != Mode::Dynamics) {
+                const double rate = b.omega - a.omega;
+                const double slack = mode == Mode::Velocity ? 1e-9 : 0.0;
+                if (angle < j.lower + slack && (mode == Mode::Position || rate < 0.0)) {
+                    active = true;
+                    target = j.lower;
+                } else if (angle > j.upper - slack && (mode == Mode::Position || rate > 0.0)) {
+                    active = true;
+                    target = j.upper;
+                }
+            }
+            if (!active) break;
+            if (ea.turns) r.ja(2, 2) = -1.0;
+            if (eb.turns) r.jb(2, 2) = 1.0;
+            r.c[2] = angle - target;
+            r.count = 3;
+            break;
+        }
+        case Joint::Type::Rod:
+            distanceRow(b.p, b.v, b.arm, centripetalB, j.length);
+            break;
+        case Joint::Type::Rope: {
+            const double along = distanceRow(b.p, b.v, b.arm, centripetalB, j.length);
+            const double taut = kTautFraction * std::max(j.length, 1e-3);
+            const bool active = mode == Mode::Dynamics   ? r.c[0] > -taut
+                                : mode == Mode::Position ? r.c[0] > 0.0
+                                                         : r.c[0] > -taut && along > 0.0;
+            if (!active) r.count = 0;
+            break;
+        }
+        case Joint::Type::Pulley: {
+            double c = -j.length;
+            const auto side = [&](const EndState& s, const Vec2& ground, const Vec2& centripetal,
+                                  double scale, Mat3& jac) {
+                const Vec2 d = s.p - ground;
+                const double len = d.norm();
+                const Vec2 n = len > 0.0 ? Vec2(d / len) : Vec2(0.0, -1.0);
+                jac.row(0) = pointRow(n, s.arm, scale);
+                const double along = n.dot(s.v);
+                r.bias[0] +=
+                    scale * (n.dot(centripetal) +
+                             (len > 0.0 ? (s.v.squaredNorm() - along * along) / len : 0.0));
+                c += scale * len;
+            };
+            side(a, j.groundA, centripetalA, 1.0, r.ja);
+            side(b, j.groundB, centripetalB, j.ratio, r.jb);
+            r.c[0] = c;
+            r.count = 1;
+            break;
+        }
+        case Joint::Type::Track:
+            if (j.circle) {
+                distanceRow(j.center, Vec2::Zero(), Vec2::Zero(), Vec2::Zero(), j.radius);
+            } else {
+                r.ja.row(0) = pointRow(j.lineNormal, a.arm, 1.0);
+                r.c[0] = j.lineNormal.dot(a.p - j.linePoint);
+                r.bias[0] = j.lineNormal.dot(centripetalA);
+                r.count = 1;
+            }
+            break;
+    }
+    // A fixed end has no velocities to act on.
+    if (ea.dof < 0) r.ja.setZero();
+    if (eb.dof < 0) r.jb.setZero();
+    if (!ea.turns) r.ja.col(2).setZero();
+    if (!eb.turns) r.jb.col(2).setZero();
+}
+
+void JointSolver::evaluateRows(Mode mode, const Vec& q, const Vec& u) {
+    for (int k = 0; k < jointCount(); ++k) rowsOf(k, mode, q, u, rows_[k]);
+}
+
+JointSolver::Vec3 JointSolver::jTimes(int k, const Vec& x) const {
+    const Rows& r = rows_[k];
+    Vec3 out = Vec3::Zero();
+    for (const auto& [end, jac] : {std::pair{&endA_[k], &r.ja}, std::pair{&endB_[k], &r.jb}}) {
+        if (end->dof < 0) continue;
+        out += jac->col(0) * x[end->dof] + jac->col(1) * x[end->dof + 1];
+        if (end->turns) out += jac->col(2) * x[end->dof + 2];
+    }
+    return out;
+}
+
+void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x) const {
+    for (int k = 0; k < jointCount(); ++k) {
+        const Rows& r = rows_[k];
+        if (r.count == 0) continue;
+        for (const auto& [end, jac] : {std::pair{&endA_[k], &r.ja}, std::pair{&endB_[k], &r.jb}}) {
+            if (end->dof < 0) continue;
+            const Vec3 f = jac->transpose() * lambda_[k];
+            const int dofs = end->turns ? 3 : 2;
+            for (int i = 0; i < dofs; ++i) x[end->dof + i] += scale * invMass[end->dof + i] * f[i];
+        }
+    }
+}
+
+// ---- the block LDLᵀ --------------------------------------------------------------------------
+
+void JointSolver::factor(const Vec& invMass) {
+    const auto weights = [&](const End& e) {
+        Vec3 w = Vec3::Zero();
+        if (e.dof < 0) return w;
+        w[0] = invMass[e.dof];
+        w[1] = invMass[e.dof + 1];
+        if (e.turns) w[2] = invMass[e.dof + 2];
+        return w;
+    };
+    const int m = jointCount();
+    for (int p = 0; p < m; ++p) {
+        const int k = order_[p];
+        const Rows& r = rows_[k];
+        Mat3& d = diag_[p];
+        d = r.ja * weights(endA_[k]).asDiagonal() * r.ja.transpose() +
+            r.jb * weights(endB_[k]).asDiagonal() * r.jb.transpose();
+        for (int i = 0; i < 3; ++i) {
+            if (i >= r.count) {  // an unused row: the identity keeps the block invertible
+                d.row(i).setZero();
+                d.col(i).setZero();
+                d(i, i) = 1.0;
+            } else {
+                // Redundant joints (a closed loop held twice) would make the system singular:
+                // a relative 1e-10 on the diagonal picks the least-norm answer among equals.
+                d(i, i) = d(i, i) > 0.0 ? d(i, i) * (1.0 + 1e-10) : 1.0;
+            }
+        }
+    }
+    for (Mat3& o : off_) o.setZero();
+    for (const Coupling& c : couplings_) {
+        const Rows& ri = rows_[c.i];
+        const Rows& rk = rows_[c.k];
+        const Mat3& ji = c.sideI == 0 ? ri.ja : ri.jb;
+        const Mat3& jk = c.sideK == 0 ? rk.ja : rk.jb;
+        const End& body = c.sideK == 0 ? endA_[c.k] : endB_[c.k];
+        off_[c.block] += ji * weights(body).asDiagonal() * jk.transpose();
+    }
+    for (int p = 0; p < m; ++p) {
+        dinv_[p] = diag_[p].inverse();
+        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) l_[t] = off_[t] * dinv_[p];
+        for (int s = updateStart_[p]; s < updateStart_[p + 1]; ++s) {
+            const Update& up = updates_[s];
+            if (up.target < 0)
+                diag_[upper_[up.t1]] -= l_[up.t1] * off_[up.t1].transpose();
+            else
+                off_[up.target] -= l_[up.t1] * off_[up.t2].transpose();
+        }
+    }
+}
+
+void JointSolver::solve() {
+    const int m = jointCount();
+    for (int p = 0; p < m; ++p) y_[p] = rhs_[order_[p]];
+    for (int p = 0; p < m; ++p)
+        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) y_[upper_[t]] -= l_[t] * y_[p];
+    for (int p = 0; p < m; ++p) y_[p] = dinv_[p] * y_[p];
+    for (int p = m - 1; p >= 0; --p)
+        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t)
+            y_[p] -= l_[t].transpose() * y_[upper_[t]];
+    for (int p = 0; p < m; ++p) lambda_[order_[p]] = y_[p];
+}
+
+// ---- constrained dynamics --------------------------------------------------------------------
+
+void JointSolver::solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, const Vec& accel) {
+    evaluateRows(Mode::Dynamics, q, u);
+    // A taut rope that would have to push goes slack and the system is solved again.
+    for (int pass = 0; pass < 3; ++pass) {
+        factor(invMass);
+        for (int k = 0; k < jointCount(); ++k) {
+            const Rows& r = rows_[k];
+            rhs_[k] = -(jTimes(k, accel) + r.bias);
+            for (int i = r.count; i < 3; ++i) rhs_[k][i] = 0.0;
+        }
+        solve();
+        if (!hasInequalities_) break;
+        bool slackened = false;
+        for (int k = 0; k < jointCount(); ++k)
+            if (joints_[k].type == Joint::Type::Rope && rows_[k].count > 0 && lambda_[k][0] > 0.0) {
+                rows_[k].count = 0;
+                rows_[k].ja.setZero();
+                rows_[k].jb.setZero();
+                slackened = true;
+            }
+        if (!slackened) break;
+    }
+    for (int k = 0; k < jointCount(); ++k) {
+        const Rows& r = rows_[k];
+        for (int i = r.count; i < 3; ++i) lambda_[k][i] = 0.0;
+        const Joint::Type type = joints_[k].type;
+        forces_[k] = type == Joint::Type::Hinge || type == Joint::Type::Weld
+                         ? lambda_[k].head<2>().norm()
+                         : std::abs(lambda_[k][0]);
+    }
+}
+
+void JointSolver::constrainAccelerations(const Vec& q, const Vec& u, const Vec& invMass,
+                                         Vec& accel) {
+    solveDynamics(q, u, invMass, accel);
+    addJTranspose(invMass, 1.0, accel);
+}
+
+void JointSolver::constrainForces(const Vec& q, const Vec& u, const Vec& invMass, Vec& force,
+                                  Vec& scratch) {
+    scratch.array() = invMass.array() * force.array();
+    solveDynamics(q, u, invMass, scratch);
+    for (int k = 0; k < jointCount(); ++k) {
+        const Rows& r = rows_[k];
+        for (const auto& [end, jac] : {std::pair{&endA_[k], &r.ja}, std::pair{&endB_[k], &r.jb}}) {
+            if (end->dof < 0) continue;
+            const Vec3 f = jac->transpose() * lambda_[k];
+            const int dofs = end->turns ? 3 : 2;
+            for (int i = 0; i < dofs; ++i) force[end->dof + i] += f[i];
+        }
+    }
+}
+
+// ---- after the step --------------------------------------------------------------------------
+
+void JointSolver::dropInequalities() {
+    for (int k = 0; k < jointCount(); ++k) {
+        Rows& r = rows_[k];
+        const Joint::Type type = joints_[k].type;
+        if (type == Joint::Type::Rope) r.count = 0;
+        if (type == Joint::Type::Hinge) r.count = std::min(r.count, 2);
+        for (int i = r.count; i < 3; ++i) {
+            r.ja.row(i).setZero();
+            r.jb.row(i).setZero();
+        }
+    }
+}
+
+double JointSolver::worstViolation() const {
+    double worst = 0.0;
+    for (const Rows& r : rows_)
+        for (int i = 0; i < r.count; ++i) worst = std::max(worst, std::abs(r.c[i]));
+    return worst;
+}
+
+void JointSolver::solveFor(const Vec& invMass, Vec& x, double scale, bool fromViolation,
+                           const Vec& u) {
+    factor(invMass);
+    for (int k = 0; k < jointCount(); ++k) {
+        rhs_[k] = fromViolation ? Vec3(-rows_[k].c) : Vec3(-jTimes(k, u));
+        for (int i = rows_[k].count; i < 3; ++i) rhs_[k][i] = 0.0;
+    }
+    solve();
+    addJTranspose(invMass, scale, x);
+}
+
+bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invMass) {
+    double previous = std::numeric_limits<double>::infinity();
+    Rows start;
+    for (int it = 0; it < kProjectionIterations; ++it) {
+        evaluateRows(Mode::Position, q, u);
+        dropInequalities();
+        const double worst = worstViolation();
+        if (worst <= kProjectionTolerance) return true;
+        // Past the asymptotic regime (the step moved a joint a good part of its size) or not
+        // contracting: an impulse that large would pump energy in; positions only, then.
+        if (worst > (it == 0 ? shakeReach_ : 0.5 * previous)) return false;
+        previous = worst;
+        for (int k = 0; k < jointCount(); ++k) {
+            // The point and distance rows (the first two at most) in their start directions;
+            // angle rows are the same everywhere.
+            rowsOf(k, Mode::Position, q0, q0, start);
+            for (int i = 0; i < std::min(rows_[k].count, 2); ++i) {
+                rows_[k].ja.row(i) = start.ja.row(i);
+                rows_[k].jb.row(i) = start.jb.row(i);
+            }
+        }
+        solveFor(invMass, q, 1.0, true, u);
+        addJTranspose(invMass, 1.0 / h, u);  // the same impulse moves the velocity
+    }
+    return false;
+}
+
+void JointSolver::correctPositions(Vec& q, const Vec& u, const Vec& invMass) {
+    for (int it = 0; it < kProjectionIterations; ++it) {
+        evaluateRows(Mode::Position, q, u);
+        if (worstViolation() <= kProjectionTolerance) return;
+        Vec& target = q;
+        solveFor(invMass, target, 1.0, true, u);
+    }
+}
+
+bool JointSolver::projectVelocities(const Vec& q, Vec& u, const Vec& invMass) {
+    evaluateRows(Mode::Velocity, q, u);
+    bool inequality = false;
+    for (int k = 0; k < jointCount(); ++k) {
+        const Joint::Type type = joints_[k].type;
+        inequality = inequality || (type == Joint::Type::Rope && rows_[k].count > 0) ||
+                     (type == Joint::Type::Hinge && rows_[k].count > 2);
+    }
+    const Vec& v = u;
+    solveFor(invMass, u, 1.0, false, v);
+    return inequality;
+}
+
+double JointSolver::driveMotors(double h, const Vec& q, Vec& u, const Vec& mass,
+                                const Vec& invMass) {
+    if (!hasMotors_) return 0.0;
+    const auto kinetic = [&] { return 0.5 * (mass.array() * u.array().square()).sum(); };
+    const double before = kinetic();
+    std::fill(motorImpulse_.begin(), motorImpulse_.end(), 0.0);
+    for (int it = 0; it < kMotorIterations; ++it) {
+        for (int k = 0; k < jointCount(); ++k) {
+            const Joint& j = joints_[k];
+            if (!j.hasMotor) continue;
+            const End& a = endA_[k];
+            const End& b = endB_[k];
+            const double ia = a.turns ? invMass[a.dof + 2] : 0.0;
+            const double ib = b.turns ? invMass[b.dof + 2] : 0.0;
+            if (ia + ib <= 0.0) continue;
+            const double rate = (b.turns ? u[b.dof + 2] : 0.0) - (a.turns ? u[a.dof + 2] : 0.0);
+            const double limit = j.maxMotorTorque * h;
+            const double old = motorImpulse_[k];
+            motorImpulse_[k] = std::clamp(old + (j.motorSpeed - rate) / (ia + ib), -limit, limit);
+            const double impulse = motorImpulse_[k] - old;
+            if (a.turns) u[a.dof + 2] -= ia * impulse;
+            if (b.turns) u[b.dof + 2] += ib * impulse;
+        }
+        projectVelocities(q, u, invMass);
+    }
+    return kinetic() - before;
+}
+
+int JointSolver::substepsFor(double h, const Vec& q, const Vec& u) const {
+    double rate = 0.0;
+    // The rate at which the direction from a fixed point c to a moving point turns.
+    const auto turning = [](const Vec2& d, const Vec2& v) {
+        const double len = d.norm();
+        return len > 0.0 ? std::abs(cross(d, v)) / (len * len) : 0.0;
+    };
+    for (int k = 0; k < jointCount(); ++k) {
+        const Joint& j = joints_[k];
+        const EndState a = evaluate(endA_[k], q, u), b = evaluate(endB_[k], q, u);
+        for (const EndState* s : {&a, &b})
+            if (s->arm.squaredNorm() > 0.0) rate = std::max(rate, std::abs(s->omega));
+        switch (j.type) {
+            case Joint::Type::Rod:
+            case Joint::Type::Rope:
+                rate = std::max(rate, turning(a.p - b.p, a.v - b.v));
+                break;
+            case Joint::Type::Pulley:
+                rate =
+                    std::max({rate, turning(a.p - j.groundA, a.v), turning(b.p - j.groundB, b.v)});
+                break;
+            case Joint::Type::Track:
+                if (j.circle) rate = std::max(rate, turning(a.p - j.center, a.v));
+                break;
+            case Joint::Type::Hinge:
+            case Joint::Type::Weld:
+                break;
+        }
+    }
+    const double n = std::ceil(h * rate / kMaxTurnPerStep);
+    return n >= kMaxSubsteps ? kMaxSubsteps : std::max(1, static_cast<int>(n));
+}
+
+JointErrors JointSolver::errors(const Vec& q) const {
+    JointErrors e;
+    Rows r;
+    for (int k = 0; k < jointCount(); ++k) {
+        // Position rows do not depend on the velocities: q stands in for u.
+        rowsOf(k, Mode::Position, q, q, r);
+        const int positional =
+            joints_[k].type == Joint::Type::Hinge || joints_[k].type == Joint::Type::Weld
+                ? std::min(r.count, 2)
+                : r.count;
+        if (positional == 2)
+            e.position = std::max(e.position, r.c.head<2>().norm());
+        else if (positional == 1)
+            e.position = std::max(e.position, std::abs(r.c[0]));
+        if (r.count == 3) e.angle = std::max(e.angle, std::abs(r.c[2]));
+    }
+    return e;
+}
+
+Vec2 JointSolver::pointA(int joint, const Vec& q) const {
+    return evaluate(endA_[joint], q, q).p;
+}
+Vec2 JointSolver::pointB(int joint, const Vec& q) const {
+    return evaluate(endB_[joint], q, q).p;
+}
+
+}  // namespace phasebox

@@ -1,0 +1,164 @@
+#pragma once
+// Joints as constrained dynamics (Witkin & Baraff, "Physically Based Modeling", constrained
+// dynamics; CONTRACT §6). Each equality joint is up to three scalar constraints C(q) = 0 with
+// Jacobian J. In every derivative evaluation the constraint forces Jᵀλ solve
+//
+//     (J·M⁻¹·Jᵀ)·λ = −J̇·u − J·M⁻¹·F
+//
+// so that the constrained acceleration keeps C̈ = 0: an integrator sees a smooth force and keeps
+// its order on a jointed scene. There is no feedback term in the derivative; what drift the
+// integrator leaves is removed after the step by projection (positions onto C = 0 by Newton
+// steps in the mass metric, velocities onto J·u = 0), whose energy the world books as
+// correction. Inequalities act after the step only: a hinge past its limits is projected back
+// and its outward rate removed, and a motor drives the joint's rate with a clamped impulse
+// (its work is physical, work_nc). A rope is an equality while it is taut and pulling.
+//
+// The system J·M⁻¹·Jᵀ couples joints that share a body. It is factored as a block LDLᵀ over
+// the joint graph (blocks of up to 3×3, one per joint), eliminated in minimum-degree order.
+// For a chain or a tree of bodies this order makes no fill, so a solve is O(n) (the result
+// Baraff 1996 gets by factoring the body–joint graph); loops add the fill they need. The
+// symbolic part is built once in bind(); evaluations allocate nothing.
+
+#include "physics/core/Bodies.h"
+#include "physics/core/Types.h"
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace phasebox {
+
+struct JointErrors {
+    double position = 0.0;  // m: the largest positional violation of any joint
+    double angle = 0.0;     // rad: the largest angular one (welds, hinge limits)
+};
+
+class JointSolver {
+public:
+    // Resolves every joint's bodies to state indices (a static or pinned body is fixed where
+    // it is) and builds the elimination order. Call after the world's layout is built.
+    void bind(const Bodies& bodies);
+    int jointCount() const { return static_cast<int>(joints_.size()); }
+    bool hasMotors() const { return hasMotors_; }
+
+    // accel holds M⁻¹·F of every other force; adds M⁻¹·Jᵀ·λ so that the joints' second
+    // derivatives vanish.
+    void constrainAccelerations(const Vec& q, const Vec& u, const Vec& invMass, Vec& accel);
+    // The same in force form, for the implicit methods' residuals: force += Jᵀ·λ with λ from
+    // M⁻¹·force. scratch is resized to the state's size.
+    void constrainForces(const Vec& q, const Vec& u, const Vec& invMass, Vec& force, Vec& scratch);
+
+    // After a step of h, in this order (the world books each phase's energy):
+    // 1. shake: the equality joints' positions back onto C = 0 along their directions at the
+    //    step's start q0, the same impulse moving the velocities (Δu = Δq/h). This is SHAKE,
+    //    the discrete constraint force of the method: with it symplectic Euler stays
+    //    symplectic on the constraint manifold and a pendulum keeps its period, and its energy
+    //    is the method's own (drift). False when it did not converge (a step long against the
+    //    joints: a whip's tip moving a link's length in one step).
+    bool shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invMass);
+    // 2. Newton steps in positions only for what remains: inequalities past their bounds (a
+    //    rope snapping taut, a hinge past a limit) and whatever shake left. Error correction:
+    //    its energy is `correction`.
+    void correctPositions(Vec& q, const Vec& u, const Vec& invMass);
+    // 3. Velocities onto the tangent: J·u = 0 for the equalities and the inequalities at their
+    //    bounds moving outward. True when an inequality took part (an inelastic catch).
+    bool projectVelocities(const Vec& q, Vec& u, const Vec& invMass);
+    // 4. Motors: a clamped impulse on the hinge's rate (|τ| ≤ max_torque), alternating with
+    //    step 3 (Box2D's motor with the joints re-projected). Returns the kinetic energy this
+    //    adds or takes: the motors' work.
+    double driveMotors(double h, const Vec& q, Vec& u, const Vec& mass, const Vec& invMass);
+
+    // How many sub-steps a step of h needs so that no joint's geometry turns by more than
+    // kMaxTurnPerStep in one (a rod's direction, a hinge's lever arm): beyond that the
+    // constraint directions of the step's start are too far from its end's for SHAKE. A
+    // swinging pendulum needs 1 at any classroom dt; a chain's whip may need dozens.
+    int substepsFor(double h, const Vec& q, const Vec& u) const;
+    static constexpr double kMaxTurnPerStep = 0.1;  // rad
+    static constexpr int kMaxSubsteps = 64;
+
+    // The joints' violation at q (every joint, inequalities by how far they are past).
+    JointErrors errors(const Vec& q) const;
+    // The magnitude of joint i's constraint force at the last evaluation (N; a weld's or a
+    // hinge's force on its point, a rod's, rope's or pulley's tension, a track's normal force).
+    double force(int joint) const { return forces_[joint]; }
+    // World position of a joint's point on body a or b at q (for drawing).
+    Vec2 pointA(int joint, const Vec& q) const;
+    Vec2 pointB(int joint, const Vec& q) const;
+
+private:
+    using Mat3 = Eigen::Matrix3d;
+    using Vec3 = Eigen::Vector3d;
+
+    // One end of a joint as the solver sees it.
+    struct End {
+        int dof = -1;         // first state index of a dynamic body; −1 when fixed
+        bool turns = false;   // a dynamic rigid body: its third DOF is the angle
+        bool rigid = false;   // a rigid body (dynamic or static): it has an angle
+        Vec2 local{0, 0};     // the point in the body's frame (dynamic rigid body)
+        Vec2 fixed{0, 0};     // the point in the world (a fixed end)
+        double angle0 = 0.0;  // a fixed end's angle
+    };
+    // An end's point and motion at (q, u).
+    struct EndState {
+        Vec2 p{0, 0}, v{0, 0}, arm{0, 0};
+        double angle = 0.0, omega = 0.0;
+    };
+    // The rows of one joint at a state: C, J (for each end: x, y, θ), and J̇·u.
+    struct Rows {
+        int count = 0;
+        Mat3 ja = Mat3::Zero(), jb = Mat3::Zero();
+        Vec3 c = Vec3::Zero(), bias = Vec3::Zero();
+    };
+    enum class Mode { Dynamics, Position, Velocity };
+
+    EndState evaluate(const End& e, const Vec& q, const Vec& u) const;
+    // The active rows of joint k at (q, u) in the given mode.
+    void rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& rows) const;
+    void evaluateRows(Mode mode, const Vec& q, const Vec& u);
+    // λ of the equality rows for the unconstrained acceleration accel (a rope that would
+    // push goes slack); keeps forces_.
+    void solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, const Vec& accel);
+    // Leaves only the equality rows (a rope's, a hinge limit's go).
+    void dropInequalities();
+    double worstViolation() const;
+    // Factors, solves J·W·Jᵀ·λ = −C (fromViolation) or −J·u, and adds scale·W·Jᵀ·λ to x.
+    void solveFor(const Vec& invMass, Vec& x, double scale, bool fromViolation, const Vec& u);
+    // J·x for joint k's rows (x a state-sized vector).
+    Vec3 jTimes(int k, const Vec& x) const;
+    // x += scale·W·Jᵀ·λ over every joint (W = M⁻¹).
+    void addJTranspose(const Vec& invMass, double scale, Vec& x) const;
+    // Assembles J·W·Jᵀ from rows_, factors it and solves for lambda_ from rhs_.
+    void factor(const Vec& invMass);
+    void solve();
+
+    std::vector<Joint> joints_;
+    std::vector<End> endA_, endB_;
+    bool hasMotors_ = false, hasInequalities_ = false;
+    double shakeReach_ = 0.01;  // m: the largest violation SHAKE answers with an impulse
+
+    // Per evaluation (sized in bind).
+    std::vector<Rows> rows_;
+    std::vector<Vec3> rhs_, lambda_;
+    std::vector<double> forces_;
+    std::vector<double> motorImpulse_;
+
+    // The block LDLᵀ: joints by elimination position; upper_[upperStart_[k] ..] the later
+    // joints block (i, k) couples, after fill.
+    std::vector<int> order_;  // position → joint
+    std::vector<int> upperStart_, upper_;
+    std::vector<Mat3> diag_, dinv_, off_, l_;
+    std::vector<Vec3> y_;  // the solve's right-hand side by elimination position
+    // Couplings of the assembly: off-diagonal block t gets J_i,side·W·J_k,sideᵀ over a shared
+    // body; and the fill updates of the factorization: (k's entries t1, t2) → target block.
+    struct Coupling {
+        int block, i, sideI, k, sideK;
+    };
+    std::vector<Coupling> couplings_;
+    struct Update {
+        int t1, t2, target;  // target −1: the diagonal of upper_[t1]
+    };
+    std::vector<int> updateStart_;
+    std::vector<Update> updates_;
+};
+
+}  // namespace phasebox
