@@ -90,6 +90,8 @@ QString CanvasTools::toolName(Tool tool) {
             return tr("Add plane");
         case Tool::Pin:
             return tr("Pin / unpin");
+        case Tool::Joint:
+            return tr("Add joint");
     }
     return {};
 }
@@ -121,6 +123,11 @@ QString CanvasTools::toolHelp(Tool tool) {
             return tr("Drag a line along the surface; the solid side is to the right of the drag.");
         case Tool::Pin:
             return tr("Click a particle to pin or unpin it, a box or disk to make it static.");
+        case Tool::Joint:
+            return tr(
+                "Drag from a body to another, or to empty space for the fixed world: a hinge "
+                "pivots where the drag starts; a rod or rope joins the two points; a weld "
+                "holds two bodies together.");
     }
     return {};
 }
@@ -251,6 +258,7 @@ void CanvasTools::showPreview(QPointF world) {
             overlay.text =
                 tr("v = %1 m/s").arg(std::hypot(d.x(), d.y()) * kVelocityPerMetre, 0, 'f', 2);
             break;
+        case Tool::Joint:
         case Tool::Spring: {
             overlay.shape = ui::ToolOverlay::Line;
             const QString target = objectAt(world);
@@ -375,6 +383,18 @@ void CanvasTools::finish(QPointF world) {
             report(document_.addObject(p, &error, &id), error);
             break;
         }
+        case Tool::Joint: {
+            if (startObject_.isEmpty()) {
+                emit message(
+                    tr("A joint starts on a body: drag from a particle, box, disk or "
+                       "polygon."));
+                return;
+            }
+            const QString target = objectAt(world);
+            if (!addJoint(startObject_, target == startObject_ ? QString() : target, world, &id))
+                return;
+            break;
+        }
         case Tool::Pin: {
             if (!click || startObject_.isEmpty()) return;
             const ObjectRef ref = findObject(document_.setup(), startObject_.toStdString());
@@ -489,6 +509,58 @@ bool CanvasTools::eventFilter(QObject* watched, QEvent* event) {
         default:
             return QObject::eventFilter(watched, event);
     }
+}
+
+// The point p (world) in the frame of the body with this id as the setup places it; a
+// particle's point is unused (its centre).
+Point2 CanvasTools::localPoint(const QString& id, QPointF p) const {
+    const SceneDesc& setup = document_.setup();
+    const auto x = propertyValue(setup, id, QStringLiteral("position.x"));
+    const auto y = propertyValue(setup, id, QStringLiteral("position.y"));
+    const auto angle = propertyValue(setup, id, QStringLiteral("angle"));
+    if (!x || !y || !angle) return {0.0, 0.0};  // a particle or cloth node
+    const double c = std::cos(*angle), s = std::sin(*angle);
+    const double dx = p.x() - *x, dy = p.y() - *y;
+    return {c * dx + s * dy, -s * dx + c * dy};
+}
+
+bool CanvasTools::addJoint(const QString& a, const QString& b, QPointF end, QString* newId) {
+    JointDesc j;
+    j.type = jointType_;
+    j.a = a.toStdString();
+    if (!b.isEmpty()) j.b = b.toStdString();
+    switch (jointType_) {
+        case JointType::Hinge:
+            j.anchor = point(start_);  // the pivot: where the drag began, on a
+            break;
+        case JointType::Rod:
+        case JointType::Rope:
+            if (isClick(end)) {
+                emit message(tr("Drag to where the %1 ends: another body or a fixed point.")
+                                 .arg(jointType_ == JointType::Rod ? tr("rod") : tr("rope")));
+                return false;
+            }
+            j.aPoint = localPoint(a, start_);
+            if (b.isEmpty())
+                j.anchor = point(end);
+            else
+                j.bPoint = localPoint(b, end);
+            break;
+        case JointType::Weld:
+            if (b.isEmpty()) {
+                emit message(tr("A weld holds two bodies: drag from one onto the other."));
+                return false;
+            }
+            break;
+        case JointType::Pulley:
+        case JointType::Track:
+            emit message(tr("Pulleys and tracks are set in the scene file."));
+            return false;
+    }
+    QString error;
+    const bool ok = document_.addObject(j, &error, newId);
+    report(ok, error);
+    return ok;
 }
 
 void CanvasTools::cancel() {

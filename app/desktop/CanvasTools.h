@@ -16,10 +16,15 @@
 //            non-convex, put three corners in a line or repeat one is refused with the reason.
 //   Plane    drag a line along the surface; the solid side is to the right of the drag
 //   Pin      click a particle to pin or unpin it, a rigid body to make it static or dynamic
+//   Joint    drag from a body to another, or to empty space for the world: a hinge (its pivot
+//            where the drag starts), rod, rope (between the points pressed and released) or
+//            weld, as jointType() says
 
 #include <QObject>
 #include <QPointF>
 #include <QString>
+
+#include "physics/scene/SceneDesc.h"
 
 #include <QList>
 
@@ -36,7 +41,7 @@ class CanvasTools : public QObject {
     Q_OBJECT
 
 public:
-    enum class Tool { Select, Particle, Spring, Cloth, Box, Disk, Polygon, Plane, Pin };
+    enum class Tool { Select, Particle, Spring, Cloth, Box, Disk, Polygon, Plane, Pin, Joint };
 
     CanvasTools(Document& document, ui::SceneView& view, QObject* parent = nullptr);
 
@@ -57,6 +62,9 @@ public:
     // The polygon tool's regular polygon: this many sides unless set (3 to 16).
     static constexpr int kPolygonSides = 6;
     int polygonSides() const { return polygonSides_; }
+    // The joint tool's kind: hinge, rod, rope or weld (pulleys and tracks are written in files).
+    JointType jointType() const { return jointType_; }
+    void setJointType(JointType type) { jointType_ = type; }
     void setPolygonSides(int sides);
     // The corners clicked so far with the polygon tool (world coordinates).
     const QList<QPointF>& outline() const { return outline_; }
@@ -78,6 +86,10 @@ private:
     bool eventFilter(QObject* watched, QEvent* event) override;
     void addOutlineCorner(QPointF world);
     void showOutline(QPointF cursor);
+    Point2 localPoint(const QString& id, QPointF p) const;
+    // Adds a joint of jointType() from a (pressed at start_) to b (empty: the world), the
+    // drag ending at end; false with a message when refused.
+    bool addJoint(const QString& a, const QString& b, QPointF end, QString* newId);
     void cancel();
     bool isClick(QPointF world) const;
     void report(bool ok, const QString& error);
@@ -98,6 +110,7 @@ private:
     bool moved_ = false;
 
     int polygonSides_ = kPolygonSides;
+    JointType jointType_ = JointType::Hinge;
     QList<QPointF> outline_;  // the polygon tool's clicked corners
 };
 

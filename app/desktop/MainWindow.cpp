@@ -168,6 +168,7 @@ void MainWindow::createToolBar() {
     addNamedActions(bar, *this, {"new", "open", "save", "", "play", "step", "reset", ""});
     bar->addActions(canvasPresenter_->toolActions());
     bar->addWidget(canvasPresenter_->polygonSidesBox());
+    bar->addWidget(canvasPresenter_->jointTypeBox());
 }
 
 QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QString& name,

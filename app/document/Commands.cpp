@@ -138,7 +138,7 @@ DeleteObjectsCommand::DeleteObjectsCommand(Document& document, const QStringList
     const SceneDesc& scene = setup();
     std::vector<bool> particle(scene.particles.size()), box(scene.boxes.size()),
         disk(scene.disks.size()), polygon(scene.polygons.size()), plane(scene.planes.size()),
-        spring(scene.springs.size()), cloth(scene.cloths.size());
+        spring(scene.springs.size()), cloth(scene.cloths.size()), joint(scene.joints.size());
     std::vector<std::pair<std::string, bool>> bodies;  // deleted bodies (id, is a cloth)
     QStringList names;
     for (const QString& qid : ids) {
@@ -166,21 +166,28 @@ DeleteObjectsCommand::DeleteObjectsCommand(Document& document, const QStringList
             case ObjectKind::Cloth:
                 cloth[ref.index] = true;
                 break;
+            case ObjectKind::Joint:
+                joint[ref.index] = true;
+                break;
             case ObjectKind::None:
                 continue;
         }
         const std::string name = objectId(scene, ref);
         if (!names.contains(QString::fromStdString(name))) names << QString::fromStdString(name);
-        if (ref.kind != ObjectKind::Plane && ref.kind != ObjectKind::Spring)
+        if (ref.kind != ObjectKind::Plane && ref.kind != ObjectKind::Spring &&
+            ref.kind != ObjectKind::Joint)
             bodies.emplace_back(name, ref.kind == ObjectKind::Cloth);
     }
-    // A spring cannot outlive a body it is attached to.
-    for (std::size_t i = 0; i < scene.springs.size(); ++i) {
-        const SpringDesc& s = scene.springs[i];
+    // A spring or a joint cannot outlive a body it holds.
+    const auto holds = [&](const std::string& a, const std::optional<std::string>& b) {
         for (const auto& [id, isCloth] : bodies)
-            if (attachedTo(s.a, id, isCloth) || (s.b && attachedTo(*s.b, id, isCloth)))
-                spring[i] = true;
-    }
+            if (attachedTo(a, id, isCloth) || (b && attachedTo(*b, id, isCloth))) return true;
+        return false;
+    };
+    for (std::size_t i = 0; i < scene.springs.size(); ++i)
+        if (holds(scene.springs[i].a, scene.springs[i].b)) spring[i] = true;
+    for (std::size_t i = 0; i < scene.joints.size(); ++i)
+        if (holds(scene.joints[i].a, scene.joints[i].b)) joint[i] = true;
     auto collect = [](const auto& array, const std::vector<bool>& marked, auto& out) {
         for (std::size_t i = 0; i < array.size(); ++i)
             if (marked[i]) out.emplace_back(i, array[i]);
@@ -192,6 +199,7 @@ DeleteObjectsCommand::DeleteObjectsCommand(Document& document, const QStringList
     collect(scene.planes, plane, planes_);
     collect(scene.springs, spring, springs_);
     collect(scene.cloths, cloth, cloths_);
+    collect(scene.joints, joint, joints_);
 
     if (names.isEmpty())
         refuse(QObject::tr("nothing to delete: no object has the id %1")
@@ -210,6 +218,7 @@ void DeleteObjectsCommand::apply(SceneDesc& scene) const {
     eraseAt(scene.planes, planes_);
     eraseAt(scene.springs, springs_);
     eraseAt(scene.cloths, cloths_);
+    eraseAt(scene.joints, joints_);
 }
 
 void DeleteObjectsCommand::revert(SceneDesc& scene) const {
@@ -220,6 +229,7 @@ void DeleteObjectsCommand::revert(SceneDesc& scene) const {
     insertAt(scene.planes, planes_);
     insertAt(scene.springs, springs_);
     insertAt(scene.cloths, cloths_);
+    insertAt(scene.joints, joints_);
 }
 
 // ---- MoveObjectCommand -----------------------------------------------------------------------
@@ -255,6 +265,9 @@ MoveObjectCommand::MoveObjectCommand(Document& document, const QString& id, cons
             else
                 refuse(
                     QObject::tr("spring %1 hangs between two bodies; move them instead").arg(id));
+            break;
+        case ObjectKind::Joint:
+            refuse(QObject::tr("joint %1 moves with its bodies; move them instead").arg(id));
             break;
         case ObjectKind::None:
             refuse(QObject::tr("unknown object id %1").arg(quoted(id_)));
@@ -297,6 +310,8 @@ void MoveObjectCommand::place(SceneDesc& scene, const Point2& position) const {
             break;
         case ObjectKind::Spring:
             scene.springs[ref_.index].anchor = position;
+            break;
+        case ObjectKind::Joint:
             break;
         case ObjectKind::None:
             break;

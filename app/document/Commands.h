@@ -79,8 +79,8 @@ private:
     QStringList ids_;
 };
 
-// Deletes objects; a particle, box or cloth takes the springs attached to it along. Undo puts
-// everything back at its original index.
+// Deletes objects; a body (particle, rigid body, cloth) takes the springs and joints attached to
+// it along. Undo puts everything back at its original index.
 class DeleteObjectsCommand final : public DocumentCommand {
 public:
     DeleteObjectsCommand(Document& document, const QStringList& ids);
@@ -98,6 +98,7 @@ private:
     std::vector<std::pair<std::size_t, PlaneDesc>> planes_;
     std::vector<std::pair<std::size_t, SpringDesc>> springs_;
     std::vector<std::pair<std::size_t, ClothDesc>> cloths_;
+    std::vector<std::pair<std::size_t, JointDesc>> joints_;
 };
 
 // Places a particle or box (position), a plane (point), a cloth (origin) or a spring's anchor.

@@ -42,9 +42,12 @@ SceneDesc copyObjects(const SceneDesc& scene, const QStringList& ids) {
     std::unordered_set<std::string> planes;
     keepCopied(copy.planes, chosen, planes);
     // A spring comes along with its bodies: when each end is copied or a fixed anchor.
-    std::erase_if(copy.springs, [&](const SpringDesc& s) {
-        return !bodies.count(bodyOf(s.a)) || (s.b && !bodies.count(bodyOf(*s.b)));
-    });
+    const auto leftBehind = [&](const std::string& a, const std::optional<std::string>& b) {
+        return !bodies.count(bodyOf(a)) || (b && !bodies.count(bodyOf(*b)));
+    };
+    std::erase_if(copy.springs, [&](const SpringDesc& s) { return leftBehind(s.a, s.b); });
+    // Joints likewise: both bodies copied, or one and the world.
+    std::erase_if(copy.joints, [&](const JointDesc& j) { return leftBehind(j.a, j.b); });
     return copy;
 }
 
@@ -65,7 +68,7 @@ std::vector<ObjectDesc> pastedObjects(const SceneDesc& target, const SceneDesc& 
             shift(desc.point, offset);
         else if constexpr (std::is_same_v<D, ClothDesc>)
             shift(desc.origin, offset);
-        else if constexpr (std::is_same_v<D, SpringDesc>) {
+        else if constexpr (std::is_same_v<D, SpringDesc> || std::is_same_v<D, JointDesc>) {
             const auto rename = [&](const std::string& end) {
                 const std::size_t bracket = end.find('[');
                 const auto it = renamed.find(end.substr(0, bracket));
@@ -75,6 +78,13 @@ std::vector<ObjectDesc> pastedObjects(const SceneDesc& target, const SceneDesc& 
             desc.a = rename(desc.a);
             if (desc.b) desc.b = rename(*desc.b);
             if (desc.anchor) shift(*desc.anchor, offset);
+            if constexpr (std::is_same_v<D, JointDesc>) {
+                // The world points a joint holds move with the copy.
+                shift(desc.groundA, offset);
+                shift(desc.groundB, offset);
+                if (desc.circle) shift(desc.circle->center, offset);
+                if (desc.line) shift(desc.line->point, offset);
+            }
         } else {
             shift(desc.position, offset);
         }
@@ -89,6 +99,7 @@ std::vector<ObjectDesc> pastedObjects(const SceneDesc& target, const SceneDesc& 
     for (const ClothDesc& d : source.cloths) add(d);
     for (const PlaneDesc& d : source.planes) add(d);
     for (const SpringDesc& d : source.springs) add(d);
+    for (const JointDesc& d : source.joints) add(d);
     return out;
 }
 

@@ -18,8 +18,8 @@ namespace phasebox {
 inline constexpr const char* kSceneMimeType = "application/x-phasebox-scene+json";
 
 // The setup with only these objects: particles, boxes, disks, polygons, planes, cloths (a cloth
-// node id copies its cloth) and the springs whose ends are each copied or a fixed anchor (a
-// spring chosen without its ends stays behind). Simulation settings and effects are kept.
+// node id copies its cloth) and the springs and joints whose bodies are each copied or the
+// world (one chosen without its bodies stays behind). Simulation settings and effects are kept.
 SceneDesc copyObjects(const SceneDesc& scene, const QStringList& ids);
 
 // The fragment's objects ready to add to target: each with an id no object of target uses,

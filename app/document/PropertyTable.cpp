@@ -45,6 +45,9 @@ PairNames pairNames(const schema::Field<D>& f) {
             return {{".w", ".h"}, {QStringLiteral("Width"), QStringLiteral("Height")}};
         case schema::Type::Grid:
             return {{".x", ".y"}, {QStringLiteral("Columns"), QStringLiteral("Rows")}};
+        case schema::Type::Interval:
+            return {{".lower", ".upper"},
+                    {label + QStringLiteral(" lower"), label + QStringLiteral(" upper")}};
         default:
             return {{".x", ".y"}, {label + QStringLiteral(" x"), label + QStringLiteral(" y")}};
     }
@@ -56,6 +59,7 @@ PairNames pairNames(const schema::Field<D>& f) {
 template <typename D, typename Fn>
 void forEachProperty(D& d, Fn&& fn, const QString& prefix = {}) {
     for (const schema::Field<D>& field : schema::table<D>().fields) {
+        if (field.uses && !field.uses(d)) continue;  // a field this joint's type does not use
         const QString fieldKey = prefix + text(field.key);
         const schema::Editor& e = field.editor;
         if constexpr (std::is_same_v<D, PlaneDesc>) {
@@ -73,6 +77,10 @@ void forEachProperty(D& d, Fn&& fn, const QString& prefix = {}) {
                 V& v = d.*member;
                 if constexpr (std::is_same_v<V, ClothStiffnessDesc>) {
                     forEachProperty(v, fn, fieldKey + QLatin1Char('.'));
+                } else if constexpr (std::is_same_v<V, std::optional<JointMotorDesc>> ||
+                                     std::is_same_v<V, std::optional<TrackCircleDesc>> ||
+                                     std::is_same_v<V, std::optional<TrackLineDesc>>) {
+                    if (v) forEachProperty(*v, fn, fieldKey + QLatin1Char('.'));
                 } else if (e.decimals < 0) {
                     return;
                 } else if constexpr (std::is_same_v<V, double>) {
@@ -128,6 +136,8 @@ void visitObject(SceneDesc& scene, ObjectRef ref, Fn&& fn) {
             return fn(scene.springs[ref.index]);
         case ObjectKind::Cloth:
             return fn(scene.cloths[ref.index]);
+        case ObjectKind::Joint:
+            return fn(scene.joints[ref.index]);
         case ObjectKind::None:
             break;
     }
@@ -175,6 +185,8 @@ ObjectRef findObject(const SceneDesc& scene, const std::string& id) {
         if (planeId(scene, i) == id) return {ObjectKind::Plane, i};
     for (std::size_t i = 0; i < scene.springs.size(); ++i)
         if (springId(scene, i) == id) return {ObjectKind::Spring, i};
+    for (std::size_t i = 0; i < scene.joints.size(); ++i)
+        if (jointId(scene, i) == id) return {ObjectKind::Joint, i};
     for (std::size_t i = 0; i < scene.cloths.size(); ++i) {
         const std::string& cloth = scene.cloths[i].id;
         if (id == cloth) return {ObjectKind::Cloth, i};
@@ -202,6 +214,8 @@ std::string objectId(const SceneDesc& scene, ObjectRef ref) {
             return springId(scene, ref.index);
         case ObjectKind::Cloth:
             return scene.cloths[ref.index].id;
+        case ObjectKind::Joint:
+            return jointId(scene, ref.index);
         case ObjectKind::None:
             break;
     }
@@ -229,6 +243,9 @@ std::vector<SpringDesc>& arrayOf(SceneDesc& s, const SpringDesc&) {
 std::vector<ClothDesc>& arrayOf(SceneDesc& s, const ClothDesc&) {
     return s.cloths;
 }
+std::vector<JointDesc>& arrayOf(SceneDesc& s, const JointDesc&) {
+    return s.joints;
+}
 
 ObjectKind objectKind(const ObjectDesc& object) {
     // The variant's alternatives are in the order of ObjectKind after None.
@@ -251,6 +268,8 @@ ObjectDesc objectDesc(const SceneDesc& scene, ObjectRef ref) {
             return scene.springs[ref.index];
         case ObjectKind::Cloth:
             return scene.cloths[ref.index];
+        case ObjectKind::Joint:
+            return scene.joints[ref.index];
         case ObjectKind::None:
             break;
     }
@@ -278,6 +297,8 @@ QString objectKindName(ObjectKind kind) {
             return QStringLiteral("spring");
         case ObjectKind::Cloth:
             return QStringLiteral("cloth");
+        case ObjectKind::Joint:
+            return QStringLiteral("joint");
         case ObjectKind::None:
             break;
     }
@@ -292,6 +313,7 @@ std::vector<std::string> objectIds(const SceneDesc& scene) {
     for (std::size_t i = 0; i < scene.polygons.size(); ++i) ids.push_back(polygonId(scene, i));
     for (std::size_t i = 0; i < scene.planes.size(); ++i) ids.push_back(planeId(scene, i));
     for (std::size_t i = 0; i < scene.springs.size(); ++i) ids.push_back(springId(scene, i));
+    for (std::size_t i = 0; i < scene.joints.size(); ++i) ids.push_back(jointId(scene, i));
     for (const ClothDesc& cloth : scene.cloths) ids.push_back(cloth.id);
     return ids;
 }
@@ -322,6 +344,8 @@ std::string defaultIdPrefix(ObjectKind kind) {
             return "s";
         case ObjectKind::Cloth:
             return "cloth";
+        case ObjectKind::Joint:
+            return "j";
         case ObjectKind::None:
             break;
     }
@@ -337,6 +361,7 @@ void assignDefaultIds(SceneDesc& scene) {
         scene.polygons[i].id = polygonId(scene, i);
     for (std::size_t i = 0; i < scene.planes.size(); ++i) scene.planes[i].id = planeId(scene, i);
     for (std::size_t i = 0; i < scene.springs.size(); ++i) scene.springs[i].id = springId(scene, i);
+    for (std::size_t i = 0; i < scene.joints.size(); ++i) scene.joints[i].id = jointId(scene, i);
 }
 
 std::optional<double> initialSpringLength(const SceneDesc& scene, const SpringDesc& spring) {
@@ -366,6 +391,13 @@ std::vector<PropertyRow> propertiesOf(const SceneDesc& scene, const QString& id)
     // A number the scene leaves out shows the value it then takes: a box's mass from its
     // density, a spring's rest length from its ends' initial distance.
     for (PropertyRow& row : rows) {
+        if (ref.kind == ObjectKind::Joint && row.key == text(schema::key::length) &&
+            !scene.joints[ref.index].length) {
+            const JointDesc& j = scene.joints[ref.index];
+            const auto a = bodyPoint(scene, j.a, j.aPoint);
+            const auto b = j.b ? bodyPoint(scene, *j.b, j.bPoint) : j.anchor;
+            if (a && b) row.value = std::hypot((*a)[0] - (*b)[0], (*a)[1] - (*b)[1]);
+        }
         if (row.key != text(schema::key::mass) && row.key != text(schema::key::restLength))
             continue;
         if (ref.kind == ObjectKind::Box && !scene.boxes[ref.index].mass)

@@ -16,7 +16,7 @@
 
 namespace phasebox {
 
-enum class ObjectKind { None, Particle, Box, Disk, Polygon, Plane, Spring, Cloth };
+enum class ObjectKind { None, Particle, Box, Disk, Polygon, Plane, Spring, Cloth, Joint };
 
 // Where an object sits in a SceneDesc: its array and its index there.
 struct ObjectRef {
@@ -26,8 +26,8 @@ struct ObjectRef {
 };
 
 // One object's description, whatever its kind: what add and delete commands carry.
-using ObjectDesc =
-    std::variant<ParticleDesc, BoxDesc, DiskDesc, PolygonDesc, PlaneDesc, SpringDesc, ClothDesc>;
+using ObjectDesc = std::variant<ParticleDesc, BoxDesc, DiskDesc, PolygonDesc, PlaneDesc, SpringDesc,
+                                ClothDesc, JointDesc>;
 
 // The object with this id; a cloth node id ID[i,j] names its cloth (a node is not an object of
 // the setup). Invalid when nothing has the id.
@@ -42,10 +42,11 @@ std::vector<PolygonDesc>& arrayOf(SceneDesc& scene, const PolygonDesc&);
 std::vector<PlaneDesc>& arrayOf(SceneDesc& scene, const PlaneDesc&);
 std::vector<SpringDesc>& arrayOf(SceneDesc& scene, const SpringDesc&);
 std::vector<ClothDesc>& arrayOf(SceneDesc& scene, const ClothDesc&);
+std::vector<JointDesc>& arrayOf(SceneDesc& scene, const JointDesc&);
 ObjectDesc objectDesc(const SceneDesc& scene, ObjectRef ref);
 // Replaces the object at ref; the kinds must match (else nothing happens).
 void setObjectDesc(SceneDesc& scene, ObjectRef ref, const ObjectDesc& object);
-// "particle", "box", "disk", "polygon", "plane", "spring", "cloth".
+// "particle", "box", "disk", "polygon", "plane", "spring", "cloth", "joint".
 QString objectKindName(ObjectKind kind);
 
 // Every id in the scene (defaults included), without cloth nodes: ids of the form ID[i,j]

@@ -30,6 +30,9 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <cmath>
+#include <numbers>
+
 using namespace phasebox;
 
 namespace {
@@ -355,6 +358,103 @@ private slots:
         QCOMPARE(serialized(w), before);
         const auto* status = w.findChild<QLabel*>(QStringLiteral("statusMessage"));
         QVERIFY2(status->text().contains(QStringLiteral("clipboard")), qPrintable(status->text()));
+    }
+
+    // A teacher builds a pendulum with the tools: a particle, then a rod dragged from it to a
+    // fixed point; released horizontal it swings with T = 4·√(L/g)·K(sin 45°) (within 0.2% at
+    // the defaults, symplectic Euler at dt 1/60). Deleting the particle takes the rod with it
+    // in one undo step.
+    void jointToolBuildsAPendulum() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QWidget* canvas = w.canvas();
+        const QPoint c = canvas->rect().center();
+        const QPoint pivot = c + QPoint(0, -250), bob = pivot + QPoint(120, 0);
+        w.action("toolParticle")->trigger();
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, bob);
+        w.action("toolJoint")->trigger();
+        QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Joint);
+        auto* type = w.findChild<QComboBox*>(QStringLiteral("jointType"));
+        QVERIFY(type);
+        type->setCurrentIndex(type->findText(QStringLiteral("rod")));
+        QCOMPARE(w.tools()->jointType(), JointType::Rod);
+        drag(canvas, bob, pivot);
+        QCOMPARE(w.document().setup().joints.size(), std::size_t(1));
+        const JointDesc& rod = w.document().setup().joints[0];
+        QCOMPARE(rod.type, JointType::Rod);
+        QCOMPARE(rod.a, std::string("p0"));
+        QVERIFY(!rod.b && rod.anchor);
+        QCOMPARE(w.document().selection(), QStringList{QStringLiteral("j0")});
+
+        // Its period, from the bob's upward crossings below the pivot.
+        World& world = w.document().world();
+        const QPointF top = worldAt(w, pivot);
+        const double length = (world.particlePosition(0) - Vec2(top.x(), top.y())).norm();
+        const double exact =
+            4.0 * std::sqrt(length / 9.81) * std::comp_ellint_1(std::sin(0.25 * std::numbers::pi));
+        std::vector<double> crossings;
+        double x = world.particlePosition(0).x() - top.x(), t = world.time();
+        while (world.time() < 3.2 * exact) {
+            QVERIFY(world.step());
+            const double x1 = world.particlePosition(0).x() - top.x();
+            if (x < 0.0 && x1 >= 0.0) crossings.push_back(t + (world.time() - t) * -x / (x1 - x));
+            x = x1;
+            t = world.time();
+            QVERIFY(world.jointErrors().position < 1e-3);
+        }
+        QVERIFY(crossings.size() >= 2);
+        const double period = (crossings.back() - crossings.front()) / double(crossings.size() - 1);
+        QVERIFY2(std::abs(period / exact - 1.0) < 2e-3,
+                 qPrintable(QString("T %1 s, exact %2 s").arg(period).arg(exact)));
+
+        // Deleting the bob deletes its rod, as one undo step; undo brings both back.
+        w.document().reset();
+        w.document().setSelection({QStringLiteral("p0")});
+        const int steps = w.document().undoStack()->count();
+        w.action("delete")->trigger();
+        QVERIFY(w.document().setup().joints.empty());
+        QCOMPARE(w.document().undoStack()->count(), steps + 1);
+        w.action("undo")->trigger();
+        QCOMPARE(w.document().setup().joints.size(), std::size_t(1));
+        QCOMPARE(w.document().setup().particles.size(), std::size_t(1));
+    }
+
+    // A hinge: a click on a bar pivots it on the world there; a drag from one box to another
+    // hinges the two. Its properties (limits are absent, a motor is absent) edit with undo.
+    void jointToolHingesBodies() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QWidget* canvas = w.canvas();
+        const QPoint c = canvas->rect().center() + QPoint(0, -200);
+        w.action("toolBox")->trigger();
+        drag(canvas, c, c + QPoint(120, 20));
+        drag(canvas, c + QPoint(130, 0), c + QPoint(250, 20));
+        QCOMPARE(w.document().setup().boxes.size(), std::size_t(2));
+        w.action("toolJoint")->trigger();
+        QCOMPARE(w.tools()->jointType(), JointType::Hinge);
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(5, 10));
+        drag(canvas, c + QPoint(115, 10), c + QPoint(140, 10));
+        const auto& joints = w.document().setup().joints;
+        QCOMPARE(joints.size(), std::size_t(2));
+        QVERIFY(!joints[0].b);
+        QCOMPARE(*joints[1].b, std::string("b1"));
+        const QPointF pivot = worldAt(w, c + QPoint(115, 10));
+        QVERIFY(std::abs((*joints[1].anchor)[0] - pivot.x()) < 1e-9);
+        // The two swing as a double pendulum; the hinges hold.
+        QVERIFY(w.controller().advance(2.0));
+        QVERIFY(w.document().world().jointErrors().position < 1e-3);
+        // A weld needs a second body.
+        w.document().reset();
+        auto* type = w.findChild<QComboBox*>(QStringLiteral("jointType"));
+        type->setCurrentIndex(type->findText(QStringLiteral("weld")));
+        const Vec2 bar = w.document().world().boxPosition(0);
+        QTest::mouseClick(canvas, Qt::LeftButton, {},
+                          w.canvas()->toWidget(QPointF(bar.x(), bar.y())).toPoint());
+        QCOMPARE(w.document().setup().joints.size(), std::size_t(2));
+        const auto* status = w.findChild<QLabel*>(QStringLiteral("statusMessage"));
+        QVERIFY2(status->text().contains(QStringLiteral("two bodies")), qPrintable(status->text()));
     }
 
     void draggingAnObjectIsOneUndoStep() {

@@ -75,6 +75,18 @@ QString SceneBrowser::springSummary(const SpringDesc& spring) {
     return text;
 }
 
+QString SceneBrowser::jointSummary(const JointDesc& joint) {
+    const QString type = qs(schema::kJointTypeNames[static_cast<std::size_t>(joint.type)]);
+    const QString other = joint.b ? qs(*joint.b) : tr("the world");
+    QString text = joint.type == JointType::Track
+                       ? tr("%1 of %2 on a %3")
+                             .arg(type, qs(joint.a), joint.circle ? tr("circle") : tr("line"))
+                       : tr("%1: %2 – %3").arg(type, qs(joint.a), other);
+    if (joint.length) text += tr(", %1 m").arg(num(*joint.length));
+    if (joint.motor) text += tr(", motor %1 rad/s").arg(num(joint.motor->speed));
+    return text;
+}
+
 QString SceneBrowser::clothSummary(const ClothDesc& cloth) {
     QString pinned;
     if (const auto* mode = std::get_if<std::string>(&cloth.pinned))
@@ -186,6 +198,10 @@ void SceneBrowser::setScene(const SceneDesc& scene) {
         qs(schema::key::cloths), tr("Cloths"), scene.cloths.size(),
         [&](std::size_t i) { return qs(scene.cloths[i].id); },
         [&](std::size_t i) { return clothSummary(scene.cloths[i]); });
+    addKind(
+        qs(schema::key::joints), tr("Joints"), scene.joints.size(),
+        [&](std::size_t i) { return qs(jointId(scene, i)); },
+        [&](std::size_t i) { return jointSummary(scene.joints[i]); });
 
     // The id column as wide as the longest id (group headings span both columns), so the
     // summaries get the rest of a narrow dock; capped so a long id cannot hide them.

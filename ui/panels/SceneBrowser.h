@@ -41,6 +41,7 @@ public:
     static QString planeSummary(const PlaneDesc& plane);
     static QString springSummary(const SpringDesc& spring);
     static QString clothSummary(const ClothDesc& cloth);
+    static QString jointSummary(const JointDesc& joint);
 
 signals:
     void selectionChanged(const QStringList& ids);

@@ -4,11 +4,13 @@
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
 #include "physics/scene/SceneDesc.h"
+#include "physics/scene/SceneSchema.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
 
 #include <QAction>
 #include <QActionGroup>
+#include <QComboBox>
 #include <QDir>
 #include <QFileDialog>
 #include <QMessageBox>
@@ -41,12 +43,12 @@ CanvasPresenter::CanvasPresenter(ui::SceneView& view, CanvasTools& tools, Docume
 
 void CanvasPresenter::createActions(QWidget& window) {
     auto* group = new QActionGroup(this);
-    static const char* const names[] = {"toolSelect",  "toolParticle", "toolSpring",
-                                        "toolCloth",   "toolBox",      "toolDisk",
-                                        "toolPolygon", "toolPlane",    "toolPin"};
+    static const char* const names[] = {"toolSelect", "toolParticle", "toolSpring",  "toolCloth",
+                                        "toolBox",    "toolDisk",     "toolPolygon", "toolPlane",
+                                        "toolPin",    "toolJoint"};
     for (int i = 0; i < static_cast<int>(std::size(names)); ++i) {  // CanvasTools::Tool's order
         const auto tool = static_cast<CanvasTools::Tool>(i);
-        const QKeySequence key(Qt::Key_1 + i);
+        const QKeySequence key(i < 9 ? Qt::Key_1 + i : Qt::Key_0);
         QAction* a = addWindowAction(window, names[i], CanvasTools::toolName(tool), key);
         connect(a, &QAction::triggered, this, [this, tool] { tools_.setTool(tool); });
         a->setCheckable(true);
@@ -67,6 +69,18 @@ void CanvasPresenter::createActions(QWidget& window) {
         tools_.setTool(CanvasTools::Tool::Polygon);
     });
     polygonSides_ = sides;
+    auto* joints = new QComboBox(&window);
+    joints->setObjectName(QStringLiteral("jointType"));
+    for (const JointType type :
+         {JointType::Hinge, JointType::Rod, JointType::Rope, JointType::Weld})
+        joints->addItem(QString::fromUtf8(schema::kJointTypeNames[static_cast<int>(type)].data()),
+                        static_cast<int>(type));
+    joints->setToolTip(tr("The kind of joint the Add joint tool makes"));
+    connect(joints, &QComboBox::currentIndexChanged, this, [this, joints](int) {
+        tools_.setJointType(static_cast<JointType>(joints->currentData().toInt()));
+        tools_.setTool(CanvasTools::Tool::Joint);
+    });
+    jointType_ = joints;
     connect(&tools_, &CanvasTools::toolChanged, this, [this](CanvasTools::Tool tool) {
         toolActions_[static_cast<int>(tool)]->setChecked(true);
     });

@@ -36,6 +36,8 @@ public:
     QList<QAction*> toolActions() const { return toolActions_; }
     // The polygon tool's number of sides, for the tool bar (made by createActions).
     QWidget* polygonSidesBox() const { return polygonSides_; }
+    // The joint tool's kind, for the tool bar.
+    QWidget* jointTypeBox() const { return jointType_; }
     // Thicker lines and larger labels for a projector.
     void setPresentation(bool on);
     // The drawing options are the user's, not the scene's: they outlive the session.
@@ -61,6 +63,7 @@ private:
     Document& document_;
     QList<QAction*> toolActions_;
     QWidget* polygonSides_ = nullptr;
+    QWidget* jointType_ = nullptr;
     std::vector<ViewOption> options_;
 };
 
