@@ -157,8 +157,58 @@ Vec2 KeplerMotion::at(double t) const {
     return centre + a * (e - std::cosh(H)) * periapsis + b * std::sinh(H) * normal;
 }
 
+double jacobiSn(double u, double k) {
+    if (k == 0.0) return std::sin(u);
+    double a[16], c[16];
+    a[0] = 1.0;
+    double b = std::sqrt(1.0 - k * k);
+    c[0] = k;
+    int n = 0;
+    while (n < 15 && std::abs(c[n]) > 1e-16) {
+        a[n + 1] = 0.5 * (a[n] + b);
+        c[n + 1] = 0.5 * (a[n] - b);
+        b = std::sqrt(a[n] * b);
+        ++n;
+    }
+    double phi = std::ldexp(a[n] * u, n);
+    for (int i = n; i > 0; --i) phi = 0.5 * (phi + std::asin(c[i] / a[i] * std::sin(phi)));
+    return std::sin(phi);
+}
+
+std::optional<PendulumMotion> PendulumMotion::fromState(const Vec2& centre, double length,
+                                                        const Vec2& g, const Vec2& position,
+                                                        const Vec2& velocity) {
+    const double gn = g.norm();
+    if (!(length > 0.0) || !(gn > 0.0)) return std::nullopt;
+    PendulumMotion m;
+    m.centre = centre;
+    m.length = length;
+    m.down = g / gn;
+    m.side = perp(m.down);
+    m.omega0 = std::sqrt(gn / length);
+    const Vec2 r = (position - centre) / length;
+    const double theta = std::atan2(r.dot(m.side), r.dot(m.down));
+    const double rate = velocity.dot(-std::sin(theta) * m.down + std::cos(theta) * m.side) / length;
+    const double s0 = std::sin(0.5 * theta);
+    // The energy fixes k: k² = sin²(θ₀/2) + θ'₀²/(4ω₀²).
+    m.k = std::sqrt(s0 * s0 + rate * rate / (4.0 * m.omega0 * m.omega0));
+    if (!(m.k < 1.0 - 1e-9)) return std::nullopt;  // over the top: not a libration
+    if (m.k == 0.0) return m;                      // at rest at the bottom
+    const double first = std::ellint_1(m.k, std::asin(std::clamp(s0 / m.k, -1.0, 1.0)));
+    // sn rises on (−K, K): a pendulum swinging back starts in the mirrored half, 2K − φ.
+    m.phase = rate >= 0.0 ? first : 2.0 * std::comp_ellint_1(m.k) - first;
+    return m;
+}
+
+Vec2 PendulumMotion::at(double t) const {
+    const double theta =
+        2.0 * std::asin(std::clamp(k * jacobiSn(omega0 * t + phase, k), -1.0, 1.0));
+    return centre + length * (std::cos(theta) * down + std::sin(theta) * side);
+}
+
 Vec ExactReference::positions(double t) const {
     Vec q = Vec::Zero(dimension_);
+    for (const Pendulum& p : pendulums_) q.segment<2>(p.dof) = p.motion.at(t);
     for (const Coordinate& c : coordinates_) q[c.dof] = c.motion.at(t);
     for (const AxisMotion& a : axes_) q.segment<2>(a.dof) = a.anchor + a.s.at(t) * a.axis;
     for (const Orbit& o : orbits_) q.segment<2>(o.dof) = o.orbit.at(t);
@@ -183,6 +233,46 @@ std::optional<ExactReference> findExactReference(const SceneDesc& scene, const W
     const auto coordinate = [&](int dof, double omega2, double gamma, double force) {
         ref.coordinates_.push_back({dof, {omega2, gamma, force, q[dof], u[dof]}});
     };
+
+    if (!world.joints().empty()) {
+        // Simple pendulums only: every dynamic body a particle held by one rod to a fixed
+        // point or one circular track, under gravity alone.
+        if (world.effects().size() != 1 || !fx.gravity) return std::nullopt;
+        const Vec2 g(fx.gravity->g[0], fx.gravity->g[1]);
+        std::vector<int> heldBy(world.particles().size(), -1);
+        for (const Box& b : world.boxes())
+            if (b.dof >= 0) return std::nullopt;
+        const auto& joints = world.joints();
+        for (int j = 0; j < static_cast<int>(joints.size()); ++j) {
+            const Joint& joint = joints[j];
+            const bool rod = joint.type == Joint::Type::Rod;
+            const bool hoop = joint.type == Joint::Type::Track && joint.circle;
+            if ((!rod && !hoop) || joint.a.kind != JointBody::Kind::Particle) return std::nullopt;
+            const Particle& p = world.particles()[joint.a.index];
+            if (p.dof < 0 || heldBy[joint.a.index] >= 0) return std::nullopt;
+            Vec2 centre = joint.center;
+            double length = joint.radius;
+            if (rod) {
+                // The other end must be fixed: the world, a pinned particle or a static body.
+                const JointBody& b = joint.b;
+                if (b.kind == JointBody::Kind::Particle && world.particles()[b.index].dof >= 0)
+                    return std::nullopt;
+                if (b.kind == JointBody::Kind::Rigid && world.boxes()[b.index].dof >= 0)
+                    return std::nullopt;
+                centre = world.jointSolver()->pointB(j, q);
+                length = joint.length;
+            }
+            const auto motion = PendulumMotion::fromState(centre, length, g, q.segment<2>(p.dof),
+                                                          u.segment<2>(p.dof));
+            if (!motion) return std::nullopt;
+            heldBy[joint.a.index] = j;
+            ref.pendulums_.push_back({p.dof, *motion});
+        }
+        for (std::size_t i = 0; i < world.particles().size(); ++i)
+            if (world.particles()[i].dof >= 0 && heldBy[i] < 0) return std::nullopt;
+        ref.kind_ = "simple pendulum";
+        return ref;
+    }
 
     if (world.findEffect(std::string(effectName::newtonianGravity))) {
         // Kepler: one fixed attractor and nothing else, so every body moves on its own conic.

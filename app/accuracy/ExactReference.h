@@ -2,7 +2,9 @@
 // Closed-form solutions for the scenes whose motion Phasebox knows exactly, used as the
 // reference of the accuracy study: linear oscillators (particles on springs to fixed points,
 // undamped or damped, in 2D when the force is linear and along the spring's axis otherwise),
-// free fall (with linear drag and wind, or none), and Kepler orbits around one fixed attractor.
+// free fall (with linear drag and wind, or none), Kepler orbits around one fixed attractor, and
+// simple pendulums (a particle on a rod to a fixed point, or a bead on a hoop) swinging under
+// gravity, at any amplitude below the top.
 //
 // Exactness is claimed only when the world's equations of motion are exactly those of the
 // closed form: anything else (a coupling spring, quadratic drag, a contact, a spring with a
@@ -54,6 +56,21 @@ struct KeplerMotion {
     Vec2 at(double t) const;
 };
 
+// A simple pendulum of length L about a fixed centre under gravity (down the unit vector
+// `down`), swinging below the top (libration): sin(θ/2) = k·sn(ω₀·t + φ, k), ω₀ = √(g/L),
+// θ counted from `down` toward `side` (down turned by +90°).
+struct PendulumMotion {
+    Vec2 centre{0.0, 0.0}, down{0.0, -1.0}, side{1.0, 0.0};
+    double length = 1.0, omega0 = 1.0, k = 0.0, phase = 0.0;
+
+    // From the state; nullopt when it goes over the top (k ≥ 1) or sits at the centre.
+    static std::optional<PendulumMotion> fromState(const Vec2& centre, double length, const Vec2& g,
+                                                   const Vec2& position, const Vec2& velocity);
+    Vec2 at(double t) const;
+};
+// Jacobi's sn(u, k), 0 ≤ k < 1, by the arithmetic–geometric mean (Abramowitz & Stegun 16.4).
+double jacobiSn(double u, double k);
+
 class ExactReference {
 public:
     // What the reference is, for people: "harmonic oscillator", "Kepler orbit", ….
@@ -77,11 +94,16 @@ private:
         int dof;
         KeplerMotion orbit;
     };
+    struct Pendulum {
+        int dof;
+        PendulumMotion motion;
+    };
     std::string kind_;
     int dimension_ = 0;
     std::vector<Coordinate> coordinates_;
     std::vector<AxisMotion> axes_;
     std::vector<Orbit> orbits_;
+    std::vector<Pendulum> pendulums_;
 };
 
 // The closed form of the scene's motion up to endTime, or nullopt when there is none that is

@@ -483,27 +483,32 @@ void JointSolver::solveFor(const Vec& invMass, Vec& x, double scale, bool fromVi
 }
 
 bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invMass) {
+    // The equality rows in their directions at the step's start, factored once: each
+    // iteration only evaluates C at q.
+    evaluateRows(Mode::Position, q0, q0);
+    dropInequalities();
+    bool factored = false;
     double previous = std::numeric_limits<double>::infinity();
-    Rows start;
+    Rows at;
     for (int it = 0; it < kProjectionIterations; ++it) {
-        evaluateRows(Mode::Position, q, u);
-        dropInequalities();
-        const double worst = worstViolation();
+        double worst = 0.0;
+        for (int k = 0; k < jointCount(); ++k) {
+            rowsOf(k, Mode::Position, q, u, at);
+            rhs_[k].setZero();
+            for (int i = 0; i < rows_[k].count; ++i) {
+                rhs_[k][i] = -at.c[i];
+                worst = std::max(worst, std::abs(at.c[i]));
+            }
+        }
         if (worst <= kProjectionTolerance) return true;
         // Past the asymptotic regime (the step moved a joint a good part of its size) or not
         // contracting: an impulse that large would pump energy in; positions only, then.
         if (worst > (it == 0 ? shakeReach_ : 0.5 * previous)) return false;
         previous = worst;
-        for (int k = 0; k < jointCount(); ++k) {
-            // The point and distance rows (the first two at most) in their start directions;
-            // angle rows are the same everywhere.
-            rowsOf(k, Mode::Position, q0, q0, start);
-            for (int i = 0; i < std::min(rows_[k].count, 2); ++i) {
-                rows_[k].ja.row(i) = start.ja.row(i);
-                rows_[k].jb.row(i) = start.jb.row(i);
-            }
-        }
-        solveFor(invMass, q, 1.0, true, u);
+        if (!factored) factor(invMass);
+        factored = true;
+        solve();
+        addJTranspose(invMass, 1.0, q);
         addJTranspose(invMass, 1.0 / h, u);  // the same impulse moves the velocity
     }
     return false;

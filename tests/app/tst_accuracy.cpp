@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -310,6 +311,53 @@ void TestAccuracy::exactReferencesAgreeWithTightRk45_data() {
     hyperbola.particles[1].position = {-2.0, 0.0};
     hyperbola.particles[1].velocity = {0.1, 0.5};  // and an ellipse going the other way
     QTest::newRow("Kepler hyperbola and retrograde ellipse") << hyperbola << "Kepler orbit";
+
+    // Simple pendulums (CONTRACT §6 joints): sin(θ/2) = k·sn(ω₀t + φ, k). One released at
+    // 170° on a rod to a fixed point, one on a hoop (a track) thrown backwards from 30°, one
+    // on a rod to a static box, released at 90° with g along x.
+    SceneDesc pendulums;
+    pendulums.simulation.dt = 0.05;
+    pendulums.effects.gravity = GravityDesc{{0.0, -9.81}};
+    const double wide = 170.0 * std::numbers::pi / 180.0;
+    ParticleDesc bob;
+    bob.id = "bob";
+    bob.position = {std::sin(wide), -std::cos(wide)};
+    ParticleDesc bead;
+    bead.id = "bead";
+    bead.position = {5.0 + 2.0 * std::sin(0.5236), 1.0 - 2.0 * std::cos(0.5236)};
+    bead.velocity = {-3.0 * std::cos(0.5236), -3.0 * std::sin(0.5236)};
+    pendulums.particles = {bob, bead};
+    JointDesc rod;
+    rod.type = JointType::Rod;
+    rod.a = "bob";
+    rod.anchor = Point2{0.0, 0.0};
+    JointDesc hoop;
+    hoop.type = JointType::Track;
+    hoop.a = "bead";
+    hoop.circle = TrackCircleDesc{{5.0, 1.0}, 2.0};
+    pendulums.joints = {rod, hoop};
+    QTest::newRow("pendulums: rod at 170 deg, hoop thrown back") << pendulums << "simple pendulum";
+
+    SceneDesc sideways;
+    sideways.simulation.dt = 0.05;
+    sideways.effects.gravity = GravityDesc{{4.0, 0.0}};
+    BoxDesc post;
+    post.id = "post";
+    post.isStatic = true;
+    post.position = {0.0, 0.0};
+    post.size = {0.2, 0.2};
+    ParticleDesc ball;
+    ball.id = "ball";
+    ball.radius = 0.0;
+    ball.position = {0.0, 1.5};
+    sideways.boxes = {post};
+    sideways.particles = {ball};
+    JointDesc tether;
+    tether.type = JointType::Rod;
+    tether.a = "ball";
+    tether.b = "post";
+    sideways.joints = {tether};
+    QTest::newRow("pendulum on a static post, sideways gravity") << sideways << "simple pendulum";
 }
 
 void TestAccuracy::exactReferencesAgreeWithTightRk45() {
