@@ -150,9 +150,9 @@ void MainWindow::createMenus() {
     addNamedActions(tools, *this, {"", "accuracyLab"});
     QMenu* view = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : docks_) view->addAction(dock->toggleViewAction());
-    addNamedActions(
-        view, *this,
-        {"", "fit", "trails", "velocityArrows", "labels", "grid", "errorEstimate", "presentation"});
+    addNamedActions(view, *this,
+                    {"", "fit", "trails", "velocityArrows", "forceArrows", "labels", "grid",
+                     "errorEstimate", "presentation"});
     menuBar()->addMenu(tr("&Help"))->addAction(tr("&About Phasebox"), this, [this] {
         QMessageBox::about(this, tr("About Phasebox"),
                            tr("<b>Phasebox %1</b><p>A 2D physics sandbox for the classroom: drop "

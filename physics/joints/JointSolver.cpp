@@ -84,6 +84,7 @@ void JointSolver::bind(const Bodies& bodies) {
     rhs_.assign(m, Vec3::Zero());
     lambda_.assign(m, Vec3::Zero());
     forces_.assign(m, 0.0);
+    forceOn_.assign(m, {Vec2::Zero(), Vec2::Zero()});
     motorImpulse_.assign(m, 0.0);
 
     // The joint graph: two joints are adjacent when they hold a common dynamic body.
@@ -425,6 +426,8 @@ void JointSolver::solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, 
         forces_[k] = type == Joint::Type::Hinge || type == Joint::Type::Weld
                          ? lambda_[k].head<2>().norm()
                          : std::abs(lambda_[k][0]);
+        forceOn_[k][0] = (r.ja.transpose() * lambda_[k]).head<2>();
+        forceOn_[k][1] = (r.jb.transpose() * lambda_[k]).head<2>();
     }
 }
 

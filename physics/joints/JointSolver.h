@@ -24,6 +24,7 @@
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <vector>
 
 namespace phasebox {
@@ -81,6 +82,10 @@ public:
     // The magnitude of joint i's constraint force at the last evaluation (N; a weld's or a
     // hinge's force on its point, a rod's, rope's or pulley's tension, a track's normal force).
     double force(int joint) const { return forces_[joint]; }
+    // The constraint force on body a at its point, and on body b at its (N), at the last
+    // evaluation: what force arrows draw.
+    Vec2 forceOnA(int joint) const { return forceOn_[joint][0]; }
+    Vec2 forceOnB(int joint) const { return forceOn_[joint][1]; }
     // World position of a joint's point on body a or b at q (for drawing).
     Vec2 pointA(int joint, const Vec& q) const;
     Vec2 pointB(int joint, const Vec& q) const;
@@ -140,6 +145,7 @@ private:
     std::vector<Rows> rows_;
     std::vector<Vec3> rhs_, lambda_;
     std::vector<double> forces_;
+    std::vector<std::array<Vec2, 2>> forceOn_;
     std::vector<double> motorImpulse_;
 
     // The block LDLᵀ: joints by elimination position; upper_[upperStart_[k] ..] the later

@@ -577,6 +577,17 @@ void drawArrows(const Frame& f) {
                 if (end->kind == SpringEnd::Kind::Box) boxes[end->index] += force;
             }
         }
+        // The joints' constraint forces (CONTRACT §6), on each body they hold.
+        if (const JointSolver* joints = w.jointSolver()) {
+            for (int i = 0; i < joints->jointCount(); ++i) {
+                const Joint& j = w.joints()[i];
+                for (const auto& [body, force] :
+                     {std::pair{&j.a, joints->forceOnA(i)}, std::pair{&j.b, joints->forceOnB(i)}}) {
+                    if (body->kind == JointBody::Kind::Particle) particles[body->index] += force;
+                    if (body->kind == JointBody::Kind::Rigid) boxes[body->index] += force;
+                }
+            }
+        }
         drawVectors(f, particles, boxes, f.o.forceArrowMetresPerNewton, f.o.colors.force);
     }
 }

@@ -56,7 +56,7 @@ struct RenderOptions {
     bool scaleBar = true;
     bool trails = false;          // needs a TrailHistory passed to paint()
     bool velocityArrows = false;  // particles (not cloth nodes) and dynamic boxes
-    // Only the spring forces, summed per particle and box: the world keeps no total force per
+    // Only the spring and joint forces, summed per body: the world keeps no total force per
     // object (contacts act as impulses, fields are inside the integrator), and a finite
     // difference of velocities between frames is not available to a stateless renderer.
     bool forceArrows = false;

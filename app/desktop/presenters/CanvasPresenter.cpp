@@ -94,6 +94,8 @@ void CanvasPresenter::createActions(QWidget& window) {
          {std::tuple{"trails", tr("&Trails"), Qt::Key_T, &O::trails, "view/trails"},
           std::tuple{"velocityArrows", tr("&Velocity Arrows"), Qt::Key_V, &O::velocityArrows,
                      "view/velocityArrows"},
+          std::tuple{"forceArrows", tr("&Force Arrows (springs, joints)"), Qt::Key_A,
+                     &O::forceArrows, "view/forceArrows"},
           std::tuple{"labels", tr("Object &Labels"), Qt::Key_L, &O::labels, "view/labels"},
           std::tuple{"grid", tr("Metre &Grid"), Qt::Key_G, &O::grid, ""}}) {
         QAction* a = addWindowAction(window, name, text, key);
