@@ -826,6 +826,34 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     }
 }
 
+void ContactSolver::relaxVelocities(Vec& u, int iterations) {
+    if (constraints_.empty()) return;
+    const std::size_t count = bodies_.size();
+    for (std::size_t k = 0; k < count; ++k) {
+        const SolverBody& b = bodies_[k];
+        BodyState& s = state_[k];
+        s.vx = u[b.dof];
+        s.vy = u[b.dof + 1];
+        if (b.rotates) s.w = u[b.dof + 2];
+    }
+    for (int it = 0; it < iterations; ++it) solve();
+    unpackImpulses();
+    for (std::size_t k = 0; k < count; ++k) {
+        const SolverBody& b = bodies_[k];
+        const BodyState& s = state_[k];
+        u[b.dof] = s.vx;
+        u[b.dof + 1] = s.vy;
+        if (b.rotates) u[b.dof + 2] = s.w;
+    }
+    for (std::size_t i = 0; i < constraints_.size(); ++i) {
+        ContactConstraint& c = constraints_[i];
+        for (int k = 0; k < c.pointCount; ++k) {
+            c.points[k].normalImpulse = rows_[i].p[k].normalImpulse;
+            c.points[k].tangentImpulse = rows_[i].p[k].tangentImpulse;
+        }
+    }
+}
+
 void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
     // Gauss-Seidel on positions, translation only (Box2D 2.4's position solver without its
     // Baumgarte factor): each deep row moves its bodies apart in proportion to their inverse

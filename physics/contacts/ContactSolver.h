@@ -117,6 +117,13 @@ public:
     // positionWeight: the integrator's IntegratorInfo::positionWeight.
     void solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
                    const ContactSettings& settings, double positionWeight);
+    // After solveStep, more relax iterations (no bias) of its last sub-step's rows, from and to
+    // the world's velocities u, the accumulated impulses carrying on. The joint solver
+    // interleaves them with its velocity projections, so that a body both touching and jointed
+    // (a car's wheel, a ragdoll's foot) is held by both at once rather than by whichever acts
+    // last.
+    void relaxVelocities(Vec& u, int iterations);
+    bool empty() const { return constraints_.empty(); }
     // Adds scale times the last step's position correction (push-out) to q.
     void addPushOut(Vec& q, double scale) const;
 

@@ -37,6 +37,9 @@ public:
                    const ContactSettings& settings, double positionWeight) {
         solver_.solveStep(h, q0, u0, q, u, settings, positionWeight);
     }
+    // More relax iterations after the step (ContactSolver::relaxVelocities).
+    void relaxVelocities(Vec& u, int iterations) { solver_.relaxVelocities(u, iterations); }
+    bool touching() const { return !solver_.empty(); }
     // Adds scale times the last step's position correction to q.
     void addPushOut(Vec& q, double scale) const { solver_.addPushOut(q, scale); }
 

@@ -166,6 +166,8 @@ void JointSolver::bind(const Bodies& bodies) {
     off_.assign(upper_.size(), Mat3::Zero());
     l_.assign(upper_.size(), Mat3::Zero());
     y_.assign(m, Vec3::Zero());
+    factoredRows_.assign(m, Rows{});
+    factoredValid_ = false;
 }
 
 // ---- rows ------------------------------------------------------------------------------------
@@ -334,6 +336,18 @@ void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x) const 
 // ---- the block LDLᵀ --------------------------------------------------------------------------
 
 void JointSolver::factor(const Vec& invMass) {
+    // The same rows as the last factorization (a step's end is the next step's start: the
+    // velocity projection, the next derivative evaluation and SHAKE all ask for J(q1)): the
+    // factors stand.
+    if (factoredValid_ && &invMass == factoredMass_ &&
+        std::equal(rows_.begin(), rows_.end(), factoredRows_.begin(),
+                   [](const Rows& a, const Rows& b) {
+                       return a.count == b.count && a.ja == b.ja && a.jb == b.jb;
+                   }))
+        return;
+    factoredRows_ = rows_;  // same size: no allocation
+    factoredMass_ = &invMass;
+    factoredValid_ = true;
     const auto weights = [&](const End& e) {
         Vec3 w = Vec3::Zero();
         if (e.dof < 0) return w;
@@ -541,6 +555,7 @@ bool JointSolver::projectVelocities(const Vec& q, Vec& u, const Vec& invMass) {
 
 double JointSolver::driveMotors(double h, const Vec& q, Vec& u, const Vec& mass,
                                 const Vec& invMass) {
+    lastMotorWork_ = 0.0;
     if (!hasMotors_) return 0.0;
     const auto kinetic = [&] { return 0.5 * (mass.array() * u.array().square()).sum(); };
     const double before = kinetic();
@@ -564,7 +579,8 @@ double JointSolver::driveMotors(double h, const Vec& q, Vec& u, const Vec& mass,
         }
         projectVelocities(q, u, invMass);
     }
-    return kinetic() - before;
+    lastMotorWork_ = kinetic() - before;
+    return lastMotorWork_;
 }
 
 int JointSolver::substepsFor(double h, const Vec& q, const Vec& u) const {

@@ -68,6 +68,7 @@ public:
     //    step 3 (Box2D's motor with the joints re-projected). Returns the kinetic energy this
     //    adds or takes: the motors' work.
     double driveMotors(double h, const Vec& q, Vec& u, const Vec& mass, const Vec& invMass);
+    double lastMotorWork() const { return lastMotorWork_; }
 
     // How many sub-steps a step of h needs so that no joint's geometry turns by more than
     // kMaxTurnPerStep in one (a rod's direction, a hinge's lever arm): beyond that the
@@ -139,6 +140,7 @@ private:
     std::vector<Joint> joints_;
     std::vector<End> endA_, endB_;
     bool hasMotors_ = false, hasInequalities_ = false;
+    double lastMotorWork_ = 0.0;
     double shakeReach_ = 0.01;  // m: the largest violation SHAKE answers with an impulse
 
     // Per evaluation (sized in bind).
@@ -154,6 +156,10 @@ private:
     std::vector<int> upperStart_, upper_;
     std::vector<Mat3> diag_, dinv_, off_, l_;
     std::vector<Vec3> y_;  // the solve's right-hand side by elimination position
+    // The rows the factors are of, to skip factoring the same matrix again.
+    std::vector<Rows> factoredRows_;
+    const Vec* factoredMass_ = nullptr;
+    bool factoredValid_ = false;
     // Couplings of the assembly: off-diagonal block t gets J_i,side·W·J_k,sideᵀ over a shared
     // body; and the fill updates of the factorization: (k's entries t1, t2) → target block.
     struct Coupling {

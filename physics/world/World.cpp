@@ -15,6 +15,9 @@ namespace phasebox {
 namespace {
 using Clock = std::chrono::steady_clock;
 
+// Rounds of contact relax and joint projection after a step that has both (solveJoints).
+constexpr int kJointContactRounds = 32;
+
 double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -500,6 +503,11 @@ bool World::step() {
             timer.start(StepStage::Collide);
             collide(next, substeps);
         }
+        // Contacts and joints on the same step trade energy back and forth (each stage books
+        // what it moves); what counts is their net change, booked once after both.
+        const bool both = ok && contacts_ && joints_;
+        const EnergyLedger booked = ledger_;
+        const double before = both ? mechanicalEnergy(q_[next], u_[next]) : 0.0;
         if (ok && contacts_) {
             timer.start(StepStage::SolveContacts);
             solveContacts(h, next);
@@ -507,6 +515,15 @@ bool World::step() {
         if (ok && joints_) {
             timer.start(StepStage::SolveJoints);
             solveJoints(h, next);
+        }
+        if (both && contacts_->touching()) {
+            const double after = mechanicalEnergy(q_[next], u_[next]);
+            if (std::isfinite(after)) {
+                const double motors = joints_->lastMotorWork();
+                const double net = after - before - motors;
+                ledger_.workNc = booked.workNc + std::min(net, 0.0) + motors;
+                ledger_.correction = booked.correction + std::max(net, 0.0);
+            }
         }
         if (!ok || (substeps > 1 && !(q_[next].allFinite() && u_[next].allFinite())))
             return failSubstep(t + h, !ok, next);
@@ -573,7 +590,19 @@ void World::solveJoints(double h, int next) {
     const double beforeCorrection = mechanicalEnergy(q, u);
     joints_->correctPositions(q, u, invMass_);
     const double afterCorrection = mechanicalEnergy(q, u);
-    const bool caught = joints_->projectVelocities(q, u, invMass_);
+    bool caught = joints_->projectVelocities(q, u, invMass_);
+    // Contacts and joints on the same bodies: block Gauss-Seidel between the two solvers, each
+    // exact or converged on its own, so that neither undoes the other (a wheel on the ground
+    // is held up by the contact and to the car by the hinge). What the contacts do here is
+    // their work, as in the contact stage: never energy put in.
+    const bool interleave = contacts_ && contacts_->touching();
+    if (interleave) {
+        for (int round = 0; round < kJointContactRounds; ++round) {
+            contacts_->relaxVelocities(u, 2);
+            caught = joints_->projectVelocities(q, u, invMass_) || caught;
+        }
+        caught = true;
+    }
     const double projected = caught ? mechanicalEnergy(q, u) : afterCorrection;
     const double motorWork = joints_->driveMotors(h, q, u, mass_, invMass_);
     if (!std::isfinite(projected) || !std::isfinite(motorWork)) return;  // the guard reports it
