@@ -298,6 +298,12 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r) 
             }
             break;
     }
+    // A row that is not active (a slack rope, a hinge inside its limits) must not couple
+    // through the factors either: its Jacobian is zero.
+    for (int i = r.count; i < 3; ++i) {
+        r.ja.row(i).setZero();
+        r.jb.row(i).setZero();
+    }
     // A fixed end has no velocities to act on.
     if (ea.dof < 0) r.ja.setZero();
     if (eb.dof < 0) r.jb.setZero();
