@@ -148,6 +148,14 @@ void CanvasTools::setTool(Tool tool) {
 QString CanvasTools::objectAt(QPointF world) const {
     const ui::PickResult hit = view_.pick(view_.toWidget(world));
     if (!hit) return {};
+    // A joint's pivot lies on its bodies: the tools that attach things attach them to its
+    // body a there.
+    if (hit.kind == ui::PickResult::Joint && tool_ != Tool::Select && tool_ != Tool::Pin) {
+        const World& w = document_.world();
+        const JointBody& a = w.joints()[hit.index].a;
+        return QString::fromStdString(a.kind == JointBody::Kind::Rigid ? w.boxes()[a.index].id
+                                                                       : w.particles()[a.index].id);
+    }
     return QString::fromStdString(hit.id);
 }
 

@@ -442,6 +442,11 @@ private slots:
         QCOMPARE(*joints[1].b, std::string("b1"));
         const QPointF pivot = worldAt(w, c + QPoint(115, 10));
         QVERIFY(std::abs((*joints[1].anchor)[0] - pivot.x()) < 1e-9);
+        // A click on a pivot selects its joint (drawn over the bodies), for the Properties.
+        w.action("toolSelect")->trigger();
+        QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(5, 10));
+        QCOMPARE(w.document().selection(), QStringList{QStringLiteral("j0")});
+        w.action("toolJoint")->trigger();
         // The two swing as a double pendulum; the hinges hold.
         QVERIFY(w.controller().advance(2.0));
         QVERIFY(w.document().world().jointErrors().position < 1e-3);

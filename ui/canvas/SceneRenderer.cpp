@@ -350,12 +350,19 @@ void drawJoints(const Frame& f) {
     const Vec& q = f.world.positions();
     const auto& joints = f.world.joints();
     QPainterPath anchors;
-    const double ring = 4.5 * f.lw;
+    const double ring = SceneRenderer::kPivotPixels * f.lw;
     for (int i = 0; i < static_cast<int>(joints.size()); ++i) {
         const Joint& j = joints[i];
         const QPointF a = f.screen(solver->pointA(i, q)), b = f.screen(solver->pointB(i, q));
         const bool toWorld = j.b.kind == JointBody::Kind::World;
         p.setBrush(Qt::NoBrush);
+        if (selected(f.o, j.id)) {  // under the joint: a halo at its pivot and along its rod
+            p.setPen(f.pen(f.o.colors.selection, 6.0));
+            if (j.type == Joint::Type::Rod || j.type == Joint::Type::Rope)
+                p.drawLine(a, b);
+            else
+                p.drawEllipse(a, 1.8 * ring, 1.8 * ring);
+        }
         switch (j.type) {
             case Joint::Type::Hinge:
                 if (toWorld) addAnchor(anchors, a, 10.0 * f.lw);

@@ -150,7 +150,7 @@ private:
 };
 
 struct PickResult {
-    enum Kind { None, Particle, Box, Plane, Spring };
+    enum Kind { None, Particle, Box, Plane, Spring, Joint };
     Kind kind = None;
     int index = -1;
     std::string id;
@@ -163,6 +163,7 @@ public:
     static constexpr int kMaxLabels = 300;
     static constexpr double kMinParticlePixels = 3.0;  // a radius-0 particle stays visible
     static constexpr double kGridMinPixels = 40.0;
+    static constexpr double kPivotPixels = 4.5;  // a hinge's drawn ring (line width scale 1)
 
     // Draws the world as seen through `view`; the view's centre is put at the centre of the
     // viewport. Leaves the painter's state as it found it.
@@ -174,9 +175,10 @@ public:
                            const RenderOptions& options);
 
     // The object under a widget point: particles first (nearest centre within its drawn radius
-    // plus the tolerance), then rigid bodies, boxes and disks (topmost containing it), then springs
-    // (within the tolerance of the segment; cloth springs are left to their nodes), then planes
-    // (the one whose solid side contains it with the nearest border).
+    // plus the tolerance), then hinge and weld pivots (drawn over the bodies), then rigid
+    // bodies, boxes and disks (topmost containing it), then springs, rods and ropes (within the
+    // tolerance of the segment; cloth springs are left to their nodes), then planes (the one
+    // whose solid side contains it with the nearest border).
     static PickResult pick(const World& world, const ViewTransform& view, QPointF widgetPoint,
                            double tolerancePixels = 6.0);
 
@@ -215,6 +217,17 @@ inline PickResult SceneRenderer::pick(const World& world, const ViewTransform& v
     });
     if (i >= 0) return {PickResult::Particle, i, world.particles()[i].id};
 
+    const JointSolver* joints = world.jointSolver();
+    const int jointCount = joints ? joints->jointCount() : 0;
+    i = nearest(jointCount, [&](int k) {
+        const Joint::Type t = world.joints()[k].type;
+        if (t != Joint::Type::Hinge && t != Joint::Type::Weld) return kMiss;
+        const Vec2 c = joints->pointA(k, world.positions());
+        const double d = QLineF(widgetPoint, view.toScreen(c.x(), c.y())).length();
+        return d <= kPivotPixels + tolerancePixels ? d : kMiss;
+    });
+    if (i >= 0) return {PickResult::Joint, i, world.joints()[i].id};
+
     const QPointF wp = view.toWorld(widgetPoint);
     const Vec2 point(wp.x(), wp.y());
     const double tolerance = view.toMetres(tolerancePixels);
@@ -238,18 +251,28 @@ inline PickResult SceneRenderer::pick(const World& world, const ViewTransform& v
             if (inside) return {PickResult::Box, i, box.id};
         }
 
-    i = nearest(world.springs().size(), [&](int k) {
-        const Spring& s = world.springs()[k];
-        // Thousands of cloth springs cover a cloth: its nodes are the handles.
-        if (s.cloth >= 0) return kMiss;
-        const Vec2 a = world.springEndPosition(s.a), ab = world.springEndPosition(s.b) - a;
+    // Pixels from the point to the segment a–b when within the tolerance, else a miss.
+    const auto segment = [&](const Vec2& a, const Vec2& b) {
+        const Vec2 ab = b - a;
         const double t = ab.squaredNorm() > 0.0
                              ? std::clamp((point - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0)
                              : 0.0;
         const double d = view.toPixels((a + t * ab - point).norm());
         return d <= tolerancePixels ? d : kMiss;
+    };
+    i = nearest(world.springs().size(), [&](int k) {
+        const Spring& s = world.springs()[k];
+        // Thousands of cloth springs cover a cloth: its nodes are the handles.
+        if (s.cloth >= 0) return kMiss;
+        return segment(world.springEndPosition(s.a), world.springEndPosition(s.b));
     });
     if (i >= 0) return {PickResult::Spring, i, world.springs()[i].id};
+    i = nearest(jointCount, [&](int k) {
+        const Joint::Type t = world.joints()[k].type;
+        if (t != Joint::Type::Rod && t != Joint::Type::Rope) return kMiss;
+        return segment(joints->pointA(k, world.positions()), joints->pointB(k, world.positions()));
+    });
+    if (i >= 0) return {PickResult::Joint, i, world.joints()[i].id};
 
     // Inside the solid side (or within the tolerance of its border); the nearest border wins
     // where solids overlap, e.g. in the corner of a closed box.

@@ -290,6 +290,16 @@ void SceneView::frameNow() const {
         for (const Spring& s : w.springs())
             for (const SpringEnd* end : {&s.a, &s.b})
                 if (end->kind == SpringEnd::Kind::Anchor) include(end->point, 0.0);
+        // What joints hold to the world: anchors, pulley wheels, a track's curve.
+        for (const Joint& j : w.joints()) {
+            if (j.b.kind == JointBody::Kind::World && j.type != Joint::Type::Track)
+                include(j.b.point, 0.0);
+            if (j.type == Joint::Type::Pulley) {
+                include(j.groundA, 0.0);
+                include(j.groundB, 0.0);
+            }
+            if (j.type == Joint::Type::Track && j.circle) include(j.center, j.radius);
+        }
     }
     if (!(lo[0] <= hi[0])) {  // nothing to frame
         view_ = ViewTransform({0.0, 0.0}, std::max(1.0, widget.width()) / 10.0, widget);
