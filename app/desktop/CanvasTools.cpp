@@ -127,7 +127,8 @@ QString CanvasTools::toolHelp(Tool tool) {
             return tr(
                 "Drag from a body to another, or to empty space for the fixed world: a hinge "
                 "pivots where the drag starts; a rod or rope joins the two points; a weld "
-                "holds two bodies together.");
+                "holds two bodies together; a pulley hangs two bodies over two wheels a metre "
+                "above; a track puts a particle on a hoop centred where the drag ends.");
     }
     return {};
 }
@@ -561,9 +562,26 @@ bool CanvasTools::addJoint(const QString& a, const QString& b, QPointF end, QStr
             }
             break;
         case JointType::Pulley:
+            if (b.isEmpty()) {
+                emit message(tr("A pulley hangs two bodies: drag from one to the other."));
+                return false;
+            }
+            // The two wheels above the points pressed and released, a metre over the higher.
+            j.aPoint = localPoint(a, start_);
+            j.bPoint = localPoint(b, end);
+            j.groundA = {start_.x(), std::max(start_.y(), end.y()) + kPulleyHeight};
+            j.groundB = {end.x(), std::max(start_.y(), end.y()) + kPulleyHeight};
+            j.b = b.toStdString();
+            break;
         case JointType::Track:
-            emit message(tr("Pulleys and tracks are set in the scene file."));
-            return false;
+            // A bead on a hoop: the circle about where the drag ends, through the particle.
+            if (isClick(end)) {
+                emit message(tr("Drag from a particle to the centre of its hoop."));
+                return false;
+            }
+            j.b.reset();
+            j.circle = TrackCircleDesc{point(end), QLineF(start_, end).length()};
+            break;
     }
     QString error;
     const bool ok = document_.addObject(j, &error, newId);

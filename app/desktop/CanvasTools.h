@@ -17,8 +17,9 @@
 //   Plane    drag a line along the surface; the solid side is to the right of the drag
 //   Pin      click a particle to pin or unpin it, a rigid body to make it static or dynamic
 //   Joint    drag from a body to another, or to empty space for the world: a hinge (its pivot
-//            where the drag starts), rod, rope (between the points pressed and released) or
-//            weld, as jointType() says
+//            where the drag starts), rod, rope (between the points pressed and released),
+//            weld, pulley (wheels a metre above) or track (a hoop centred where the drag
+//            ends), as jointType() says
 
 #include <QObject>
 #include <QPointF>
@@ -62,7 +63,7 @@ public:
     // The polygon tool's regular polygon: this many sides unless set (3 to 16).
     static constexpr int kPolygonSides = 6;
     int polygonSides() const { return polygonSides_; }
-    // The joint tool's kind: hinge, rod, rope or weld (pulleys and tracks are written in files).
+    // The joint tool's kind.
     JointType jointType() const { return jointType_; }
     void setJointType(JointType type) { jointType_ = type; }
     void setPolygonSides(int sides);
@@ -70,6 +71,8 @@ public:
     const QList<QPointF>& outline() const { return outline_; }
     // Closes the clicked outline into a polygon (Enter); false, with a message, when refused.
     bool closeOutline();
+    // The joint tool's pulley wheels: this far above the higher of its two points (m).
+    static constexpr double kPulleyHeight = 1.0;
     // A click within this many pixels of the first corner closes the outline.
     static constexpr double kCloseOutlinePixels = 8.0;
 

@@ -420,6 +420,42 @@ private slots:
         QCOMPARE(w.document().setup().particles.size(), std::size_t(1));
     }
 
+    // The pulley and track kinds of the joint tool: a drag from one particle to another hangs
+    // them over two wheels a metre above the higher (an Atwood machine that then runs), a drag
+    // from a particle to a point puts it on a hoop about that point.
+    void jointToolMakesPulleysAndTracks() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QWidget* canvas = w.canvas();
+        const QPoint c = canvas->rect().center() + QPoint(0, -150);
+        w.action("toolParticle")->trigger();
+        for (const QPoint& p : {c, c + QPoint(100, 0), c + QPoint(250, 0)})
+            QTest::mouseClick(canvas, Qt::LeftButton, {}, p);
+        auto* type = w.findChild<QComboBox*>(QStringLiteral("jointType"));
+        type->setCurrentIndex(type->findText(QStringLiteral("pulley")));
+        QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Joint);
+        drag(canvas, c, c + QPoint(100, 0));
+        type->setCurrentIndex(type->findText(QStringLiteral("track")));
+        drag(canvas, c + QPoint(250, 0), c + QPoint(250, -80));
+        const auto& joints = w.document().setup().joints;
+        QCOMPARE(joints.size(), std::size_t(2));
+        const QPointF a = worldAt(w, c), b = worldAt(w, c + QPoint(100, 0));
+        QCOMPARE(joints[0].type, JointType::Pulley);
+        QCOMPARE(*joints[0].b, std::string("p1"));
+        QVERIFY(std::abs(joints[0].groundA[1] - (a.y() + CanvasTools::kPulleyHeight)) < 1e-9);
+        QVERIFY(std::abs(joints[0].groundB[0] - b.x()) < 1e-9);
+        QCOMPARE(joints[1].type, JointType::Track);
+        QVERIFY(joints[1].circle && !joints[1].b);
+        const QPointF centre = worldAt(w, c + QPoint(250, -80));
+        QVERIFY(std::abs(joints[1].circle->radius -
+                         QLineF(worldAt(w, c + QPoint(250, 0)), centre).length()) < 1e-9);
+        // Equal masses balance: the pulley holds both; the bead swings on its hoop.
+        QVERIFY(w.controller().advance(1.0));
+        QVERIFY(w.document().world().jointErrors().position < 1e-3);
+        QVERIFY(std::abs(w.document().world().particlePosition(0).y() - a.y()) < 1e-9);
+    }
+
     // A hinge: a click on a bar pivots it on the world there; a drag from one box to another
     // hinges the two. Its properties (limits are absent, a motor is absent) edit with undo.
     void jointToolHingesBodies() {

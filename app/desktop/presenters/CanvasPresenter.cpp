@@ -71,8 +71,8 @@ void CanvasPresenter::createActions(QWidget& window) {
     polygonSides_ = sides;
     auto* joints = new QComboBox(&window);
     joints->setObjectName(QStringLiteral("jointType"));
-    for (const JointType type :
-         {JointType::Hinge, JointType::Rod, JointType::Rope, JointType::Weld})
+    for (const JointType type : {JointType::Hinge, JointType::Rod, JointType::Rope, JointType::Weld,
+                                 JointType::Pulley, JointType::Track})
         joints->addItem(QString::fromUtf8(schema::kJointTypeNames[static_cast<int>(type)].data()),
                         static_cast<int>(type));
     joints->setToolTip(tr("The kind of joint the Add joint tool makes"));
