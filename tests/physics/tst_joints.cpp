@@ -4,6 +4,7 @@
 // chain's rod lengths, a slack rope's free fall, welds, motors and limits. 1 kg, 1 m and
 // g = 9.81 unless said.
 
+#include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/world/World.h"
 
@@ -245,6 +246,55 @@ private slots:
         QVERIFY(worst < 5e-3);
         // It hangs below its anchor, with the energy it lost booked, not hidden.
         QVERIFY(w.positions()[2 * (links - 1) + 1] < 0.0);
+    }
+
+    // Every one of the ten methods keeps a jointed scene on its joints: a 30° double
+    // pendulum (a rod and a hinged bar) at dt 1/60 for 10 s, every joint within 1 mm at the
+    // end of every step, and the energy within 5% of the initial swing's (but explicit Euler's,
+    // whose growth is its own, not the joints').
+    void everyMethodHoldsTheJoints_data() {
+        QTest::addColumn<QString>("integrator");
+        for (const IntegratorInfo& info : integratorRegistry())
+            QTest::newRow(std::string(info.name).c_str())
+                << QString::fromLatin1(info.name.data(), static_cast<qsizetype>(info.name.size()));
+    }
+    void everyMethodHoldsTheJoints() {
+        QFETCH(QString, integrator);
+        SceneDesc s = scene(integrator, 1.0 / 60.0);
+        const double theta = 30.0 * kPi / 180.0;
+        s.particles = {particle("bob", {std::sin(theta), -std::cos(theta)})};
+        BoxDesc bar;
+        bar.id = "bar";
+        bar.size = {0.6, 0.05};
+        bar.position = {std::sin(theta) + 0.3, -std::cos(theta)};
+        s.boxes = {bar};
+        JointDesc rod = joint(JointType::Rod, "bob");
+        rod.anchor = Point2{0.0, 0.0};
+        JointDesc hinge = joint(JointType::Hinge, "bob", "bar");
+        hinge.anchor = Point2{std::sin(theta), -std::cos(theta)};
+        s.joints = {rod, hinge};
+        const auto built = buildWorld(s);
+        World& w = *built.world;
+        const double swing = kG * (1.0 - std::cos(theta)) * 2.0;  // J, about the initial PE
+        const double e0 = w.kineticEnergy() + w.potentialEnergy();
+        double worst = 0.0, energy = 0.0;
+        const bool explicitEuler = integrator == QLatin1String("explicit_euler");
+        while (w.time() < 10.0 - 1e-9) {
+            if (!w.step()) {
+                // Explicit Euler feeds every swing (its energy grows by (1 + ω²h²) a step); it
+                // is stopped as diverging after about 5 s, restored to a good state. Known:
+                // the run ends in a non-finite value there, not in the energy rule.
+                QVERIFY2(explicitEuler, qPrintable(integrator));
+                break;
+            }
+            worst = std::max(worst, w.jointErrors().position);
+            energy = std::max(energy, std::abs(w.kineticEnergy() + w.potentialEnergy() - e0));
+        }
+        qInfo("%s: joint error <= %.1e m, |E - E0| <= %.3g J", qPrintable(integrator), worst,
+              energy);
+        QVERIFY(worst < 1e-3);
+        QVERIFY(w.positions().allFinite());
+        if (!explicitEuler) QVERIFY(energy < 0.05 * swing);
     }
 
     // A rope longer than the distance is slack: the bob falls freely (y = −½·g·t²) until the
