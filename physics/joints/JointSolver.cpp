@@ -65,9 +65,19 @@ void JointSolver::bind(const Bodies& bodies) {
     endA_.clear();
     endB_.clear();
     hasMotors_ = hasInequalities_ = false;
+    turningDofs_.clear();
+    std::map<int, int> slots;  // dof → slot
+    const auto withSlot = [&](End e) {
+        if (e.turns) {
+            const auto [it, added] = slots.try_emplace(e.dof, static_cast<int>(slots.size()));
+            if (added) turningDofs_.push_back(e.dof);
+            e.slot = it->second;
+        }
+        return e;
+    };
     for (const Joint& j : joints_) {
-        endA_.push_back(resolve(j.a));
-        endB_.push_back(resolve(j.b));
+        endA_.push_back(withSlot(resolve(j.a)));
+        endB_.push_back(withSlot(resolve(j.b)));
         hasMotors_ = hasMotors_ || j.hasMotor;
         hasInequalities_ = hasInequalities_ || j.hasLimits || j.type == Joint::Type::Rope;
     }
@@ -80,6 +90,7 @@ void JointSolver::bind(const Bodies& bodies) {
         for (const double length : {j.length, j.radius, arm(j.a), arm(j.b)})
             if (length > 0.0) smallest = std::min(smallest, length);
     shakeReach_ = kShakeReach * (std::isfinite(smallest) ? smallest : 1.0);
+    rotations_.assign(turningDofs_.size(), Mat2::Identity());
     rows_.assign(m, Rows{});
     rhs_.assign(m, Vec3::Zero());
     lambda_.assign(m, Vec3::Zero());
@@ -172,7 +183,13 @@ void JointSolver::bind(const Bodies& bodies) {
 
 // ---- rows ------------------------------------------------------------------------------------
 
-JointSolver::EndState JointSolver::evaluate(const End& e, const Vec& q, const Vec& u) const {
+void JointSolver::cacheRotations(const Vec& q) {
+    for (std::size_t s = 0; s < turningDofs_.size(); ++s)
+        rotations_[s] = rotation(q[turningDofs_[s] + 2]);
+}
+
+JointSolver::EndState JointSolver::evaluate(const End& e, const Vec& q, const Vec& u,
+                                            bool cached) const {
     EndState s;
     if (e.dof < 0) {
         s.p = e.fixed;
@@ -186,17 +203,17 @@ JointSolver::EndState JointSolver::evaluate(const End& e, const Vec& q, const Ve
     }
     s.angle = q[e.dof + 2];
     s.omega = u[e.dof + 2];
-    s.arm = rotation(s.angle) * e.local;
+    s.arm = (cached ? rotations_[e.slot] : rotation(s.angle)) * e.local;
     s.p = q.segment<2>(e.dof) + s.arm;
     s.v = u.segment<2>(e.dof) + s.omega * perp(s.arm);
     return s;
 }
 
-void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r) const {
+void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, bool cached) const {
     const Joint& j = joints_[k];
     const End& ea = endA_[k];
     const End& eb = endB_[k];
-    const EndState a = evaluate(ea, q, u), b = evaluate(eb, q, u);
+    const EndState a = evaluate(ea, q, u, cached), b = evaluate(eb, q, u, cached);
     r.count = 0;
     r.ja.setZero();
     r.jb.setZero();
@@ -312,7 +329,8 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r) 
 }
 
 void JointSolver::evaluateRows(Mode mode, const Vec& q, const Vec& u) {
-    for (int k = 0; k < jointCount(); ++k) rowsOf(k, mode, q, u, rows_[k]);
+    cacheRotations(q);
+    for (int k = 0; k < jointCount(); ++k) rowsOf(k, mode, q, u, rows_[k], true);
 }
 
 JointSolver::Vec3 JointSolver::jTimes(int k, const Vec& x) const {
@@ -515,8 +533,9 @@ bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invM
     Rows at;
     for (int it = 0; it < kProjectionIterations; ++it) {
         double worst = 0.0;
+        cacheRotations(q);
         for (int k = 0; k < jointCount(); ++k) {
-            rowsOf(k, Mode::Position, q, u, at);
+            rowsOf(k, Mode::Position, q, u, at, true);
             rhs_[k].setZero();
             for (int i = 0; i < rows_[k].count; ++i) {
                 rhs_[k][i] = -at.c[i];

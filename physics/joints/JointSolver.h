@@ -98,6 +98,7 @@ private:
     // One end of a joint as the solver sees it.
     struct End {
         int dof = -1;         // first state index of a dynamic body; −1 when fixed
+        int slot = -1;        // a turning body's index in rotations_
         bool turns = false;   // a dynamic rigid body: its third DOF is the angle
         bool rigid = false;   // a rigid body (dynamic or static): it has an angle
         Vec2 local{0, 0};     // the point in the body's frame (dynamic rigid body)
@@ -117,9 +118,13 @@ private:
     };
     enum class Mode { Dynamics, Position, Velocity };
 
-    EndState evaluate(const End& e, const Vec& q, const Vec& u) const;
+    // cached: take the rotation from cacheRotations() (of this q) instead of cos and sin.
+    EndState evaluate(const End& e, const Vec& q, const Vec& u, bool cached = false) const;
+    // Each turning body's rotation at q, once, for the rows of every joint that holds it.
+    void cacheRotations(const Vec& q);
     // The active rows of joint k at (q, u) in the given mode.
-    void rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& rows) const;
+    void rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& rows,
+                bool cached = false) const;
     void evaluateRows(Mode mode, const Vec& q, const Vec& u);
     // λ of the equality rows for the unconstrained acceleration accel (a rope that would
     // push goes slack); keeps forces_.
@@ -138,6 +143,8 @@ private:
     void solve();
 
     std::vector<Joint> joints_;
+    std::vector<int> turningDofs_;  // per slot: the turning body's first state index
+    std::vector<Mat2> rotations_;   // per slot: R(θ) at the last cacheRotations()
     std::vector<End> endA_, endB_;
     bool hasMotors_ = false, hasInequalities_ = false;
     double lastMotorWork_ = 0.0;
