@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
 #include <utility>
 
 namespace phasebox {
@@ -110,19 +111,29 @@ void JointSolver::bind(const Bodies& bodies) {
             for (const auto& [k2, s2] : list)
                 if (k1 != k2) graph[k1].insert(k2);
 
-    // Minimum-degree elimination; each eliminated joint's remaining neighbours become a clique
-    // (the fill), and they are the later joints its column of L couples.
+    // Minimum-fill elimination (ties: the smaller degree): each eliminated joint's remaining
+    // neighbours become a clique (the fill), and they are the later joints its column of L
+    // couples. The joint graph of a chain or tree of bodies is chordal, so a joint whose
+    // neighbours already form a clique (fill 0) always exists and the order makes no fill at
+    // all; minimum degree alone can miss it in a tree.
     std::vector<std::vector<int>> later(m);
-    std::set<std::pair<int, int>> queue;
-    std::vector<int> degree(m);
+    const auto fillOf = [&](int k) {
+        int fill = 0;
+        for (auto x = graph[k].begin(); x != graph[k].end(); ++x)
+            for (auto y = std::next(x); y != graph[k].end(); ++y) fill += !graph[*x].count(*y);
+        return fill;
+    };
+    using Key = std::tuple<int, int, int>;  // fill, degree, joint
+    std::set<Key> queue;
+    std::vector<Key> key(m);
     for (int k = 0; k < m; ++k) {
-        degree[k] = static_cast<int>(graph[k].size());
-        queue.insert({degree[k], k});
+        key[k] = {fillOf(k), static_cast<int>(graph[k].size()), k};
+        queue.insert(key[k]);
     }
     order_.clear();
     std::vector<int> position(m, -1);
     while (!queue.empty()) {
-        const int k = queue.begin()->second;
+        const int k = std::get<2>(*queue.begin());
         queue.erase(queue.begin());
         position[k] = static_cast<int>(order_.size());
         order_.push_back(k);
@@ -133,10 +144,13 @@ void JointSolver::bind(const Bodies& bodies) {
             for (std::size_t t = s + 1; t < neighbours.size(); ++t)
                 if (graph[neighbours[s]].insert(neighbours[t]).second)
                     graph[neighbours[t]].insert(neighbours[s]);
-        for (int x : neighbours) {
-            queue.erase({degree[x], x});
-            degree[x] = static_cast<int>(graph[x].size());
-            queue.insert({degree[x], x});
+        // The fill of the neighbours and of their neighbours may have changed.
+        std::set<int> touched(neighbours.begin(), neighbours.end());
+        for (int x : neighbours) touched.insert(graph[x].begin(), graph[x].end());
+        for (int x : touched) {
+            queue.erase(key[x]);
+            key[x] = {fillOf(x), static_cast<int>(graph[x].size()), x};
+            queue.insert(key[x]);
         }
     }
     upperStart_.assign(m + 1, 0);

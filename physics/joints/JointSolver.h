@@ -14,8 +14,9 @@
 // (its work is physical, work_nc). A rope is an equality while it is taut and pulling.
 //
 // The system J·M⁻¹·Jᵀ couples joints that share a body. It is factored as a block LDLᵀ over
-// the joint graph (blocks of up to 3×3, one per joint), eliminated in minimum-degree order.
-// For a chain or a tree of bodies this order makes no fill, so a solve is O(n) (the result
+// the joint graph (blocks of up to 3×3, one per joint), eliminated in minimum-fill order.
+// For a chain or a tree of bodies this order makes no fill (tst_joints counts the blocks), so
+// a solve is O(n) (the result
 // Baraff 1996 gets by factoring the body–joint graph); loops add the fill they need. The
 // symbolic part is built once in bind(); evaluations allocate nothing.
 
@@ -40,6 +41,9 @@ public:
     // it is) and builds the elimination order. Call after the world's layout is built.
     void bind(const Bodies& bodies);
     int jointCount() const { return static_cast<int>(joints_.size()); }
+    // Off-diagonal blocks of the factor L (pairs of joints coupled after elimination): the
+    // pairs that share a body plus the fill. For chains and trees there is no fill.
+    int factorBlocks() const { return static_cast<int>(upper_.size()); }
     bool hasMotors() const { return hasMotors_; }
 
     // accel holds M⁻¹·F of every other force; adds M⁻¹·Jᵀ·λ so that the joints' second

@@ -457,6 +457,57 @@ private slots:
         QVERIFY(std::abs(w.boxAngle(1)) < 1e-9);
     }
 
+    // Chains and trees solve in O(n): the minimum-degree elimination of their joint graph makes
+    // no fill, so the factor has exactly one block per pair of joints sharing a body (a chain
+    // of n links: n − 1; a binary tree: its parent–child and sibling pairs), and a closed loop
+    // (a ring) only the fill it needs, O(n).
+    void chainsAndTreesFactorWithoutFill() {
+        const auto blocks = [](const SceneDesc& s, int* sharing) {
+            const auto built = buildWorld(s);
+            // Pairs of joints that hold a common body, counted from the scene.
+            *sharing = 0;
+            for (std::size_t i = 0; i < s.joints.size(); ++i)
+                for (std::size_t k = i + 1; k < s.joints.size(); ++k) {
+                    const auto& a = s.joints[i];
+                    const auto& b = s.joints[k];
+                    const bool share = a.a == b.a || (b.b && a.a == *b.b) ||
+                                       (a.b && (*a.b == b.a || (b.b && *a.b == *b.b)));
+                    *sharing += share;
+                }
+            return built.world->jointSolver()->factorBlocks();
+        };
+        const int n = 500;
+        SceneDesc chain = scene("symplectic_euler", 1.0 / 60.0);
+        SceneDesc tree = chain;
+        for (int i = 0; i < n; ++i) {
+            const std::string id = "c" + std::to_string(i);
+            chain.particles.push_back(particle(id, {0.1 * (i + 1), 0.0}));
+            JointDesc rod = i == 0 ? joint(JointType::Rod, id)
+                                   : joint(JointType::Rod, "c" + std::to_string(i - 1), id);
+            if (i == 0) rod.anchor = Point2{0.0, 0.0};
+            chain.joints.push_back(rod);
+            // A binary tree: node i hangs from node (i − 1)/2.
+            tree.particles.push_back(particle(id, {0.1 * i, -0.1 * std::log2(i + 1.0) - 0.1}));
+            JointDesc branch = i == 0
+                                   ? joint(JointType::Rod, id)
+                                   : joint(JointType::Rod, "c" + std::to_string((i - 1) / 2), id);
+            if (i == 0) branch.anchor = Point2{0.0, 0.0};
+            tree.joints.push_back(branch);
+        }
+        int sharing = 0;
+        QCOMPARE(blocks(chain, &sharing), n - 1);
+        QCOMPARE(sharing, n - 1);
+        const int treeBlocks = blocks(tree, &sharing);
+        qInfo("binary tree of %d rods: %d factor blocks, %d sharing pairs", n, treeBlocks, sharing);
+        QCOMPARE(treeBlocks, sharing);
+        // A ring (the chain closed back to its anchor point through a last rod to c0): one
+        // loop, whose fill is one block per joint at most.
+        SceneDesc ring = chain;
+        ring.joints.push_back(joint(JointType::Rod, "c" + std::to_string(n - 1), "c0"));
+        const int ringBlocks = blocks(ring, &sharing);
+        QVERIFY(ringBlocks >= sharing && ringBlocks <= 2 * n + 1);
+    }
+
     // RK4 stays fourth order on a jointed scene: halving dt divides the error at t = 1 s of a
     // 90° rod pendulum by about 16 (reference: RK4 at dt/16). At these steps the rod turns by
     // less than JointSolver::kMaxTurnPerStep, so no sub-step of the joints' own interferes.
