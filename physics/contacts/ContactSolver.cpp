@@ -790,15 +790,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     }
 
     deepPushOut(h, settings);
-
-    // The accumulated impulses, for the next step's warm start.
-    for (std::size_t i = 0; i < constraints_.size(); ++i) {
-        ContactConstraint& c = constraints_[i];
-        for (int k = 0; k < c.pointCount; ++k) {
-            c.points[k].normalImpulse = rows_[i].p[k].normalImpulse;
-            c.points[k].tangentImpulse = rows_[i].p[k].tangentImpulse;
-        }
-    }
+    keepImpulses();  // the accumulated impulses, for the next step's warm start
 
     // A force held over the step moves a body by positionWeight·h·Δv under the user's method;
     // inner sub-stepping moved it by (n + 1)/(2n)·h·Δv. Moving it by the difference keeps a
@@ -845,6 +837,9 @@ void ContactSolver::relaxVelocities(Vec& u, int iterations) {
         u[b.dof + 1] = s.vy;
         if (b.rotates) u[b.dof + 2] = s.w;
     }
+}
+
+void ContactSolver::keepImpulses() {
     for (std::size_t i = 0; i < constraints_.size(); ++i) {
         ContactConstraint& c = constraints_[i];
         for (int k = 0; k < c.pointCount; ++k) {

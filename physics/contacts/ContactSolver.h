@@ -123,6 +123,9 @@ public:
     // (a car's wheel, a ragdoll's foot) is held by both at once rather than by whichever acts
     // last.
     void relaxVelocities(Vec& u, int iterations);
+    // Keeps the rows' accumulated impulses in the constraints, for the next step's warm start
+    // (solveStep does; call after the last relaxVelocities).
+    void keepImpulses();
     bool empty() const { return constraints_.empty(); }
     // Adds scale times the last step's position correction (push-out) to q.
     void addPushOut(Vec& q, double scale) const;

@@ -39,6 +39,7 @@ public:
     }
     // More relax iterations after the step (ContactSolver::relaxVelocities).
     void relaxVelocities(Vec& u, int iterations) { solver_.relaxVelocities(u, iterations); }
+    void keepImpulses() { solver_.keepImpulses(); }
     bool touching() const { return !solver_.empty(); }
     // Adds scale times the last step's position correction to q.
     void addPushOut(Vec& q, double scale) const { solver_.addPushOut(q, scale); }

@@ -579,8 +579,9 @@ void JointSolver::correctPositions(Vec& q, const Vec& u, const Vec& invMass) {
     }
 }
 
-bool JointSolver::projectVelocities(const Vec& q, Vec& u, const Vec& invMass) {
-    evaluateRows(Mode::Velocity, q, u);
+bool JointSolver::projectVelocities(const Vec& q, Vec& u, const Vec& invMass, bool sameQ) {
+    // Without inequalities the rows depend on q alone: at the same q they stand.
+    if (!sameQ || hasInequalities_) evaluateRows(Mode::Velocity, q, u);
     bool inequality = false;
     for (int k = 0; k < jointCount(); ++k) {
         const Joint::Type type = joints_[k].type;
@@ -616,7 +617,7 @@ double JointSolver::driveMotors(double h, const Vec& q, Vec& u, const Vec& mass,
             if (a.turns) u[a.dof + 2] -= ia * impulse;
             if (b.turns) u[b.dof + 2] += ib * impulse;
         }
-        projectVelocities(q, u, invMass);
+        projectVelocities(q, u, invMass, it > 0);
     }
     lastMotorWork_ = kinetic() - before;
     return lastMotorWork_;

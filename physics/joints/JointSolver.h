@@ -67,7 +67,9 @@ public:
     void correctPositions(Vec& q, const Vec& u, const Vec& invMass);
     // 3. Velocities onto the tangent: J·u = 0 for the equalities and the inequalities at their
     //    bounds moving outward. True when an inequality took part (an inelastic catch).
-    bool projectVelocities(const Vec& q, Vec& u, const Vec& invMass);
+    // sameQ: q has not changed since the last call (the rows are reused when no inequality can
+    // switch with the velocities).
+    bool projectVelocities(const Vec& q, Vec& u, const Vec& invMass, bool sameQ = false);
     // 4. Motors: a clamped impulse on the hinge's rate (|τ| ≤ max_torque), alternating with
     //    step 3 (Box2D's motor with the joints re-projected). Returns the kinetic energy this
     //    adds or takes: the motors' work.

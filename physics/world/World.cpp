@@ -599,8 +599,9 @@ void World::solveJoints(double h, int next) {
     if (interleave) {
         for (int round = 0; round < kJointContactRounds; ++round) {
             contacts_->relaxVelocities(u, 2);
-            caught = joints_->projectVelocities(q, u, invMass_) || caught;
+            caught = joints_->projectVelocities(q, u, invMass_, true) || caught;
         }
+        contacts_->keepImpulses();
         caught = true;
     }
     const double projected = caught ? mechanicalEnergy(q, u) : afterCorrection;
