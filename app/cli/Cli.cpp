@@ -172,6 +172,17 @@ int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     out << "\n";
     out << "dt:          " << sim.dt << " s, " << sim.substeps << " sub-step(s)\n";
     out << "duration:    " << sim.duration << " s\n";
+    if (world.contacts()) {
+        const std::string_view model = contactModelName(sim.contactModel);
+        out << "contacts:    "
+            << QString::fromLatin1(model.data(), static_cast<qsizetype>(model.size()));
+        if (sim.contactModel == ContactModel::Penalty)
+            out << ", stiffness " << QString::number(world.penaltyStiffness(), 'g', 4)
+                << " N/m per point"
+                << (sim.contactStiffness ? "" : " (automatic: the lightest body has omega*h = 0.5)")
+                << ", damping " << QString::number(sim.contactDamping, 'g', 4) << " N s/m";
+        out << "\n";
+    }
 
     // The stability advisor: the stiffest mode and each explicit method's largest stable step.
     const StabilityAdvice advice = adviseStability(*built.world);

@@ -3,8 +3,10 @@
 #include "app/cli/Cli.h"
 #include "app/io/NumberFormat.h"
 #include "app/io/SceneIO.h"
+#include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
+#include "physics/world/Probes.h"
 #include "ui/plots/Charts.h"
 
 #include <QChart>
@@ -33,19 +35,28 @@ const char* kRunUsage =
     "usage: phasebox-cli run SCENE [--integrator NAME] [--dt S] [--substeps N] [--duration S]\n"
     "                              [--tolerance T] [--csv FILE] [--every K] [--track ID,ID...]\n"
     "                              [--json] [--plot-energy FILE] [--plot-phase ID.COORD FILE]\n"
+    "                              [--probe EXPR]... [--contact-model NAME]\n"
     "\n"
+    "  --contact-model M impulse, penalty or kinematic (the scene's simulation.contact_model)\n"
     "  --csv FILE        time series: t,kinetic,potential,work_nc,drift,correction,\n"
     "                    constraint_error and per tracked object\n"
-    "                    ID.x,ID.y,ID.vx,ID.vy (boxes also ID.angle, ID.omega); '-' = stdout\n"
+    "                    ID.x,ID.y,ID.vx,ID.vy (boxes also ID.angle, ID.omega), then one column\n"
+    "                    per probe; '-' = stdout\n"
     "  --every K         one CSV row every K steps (and at t = 0 and the end); default 1\n"
     "  --track IDS       objects in the CSV; default every particle and box not in a cloth\n"
     "  --json            one JSON object with timings, energies and every object's state\n"
+    "                    (and per probe: final, min, max, mean, period over every step)\n"
+    "  --probe EXPR      measure EXPR (repeatable): ID.x ID.y ID.vx ID.vy ID.speed ID.angle\n"
+    "                    ID.omega ID.kinetic ID.px ID.py ID.L; system.kinetic .potential\n"
+    "                    .total .work_nc .drift .correction .px .py .L .com_x .com_y;\n"
+    "                    distance(A,B) angle(A,B,C) force(JOINT) contact_force(ID)\n"
     "  --plot-energy F   the energy plot as .png or .svg\n"
     "  --plot-phase ID.COORD F   phase plot of COORD (x, y or angle) of object ID\n";
 
 struct RunOptions {
     QString scene;
     std::optional<QString> integrator;
+    std::optional<ContactModel> contactModel;
     std::optional<double> dt, duration, tolerance;
     std::optional<int> substeps;
     QString csv;
@@ -54,6 +65,7 @@ struct RunOptions {
     bool json = false;
     QString plotEnergy;
     QString phaseTarget, plotPhase;
+    QStringList probes;  // as given, in command-line order
 };
 
 // Splits "a,flag[1,2],b" at the commas outside brackets: cloth node ids hold commas.
@@ -103,9 +115,10 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
             o.json = true;
             continue;
         }
-        static const QStringList known{"--integrator",  "--dt",        "--duration", "--tolerance",
-                                       "--substeps",    "--every",     "--csv",      "--track",
-                                       "--plot-energy", "--plot-phase"};
+        static const QStringList known{"--integrator", "--dt",       "--duration",
+                                       "--tolerance",  "--substeps", "--every",
+                                       "--csv",        "--track",    "--plot-energy",
+                                       "--plot-phase", "--probe",    "--contact-model"};
         if (!known.contains(a))
             return QStringLiteral("unknown option \"%1\"; see phasebox-cli run --help").arg(a);
         const int values = a == QLatin1String("--plot-phase") ? 2 : 1;
@@ -122,6 +135,11 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
                 return QStringLiteral("--integrator: unknown integrator \"%1\"; known: %2")
                     .arg(v, QString::fromStdString(knownIntegratorNames()));
             o.integrator = v;
+        } else if (a == QLatin1String("--contact-model")) {
+            o.contactModel = contactModelFromName(v.toStdString());
+            if (!o.contactModel)
+                return QStringLiteral("--contact-model: unknown contact model \"%1\"; known: %2")
+                    .arg(v, QString::fromStdString(knownContactModelNames()));
         } else if (a == QLatin1String("--dt")) {
             if (!(error = number(a, v, d)).isEmpty()) return error;
             if (!(d > 0.0 && d <= 1.0))
@@ -152,6 +170,8 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
             o.csv = v;
         } else if (a == QLatin1String("--track")) {
             o.track = splitIds(v);
+        } else if (a == QLatin1String("--probe")) {
+            o.probes << v;
         } else if (a == QLatin1String("--plot-energy")) {
             o.plotEnergy = v;
         } else if (a == QLatin1String("--plot-phase")) {
@@ -259,7 +279,8 @@ private:
     QTextStream* stream_ = nullptr;
 };
 
-void writeCsvHeader(QTextStream& s, const std::vector<Tracked>& tracked) {
+void writeCsvHeader(QTextStream& s, const std::vector<Tracked>& tracked,
+                    const QStringList& probes) {
     // CONTRACT §4 and §6; constraint_error is the joints' largest positional error (0 without).
     s << "t,kinetic,potential,work_nc,drift,correction,constraint_error";
     for (const Tracked& t : tracked) {
@@ -267,10 +288,12 @@ void writeCsvHeader(QTextStream& s, const std::vector<Tracked>& tracked) {
                                          : QStringList{"x", "y", "vx", "vy"};
         for (const QString& c : cols) s << ',' << csvField(t.id + QLatin1Char('.') + c);
     }
+    for (const QString& probe : probes) s << ',' << csvField(probe);  // "distance(a,b)"
     s << '\n';
 }
 
-void writeCsvRow(QTextStream& s, const World& world, const std::vector<Tracked>& tracked) {
+void writeCsvRow(QTextStream& s, const World& world, const std::vector<Tracked>& tracked,
+                 const std::vector<double>& probeValues) {
     const EnergyLedger& e = world.energy();
     s << formatNumber(world.time()) << ',' << formatNumber(e.kinetic) << ','
       << formatNumber(e.potential) << ',' << formatNumber(e.workNc) << ',' << formatNumber(e.drift)
@@ -287,6 +310,7 @@ void writeCsvRow(QTextStream& s, const World& world, const std::vector<Tracked>&
               << formatNumber(v.x()) << ',' << formatNumber(v.y());
         }
     }
+    for (const double value : probeValues) s << ',' << formatNumber(value);
     s << '\n';
 }
 
@@ -340,6 +364,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     SceneDesc& scene = *loaded.scene;
     SimulationDesc& sim = scene.simulation;
     if (o.integrator) sim.integrator = o.integrator->toStdString();
+    if (o.contactModel) sim.contactModel = *o.contactModel;
     if (o.dt) sim.dt = *o.dt;
     if (o.substeps) sim.substeps = *o.substeps;
     if (o.duration) sim.duration = *o.duration;
@@ -399,12 +424,30 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
                          .arg(coord, phaseObject->isBox ? QStringLiteral(", angle") : QString()));
     }
 
+    // Probes (CONTRACT §7), refused before anything runs or is written. Each is sampled at every
+    // step for its statistics, whatever --every thins the CSV to.
+    std::vector<Probe> probes;
+    for (const QString& text : o.probes) {
+        ProbeParse parsed = parseProbe(world, text.toStdString());
+        if (!parsed) return fail(err, QString::fromStdString(parsed.error));
+        probes.push_back(std::move(*parsed.probe));
+    }
+    std::vector<PeriodTracker> probeStats(probes.size());
+    std::vector<double> probeValues(probes.size());
+    auto sampleProbes = [&] {
+        for (std::size_t i = 0; i < probes.size(); ++i) {
+            probeValues[i] = evaluateProbe(world, probes[i]);
+            probeStats[i].add(world.time(), probeValues[i]);
+        }
+    };
+    sampleProbes();
+
     CsvOutput csv;
     if (!o.csv.isEmpty()) {
         QString error;
         if (!csv.open(o.csv, out, &error)) return fail(err, error);
-        writeCsvHeader(csv.stream(), tracked);
-        writeCsvRow(csv.stream(), world, tracked);
+        writeCsvHeader(csv.stream(), tracked, o.probes);
+        writeCsvRow(csv.stream(), world, tracked, probeValues);
     }
 
     const double dt = sim.dt;
@@ -456,13 +499,14 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             break;
         }
         done = k;
+        sampleProbes();
         if (world.jointSolver()) {
             const JointErrors now = world.jointErrors();
             worstJoint.position = std::max(worstJoint.position, now.position);
             worstJoint.angle = std::max(worstJoint.angle, now.angle);
         }
         if (!o.csv.isEmpty() && (k % o.every == 0 || k == steps))
-            writeCsvRow(csv.stream(), world, tracked);
+            writeCsvRow(csv.stream(), world, tracked, probeValues);
         if (plotting && (energy.due(k) || k == steps)) sample();
     }
     const double wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
@@ -531,6 +575,22 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             {"objects", objectsJson(world)},
             {"force_evaluations", static_cast<double>(world.forceEvaluations())},
         };
+        if (!probes.empty()) {
+            // final is the probe in the state the report shows (after a divergence, the
+            // restored one, as `objects`); the rest are over every step that ran.
+            QJsonObject measured;
+            for (std::size_t i = 0; i < probes.size(); ++i) {
+                const ProbeSummary st = probeStats[i].summary();
+                measured.insert(o.probes[i],
+                                QJsonObject{{"final", evaluateProbe(world, probes[i])},
+                                            {"min", st.min},
+                                            {"max", st.max},
+                                            {"mean", st.mean},
+                                            {"period", st.period ? QJsonValue(*st.period)
+                                                                 : QJsonValue(QJsonValue::Null)}});
+            }
+            report.insert("probes", measured);
+        }
         if (world.jointSolver())
             report.insert("constraints", QJsonObject{{"max_error", worstJoint.position},
                                                      {"final_error", world.jointErrors().position},
@@ -589,6 +649,16 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
                 out << " " << stageName(i) << " " << QString::number(profile.msPerStep(i), 'g', 3)
                     << " ms/step;";
         out << "\n";
+        for (std::size_t i = 0; i < probes.size(); ++i) {
+            const ProbeSummary st = probeStats[i].summary();
+            out << "probe " << o.probes[i] << ": final "
+                << QString::number(evaluateProbe(world, probes[i]), 'g', 6) << ", min "
+                << QString::number(st.min, 'g', 6) << ", max " << QString::number(st.max, 'g', 6)
+                << ", mean " << QString::number(st.mean, 'g', 6) << ", period "
+                << (st.period ? QString::number(*st.period, 'g', 6) + QStringLiteral(" s")
+                              : QStringLiteral("none"))
+                << "\n";
+        }
         for (const Tracked& t : tracked) {
             const ui::PhaseSample x = phaseOf(world, t, 0), y = phaseOf(world, t, 1);
             out << "  " << t.id << ": position (" << QString::number(x.coordinate, 'g', 6) << ", "
@@ -599,8 +669,12 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     }
     out.flush();
     if (diverged) {
-        err << "phasebox-cli: diverged: " << QString::fromStdString(world.divergence()->message())
-            << "\n";
+        err << "phasebox-cli: diverged: " << QString::fromStdString(world.divergence()->message());
+        // The advisor at the restored state: which step this method needs (the largest stable
+        // dt from the stiffest mode, penalty contacts included).
+        if (const StabilityAdvice advice = adviseStability(world); !advice.currentStable)
+            err << " Stability advisor: " << QString::fromStdString(advice.message);
+        err << "\n";
         err.flush();
         return kDiverged;
     }

@@ -43,7 +43,8 @@ bool attachedTo(const std::string& end, const std::string& id, bool cloth) {
 bool sameSimulation(const SimulationDesc& a, const SimulationDesc& b) {
     return a.integrator == b.integrator && a.dt == b.dt && a.substeps == b.substeps &&
            a.tolerance == b.tolerance && a.newtonIterations == b.newtonIterations &&
-           a.duration == b.duration && a.solver == b.solver;
+           a.duration == b.duration && a.solver == b.solver && a.contactModel == b.contactModel &&
+           a.contactStiffness == b.contactStiffness && a.contactDamping == b.contactDamping;
 }
 
 // The one field in which two settings differ, or empty when they differ in several (or none).
@@ -53,7 +54,9 @@ QString changedField(const SimulationDesc& a, const SimulationDesc& b) {
         std::visit(
             [&]<typename V>(V SimulationDesc::*member) {
                 // The settings' own types; the variant's other alternatives never occur here.
-                if constexpr (std::is_arithmetic_v<V> || std::is_same_v<V, std::string> ||
+                if constexpr (std::is_arithmetic_v<V> || std::is_enum_v<V> ||
+                              std::is_same_v<V, std::string> ||
+                              std::is_same_v<V, std::optional<double>> ||
                               std::is_same_v<V, std::map<std::string, double>>)
                     if (a.*member != b.*member)
                         fields << QString::fromUtf8(field.key.data(),

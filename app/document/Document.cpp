@@ -231,8 +231,7 @@ void Document::commitSimulationEdit(const SetupEdit& edit) {
     edit(setup_);
     const SimulationDesc& sim = setup_.simulation;
     // Validated by the command; setSettings would throw (and change nothing) otherwise.
-    world_->setSettings({sim.integrator, sim.dt, sim.substeps, sim.tolerance, sim.newtonIterations,
-                         contactSettings(sim.solver)});
+    world_->setSettings(simulationSettings(sim));
     emit simulationSettingsChanged();
 }
 

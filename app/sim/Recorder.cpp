@@ -123,13 +123,24 @@ void Recorder::halve() {
 
 void Recorder::checkSettings(const World& world) {
     const SimulationSettings& s = world.settings();
-    if (haveSettings_ && (s.integrator != lastIntegrator_ || s.dt != lastDt_)) {
+    const bool method = s.integrator != lastIntegrator_ || s.dt != lastDt_;
+    const bool contacts = s.contactModel != lastContactModel_;
+    if (haveSettings_ && (method || contacts)) {
         // The marker is where the new settings began: the start of this step.
-        markers_.push_back({world.time() - s.dt, QStringLiteral("%1, dt %2")
-                                                     .arg(QString::fromStdString(s.integrator))
-                                                     .arg(s.dt, 0, 'g', 4)});
+        QString label = QStringLiteral("%1, dt %2")
+                            .arg(QString::fromStdString(s.integrator))
+                            .arg(s.dt, 0, 'g', 4);
+        if (contacts) {
+            const std::string_view model = contactModelName(s.contactModel);
+            const QString contactLabel =
+                QStringLiteral("%1 contacts")
+                    .arg(QString::fromLatin1(model.data(), static_cast<qsizetype>(model.size())));
+            label = method ? label + QStringLiteral(", ") + contactLabel : contactLabel;
+        }
+        markers_.push_back({world.time() - s.dt, label});
     }
     haveSettings_ = true;
+    lastContactModel_ = s.contactModel;
     lastIntegrator_ = s.integrator;
     lastDt_ = s.dt;
 }

@@ -7,6 +7,7 @@
 // and from then on only every second step is recorded (then every fourth, …), so a long run
 // keeps its whole history at a coarser, still uniform spacing.
 
+#include "physics/contacts/ContactModel.h"
 #include "ui/plots/Charts.h"
 
 #include <QObject>
@@ -90,6 +91,7 @@ private:
 
     std::string lastIntegrator_;
     double lastDt_ = 0.0;
+    ContactModel lastContactModel_ = ContactModel::Impulse;
     double lastTime_ = -1.0;
     bool haveSettings_ = false;
     std::size_t maxSamples_ = kDefaultMaxSamples;

@@ -59,7 +59,10 @@ ContactSolver::Softness ContactSolver::makeSoft(double hertz, double zeta, doubl
 
 void ContactSolver::prepare() {
     largestMassRatio_ = 1.0;
-    for (SolverBody& b : bodies_) b.contactCount = 0;
+    for (SolverBody& b : bodies_) {
+        b.contactCount = 0;
+        b.stepImpulse = Vec2::Zero();  // once per step: the stage calls prepare() after collide
+    }
     for (const ContactConstraint& c : constraints_) {
         if (c.bodyA >= 0) ++bodies_[c.bodyA].contactCount;
         if (c.bodyB >= 0) ++bodies_[c.bodyB].contactCount;
@@ -799,10 +802,12 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     // of impact, not as a force over the step).
     const double excess = positionWeight - (n + 1.0) / (2.0 * n);
     for (std::size_t k = 0; k < count; ++k) {
-        const SolverBody& b = bodies_[k];
+        SolverBody& b = bodies_[k];
         const BodyState& s = state_[k];
         const Vec2 v(s.vx, s.vy);
         const Vec2 dv = v - (b.v0 + b.smoothDv + b.bounceDv);
+        // Every velocity change here beyond the smooth step's is a contact impulse's.
+        if (b.invMass > 0.0) b.stepImpulse += (v - (b.v0 + b.smoothDv)) / b.invMass;
         // Only a force held over the step moves a body by the method's weight: what the
         // contacts change beyond cancelling the smooth forces is an impact, which acts at once
         // (an inelastic stop at 200 m/s would otherwise be moved ±0.1·h·Δv: through a thin wall
@@ -831,8 +836,9 @@ void ContactSolver::relaxVelocities(Vec& u, int iterations) {
     for (int it = 0; it < iterations; ++it) solve();
     unpackImpulses();
     for (std::size_t k = 0; k < count; ++k) {
-        const SolverBody& b = bodies_[k];
+        SolverBody& b = bodies_[k];
         const BodyState& s = state_[k];
+        if (b.invMass > 0.0) b.stepImpulse += (Vec2(s.vx, s.vy) - u.segment<2>(b.dof)) / b.invMass;
         u[b.dof] = s.vx;
         u[b.dof + 1] = s.vy;
         if (b.rotates) u[b.dof + 2] = s.w;

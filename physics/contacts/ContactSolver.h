@@ -74,6 +74,10 @@ struct SolverBody {
     Vec2 pushOut = Vec2::Zero();  // the position correction (push-out) of this step
     double pushOutAngle = 0.0;
     int contactCount = 0;  // constraints this step
+    // The vector sum of the contact impulses the body received this step (N·s): warm start,
+    // bounces, soft solve and relax of every inner sub-step, over the world's sub-steps and the
+    // joints' interleaved relax. Divided by the step it is the mean contact force (probes).
+    Vec2 stepImpulse = Vec2::Zero();
 };
 
 struct ContactPoint {
@@ -104,6 +108,7 @@ struct ContactConstraint {
 class ContactSolver {
 public:
     std::vector<SolverBody>& bodies() { return bodies_; }
+    const std::vector<SolverBody>& bodies() const { return bodies_; }
     std::vector<ContactConstraint>& constraints() { return constraints_; }
     const std::vector<ContactConstraint>& constraints() const { return constraints_; }
 

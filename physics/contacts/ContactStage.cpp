@@ -163,20 +163,8 @@ void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB
     solver_.constraints().push_back(c);
 }
 
-void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u,
-                           const Vec& uNext, double frameFraction, double dt,
-                           const ContactSettings& settings) {
-    // Last step's constraints, with their accumulated impulses, for warm starting.
-    std::swap(previous_, solver_.constraints());
-    solver_.constraints().clear();
-    solver_.bodies().clear();
-    std::fill(bodyOfCollider_.begin(), bodyOfCollider_.end(), -1);
-
-    // Shapes and bounds. A body's bounds grow by the distance it can travel in this step, so
-    // that a fast body finds what lies ahead of it (the speculative contacts then stop it).
+void ContactStage::updateShapes(const Bodies& bodies, const Vec& q) {
     const int count = static_cast<int>(colliders_.size());
-    std::vector<double>& sweep = sweep_;
-    sweep.assign(count, 0.0);
     for (int i = 0; i < count; ++i) {
         const Collider& c = colliders_[i];
         if (c.kind == Collider::Kind::Disk) {
@@ -185,7 +173,6 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
             const double radius =
                 c.rigid ? bodies.boxes[c.object].radius : bodies.particles[c.object].radius;
             disks_[i] = {c.dof >= 0 ? Vec2(q.segment<2>(c.dof)) : position, radius};
-            bounds_[i] = boundingBox(disks_[i]);
         } else if (c.kind == Collider::Kind::Polygon) {
             const Box& b = bodies.boxes[c.object];
             OrientedPolygon& p = polygons_[i];
@@ -195,13 +182,27 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
             p.vertices = b.vertices.data();
             p.normals = b.normals.data();
             p.inradius = b.inradius;
-            bounds_[i] = boundingBox(p);
         } else {
             const Box& b = bodies.boxes[c.object];
             boxes_[i] = c.dof >= 0 ? OrientedBox{q.segment<2>(c.dof), q[c.dof + 2], 0.5 * b.size}
                                    : OrientedBox{b.position, b.angle, 0.5 * b.size};
-            bounds_[i] = boundingBox(boxes_[i]);
         }
+    }
+}
+
+void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, const Vec& uNext,
+                             double frameFraction, double dt, const ContactSettings& settings) {
+    // Shapes and bounds. A body's bounds grow by the distance it can travel in this step, so
+    // that a fast body finds what lies ahead of it (the speculative contacts then stop it).
+    updateShapes(bodies, q);
+    const int count = static_cast<int>(colliders_.size());
+    std::vector<double>& sweep = sweep_;
+    sweep.assign(count, 0.0);
+    for (int i = 0; i < count; ++i) {
+        const Collider& c = colliders_[i];
+        bounds_[i] = c.kind == Collider::Kind::Disk      ? boundingBox(disks_[i])
+                     : c.kind == Collider::Kind::Polygon ? boundingBox(polygons_[i])
+                                                         : boundingBox(boxes_[i]);
         if (c.dof >= 0) {
             // The fastest the body moves in this frame: at its start, or at its end, the smooth
             // forces' velocity change extrapolated from the first sub-step over the frame (a
@@ -221,97 +222,113 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
         bounds_[i].lower -= grow;
         bounds_[i].upper += grow;
     }
+    broadPhase_.findPairs(bounds_, pairs_,
+                          {&pairLimited_, &pairSize_, kOverlappingPairCap, kNearPairCap});
+}
 
-    Manifold m;
+bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin, Manifold& m,
+                               PairContact& pair) const {
+    const Collider& a = colliders_[i];
+    const Collider& b = colliders_[j];
+    if (a.dof < 0 && b.dof < 0) return false;
+    if (!jointedPairs_.empty() &&
+        std::binary_search(jointedPairs_.begin(), jointedPairs_.end(),
+                           (static_cast<std::uint64_t>(std::min(i, j)) << 32) |
+                               static_cast<std::uint64_t>(std::max(i, j))))
+        return false;
+    pair.friction = std::sqrt(a.friction * b.friction);
+    pair.restitution = std::max(a.restitution, b.restitution);
+    pair.a = i;
+    pair.b = j;
     // Bodies started at one point: a direction per pair (computed only then).
-    const auto whenCoincident = [](int i, int j, const Vec2& a, const Vec2& b) {
-        return coincident(a, b)
+    const auto whenCoincident = [i, j](const Vec2& x, const Vec2& y) {
+        return coincident(x, y)
                    ? coincidentNormal(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j))
                    : Vec2(0.0, 1.0);
     };
-    broadPhase_.findPairs(bounds_, pairs_,
-                          {&pairLimited_, &pairSize_, kOverlappingPairCap, kNearPairCap});
-    for (const auto& [i, j] : pairs_) {
-        const Collider& a = colliders_[i];
-        const Collider& b = colliders_[j];
-        if (a.dof < 0 && b.dof < 0) continue;
-        if (!jointedPairs_.empty() &&
-            std::binary_search(jointedPairs_.begin(), jointedPairs_.end(),
-                               (static_cast<std::uint64_t>(std::min(i, j)) << 32) |
-                                   static_cast<std::uint64_t>(std::max(i, j))))
-            continue;
-        const double margin = settings.speculativeDistance + sweep[i] + sweep[j];
-        const double friction = std::sqrt(a.friction * b.friction);
-        double restitution = std::max(a.restitution, b.restitution);
-        const std::uint64_t key =
-            (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint64_t>(j);
-        const bool diskA = a.kind == Collider::Kind::Disk, diskB = b.kind == Collider::Kind::Disk;
-        const bool polygonA = a.kind == Collider::Kind::Polygon,
-                   polygonB = b.kind == Collider::Kind::Polygon;
-        // A polygon's pairs: it is body A of the constraint unless both are polygons.
-        const auto pairKey = [](int first, int second) {
-            return (static_cast<std::uint64_t>(first) << 32) | static_cast<std::uint64_t>(second);
-        };
-        if (polygonA || polygonB) {
-            const int polygon = polygonA ? i : j, other = polygonA ? j : i;
-            const Collider& o = colliders_[other];
-            bool hit = false;
-            if (o.kind == Collider::Kind::Polygon)
-                hit = collidePolygons(
-                    polygons_[polygon], polygons_[other], margin, m,
-                    whenCoincident(i, j, polygons_[polygon].center, polygons_[other].center));
-            else if (o.kind == Collider::Kind::Box)
-                hit = collidePolygonBox(
-                    polygons_[polygon], boxes_[other], margin, m,
-                    whenCoincident(i, j, polygons_[polygon].center, boxes_[other].center));
-            else
-                hit = collidePolygonDisk(polygons_[polygon], disks_[other], margin, m);
-            if (hit)
-                addConstraint(pairKey(polygon, other), polygon, other, m, friction, restitution, q);
-        } else if (diskA && diskB) {
-            // Two particles meet only with particle_collisions (then with its restitution);
-            // a rigid disk meets everything.
-            if (!a.rigid && !b.rigid) {
-                if (!particleCollisions_) continue;
-                const Particle& pa = bodies.particles[a.object];
-                const Particle& pb = bodies.particles[b.object];
-                if (pa.cloth >= 0 && pa.cloth == pb.cloth) continue;  // no cloth self-collision
-                restitution = particleRestitution_;
-            }
-            if (collideDisks(disks_[i], disks_[j], margin, m,
-                             whenCoincident(i, j, disks_[i].center, disks_[j].center)))
-                addConstraint(key, i, j, m, friction, restitution, q);
-        } else if (!diskA && !diskB) {
-            if (collideBoxes(boxes_[i], boxes_[j], margin, m,
-                             whenCoincident(i, j, boxes_[i].center, boxes_[j].center)))
-                addConstraint(key, i, j, m, friction, restitution, q);
-        } else {
-            const int box = diskA ? j : i, disk = diskA ? i : j;
-            if (collideBoxDisk(boxes_[box], disks_[disk], margin, m))
-                addConstraint(
-                    (static_cast<std::uint64_t>(box) << 32) | static_cast<std::uint64_t>(disk), box,
-                    disk, m, friction, restitution, q);
+    const bool diskA = a.kind == Collider::Kind::Disk, diskB = b.kind == Collider::Kind::Disk;
+    const bool polygonA = a.kind == Collider::Kind::Polygon,
+               polygonB = b.kind == Collider::Kind::Polygon;
+    // A polygon's pairs: it is body A of the constraint unless both are polygons.
+    if (polygonA || polygonB) {
+        const int polygon = polygonA ? i : j, other = polygonA ? j : i;
+        pair.a = polygon;
+        pair.b = other;
+        const Collider& o = colliders_[other];
+        if (o.kind == Collider::Kind::Polygon)
+            return collidePolygons(
+                polygons_[polygon], polygons_[other], margin, m,
+                whenCoincident(polygons_[polygon].center, polygons_[other].center));
+        if (o.kind == Collider::Kind::Box)
+            return collidePolygonBox(
+                polygons_[polygon], boxes_[other], margin, m,
+                whenCoincident(polygons_[polygon].center, boxes_[other].center));
+        return collidePolygonDisk(polygons_[polygon], disks_[other], margin, m);
+    }
+    if (diskA && diskB) {
+        // Two particles meet only with particle_collisions (then with its restitution);
+        // a rigid disk meets everything.
+        if (!a.rigid && !b.rigid) {
+            if (!particleCollisions_) return false;
+            const Particle& pa = bodies.particles[a.object];
+            const Particle& pb = bodies.particles[b.object];
+            if (pa.cloth >= 0 && pa.cloth == pb.cloth) return false;  // no cloth self-collision
+            pair.restitution = particleRestitution_;
         }
+        return collideDisks(disks_[i], disks_[j], margin, m,
+                            whenCoincident(disks_[i].center, disks_[j].center));
+    }
+    if (!diskA && !diskB)
+        return collideBoxes(boxes_[i], boxes_[j], margin, m,
+                            whenCoincident(boxes_[i].center, boxes_[j].center));
+    const int box = diskA ? j : i, disk = diskA ? i : j;
+    pair.a = box;
+    pair.b = disk;
+    return collideBoxDisk(boxes_[box], disks_[disk], margin, m);
+}
+
+bool ContactStage::narrowPhasePlane(int k, int i, double margin, Manifold& m,
+                                    PairContact& pair) const {
+    const Collider& c = colliders_[i];
+    if (c.dof < 0) return false;
+    pair.a = -1 - k;
+    pair.b = i;
+    pair.friction = std::sqrt(planeFriction_[k] * c.friction);
+    pair.restitution = std::max(planeRestitution_[k], c.restitution);
+    const HalfPlane& plane = planes_[k];
+    return c.kind == Collider::Kind::Disk      ? collidePlaneDisk(plane, disks_[i], margin, m)
+           : c.kind == Collider::Kind::Polygon ? collidePlanePolygon(plane, polygons_[i], margin, m)
+                                               : collidePlaneBox(plane, boxes_[i], margin, m);
+}
+
+void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u,
+                           const Vec& uNext, double frameFraction, double dt,
+                           const ContactSettings& settings) {
+    // Last step's constraints, with their accumulated impulses, for warm starting.
+    std::swap(previous_, solver_.constraints());
+    solver_.constraints().clear();
+    solver_.bodies().clear();
+    std::fill(bodyOfCollider_.begin(), bodyOfCollider_.end(), -1);
+
+    findPairs(bodies, q, u, uNext, frameFraction, dt, settings);
+    const int count = static_cast<int>(colliders_.size());
+    const std::vector<double>& sweep = sweep_;
+    Manifold m;
+    PairContact pair;
+    const auto pairKey = [](int first, int second) {
+        return (static_cast<std::uint64_t>(first) << 32) | static_cast<std::uint64_t>(second);
+    };
+    for (const auto& [i, j] : pairs_) {
+        const double margin = settings.speculativeDistance + sweep[i] + sweep[j];
+        if (narrowPhase(bodies, i, j, margin, m, pair))
+            addConstraint(pairKey(pair.a, pair.b), pair.a, pair.b, m, pair.friction,
+                          pair.restitution, q);
     }
     // Planes against every dynamic body (planes are infinite: not in the broad phase).
-    for (int k = 0; k < static_cast<int>(planes_.size()); ++k) {
-        const HalfPlane& plane = planes_[k];
-        for (int i = 0; i < count; ++i) {
-            const Collider& c = colliders_[i];
-            if (c.dof < 0) continue;
-            const double margin = settings.speculativeDistance + sweep[i];
-            const double friction = std::sqrt(planeFriction_[k] * c.friction);
-            const double restitution = std::max(planeRestitution_[k], c.restitution);
-            const std::uint64_t key =
-                (static_cast<std::uint64_t>(count + k) << 32) | static_cast<std::uint64_t>(i);
-            const bool hit = c.kind == Collider::Kind::Disk
-                                 ? collidePlaneDisk(plane, disks_[i], margin, m)
-                             : c.kind == Collider::Kind::Polygon
-                                 ? collidePlanePolygon(plane, polygons_[i], margin, m)
-                                 : collidePlaneBox(plane, boxes_[i], margin, m);
-            if (hit) addConstraint(key, -1, i, m, friction, restitution, q);
-        }
-    }
+    for (int k = 0; k < static_cast<int>(planes_.size()); ++k)
+        for (int i = 0; i < count; ++i)
+            if (narrowPhasePlane(k, i, settings.speculativeDistance + sweep[i], m, pair))
+                addConstraint(pairKey(count + k, i), -1, i, m, pair.friction, pair.restitution, q);
 
     // Warm start: carry the impulses of persisting contacts (same shapes, same features).
     std::vector<ContactConstraint>& now = solver_.constraints();
@@ -335,6 +352,53 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
         b.invInertia = b.rotates ? invMass[b.dof + 2] : 0.0;
     }
     solver_.prepare();
+}
+
+Vec2 ContactStage::colliderCenter(int i) const {
+    switch (colliders_[i].kind) {
+        case Collider::Kind::Disk:
+            return disks_[i].center;
+        case Collider::Kind::Polygon:
+            return polygons_[i].center;
+        case Collider::Kind::Box:
+            break;
+    }
+    return boxes_[i].center;
+}
+
+const std::vector<TouchingManifold>& ContactStage::overlaps(const Bodies& bodies, const Vec& q) {
+    updateShapes(bodies, q);
+    touching_.clear();
+    Manifold m;
+    PairContact pair;
+    const auto add = [&]() {
+        TouchingManifold t;
+        const bool world = pair.a < 0;
+        t.dofA = world ? -1 : colliders_[pair.a].dof;
+        t.rotatesA = !world && colliders_[pair.a].rigid && t.dofA >= 0;
+        t.dofB = colliders_[pair.b].dof;
+        t.rotatesB = colliders_[pair.b].rigid && t.dofB >= 0;
+        t.normal = m.normal;
+        t.friction = pair.friction;
+        t.restitution = pair.restitution;
+        const Vec2 centerA = world ? Vec2::Zero() : colliderCenter(pair.a);
+        const Vec2 centerB = colliderCenter(pair.b);
+        for (int k = 0; k < m.pointCount; ++k) {
+            if (m.points[k].separation >= 0.0) continue;
+            TouchingManifold::Point& p = t.points[t.pointCount++];
+            p.rA = m.points[k].position - centerA;
+            p.rB = m.points[k].position - centerB;
+            p.depth = -m.points[k].separation;
+        }
+        if (t.pointCount > 0) touching_.push_back(t);
+    };
+    for (const auto& [i, j] : pairs_)
+        if (narrowPhase(bodies, i, j, 0.0, m, pair)) add();
+    const int count = static_cast<int>(colliders_.size());
+    for (int k = 0; k < static_cast<int>(planes_.size()); ++k)
+        for (int i = 0; i < count; ++i)
+            if (narrowPhasePlane(k, i, 0.0, m, pair)) add();
+    return touching_;
 }
 
 int ContactStage::pointCount() const {

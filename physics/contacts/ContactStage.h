@@ -13,6 +13,22 @@ namespace phasebox {
 
 struct Bodies;
 
+// Two shapes that overlap at a state, as the penalty and kinematic models see them: the bodies'
+// first state indices (−1 static or the world), the normal from A to B, the pair's material and
+// the overlapping points with their lever arms from each centre.
+struct TouchingManifold {
+    int dofA = -1, dofB = -1;
+    bool rotatesA = false, rotatesB = false;
+    Vec2 normal = Vec2::Zero();
+    double friction = 0.0;
+    double restitution = 0.0;
+    int pointCount = 0;
+    struct Point {
+        Vec2 rA = Vec2::Zero(), rB = Vec2::Zero();
+        double depth = 0.0;  // overlap along the normal, > 0
+    } points[2];
+};
+
 class ContactStage {
 public:
     // Whether a world of these bodies needs a contact stage at all: two things that can touch, one
@@ -32,6 +48,15 @@ public:
                  const Vec& uNext, double frameFraction, double dt,
                  const ContactSettings& settings);
 
+    // The broad phase alone (collide() begins with it): the pairs whose bounds, grown by how far
+    // each body can move in the frame, overlap. The penalty model calls it once per frame
+    // before the smooth step and then asks overlaps() at every force evaluation.
+    void findPairs(const Bodies& bodies, const Vec& q, const Vec& u, const Vec& uNext,
+                   double frameFraction, double dt, const ContactSettings& settings);
+    // The pairs of the last findPairs() that overlap at the state q (margin 0: touching only),
+    // with their overlapping points. Allocation-free once the buffer has grown.
+    const std::vector<TouchingManifold>& overlaps(const Bodies& bodies, const Vec& q);
+
     // One step of h after the smooth step (ContactSolver::solveStep).
     void solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
                    const ContactSettings& settings, double positionWeight) {
@@ -40,6 +65,12 @@ public:
     // More relax iterations after the step (ContactSolver::relaxVelocities).
     void relaxVelocities(Vec& u, int iterations) { solver_.relaxVelocities(u, iterations); }
     void keepImpulses() { solver_.keepImpulses(); }
+    // Drops the impulse solver's constraints and warm start (another contact model runs).
+    void forgetSolver() {
+        solver_.constraints().clear();
+        solver_.bodies().clear();
+        previous_.clear();
+    }
     bool touching() const { return !solver_.empty(); }
     // Adds scale times the last step's position correction to q.
     void addPushOut(Vec& q, double scale) const { solver_.addPushOut(q, scale); }
@@ -72,6 +103,17 @@ private:
         bool rigid = false;  // object indexes the rigid bodies (boxes, rigid disks): it turns
     };
 
+    // A pair's narrow phase: a = the constraint's body A (a collider, or −1 − k for plane k),
+    // b its body B, and the pair's combined material.
+    struct PairContact {
+        int a = -1, b = -1;
+        double friction = 0.0, restitution = 0.0;
+    };
+    void updateShapes(const Bodies& bodies, const Vec& q);
+    bool narrowPhase(const Bodies& bodies, int i, int j, double margin, Manifold& m,
+                     PairContact& pair) const;
+    bool narrowPhasePlane(int k, int i, double margin, Manifold& m, PairContact& pair) const;
+    Vec2 colliderCenter(int i) const;
     int solverBodyFor(int collider, const Vec& q);
     void addConstraint(std::uint64_t key, int colliderA, int colliderB, const Manifold& m,
                        double friction, double restitution, const Vec& q);
@@ -91,6 +133,7 @@ private:
     std::vector<double> planeFriction_, planeRestitution_;
     std::vector<int> bodyOfCollider_;  // solver body index in this step, −1 none yet
     std::vector<ContactConstraint> previous_;
+    std::vector<TouchingManifold> touching_;
     // Collider pairs (lower index first, as one key) held by a joint: they never collide.
     std::vector<std::uint64_t> jointedPairs_;
     BroadPhase broadPhase_;

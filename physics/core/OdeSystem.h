@@ -148,6 +148,13 @@ public:
     // Forces and their Jacobians, for implicit methods. Returns the non-conservative power.
     virtual double forcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& force,
                                       ForceJacobians& jacobians) = 0;
+
+    // Whether some force that acts at one of the two states does not act at the other (a
+    // penalty contact beginning or ending between them): a Jacobian taken at q0 does not see it.
+    virtual bool activeSetChanged(const Vec& q0, const Vec& q1) {
+        (void)q0, (void)q1;
+        return false;
+    }
 };
 
 }  // namespace phasebox

@@ -1,5 +1,6 @@
 #include "physics/diagnostics/StabilityAdvisor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -8,6 +9,8 @@ namespace phasebox {
 
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// ω·h a penalty contact may reach under an explicit method (CONTRACT §6).
+constexpr double kPenaltyMargin = 1.0;
 
 std::string number(double v) {
     std::ostringstream out;
@@ -59,12 +62,23 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
         }
         advice.omegaMax = lambda > 0.0 ? std::sqrt(lambda) : 0.0;
     }
+    // Penalty contacts that have not begun yet (a ball in flight) are stiff all the same: the
+    // stiffest a body resting on its points can be. Contacts that begin mid-step pump energy
+    // even below the linear limit, so explicit methods keep a margin, ω·h ≤ 1 (CONTRACT §6).
+    const double anticipated = world.anticipatedContactOmegaSquared();
+    const bool penalty =
+        world.settings().contactModel == ContactModel::Penalty && anticipated > 0.0;
+    advice.omegaMax = std::max(advice.omegaMax, std::sqrt(anticipated));
+    const auto boundOf = [penalty](double bound) {
+        return penalty && bound > 0.0 && std::isfinite(bound) ? std::min(bound, kPenaltyMargin)
+                                                              : bound;
+    };
 
     const double omega = advice.omegaMax;
     for (const IntegratorInfo& info : integratorRegistry()) {
         if (info.adaptive) continue;
         StepLimit limit{info.name, 0.0, {}};
-        const double bound = info.stabilityBound;
+        const double bound = boundOf(info.stabilityBound);
         if (omega == 0.0 || bound == kInfinity) {
             limit.maxDt = kInfinity;
             limit.note = omega == 0.0 ? "nothing oscillates" : "stable at any step";
@@ -80,7 +94,7 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
 
     const std::string& method = settings.integrator;
     const IntegratorInfo& info = world.integrator().info();
-    const double bound = info.stabilityBound;
+    const double bound = boundOf(info.stabilityBound);
     const auto growth = info.energyGrowth;
     const double wh = omega * advice.dt;
     if (omega > 0.0 && bound != kInfinity && wh >= bound) {

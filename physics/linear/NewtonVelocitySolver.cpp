@@ -6,6 +6,9 @@ namespace phasebox {
 
 // Updates this small relative to the velocity are round-off when they stop shrinking.
 constexpr double kRoundOffFloor = 1e-9;
+// Newton iterations a step takes when a force switches on or off within it (activeSetChanged):
+// a piecewise-linear force converges in a few once the switch is inside the iterate.
+constexpr int kActiveSetIterations = 12;
 
 void NewtonVelocitySolver::reset(int n) {
     force_.setZero(n);
@@ -349,6 +352,17 @@ NewtonVelocitySolver::Result NewtonVelocitySolver::solve(OdeSystem& sys, double 
     v = u0 + delta_;
     result.iterations = 1;
     result.lastCorrection = delta_.lpNorm<Eigen::Infinity>();
+    // A force that switches on or off within the step (a penalty contact beginning): the
+    // linearisation about the start does not see it, and the step taken without it ends deep
+    // in the overlap with the energy of a spring compressed from nothing. Newton then goes on
+    // until it has converged with the switch in.
+    if (maxIterations < kActiveSetIterations) {
+        qe_ = q0 + c * v;
+        if (sys.activeSetChanged(q0, qe_)) {
+            maxIterations = kActiveSetIterations;
+            untilConverged = true;
+        }
+    }
 
     // Further Newton iterations on R(v) = M·(v − u₀) − c·F(q₀ + c·v, v).
     while (result.iterations < maxIterations) {

@@ -104,6 +104,14 @@ bool needsCoulomb(const SceneDesc& scene) {
 }
 }  // namespace
 
+SimulationSettings simulationSettings(const SimulationDesc& sim) {
+    return {sim.integrator,       sim.dt,
+            sim.substeps,         sim.tolerance,
+            sim.newtonIterations, contactSettings(sim.solver),
+            sim.contactModel,     sim.contactStiffness.value_or(0.0),
+            sim.contactDamping};
+}
+
 ContactSettings contactSettings(const std::map<std::string, double>& solver) {
     ContactSettings settings;
     auto take = [&](std::string_view key, auto& field) {
@@ -394,9 +402,7 @@ BuildResult buildWorld(const SceneDesc& setup) {
         world.addJoint(j);
     }
 
-    const SimulationDesc& sim = scene.simulation;
-    world.setSettings({sim.integrator, sim.dt, sim.substeps, sim.tolerance, sim.newtonIterations,
-                       contactSettings(sim.solver)});
+    world.setSettings(simulationSettings(scene.simulation));
     world.commit();
     return result;
 }

@@ -31,6 +31,8 @@ struct BuildResult {
 // The contact solver's settings from the scene's simulation.solver (keys as documented in
 // docs/scene-format.md; absent keys keep their defaults).
 ContactSettings contactSettings(const std::map<std::string, double>& solver);
+// The world's settings from the scene's simulation section.
+SimulationSettings simulationSettings(const SimulationDesc& sim);
 
 // Throws SceneError when validateScene() finds issues.
 BuildResult buildWorld(const SceneDesc& scene);

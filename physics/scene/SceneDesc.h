@@ -3,6 +3,8 @@
 // with the contract's defaults. No behaviour lives here: buildWorld() turns it into a World,
 // validateScene() checks it, and app/SceneIO maps it to and from JSON.
 
+#include "physics/contacts/ContactModel.h"
+
 #include <array>
 #include <cstddef>
 #include <map>
@@ -26,6 +28,11 @@ struct SimulationDesc {
     // Contact solver settings (engine-defined keys). Stored as numbers so unknown engine keys
     // round-trip through files.
     std::map<std::string, double> solver;
+    // How contacts respond (CONTRACT §6): the penalty model's stiffness per contact point is
+    // automatic while absent (the lightest dynamic body gets ω·h = 0.5).
+    ContactModel contactModel = ContactModel::Impulse;
+    std::optional<double> contactStiffness;
+    double contactDamping = 0.0;
 };
 
 struct GravityDesc {
@@ -236,7 +243,9 @@ struct SceneDesc {
     // that holds it (formatVersion()), so scenes without version 2's kinds save unchanged.
     static constexpr int kFormatVersion = 2;
     int formatVersion() const {
-        return disks.empty() && polygons.empty() && joints.empty() ? 1 : 2;
+        const bool contactModels = simulation.contactModel != ContactModel::Impulse ||
+                                   simulation.contactStiffness || simulation.contactDamping != 0.0;
+        return disks.empty() && polygons.empty() && joints.empty() && !contactModels ? 1 : 2;
     }
 
     std::string name;

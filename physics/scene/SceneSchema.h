@@ -55,6 +55,9 @@ inline constexpr std::string_view tolerance = "tolerance";
 inline constexpr std::string_view newtonIterations = "newton_iterations";
 inline constexpr std::string_view duration = "duration";
 inline constexpr std::string_view solver = "solver";
+inline constexpr std::string_view contactModel = "contact_model";
+inline constexpr std::string_view contactStiffness = "contact_stiffness";
+inline constexpr std::string_view contactDamping = "contact_damping";
 inline constexpr std::string_view iterations = "iterations";
 inline constexpr std::string_view relaxIterations = "relax_iterations";
 inline constexpr std::string_view contactHertz = "contact_hertz";
@@ -229,7 +232,7 @@ using Member = std::variant<double D::*, int D::*, bool D::*, std::string D::*, 
                             std::optional<std::string> D::*, std::optional<Point2> D::*,
                             ClothStiffnessDesc D::*, std::vector<AttractorDesc> D::*, Pinning D::*,
                             std::map<std::string, double> D::*, std::vector<Point2> D::*,
-                            JointType D::*, std::optional<JointMotorDesc> D::*,
+                            JointType D::*, ContactModel D::*, std::optional<JointMotorDesc> D::*,
                             std::optional<TrackCircleDesc> D::*, std::optional<TrackLineDesc> D::*>;
 
 template <typename D>

@@ -5,6 +5,7 @@
 // finer view of the first stage.
 
 #include <array>
+#include <chrono>
 #include <string_view>
 
 namespace phasebox {
@@ -17,6 +18,12 @@ enum class StepStage : unsigned char {
     Ledger,
     Guard
 };
+
+using ProfileClock = std::chrono::steady_clock;
+
+inline double secondsSince(ProfileClock::time_point start) {
+    return std::chrono::duration<double>(ProfileClock::now() - start).count();
+}
 
 struct StepProfile {
     static constexpr int kStageCount = 6;

@@ -1,6 +1,7 @@
 #include "physics/world/World.h"
 
 #include "physics/contacts/ContactStage.h"
+#include "physics/contacts/PenaltyContacts.h"
 #include "physics/effects/SpringEffect.h"
 
 #include <algorithm>
@@ -13,14 +14,10 @@
 namespace phasebox {
 
 namespace {
-using Clock = std::chrono::steady_clock;
+using Clock = ProfileClock;
 
 // Rounds of contact relax and joint projection after a step that has both (solveJoints).
 constexpr int kJointContactRounds = 32;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Times consecutive stages into a profile: each call to start() ends the stage before it.
 class StageTimer {
@@ -165,6 +162,7 @@ void World::commit() {
     } else {
         contacts_.reset();
     }
+    configureContactModel();
     if (!bodies_.joints.empty()) {
         if (!joints_) joints_ = std::make_unique<JointSolver>();
         joints_->bind(bodies_);
@@ -222,6 +220,7 @@ void World::rebuildSpringEffect() {
 void World::bindEffects() {
     const EffectWorldView view{&layout_, &mass_, &bodies_.particles, &bodies_.boxes};
     for (auto& effect : effects_) effect->bind(view);
+    if (penalty_) penalty_->bind(view);
     sortEffectsByChannel();
 }
 
@@ -339,6 +338,10 @@ void World::setSettings(const SimulationSettings& settings) {
         throw std::invalid_argument("tolerance must be > 0");
     if (settings.newtonIterations < 1)
         throw std::invalid_argument("newton_iterations must be >= 1");
+    if (!(settings.contactStiffness >= 0.0) || !std::isfinite(settings.contactStiffness))
+        throw std::invalid_argument("contact_stiffness must be > 0");
+    if (!(settings.contactDamping >= 0.0) || !std::isfinite(settings.contactDamping))
+        throw std::invalid_argument("contact_damping must be >= 0");
     const bool newMethod = settings.integrator != settings_.integrator;
     if (settings.dt != settings_.dt) {
         clock_.timeBase = clock_.time;
@@ -350,6 +353,12 @@ void World::setSettings(const SimulationSettings& settings) {
         integrator_->reset(layout_.dimension());
     }
     integrator_->setSettings({settings_.tolerance, settings_.newtonIterations});
+    // A switch of contact model keeps the state: only the response changes. The penalty's
+    // potential of the overlaps there are comes or goes with it, which is not integration error.
+    if (committed_ && !layoutDirty_ && contacts_) {
+        configureContactModel();
+        ledger_.carryOver(kineticEnergy(), potentialEnergy());
+    }
 }
 
 void World::setParticleCollisions(bool enabled, double restitution) {
@@ -399,12 +408,17 @@ OdeSystem::SplitAcceleration World::accelerationSplit(double t, const Vec& q, co
 bool World::addAccelerations(double t, const Vec& q, const Vec& u, Vec& accel,
                              const std::vector<int>& fields, double& power) {
     bool written = false;
-    if (!forceEffects_.empty()) {
+    if (!forceEffects_.empty() || penalty_) {
         force_.setZero();
         for (int i : forceEffects_) {
             const auto start = Clock::now();
             power += effects_[i]->addForces(t, q, u, force_);
             effectSeconds_[i] += secondsSince(start);
+        }
+        if (penalty_) {
+            const auto start = Clock::now();
+            power += penalty_->addForces(t, q, u, force_);
+            effectSeconds_.back() += secondsSince(start);
         }
         accel.array() = invMass_.array() * force_.array();
         written = true;
@@ -421,6 +435,7 @@ bool World::addAccelerations(double t, const Vec& q, const Vec& u, Vec& accel,
 double World::nonConservativePower(double t, const Vec& q, const Vec& u) {
     double power = 0.0;
     for (int i : nonConservative_) power += effects_[i]->nonConservativePower(t, q, u);
+    if (penalty_) power += penalty_->nonConservativePower(t, q, u);
     return power;
 }
 
@@ -432,6 +447,11 @@ double World::forces(double t, const Vec& q, const Vec& u, Vec& force) {
         const auto start = Clock::now();
         power += effects_[i]->addForces(t, q, u, force);
         effectSeconds_[i] += secondsSince(start);
+    }
+    if (penalty_) {
+        const auto start = Clock::now();
+        power += penalty_->addForces(t, q, u, force);
+        effectSeconds_.back() += secondsSince(start);
     }
     if (joints_) joints_->constrainForces(q, u, invMass_, force, jointScratch_);
     return power;
@@ -446,6 +466,11 @@ double World::forcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& forc
         const auto start = Clock::now();
         power += effects_[i]->addForcesAndJacobians(t, q, u, force, jacobians);
         effectSeconds_[i] += secondsSince(start);
+    }
+    if (penalty_) {
+        const auto start = Clock::now();
+        power += penalty_->addForcesAndJacobians(t, q, u, force, jacobians);
+        effectSeconds_.back() += secondsSince(start);
     }
     if (joints_) joints_->constrainForces(q, u, invMass_, force, jointScratch_);
     return power;
@@ -495,10 +520,15 @@ bool World::step() {
         const int next = 1 - current_;
         // Without contacts to move it afterwards, the last sub-step's end state is the frame's:
         // the integrator sums it for the ledger in its last pass.
-        const bool sumHere = s + 1 == substeps && !contacts_ && !joints_;
+        const bool sumHere = s + 1 == substeps && (!contacts_ || penalty_) && !joints_;
+        if (penalty_ && s == 0) {
+            // The penalty force acts inside the integrator: its pairs are found before it.
+            timer.start(StepStage::Collide);
+            findPenaltyPairs();
+        }
         timer.start(StepStage::Integrate);
         const bool ok = integrate(t, h, next, sumHere ? &summary : nullptr);
-        if (ok && contacts_ && s == 0) {
+        if (ok && contacts_ && !penalty_ && s == 0) {
             // Once per frame, after the first smooth step shows where the bodies are heading.
             timer.start(StepStage::Collide);
             collide(next, substeps);
@@ -508,9 +538,12 @@ bool World::step() {
         const bool both = ok && contacts_ && joints_;
         const EnergyLedger booked = ledger_;
         const double before = both ? mechanicalEnergy(q_[next], u_[next]) : 0.0;
-        if (ok && contacts_) {
+        if (ok && contacts_ && !penalty_) {
             timer.start(StepStage::SolveContacts);
-            solveContacts(h, next);
+            if (settings_.contactModel == ContactModel::Kinematic)
+                solveKinematic(next);
+            else
+                solveContacts(h, next);
         }
         if (ok && joints_) {
             timer.start(StepStage::SolveJoints);
@@ -542,40 +575,9 @@ bool World::step() {
     return good;
 }
 
-void World::collide(int next, int substeps) {
-    const auto start = Clock::now();
-    contacts_->collide(bodies_, invMass_, q_[current_], u_[current_], u_[next], 1.0 / substeps,
-                       settings_.dt, settings_.contacts);
-    effectSeconds_.back() += secondsSince(start);
-}
-
 bool World::integrate(double t, double h, int next, StateSummary* summary) {
     return integrator_->step(*this, t, h, q_[current_], u_[current_], q_[next], u_[next],
                              ledger_.workNc, summary);
-}
-
-void World::solveContacts(double h, int next) {
-    // Contacts act after the smooth step as impulses and a bounded position correction. What
-    // the impulses change (with the motion they cause) is physical work only where it takes
-    // energy out (friction, restitution losses, an inelastic normal impulse): a contact cannot
-    // do positive work. Energy the stage puts in is the solver's own, booked in correction with
-    // the push-out that removes overlap (CONTRACT §6): a pile solved short of convergence, or a
-    // resting body given back what symplectic Euler's step took, is never work_nc.
-    const auto start = Clock::now();
-    Vec& q = q_[next];
-    Vec& u = u_[next];
-    const double before = mechanicalEnergy(q, u);
-    contacts_->solveStep(h, q_[current_], u_[current_], q, u, settings_.contacts,
-                         integrator_->info().positionWeight);
-    const double after = mechanicalEnergy(q, u);
-    withoutPushOut_ = q;
-    contacts_->addPushOut(withoutPushOut_, -1.0);
-    const double unpushed = mechanicalEnergy(withoutPushOut_, u);
-    effectSeconds_.back() += secondsSince(start);
-    if (!std::isfinite(after)) return;  // the guard reports it
-    const double impulses = unpushed - before;
-    ledger_.workNc += std::min(impulses, 0.0);
-    ledger_.correction += (after - unpushed) + std::max(impulses, 0.0);
 }
 
 void World::solveJoints(double h, int next) {
@@ -622,7 +624,8 @@ StateSummary World::closeLedger(const StateSummary* summed) {
     const StateSummary summary =
         summed ? *summed : summarizeState(pairedDofs(), mass_, q, u_[current_]);
     if (summary.finite)
-        ledger_.close(summary, phasebox::potentialEnergy(effects_, q, summary.massMoment));
+        ledger_.close(summary, phasebox::potentialEnergy(effects_, q, summary.massMoment) +
+                                   contactPotential(q));
     return summary;
 }
 
@@ -688,12 +691,14 @@ double World::kineticEnergy() const {
 double World::potentialEnergy() const {
     const Vec& q = q_[current_];
     return phasebox::potentialEnergy(
-        effects_, q, summarizeState(pairedDofs(), mass_, q, u_[current_]).massMoment);
+               effects_, q, summarizeState(pairedDofs(), mass_, q, u_[current_]).massMoment) +
+           contactPotential(q);
 }
 
 double World::mechanicalEnergy(const Vec& q, const Vec& u) const {
     const StateSummary summary = summarizeState(pairedDofs(), mass_, q, u);
-    return summary.kinetic + phasebox::potentialEnergy(effects_, q, summary.massMoment);
+    return summary.kinetic + phasebox::potentialEnergy(effects_, q, summary.massMoment) +
+           contactPotential(q);
 }
 
 // ---- diagnostics --------------------------------------------------------------------------
@@ -794,6 +799,7 @@ void World::checkInvariants([[maybe_unused]] StepStage after) const {
         for (int i = 0; i < n; ++i) kinetic += 0.5 * mass_[i] * u[i] * u[i];
         double potential = 0.0;
         for (const auto& e : effects_) potential += e->potentialEnergy(q);
+        potential += contactPotential(q);
         const double drift =
             kinetic + potential - ledger_.workNc - ledger_.correction - ledger_.initial;
         const double scale = 1.0 + std::abs(kinetic) + std::abs(potential) +

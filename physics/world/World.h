@@ -7,6 +7,7 @@
 // Hot data is the flat state (q, u) with per-dof masses; cold data (ids, radii, materials)
 // lives in the object records (core/Bodies.h).
 
+#include "physics/contacts/ContactModel.h"
 #include "physics/contacts/ContactSolver.h"
 #include "physics/core/Bodies.h"
 #include "physics/core/Layout.h"
@@ -27,6 +28,7 @@
 namespace phasebox {
 
 class ContactStage;
+class PenaltyContacts;
 class SpringEffect;
 
 struct SimulationSettings {
@@ -36,6 +38,11 @@ struct SimulationSettings {
     double tolerance = 1e-6;
     int newtonIterations = 1;
     ContactSettings contacts;  // the scene's simulation.solver
+    // simulation.contact_model, contact_stiffness (k per point; 0 = automatic: the lightest
+    // dynamic body that can touch gets ω·h = 0.5) and contact_damping (CONTRACT §6).
+    ContactModel contactModel = ContactModel::Impulse;
+    double contactStiffness = 0.0;
+    double contactDamping = 0.0;
 };
 
 struct EffectCost {
@@ -101,6 +108,17 @@ public:
     bool particleCollisions() const { return particleCollisions_; }
     // The contact stage, or nullptr when nothing in the scene can touch.
     const ContactStage* contacts() const { return contacts_.get(); }
+    // The penalty model's stiffness per contact point (N/m) as it runs: the scene's, or the
+    // automatic choice when the scene gives none. 0 when nothing can touch.
+    double penaltyStiffness() const;
+    // The largest ω² a penalty contact can give one body resting on a plane with its points
+    // (a disk one, a box or polygon two, with its rotation), over the bodies that can touch: the
+    // advisor's bound for contacts that have not begun yet. 0 under the other models.
+    double anticipatedContactOmegaSquared() const;
+    // The vector sum of the contact forces on the body whose state begins at dof, over the last
+    // step (CONTRACT §7): the impulses it received over dt under the impulse and kinematic
+    // models, the penalty force at the current state under penalty. Zero without contacts.
+    Vec2 contactForce(int dof) const;
 
     // ---- settings and stepping --------------------------------------------------------
     // Throws std::invalid_argument for an unknown integrator or an out-of-range number;
@@ -164,6 +182,7 @@ public:
     double forces(double t, const Vec& q, const Vec& u, Vec& force) override;
     double forcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& force,
                               ForceJacobians& jacobians) override;
+    bool activeSetChanged(const Vec& q0, const Vec& q1) override;
 
     double kineticEnergy() const;
     double potentialEnergy() const;
@@ -181,6 +200,10 @@ private:
 
     // The stages of step(), in the order they run.
     void collide(int next, int substeps);
+    void findPenaltyPairs();
+    void configureContactModel();
+    double contactPotential(const Vec& q) const;
+    void solveKinematic(int next);
     bool integrate(double t, double h, int next, StateSummary* summary);
     void solveContacts(double h, int next);
     void solveJoints(double h, int next);
@@ -209,6 +232,10 @@ private:
     std::vector<double> effectSeconds_;  // parallel to effects_
 
     std::unique_ptr<ContactStage> contacts_;
+    std::unique_ptr<PenaltyContacts> penalty_;  // only under the penalty model
+    Vec penaltyVelocity_;                       // u at the last pair search, for its sweep
+    Vec kinematicImpulse_;  // per dof: the kinematic response's impulses in the last step
+    bool penaltyPairsStale_ = true;
     std::unique_ptr<JointSolver> joints_;
     Vec jointScratch_;
     bool particleCollisions_ = false;

@@ -45,7 +45,8 @@ const QStringList kLessons = {QStringLiteral("atwood-machine.phasebox.json"),
                               QStringLiteral("restitution-friction.phasebox.json"),
                               QStringLiteral("rolling-race.phasebox.json"),
                               QStringLiteral("simple-pendulum.phasebox.json"),
-                              QStringLiteral("stiff-spring-implicit.phasebox.json")};
+                              QStringLiteral("stiff-spring-implicit.phasebox.json"),
+                              QStringLiteral("three-ways-to-collide.phasebox.json")};
 
 SceneDesc load(const QString& file) {
     const SceneLoadResult result = SceneIO::load(kResourceDir + QLatin1Char('/') + file);
@@ -144,6 +145,8 @@ private slots:
     void doublePendulumsPartAfterSomeSeconds();
     void atwoodMachinesAccelerateAtTheClosedForm();
     void beadOnTheHoopSwingsWithThePendulumsPeriod();
+    void threeWaysToCollide_data();
+    void threeWaysToCollide();
 };
 
 void TestLessons::theLessonsAreCompiledInAndOnDisk() {
@@ -602,6 +605,77 @@ void TestLessons::beadOnTheHoopSwingsWithThePendulumsPeriod() {
           maxError);
     QVERIFY(std::abs(period - exact) < 1e-3 * exact);
     QVERIFY(maxError < 1e-6);
+}
+
+void TestLessons::threeWaysToCollide_data() {
+    QTest::addColumn<int>("model");
+    for (int m = 0; m < 3; ++m) QTest::newRow(contactModelName(ContactModel(m)).data()) << m;
+}
+
+// The notes' claims under each contact model (CONTRACT §6): the ball dropped from h = 2 m
+// with e = 0.8 rebounds to e²·h within 3% under impulses and kinematic response; under penalty
+// it stays in contact π·√(m/k)/√(1 − ζ²) (within a step), sinks at most v·√(m/k) and leaves at
+// e·v with e = exp(−ζπ/√(1 − ζ²)); the stack stands under all three; the cradle hands the swing
+// to the last ball with the middle ones still under impulses and kinematic response, and
+// spreads it along the row under penalty.
+void TestLessons::threeWaysToCollide() {
+    QFETCH(int, model);
+    SceneDesc scene = load(QStringLiteral("three-ways-to-collide.phasebox.json"));
+    scene.simulation.contactModel = ContactModel(model);
+    auto world = build(scene);
+    const int ball = indexOf(*world, "ball"), last = indexOf(*world, "cradle4");
+    const int middle = indexOf(*world, "cradle2"), top = indexOf(*world, "box3", true);
+    const double radius = 0.25, h = 2.0, m = 1.0, dt = scene.simulation.dt;
+    const double k = world->penaltyStiffness();
+    QCOMPARE(k, m * (0.5 / dt) * (0.5 / dt));  // automatic: ω·h = 0.5
+    const double zeta = scene.simulation.contactDamping / (2.0 * std::sqrt(k * m));
+    const double root = std::sqrt(1.0 - zeta * zeta);
+    const double ePenalty = std::exp(-zeta * kPi / root);
+    double touch = -1.0, leave = -1.0, vIn = 0.0, vOut = 0.0, deepest = 0.0, apex = 0.0;
+    double lastHighest = 0.0, middleFarthest = 0.0;
+    const double lastRest = world->particlePosition(last).y();
+    const double middleRest = world->particlePosition(middle).x();
+    const double topStart = world->boxPosition(top).y();
+    double topFarthest = 0.0;
+    while (world->time() < 4.0) {
+        const Eigen::Vector2d v0 = world->particleVelocity(ball);
+        QVERIFY(world->step());
+        const double y = world->particlePosition(ball).y();
+        if (touch < 0.0 && y < radius) {
+            touch = world->time();
+            vIn = -v0.y();
+        }
+        // Impulses and the kinematic response stop it at the surface: it leaves from there.
+        if (leave < 0.0 && y >= radius && world->particleVelocity(ball).y() > 0) {
+            leave = world->time();
+            vOut = world->particleVelocity(ball).y();
+        }
+        deepest = std::max(deepest, radius - y);
+        if (leave >= 0.0) apex = std::max(apex, y - radius);
+        lastHighest = std::max(lastHighest, world->particlePosition(last).y() - lastRest);
+        middleFarthest =
+            std::max(middleFarthest, std::abs(world->particlePosition(middle).x() - middleRest));
+        topFarthest = std::max(topFarthest, std::abs(world->boxPosition(top).y() - topStart));
+    }
+    const double released = 2.0 * (1.0 - std::cos(40.0 * kPi / 180.0));  // the first ball's drop
+    qInfo(
+        "%s: apex %.4f m, deepest %.4f m, contact %.4f s, exit %.4f of %.4f m/s; cradle: last "
+        "ball rises %.3f m of %.3f, middle moves %.3f m; stack top moves %.4f m",
+        contactModelName(ContactModel(model)).data(), apex, deepest,
+        touch >= 0.0 ? leave - touch : 0.0, vOut, vIn, lastHighest, released, middleFarthest,
+        topFarthest);
+    QVERIFY(topFarthest < 0.05);
+    if (ContactModel(model) == ContactModel::Penalty) {
+        const double duration = kPi * std::sqrt(m / k) / root;
+        QVERIFY(std::abs((leave - touch) - duration) <= 1.5 * dt);
+        QVERIFY(deepest <= vIn * std::sqrt(m / k));
+        QVERIFY(std::abs(vOut - ePenalty * vIn) <= 0.02 * vIn);
+        QVERIFY(middleFarthest > 0.1);  // the momentum spreads along the row
+    } else {
+        QVERIFY(std::abs(apex - 0.64 * h) <= 0.03 * 0.64 * h);
+        QVERIFY(middleFarthest < 0.03);
+        QVERIFY(lastHighest > 0.95 * released);
+    }
 }
 
 QTEST_GUILESS_MAIN(TestLessons)

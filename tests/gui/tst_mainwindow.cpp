@@ -580,6 +580,44 @@ private slots:
         QVERIFY(w.recorder().markers().back().label.contains(QStringLiteral("rk4")));
     }
 
+    // CONTRACT §6: the contact model switched live from the Parameters panel keeps the state,
+    // keeps the drift continuous, marks the plots and goes into the setup (saved with it).
+    void switchingContactModelWhileRunningKeepsTheState() {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.openFile(kDemoScene, true));
+        QVERIFY(w.document().world().contacts());
+        w.controller().play();
+        QVERIFY(w.controller().advance(0.5));
+        const World& before = w.document().world();
+        const Eigen::VectorXd q = before.positions(), u = before.velocities();
+        const double t = before.time(), drift = before.energy().drift;
+        auto* combo = w.parametersPanel()->findChild<QComboBox*>("contactModel");
+        QVERIFY(combo);
+        auto* stiffness = w.parametersPanel()->findChild<QDoubleSpinBox*>("contactStiffness");
+        QVERIFY(stiffness && !stiffness->isEnabled());
+        combo->setCurrentIndex(static_cast<int>(ContactModel::Penalty));
+        const World& world = w.document().world();
+        QCOMPARE(world.settings().contactModel, ContactModel::Penalty);
+        QCOMPARE(w.document().setup().simulation.contactModel, ContactModel::Penalty);
+        QVERIFY(world.positions() == q);
+        QVERIFY(world.velocities() == u);
+        QCOMPARE(world.time(), t);
+        QVERIFY(std::abs(world.energy().drift - drift) < 1e-9);
+        // The automatic stiffness is shown, and the field is live under penalty.
+        QVERIFY(stiffness->isEnabled());
+        QCOMPARE(stiffness->value(), world.penaltyStiffness());
+        QVERIFY(w.controller().advance(0.5));
+        w.controller().pause();
+        w.refreshNow();
+        QCOMPARE(w.recorder().markers().empty(), false);
+        QVERIFY(w.recorder().markers().back().label.contains(QStringLiteral("penalty contacts")));
+        // One undo step takes it back.
+        w.document().undoStack()->undo();
+        QCOMPARE(w.document().world().settings().contactModel, ContactModel::Impulse);
+        QCOMPARE(combo->currentIndex(), static_cast<int>(ContactModel::Impulse));
+    }
+
     void selectingAnObjectPlotsItsPhaseSpace() {
         MainWindow w;
         w.show();

@@ -165,6 +165,58 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
            "(1 = the linearised step of Baraff & Witkin)"));
     connect(newtonBox_, &QSpinBox::valueChanged, this, &ParametersPanel::newtonIterationsChanged);
 
+    // ---- contact model (CONTRACT §6), switched live like the integrator -----------------
+    contactModelBox_ = new QComboBox;
+    contactModelBox_->setObjectName(QStringLiteral("contactModel"));
+    const QStringList modelTips{
+        tr("Impulses after the step, with friction and restitution: stacks rest"),
+        tr("A stiff damped spring in each overlap, F = k·d + c·ḋ: a smooth force the integrator "
+           "sees, with its potential ½·k·d² in the energy"),
+        tr("Move the bodies apart and reflect the approaching velocity by e; no forces")};
+    for (std::size_t i = 0; i < kContactModelNames.size(); ++i) {
+        const QString name = QString::fromLatin1(
+            kContactModelNames[i].data(), static_cast<qsizetype>(kContactModelNames[i].size()));
+        contactModelBox_->addItem(name.left(1).toUpper() + name.mid(1), name);
+        contactModelBox_->setItemData(static_cast<int>(i), modelTips.at(static_cast<qsizetype>(i)),
+                                      Qt::ToolTipRole);
+    }
+    connect(contactModelBox_, &QComboBox::currentIndexChanged, this, [this] {
+        updateEnabledFields();
+        emit contactModelChanged(contactModel());
+    });
+    stiffnessBox_ = new ScientificSpinBox;
+    stiffnessBox_->setObjectName(QStringLiteral("contactStiffness"));
+    stiffnessBox_->setRange(1e-3, 1e12);
+    stiffnessBox_->setSignificantDigits(3);
+    stiffnessBox_->setStepFactor(10.0);
+    stiffnessBox_->setSuffix(tr(" N/m"));
+    stiffnessBox_->setToolTip(
+        tr("Penalty stiffness k per contact point; the arrows move it by a "
+           "factor of ten"));
+    connect(stiffnessBox_, &QDoubleSpinBox::valueChanged, this,
+            &ParametersPanel::contactStiffnessChanged);
+    automaticStiffnessButton_ = new QToolButton;
+    automaticStiffnessButton_->setObjectName(QStringLiteral("automaticStiffness"));
+    automaticStiffnessButton_->setText(tr("Auto"));
+    automaticStiffnessButton_->setCheckable(true);
+    automaticStiffnessButton_->setToolTip(
+        tr("Automatic stiffness: the lightest body gets ω·h = 0.5 at the step"));
+    connect(automaticStiffnessButton_, &QToolButton::clicked, this, [this](bool automatic) {
+        emit contactStiffnessChanged(automatic ? 0.0 : stiffnessBox_->value());
+    });
+    auto* stiffnessRow = new QHBoxLayout;
+    stiffnessRow->setSpacing(2);
+    stiffnessRow->addWidget(stiffnessBox_, 1);
+    stiffnessRow->addWidget(automaticStiffnessButton_);
+    contactDampingBox_ = new ScientificSpinBox;
+    contactDampingBox_->setObjectName(QStringLiteral("contactDamping"));
+    contactDampingBox_->setRange(0.0, 1e12);
+    contactDampingBox_->setSignificantDigits(3);
+    contactDampingBox_->setSuffix(tr(" N·s/m"));
+    contactDampingBox_->setToolTip(tr("Penalty damping c per contact point"));
+    connect(contactDampingBox_, &QDoubleSpinBox::valueChanged, this,
+            &ParametersPanel::contactDampingChanged);
+
     // ---- speed ---------------------------------------------------------------------------
     speedBox_ = new QComboBox;
     speedBox_->setObjectName(QStringLiteral("speed"));
@@ -196,6 +248,9 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     toleranceLabel_ = addRow(tr("&Tolerance:"), toleranceBox_);
     newtonLabel_ = addRow(tr("&Newton iter.:"), newtonBox_);
     newtonLabel_->setToolTip(tr("Newton iterations (implicit Euler only)"));
+    addRow(tr("&Contacts:"), contactModelBox_);
+    stiffnessLabel_ = addRow(tr("Sti&ffness:"), stiffnessBox_, stiffnessRow);
+    contactDampingLabel_ = addRow(tr("Dam&ping:"), contactDampingBox_);
     addRow(tr("Sp&eed:"), speedBox_);
 
     // ---- stability advisor ---------------------------------------------------------------
@@ -222,8 +277,9 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
         });
     // Scrolling the dock's neighbourhood with the wheel must not switch the integrator or dt
     // mid-run: a setting takes the wheel only once it has the focus (click or Tab).
-    for (QWidget* field : std::initializer_list<QWidget*>{integratorBox_, dtBox_, substepsBox_,
-                                                          toleranceBox_, newtonBox_, speedBox_}) {
+    for (QWidget* field : std::initializer_list<QWidget*>{
+             integratorBox_, dtBox_, substepsBox_, toleranceBox_, newtonBox_, contactModelBox_,
+             stiffnessBox_, contactDampingBox_, speedBox_}) {
         field->setFocusPolicy(Qt::StrongFocus);
         field->installEventFilter(this);
     }
@@ -236,7 +292,11 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     setTabOrder(dtPresetButton_, substepsBox_);
     setTabOrder(substepsBox_, toleranceBox_);
     setTabOrder(toleranceBox_, newtonBox_);
-    setTabOrder(newtonBox_, speedBox_);
+    setTabOrder(newtonBox_, contactModelBox_);
+    setTabOrder(contactModelBox_, stiffnessBox_);
+    setTabOrder(stiffnessBox_, automaticStiffnessButton_);
+    setTabOrder(automaticStiffnessButton_, contactDampingBox_);
+    setTabOrder(contactDampingBox_, speedBox_);
 
     setMinimumWidth(240);
     setSimulation(SimulationDesc{});
@@ -248,6 +308,8 @@ void ParametersPanel::setSimulation(const SimulationDesc& simulation) {
     const QSignalBlocker blockSubsteps(substepsBox_);
     const QSignalBlocker blockTolerance(toleranceBox_);
     const QSignalBlocker blockNewton(newtonBox_);
+    const QSignalBlocker blockModel(contactModelBox_);
+    const QSignalBlocker blockDamping(contactDampingBox_);
 
     const int index = integratorBox_->findData(QString::fromStdString(simulation.integrator));
     if (index >= 0) integratorBox_->setCurrentIndex(index);
@@ -261,7 +323,21 @@ void ParametersPanel::setSimulation(const SimulationDesc& simulation) {
         toleranceBox_->setMinimum(std::min(kMinTolerance, simulation.tolerance));
     toleranceBox_->setValue(simulation.tolerance);
     newtonBox_->setValue(simulation.newtonIterations);
+    contactModelBox_->setCurrentIndex(static_cast<int>(simulation.contactModel));
+    contactDampingBox_->setValue(simulation.contactDamping);
+    if (simulation.contactStiffness) setContactStiffness(*simulation.contactStiffness, false);
     updateEnabledFields();
+}
+
+void ParametersPanel::setContactStiffness(double stiffness, bool automatic) {
+    const QSignalBlocker blockStiffness(stiffnessBox_);
+    const QSignalBlocker blockAutomatic(automaticStiffnessButton_);
+    if (stiffness > 0.0) stiffnessBox_->setValue(stiffness);
+    automaticStiffnessButton_->setChecked(automatic);
+}
+
+ContactModel ParametersPanel::contactModel() const {
+    return static_cast<ContactModel>(std::max(0, contactModelBox_->currentIndex()));
 }
 
 void ParametersPanel::setSpeed(double factor) {
@@ -297,6 +373,12 @@ void ParametersPanel::updateEnabledFields() {
     newtonBox_->setEnabled(newton);
     newtonLabel_->setEnabled(newton);
     integratorBox_->setToolTip(integratorBox_->currentData(Qt::ToolTipRole).toString());
+    const bool penalty = contactModel() == ContactModel::Penalty;
+    for (QWidget* w :
+         std::initializer_list<QWidget*>{stiffnessBox_, automaticStiffnessButton_, stiffnessLabel_,
+                                         contactDampingBox_, contactDampingLabel_})
+        w->setEnabled(penalty);
+    contactModelBox_->setToolTip(contactModelBox_->currentData(Qt::ToolTipRole).toString());
 }
 
 void ParametersPanel::setButtonAction(QToolButton* button, QAction* action) {

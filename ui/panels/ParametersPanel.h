@@ -41,6 +41,8 @@ public:
     // The stability advisor's verdict; warning = the current settings will blow up. An empty
     // text hides the line.
     void setAdvice(const QString& text, bool warning);
+    // The penalty stiffness in use (the scene's or the automatic choice), without emitting.
+    void setContactStiffness(double stiffness, bool automatic);
 
     QString integrator() const;
     double dt() const;
@@ -48,6 +50,7 @@ public:
     double tolerance() const;
     int newtonIterations() const;
     double speed() const;
+    ContactModel contactModel() const;
     QString adviceText() const;
 
     // The quick dt presets, in seconds (1/30 … 1/1000).
@@ -62,6 +65,9 @@ signals:
     void toleranceChanged(double tolerance);
     void newtonIterationsChanged(int iterations);
     void speedChanged(double factor);
+    void contactModelChanged(phasebox::ContactModel model);
+    void contactStiffnessChanged(double stiffness);  // 0: automatic
+    void contactDampingChanged(double damping);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -82,6 +88,12 @@ private:
     QSpinBox* newtonBox_ = nullptr;
     QLabel* newtonLabel_ = nullptr;
     QComboBox* speedBox_ = nullptr;
+    QComboBox* contactModelBox_ = nullptr;
+    ScientificSpinBox* stiffnessBox_ = nullptr;
+    QToolButton* automaticStiffnessButton_ = nullptr;
+    QLabel* stiffnessLabel_ = nullptr;
+    ScientificSpinBox* contactDampingBox_ = nullptr;
+    QLabel* contactDampingLabel_ = nullptr;
     QLabel* advice_ = nullptr;
 };
 

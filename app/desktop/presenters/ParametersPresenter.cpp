@@ -18,7 +18,12 @@ ParametersPresenter::ParametersPresenter(ui::ParametersPanel& panel, Document& d
                                          SimulationController& controller, QObject* parent)
     : Presenter(parent), panel_(panel), document_(document), controller_(controller) {
     connect(&document_, &Document::sceneReset, this, &ParametersPresenter::refresh);
-    connect(&document_, &Document::sceneEdited, this, &ParametersPresenter::updateAdvice);
+    // An edit may bring a lighter body, and with it another automatic penalty stiffness.
+    connect(&document_, &Document::sceneEdited, this, [this] {
+        panel_.setContactStiffness(document_.world().penaltyStiffness(),
+                                   !document_.setup().simulation.contactStiffness.has_value());
+        updateAdvice();
+    });
     connect(&document_, &Document::simulationSettingsChanged, this,
             &ParametersPresenter::showSettings);
 
@@ -34,6 +39,15 @@ ParametersPresenter::ParametersPresenter(ui::ParametersPanel& panel, Document& d
     connect(&panel_, &ui::ParametersPanel::newtonIterationsChanged, this,
             [this](int n) { change([&](auto& s) { s.newtonIterations = n; }); });
     connect(&panel_, &ui::ParametersPanel::speedChanged, this, &ParametersPresenter::setSpeed);
+    connect(&panel_, &ui::ParametersPanel::contactModelChanged, this,
+            [this](ContactModel model) { change([&](auto& s) { s.contactModel = model; }); });
+    connect(&panel_, &ui::ParametersPanel::contactStiffnessChanged, this, [this](double k) {
+        change([&](auto& s) {
+            s.contactStiffness = k > 0.0 ? std::optional<double>(k) : std::nullopt;
+        });
+    });
+    connect(&panel_, &ui::ParametersPanel::contactDampingChanged, this,
+            [this](double c) { change([&](auto& s) { s.contactDamping = c; }); });
 }
 
 void ParametersPresenter::createActions(QWidget& window) {
@@ -82,7 +96,10 @@ void ParametersPresenter::refresh() {
 }
 
 void ParametersPresenter::showSettings() {
-    panel_.setSimulation(document_.setup().simulation);
+    const SimulationDesc& simulation = document_.setup().simulation;
+    panel_.setSimulation(simulation);
+    panel_.setContactStiffness(document_.world().penaltyStiffness(),
+                               !simulation.contactStiffness.has_value());
     updateAdvice();
 }
 

@@ -1,0 +1,146 @@
+// phasebox-cli and the contact models (CONTRACT §6): --contact-model, the scene keys and their
+// refusals, info's report of the penalty stiffness, and a stiff penalty contact reported as
+// diverged with the stability advisor's largest stable step.
+
+#include "CliTestSupport.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace phasebox::testing;
+
+namespace {
+
+// A 1 kg ball of radius 0.1 m above a plane at y = 0; `simulation` and `effects` are spliced in.
+QByteArray ballScene(const QByteArray& simulation, const QByteArray& effects, double y = 0.2,
+                     double vy = 0.0) {
+    return R"({"format": "phasebox-scene", "version": 2,
+               "simulation": {)" +
+           simulation + R"(},
+               "effects": {)" +
+           effects + R"(},
+               "particles": [{"id": "ball", "position": [0, )" +
+           QByteArray::number(y) + R"(], "velocity": [0, )" + QByteArray::number(vy) +
+           R"(], "radius": 0.1, "restitution": 0, "friction": 0}],
+               "planes": [{"point": [0, 0], "normal": [0, 1], "restitution": 0, "friction": 0}]})";
+}
+
+}  // namespace
+
+class TestCliContactModels : public QObject {
+    Q_OBJECT
+
+private slots:
+    void stiffPenaltyDivergesWithTheAdvisorsStep() {
+        // k = 1e7 on a 1 kg ball: ω = 3162 rad/s, so symplectic Euler at 1/60 (ω·h = 53) blows
+        // up; the report gives the advisor's largest stable sub-step, 1/ω = 0.000316 s.
+        QTemporaryDir dir;
+        const QString scene =
+            writeFile(dir, "stiff.json",
+                      ballScene(R"("contact_model": "penalty", "contact_stiffness": 1e7)",
+                                R"("gravity": {})"));
+        const CliResult r = runCli({"run", scene, "--duration", "2"});
+        QCOMPARE(r.status, 1);
+        QVERIFY2(r.err.contains("diverged") && r.err.contains("0.000316"), r.err.constData());
+        QVERIFY(r.err.startsWith("phasebox-cli: "));
+        QCOMPARE(r.err.count('\n'), 1);
+
+        // Implicit Euler rests the ball on the plane, sunk by m·g/k.
+        const CliResult implicit =
+            runCli({"run", scene, "--duration", "2", "--integrator", "implicit_euler", "--json"});
+        QCOMPARE(implicit.status, 0);
+        const QJsonObject ball =
+            QJsonDocument::fromJson(implicit.out).object()["objects"].toObject()["ball"].toObject();
+        const double y = ball["position"].toArray()[1].toDouble();
+        const double vy = ball["velocity"].toArray()[1].toDouble();
+        QVERIFY2(std::abs(y - (0.1 - 9.81 / 1e7)) < 1e-6, qPrintable(QString::number(y, 'g', 10)));
+        QVERIFY(std::abs(vy) < 1e-6);
+    }
+
+    void contactModelOptionSwitchesTheResponse() {
+        // The same scene under each model, chosen on the command line: the ball thrown down at
+        // 2 m/s with no gravity and e = 0 stops dead under impulse and kinematic and leaves at
+        // e·v under a damped penalty, e = exp(−ζπ/√(1 − ζ²)).
+        QTemporaryDir dir;
+        const double k = 1e4, m = 1.0, zeta = 0.2, v = 2.0;
+        const double c = zeta * 2.0 * std::sqrt(k * m);
+        const QString scene =
+            writeFile(dir, "ball.json",
+                      ballScene(R"("integrator": "rk4", "dt": 0.0001, "contact_stiffness": 1e4, )"
+                                R"("contact_damping": )" +
+                                    QByteArray::number(c, 'g', 17),
+                                "", 0.11, -v));
+        const auto finalVy = [&](const char* model) {
+            const CliResult r =
+                runCli({"run", scene, "--duration", "0.1", "--contact-model", model, "--json"});
+            if (r.status != 0) qWarning("%s", r.err.constData());
+            return QJsonDocument::fromJson(r.out)
+                .object()["objects"]
+                .toObject()["ball"]
+                .toObject()["velocity"]
+                .toArray()[1]
+                .toDouble();
+        };
+        const double e = std::exp(-zeta * std::numbers::pi / std::sqrt(1.0 - zeta * zeta));
+        const double penalty = finalVy("penalty");
+        qInfo("penalty exit speed %.5f m/s, e*v = %.5f m/s", penalty, e * v);
+        // The step that straddles the touch samples the kink in the force: an error of order
+        // ω·h (0.01 here) times a fraction of v, the only one that does not shrink as h⁴.
+        QVERIFY(std::abs(penalty - e * v) <= 2e-3 * v);
+        QVERIFY(std::abs(finalVy("kinematic")) < 1e-9);
+        QVERIFY(std::abs(finalVy("impulse")) < 1e-3);
+    }
+
+    void unknownModelIsRefusedWithTheList() {
+        QTemporaryDir dir;
+        const QString scene = writeFile(dir, "ball.json", ballScene("", ""));
+        const CliResult r = runCli({"run", scene, "--contact-model", "springy"});
+        QCOMPARE(r.status, 2);
+        QVERIFY2(r.err.contains("unknown contact model \"springy\"; known: impulse, penalty, "
+                                "kinematic"),
+                 r.err.constData());
+    }
+
+    void badSceneValuesAreRefusedWithTheirPath_data() {
+        QTest::addColumn<QByteArray>("simulation");
+        QTest::addColumn<QByteArray>("message");
+        QTest::newRow("model") << QByteArray(R"("contact_model": "springy")")
+                               << QByteArray("simulation.contact_model");
+        QTest::newRow("stiffness 0") << QByteArray(R"("contact_stiffness": 0)")
+                                     << QByteArray("simulation.contact_stiffness: must be > 0");
+        QTest::newRow("stiffness < 0") << QByteArray(R"("contact_stiffness": -5)")
+                                       << QByteArray("simulation.contact_stiffness: must be > 0");
+        QTest::newRow("damping < 0") << QByteArray(R"("contact_damping": -1)")
+                                     << QByteArray("simulation.contact_damping: must be >= 0");
+    }
+    void badSceneValuesAreRefusedWithTheirPath() {
+        QFETCH(QByteArray, simulation);
+        QFETCH(QByteArray, message);
+        QTemporaryDir dir;
+        const QString scene = writeFile(dir, "bad.json", ballScene(simulation, ""));
+        const CliResult r = runCli({"run", scene});
+        QCOMPARE(r.status, 2);
+        QVERIFY2(r.err.contains(message), r.err.constData());
+        if (simulation.contains("springy"))
+            QVERIFY2(r.err.contains("impulse") && r.err.contains("kinematic"), r.err.constData());
+    }
+
+    void infoReportsThePenaltyStiffness() {
+        // Automatic: the lightest body (1 kg) gets ω·h = 0.5 at dt 1/60: k = (0.5·60)² = 900.
+        QTemporaryDir dir;
+        const QString scene =
+            writeFile(dir, "ball.json", ballScene(R"("contact_model": "penalty")", ""));
+        const CliResult r = runCli({"info", scene});
+        QCOMPARE(r.status, 0);
+        QVERIFY2(r.out.contains("contacts:    penalty, stiffness 900 N/m per point (automatic"),
+                 r.out.constData());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliContactModels)
+#include "tst_cli_contact_models.moc"
