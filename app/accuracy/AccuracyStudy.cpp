@@ -342,7 +342,9 @@ AccuracyResult runAccuracyStudy(const SceneDesc& scene, const AccuracyOptions& o
     base.simulation.substeps = 1;
     const BuildResult probe = buildWorld(scene);  // throws SceneError
     result.contacts = probe.world->contacts() != nullptr;
-    if (result.contacts) result.note = kContactNote;
+    if (result.contacts)
+        result.note = scene.simulation.contactModel == ContactModel::Penalty ? kPenaltyContactNote
+                                                                             : kContactNote;
     for (const IntegratorInfo* m : methods)
         result.plannedRuns += static_cast<int>(m->adaptive ? tolerancesOf(*m).size() : dts.size());
     const int total = result.plannedRuns + 1;

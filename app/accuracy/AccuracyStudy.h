@@ -71,7 +71,7 @@ struct AccuracyResult {
     bool referenceExact = false;
     bool referenceFromCache = false;  // the rk45 reference was computed by an earlier study
     bool contacts = false;            // the scene has contacts (orders are then left empty)
-    std::string note;                 // kContactNote for scenes with contacts, else empty
+    std::string note;  // kContactNote (kPenaltyContactNote) for scenes with contacts, else empty
     double endTime = 0.0;
     std::vector<AccuracyRecord> records;
     int plannedRuns = 0;  // records a complete study has
@@ -82,6 +82,12 @@ struct AccuracyResult {
 inline constexpr const char* kContactNote =
     "contact events make every method first-order; compare drift and distance from the "
     "reference, not orders";
+// Penalty contacts are forces, but the force switches on where an overlap begins (its damping
+// part jumps there): the same first-order ceiling, for another reason.
+inline constexpr const char* kPenaltyContactNote =
+    "penalty contacts switch on where an overlap begins (the damping force jumps there, the "
+    "spring force kinks), which makes every method about first-order; compare drift and "
+    "distance from the reference, not orders";
 
 // Called after the reference and after each run: done of total work items (the reference
 // counts as one). Called on the thread that runs the study.

@@ -258,9 +258,8 @@ QString AccuracyDialog::summaryText() const {
                        .arg(result.records.size())
                        .arg(result.cancelled ? tr(" (cancelled)") : QString());
     if (result.contacts)
-        text += QLatin1Char(' ') + tr("This scene has contacts: contact events make every method "
-                                      "first-order, so compare drift and distance from the "
-                                      "reference, not orders.");
+        text += QLatin1Char(' ') + tr("This scene has contacts: ") +
+                QString::fromStdString(result.note) + QLatin1Char('.');
     return text;
 }
 
