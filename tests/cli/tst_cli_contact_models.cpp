@@ -137,15 +137,14 @@ private slots:
         // halvings by at least ten), the note says why no order is given, and the diagram is
         // drawn.
         QTemporaryDir dir;
-        const QString scene = writeFile(
-            dir, "bounce.json",
-            ballScene(R"("contact_model": "penalty", "contact_stiffness": 1e4, )"
-                      R"("contact_damping": 20, "dt": 0.01, "duration": 1)",
-                      R"("gravity": {})", 0.6));
+        const QString scene =
+            writeFile(dir, "bounce.json",
+                      ballScene(R"("contact_model": "penalty", "contact_stiffness": 1e4, )"
+                                R"("contact_damping": 20, "dt": 0.01, "duration": 1)",
+                                R"("gravity": {})", 0.6));
         const QString plot = dir.filePath("wp.png");
-        const CliResult r =
-            runCli({"accuracy", scene, "--json", "--integrators",
-                    "symplectic_euler,velocity_verlet,rk4", "--plot", plot});
+        const CliResult r = runCli({"accuracy", scene, "--json", "--integrators",
+                                    "symplectic_euler,velocity_verlet,rk4", "--plot", plot});
         QCOMPARE(r.status, 0);
         QVERIFY(QFile::exists(plot));
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
@@ -155,11 +154,12 @@ private slots:
         const QJsonArray records = o["records"].toArray();
         QCOMPARE(records.size(), 3 * 6);
         for (int m = 0; m < 3; ++m) {
-            const QJsonObject coarse = records[6 * m].toObject(), fine = records[6 * m + 5].toObject();
+            const QJsonObject coarse = records[6 * m].toObject(),
+                              fine = records[6 * m + 5].toObject();
             qInfo("%s: error %.3g at dt %.3g, %.3g at dt %.3g",
-                  qPrintable(coarse["integrator"].toString()),
-                  coarse["position_error"].toDouble(), coarse["dt"].toDouble(),
-                  fine["position_error"].toDouble(), fine["dt"].toDouble());
+                  qPrintable(coarse["integrator"].toString()), coarse["position_error"].toDouble(),
+                  coarse["dt"].toDouble(), fine["position_error"].toDouble(),
+                  fine["dt"].toDouble());
             QVERIFY(fine["position_error"].toDouble() < 0.1 * coarse["position_error"].toDouble());
             QVERIFY(fine["energy_drift"].toDouble() < 0.1 * coarse["energy_drift"].toDouble());
         }
