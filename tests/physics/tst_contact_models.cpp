@@ -174,6 +174,45 @@ private slots:
         QVERIFY(std::abs(world->particlePosition(0).y() - (kRadius - sag)) < 1e-4);
     }
 
+    void advisorCountsPointsAndStacks() {
+        // The advisor's ω comes from the assembled contact stiffness: a disk on a plane has one
+        // point, ω² = k/m; a box on a plane two, 2k/m along the normal and k·w²/(2I) rocking; a
+        // stack of boxes couples their springs, and its stiffest mode is stiffer still.
+        const double k = 1e4;
+        const auto omegaOf = [&](int boxes, bool disk) {
+            SceneDesc scene;
+            scene.simulation = simulation("implicit_euler", 1.0 / 60.0);
+            scene.simulation.contactModel = ContactModel::Penalty;
+            scene.simulation.contactStiffness = k;
+            scene.effects.gravity = GravityDesc{};
+            scene.planes.push_back(PlaneDesc{});
+            if (disk) {
+                DiskDesc d;
+                d.position = {0.0, 0.5};
+                d.radius = 0.5;
+                d.mass = 1.0;
+                scene.disks.push_back(d);
+            }
+            for (int i = 0; i < boxes; ++i) {
+                BoxDesc b;
+                b.position = {0.0, 0.5 + i};
+                b.size = {1.0, 1.0};
+                b.mass = 1.0;
+                scene.boxes.push_back(b);
+            }
+            auto world = build(scene);
+            bool settled = true;
+            for (int i = 0; i < 60; ++i) settled = world->step() && settled;  // into contact
+            return settled ? adviseStability(*world).omegaMax : -1.0;
+        };
+        const double disk = omegaOf(0, true), box = omegaOf(1, false), stack = omegaOf(4, false);
+        // A unit box: I = 1/6, rocking ω² = k·1/(2/6) = 3k, above the 2k of its normal mode.
+        qInfo("omega: disk %.2f, box %.2f, stack of four %.2f rad/s", disk, box, stack);
+        QVERIFY(std::abs(disk - std::sqrt(k)) < 1e-3 * std::sqrt(k));
+        QVERIFY(std::abs(box - std::sqrt(3.0 * k)) < 1e-3 * std::sqrt(3.0 * k));
+        QVERIFY(stack > 1.2 * box);
+    }
+
     void kinematicBounceHeights_data() {
         QTest::addColumn<double>("restitution");
         for (double e : {1.0, 0.8, 0.5, 0.2}) QTest::newRow(qPrintable(QString::number(e))) << e;
