@@ -11,6 +11,8 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // ω·h a penalty contact may reach under an explicit method (CONTRACT §6).
 constexpr double kPenaltyMargin = 1.0;
+// A method is recommended at a step only when its largest stable step is this much larger.
+constexpr double kRecommendMargin = 1.25;
 
 std::string number(double v) {
     std::ostringstream out;
@@ -92,6 +94,21 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
         advice.limits.push_back(limit);
     }
 
+    // The methods stable at this step with a margin: the only ones the advice may name.
+    for (const StepLimit& limit : advice.limits)
+        if (limit.maxDt >= kRecommendMargin * advice.dt) advice.recommended.push_back(limit);
+    const auto alternatives = [&](std::ostringstream& out) {
+        bool first = true;
+        for (const StepLimit& limit : advice.recommended) {
+            if (limit.integrator == settings.integrator) continue;
+            out << (first ? "" : ", ") << limit.integrator;
+            if (std::isfinite(limit.maxDt))
+                out << " (stable below " << number(limit.maxDt) << " s)";
+            first = false;
+        }
+        return !first;
+    };
+
     const std::string& method = settings.integrator;
     const IntegratorInfo& info = world.integrator().info();
     const double bound = boundOf(info.stabilityBound);
@@ -105,13 +122,15 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
         if (bound > 0.0)
             out << " (stable below " << number(bound)
                 << "): it will blow up. Use dt/substeps below " << number(bound / omega) << " s ("
-                << std::ceil(settings.dt * omega / bound)
-                << " sub-steps, more for a margin), or an implicit integrator.";
+                << std::ceil(settings.dt * omega / bound) << " sub-steps, more for a margin)";
         else
             out << ": it gains energy at every step (its stiffest mode by a factor of about "
-                << number(growth ? growth(wh) : kInfinity)
-                << " per sub-step). Use symplectic_euler, velocity_verlet or an implicit "
-                   "integrator.";
+                << number(growth ? growth(wh) : kInfinity) << " per sub-step)";
+        std::ostringstream others;
+        if (alternatives(others))
+            out << (bound > 0.0 ? ", or" : ". Use")
+                << " a method stable at this step: " << others.str();
+        out << ".";
         advice.message = out.str();
     } else {
         advice.message = omega > 0.0

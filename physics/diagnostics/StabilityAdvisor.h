@@ -26,6 +26,9 @@ struct StabilityAdvice {
     double omegaMax = 0.0;          // rad/s; 0 when nothing in the scene oscillates
     double dt = 0.0;                // the scene's sub-step length, dt/substeps
     std::vector<StepLimit> limits;  // one per fixed-step method, in registry order
+    // Of those, the ones stable at the current step with a margin (largest stable step at least
+    // 1.25 times it): the only methods the message names.
+    std::vector<StepLimit> recommended;
     // The current integrator at the current sub-step: stable, and if not, what to do.
     bool currentStable = true;
     std::string message;

@@ -6,6 +6,8 @@
 
 #include <QTest>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -102,6 +104,48 @@ private slots:
         QVERIFY(!a.currentStable);
         QVERIFY(a.message.find("sub-steps") != std::string::npos);
         QVERIFY(a.message.find("implicit") != std::string::npos);
+    }
+
+    void neverRecommendsAMethodUnstableAtTheStep_data() {
+        QTest::addColumn<double>("k");
+        QTest::addColumn<QString>("integrator");
+        // ω·h from 0.5 to 170 at dt 1/60: below, near and far past every explicit limit.
+        for (double k : {900.0, 9e3, 3e4, 1e5, 1e6, 1e8})
+            for (const char* m : {"explicit_euler", "midpoint", "symplectic_euler", "rk4"})
+                QTest::newRow(qPrintable(QString("k %1, %2").arg(k).arg(m))) << k << QString(m);
+    }
+    void neverRecommendsAMethodUnstableAtTheStep() {
+        // Issue 19: a stiff spring under explicit Euler was told to use symplectic Euler, which
+        // then blew up. Every method the advice names must be one its own limits call stable at
+        // this step with a margin, and that must hold when the advice is followed: each
+        // recommended method keeps the spring bounded for 600 steps.
+        QFETCH(double, k);
+        QFETCH(QString, integrator);
+        const double dt = 1.0 / 60.0;
+        auto world = buildWorld(spring(k, 1.0, integrator.toStdString(), dt)).world;
+        const StabilityAdvice a = adviseStability(*world);
+        for (const StepLimit& limit : a.recommended) QVERIFY(limit.maxDt >= 1.25 * dt);
+        for (const StepLimit& limit : a.limits) {
+            // Named as a word ("implicit_euler," but not inside "implicit_euler_x").
+            bool named = false;
+            const std::string name(limit.integrator);
+            for (std::size_t at = a.message.find(name); at != std::string::npos;
+                 at = a.message.find(name, at + 1)) {
+                const std::size_t end = at + name.size();
+                const bool wordEnd = end == a.message.size() ||
+                                     !(std::isalnum(static_cast<unsigned char>(a.message[end])) ||
+                                       a.message[end] == '_');
+                const bool wordStart = at == 0 || a.message[at - 1] == ' ';
+                named = named || (wordStart && wordEnd && name != integrator.toStdString());
+            }
+            const bool recommended =
+                std::any_of(a.recommended.begin(), a.recommended.end(),
+                            [&](const StepLimit& r) { return r.integrator == limit.integrator; });
+            QVERIFY2(!named || recommended, a.message.c_str());
+            if (recommended)
+                QVERIFY2(staysBounded(spring(k, 1.0, std::string(limit.integrator), dt), 600),
+                         std::string(limit.integrator).c_str());
+        }
     }
 
     void gravityAloneNeedsNoAdvice() {

@@ -412,7 +412,8 @@ void ParametersPanel::setActions(QAction* play, QAction* step, QAction* reset) {
     setButtonAction(resetButton_, reset);
 }
 
-void ParametersPanel::setAdvice(const QString& text, bool warning) {
+void ParametersPanel::setAdvice(const QString& text, bool warning, const QString& details) {
+    advice_->setToolTip(details);
     // The sign as well as the colour: a warning must not depend on telling red from green.
     advice_->setText(warning ? QStringLiteral("⚠ ") + text : text);
     advice_->setProperty("warning", warning);

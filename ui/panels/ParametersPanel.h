@@ -40,7 +40,8 @@ public:
 
     // The stability advisor's verdict; warning = the current settings will blow up. An empty
     // text hides the line.
-    void setAdvice(const QString& text, bool warning);
+    // details: the largest stable step of each method, shown as the line's tooltip.
+    void setAdvice(const QString& text, bool warning, const QString& details = {});
     // The penalty stiffness in use (the scene's or the automatic choice), without emitting.
     void setContactStiffness(double stiffness, bool automatic);
 

@@ -105,10 +105,23 @@ void ParametersPresenter::showSettings() {
 
 void ParametersPresenter::updateAdvice() {
     const StabilityAdvice advice = adviseStability(document_.world(), 200);
-    if (advice.omegaMax <= 0.0)
+    if (advice.omegaMax <= 0.0) {
         panel_.setAdvice({}, false);
-    else
-        panel_.setAdvice(QString::fromStdString(advice.message), !advice.currentStable);
+        return;
+    }
+    // The largest stable step of every method, as the advisor computed them.
+    QStringList details{tr("Largest stable sub-step (stiffest mode ω = %1 rad/s):")
+                            .arg(advice.omegaMax, 0, 'g', 4)};
+    for (const StepLimit& limit : advice.limits) {
+        const QString name = QString::fromLatin1(limit.integrator.data(),
+                                                 static_cast<qsizetype>(limit.integrator.size()));
+        const QString step = std::isinf(limit.maxDt) ? tr("any")
+                             : limit.maxDt == 0.0    ? tr("none")
+                                                     : tr("%1 s").arg(limit.maxDt, 0, 'g', 3);
+        details << QStringLiteral("%1: %2").arg(name, step);
+    }
+    panel_.setAdvice(QString::fromStdString(advice.message), !advice.currentStable,
+                     details.join(QLatin1Char('\n')));
 }
 
 bool ParametersPresenter::change(const std::function<void(SimulationDesc&)>& edit) {
