@@ -16,6 +16,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
@@ -25,6 +26,8 @@ namespace {
 
 constexpr double kReferenceTolerance = 1e-12;
 constexpr const char* kReferenceName = "rk45 tol 1e-12";
+// How far above a method's order the median observed order may be before the study warns.
+constexpr double kOrderWarning = 0.5;
 // References are a state vector each; a few scenes' worth is plenty for an app session.
 constexpr std::size_t kCacheEntries = 16;
 // How often a run looks at the cancel flag: often enough that cancelling a large scene feels
@@ -272,6 +275,49 @@ void computeOrders(AccuracyResult& result) {
     }
 }
 
+// The end time in [t, t + P/2] where the exact positions move fastest, when at t they move at
+// less than half that speed; t otherwise. Candidates lie on the grid of the coarsest step, so
+// that every run of the study still ends on a whole number of its steps.
+double endTimeAwayFromTurningPoints(const ExactReference& exact, double t, double period,
+                                    double grid) {
+    const double h = 1e-4 * period;
+    const auto speed = [&](double at) {
+        return (exact.positions(at + h) - exact.positions(std::max(0.0, at - h))).norm();
+    };
+    double best = t, fastest = speed(t);
+    const double atStart = fastest;
+    const long long base = std::llround(t / grid);
+    const int samples = static_cast<int>(std::min(4096.0, std::ceil(0.5 * period / grid)));
+    for (int j = 1; j <= samples; ++j) {
+        const double at = static_cast<double>(base + j) * grid;
+        if (const double v = speed(at); v > fastest) {
+            fastest = v;
+            best = at;
+        }
+    }
+    return atStart < 0.5 * fastest ? best : t;
+}
+
+// Observed orders well above each fixed-step method's own, as warnings.
+void warnAboutDistortedOrders(AccuracyResult& result) {
+    std::map<std::string, std::vector<double>> observed;
+    for (const AccuracyRecord& r : result.records)
+        if (r.order && !r.tolerance) observed[r.integrator].push_back(*r.order);
+    for (auto& [name, orders] : observed) {
+        const IntegratorInfo* info = findIntegrator(name);
+        if (!info || orders.empty()) continue;
+        std::nth_element(orders.begin(), orders.begin() + orders.size() / 2, orders.end());
+        const double median = orders[orders.size() / 2];
+        if (median <= info->order + kOrderWarning) continue;
+        std::ostringstream out;
+        out.precision(3);
+        out << name << "'s observed order " << median << " is above its order " << info->order
+            << ": its errors cancel at t = " << result.endTime
+            << " s (a turning point or a whole number of periods); study another duration";
+        result.warnings.push_back(out.str());
+    }
+}
+
 // Throws unless 0 < value <= upper (and finite).
 void checkRange(const char* what, double value, double upper) {
     if (std::isfinite(value) && value > 0.0 && value <= upper) return;
@@ -331,7 +377,7 @@ AccuracyResult runAccuracyStudy(const SceneDesc& scene, const AccuracyOptions& o
         return options.tolerances.empty() ? defaultAccuracyTolerances(method.name)
                                           : options.tolerances;
     };
-    const double endTime = options.duration != 0.0 ? options.duration : scene.simulation.duration;
+    double endTime = options.duration != 0.0 ? options.duration : scene.simulation.duration;
     checkRange("duration", endTime, kNoUpperBound);
 
     AccuracyResult result;
@@ -355,6 +401,21 @@ AccuracyResult runAccuracyStudy(const SceneDesc& scene, const AccuracyOptions& o
 
     std::optional<Vec> reference;
     if (const auto exact = findExactReference(scene, *probe.world, endTime)) {
+        // At a turning point (a whole or half number of periods of an oscillation) a phase
+        // error hardly moves the position, and every method looks more accurate and of a higher
+        // order than it is (symplectic Euler 3.02, RK4 5.00 on the oscillator at 10 s). Unless
+        // the user chose the end time, the study ends where the exact motion is fastest within
+        // the next half period, when the scene's duration is near a turning point.
+        if (options.duration == 0.0 || options.durationIsDefault) {
+            const std::vector<double> periods = exact->periods();
+            if (!periods.empty()) {
+                const double shortest = *std::min_element(periods.begin(), periods.end());
+                endTime = endTimeAwayFromTurningPoints(*exact, endTime, shortest,
+                                                       *std::max_element(dts.begin(), dts.end()));
+                result.endTimeMoved = endTime != result.endTime;
+                result.endTime = endTime;
+            }
+        }
         result.reference = "exact: " + exact->kind();
         result.referenceExact = true;
         reference = exact->positions(endTime);
@@ -393,6 +454,7 @@ AccuracyResult runAccuracyStudy(const SceneDesc& scene, const AccuracyOptions& o
     // Only a cancel stops the study early (a diverging run is a record like any other).
     result.cancelled = static_cast<int>(result.records.size()) < result.plannedRuns;
     computeOrders(result);
+    warnAboutDistortedOrders(result);
     return result;
 }
 

@@ -54,6 +54,9 @@ struct AccuracyOptions {
     std::vector<std::string> integrators;  // empty = all ten, in the registry's order
     std::vector<double> dts;               // empty = the scene's dt × 1, ½, … 1/32
     double duration = 0.0;                 // end time; 0 = the scene's duration
+    // The duration is a default the user did not choose (the app's suggestion): the study may
+    // move it off a turning point of the exact motion, as it does with duration 0.
+    bool durationIsDefault = false;
     // Tolerances the adaptive methods sweep, at the frame step dts.front(); empty = each
     // method's default (defaultAccuracyTolerances).
     std::vector<double> tolerances;
@@ -77,6 +80,12 @@ struct AccuracyResult {
     int plannedRuns = 0;  // records a complete study has
     bool cancelled = false;
     std::string error;  // the reference could not be computed (its run diverged)
+    // Observed orders well above a method's own: its errors cancel at this end time (a turning
+    // point of an oscillation, a whole number of periods), which a different duration shows.
+    std::vector<std::string> warnings;
+    // The study's end time was moved from the scene's duration to where the exact motion moves
+    // fastest within the next half period (see runAccuracyStudy).
+    bool endTimeMoved = false;
 };
 
 inline constexpr const char* kContactNote =

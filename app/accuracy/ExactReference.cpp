@@ -215,6 +215,20 @@ Vec ExactReference::positions(double t) const {
     return q;
 }
 
+std::vector<double> ExactReference::periods() const {
+    std::vector<double> out;
+    const auto oscillator = [&](const LinearMotion& m) {
+        if (m.omega2 > 0.0 && m.gamma == 0.0) out.push_back(kTwoPi / std::sqrt(m.omega2));
+    };
+    for (const Coordinate& c : coordinates_) oscillator(c.motion);
+    for (const AxisMotion& a : axes_) oscillator(a.s);
+    for (const Orbit& o : orbits_)
+        if (!o.orbit.hyperbolic) out.push_back(kTwoPi / o.orbit.meanMotion);
+    for (const Pendulum& p : pendulums_)
+        out.push_back(4.0 * std::comp_ellint_1(p.motion.k) / p.motion.omega0);
+    return out;
+}
+
 std::optional<ExactReference> findExactReference(const SceneDesc& scene, const World& world,
                                                  double endTime) {
     // Contacts act as impulses, not smooth forces: no closed form survives them.

@@ -77,6 +77,9 @@ public:
     const std::string& kind() const { return kind_; }
     // Every position coordinate of the world's state (its layout) at time t.
     Vec positions(double t) const;
+    // The periods of the periodic motions in it (undamped oscillators, pendulums, elliptic
+    // orbits); empty when nothing repeats.
+    std::vector<double> periods() const;
 
 private:
     friend std::optional<ExactReference> findExactReference(const SceneDesc&, const World&, double);

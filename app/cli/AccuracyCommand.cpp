@@ -206,6 +206,11 @@ QJsonObject toJson(const AccuracyResult& result, const QString& sceneName, const
         {"note",
          result.note.empty() ? QJsonValue() : QJsonValue(QString::fromStdString(result.note))},
         {"records", records}};
+    QJsonArray warnings;
+    for (const std::string& warning : result.warnings)
+        warnings.append(QString::fromStdString(warning));
+    report.insert("warnings", warnings);
+    report.insert("end_time_moved", result.endTimeMoved);
     if (!result.error.empty())
         report.insert("reference_error", QString::fromStdString(result.error));
     return report;
@@ -233,6 +238,11 @@ void writeTable(QTextStream& out, const AccuracyResult& result, const QString& s
         << ", positions at t = " << formatNumber(result.endTime) << " s\n"
         << "timing:     CPU time of each run alone, best of up to 5 for runs under 50 ms\n";
     if (!result.note.empty()) out << "note:       " << QString::fromStdString(result.note) << "\n";
+    if (result.endTimeMoved)
+        out << "end time:   moved from the scene's duration to where the motion is fastest "
+               "(at a turning point every method looks better than it is)\n";
+    for (const std::string& warning : result.warnings)
+        out << "warning:    " << QString::fromStdString(warning) << "\n";
     out << "\n"
         << QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9\n")
                .arg(QStringLiteral("integrator"), -18)
@@ -312,6 +322,9 @@ int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err)
             << "; position errors are nan\n";
     if (!result.note.empty() && !table)
         err << "phasebox-cli: note: " << QString::fromStdString(result.note) << "\n";
+    if (!table)
+        for (const std::string& warning : result.warnings)
+            err << "phasebox-cli: warning: " << QString::fromStdString(warning) << "\n";
     int diverged = 0;
     for (const AccuracyRecord& r : result.records) diverged += r.diverged;
     if (diverged > 0)

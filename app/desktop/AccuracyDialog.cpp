@@ -1,6 +1,7 @@
 #include "app/desktop/AccuracyDialog.h"
 
 #include "app/io/NumberFormat.h"
+#include "app/io/SceneIO.h"
 #include "physics/integrators/Integrator.h"
 #include "ui/plots/Charts.h"
 #include "ui/plots/WorkPrecisionChart.h"
@@ -165,6 +166,18 @@ AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
     });
 }
 
+void AccuracyDialog::setCurrentScene(const SceneDesc& scene) {
+    // The same scene apart from its simulation settings, compared as the file it would save.
+    const auto withoutSettings = [](SceneDesc s) {
+        s.simulation = SimulationDesc{};
+        return SceneIO::serialize(s);
+    };
+    const bool current = withoutSettings(scene) == withoutSettings(studied_);
+    if (current == studiedIsCurrent_) return;
+    studiedIsCurrent_ = current;
+    updateCheapest();
+}
+
 void AccuracyDialog::setScene(const SceneDesc& scene) {
     scene_ = scene;
     QStringList dts;
@@ -210,11 +223,14 @@ bool AccuracyDialog::run() {
     }
     bool ok = false;
     options.duration = duration_->text().toDouble(&ok);
+    options.durationIsDefault = !duration_->isModified();
     if (!ok || !(options.duration > 0.0) || options.duration > 1e5) {
         summary_->setText(tr("Duration: a number of seconds > 0, please."));
         return false;
     }
     if (!study_.start(scene_, options)) return false;
+    studied_ = scene_;
+    studiedIsCurrent_ = true;
     runButton_->setEnabled(false);
     cancelButton_->setEnabled(true);
     progress_->setValue(0);
@@ -260,6 +276,13 @@ QString AccuracyDialog::summaryText() const {
     if (result.contacts)
         text += QLatin1Char(' ') + tr("This scene has contacts: ") +
                 QString::fromStdString(result.note) + QLatin1Char('.');
+    if (result.endTimeMoved)
+        text += QLatin1Char(' ') +
+                tr("The end time was moved to %1 s, where the motion is fastest: at a turning "
+                   "point every method looks better than it is.")
+                    .arg(result.endTime, 0, 'g', 6);
+    for (const std::string& warning : result.warnings)
+        text += QStringLiteral(" ⚠ ") + QString::fromStdString(warning) + QLatin1Char('.');
     return text;
 }
 
@@ -335,6 +358,11 @@ void AccuracyDialog::updateCheapest() {
     chosen_ = cheapestFor(target);
     if (!chosen_) {
         cheapest_->setText(tr("no run reached it: try smaller steps or a higher-order method"));
+        return;
+    }
+    if (!studiedIsCurrent_) {
+        chosen_.reset();
+        cheapest_->setText(tr("the scene has changed since this study: run it again to apply"));
         return;
     }
     cheapest_->setText(tr("<b>%1</b> at dt %2%3: error %4 m in %5 s of CPU")

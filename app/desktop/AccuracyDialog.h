@@ -30,6 +30,11 @@ public:
 
     // The scene the next study runs on (a copy is taken when it starts).
     void setScene(const SceneDesc& scene);
+    // The document's scene now: a study's result applies only to the scene it studied, so
+    // Apply is disabled while they differ in anything but the simulation settings (which are
+    // what Apply changes).
+    void setCurrentScene(const SceneDesc& scene);
+    bool studiedSceneIsCurrent() const { return studiedIsCurrent_; }
     // Starts a study with the dialog's choices; false when one is running or the choices are
     // invalid (the reason is shown).
     bool run();
@@ -57,6 +62,8 @@ private:
     void exportInteractively(const QString& format);
 
     SceneDesc scene_;
+    SceneDesc studied_;  // the scene of the last study started
+    bool studiedIsCurrent_ = true;
     AccuracyStudy study_;
     QListWidget* integrators_ = nullptr;
     QLineEdit* dts_ = nullptr;

@@ -262,6 +262,10 @@ AccuracyDialog* MainWindow::accuracyDialog() {
         accuracy_ = new AccuracyDialog(this);
         connect(accuracy_, &AccuracyDialog::applyRequested, parametersPresenter_,
                 &ParametersPresenter::applyStudyChoice);
+        // Apply only to the scene it studied: every edit, New, Open and Revert is checked.
+        for (auto signal : {&Document::sceneEdited, &Document::sceneReset})
+            connect(&document_, signal, accuracy_,
+                    [this] { accuracy_->setCurrentScene(document_.setup()); });
     }
     return accuracy_;
 }

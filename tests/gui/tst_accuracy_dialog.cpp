@@ -3,17 +3,20 @@
 
 #include "app/desktop/AccuracyDialog.h"
 #include "app/desktop/MainWindow.h"
+#include "app/document/Document.h"
 
 #include <QAction>
 #include <QChart>
 #include <QChartView>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QUndoStack>
 
 #include <cmath>
 
@@ -73,6 +76,24 @@ private slots:
             if (r.positionError <= target) QVERIFY(r.cpuSeconds >= best->cpuSeconds);
         // Explicit Euler cannot reach 1e-4 here at these steps; RK4 can, at its coarsest step.
         QCOMPARE(best->integrator, std::string("rk4"));
+
+        // A study applies only to the scene it studied: an edit of the scene disables Apply,
+        // undoing the edit enables it again (simulation settings are what Apply changes, so
+        // they do not count).
+        auto* applyButton = [&]() -> QPushButton* {
+            for (QPushButton* b : dialog->findChildren<QPushButton*>())
+                if (b->text().contains(QStringLiteral("Apply"))) return b;
+            return nullptr;
+        }();
+        QVERIFY(applyButton);
+        QVERIFY(applyButton->isEnabled());
+        const QString id = QString::fromStdString(w.document().setup().particles.front().id);
+        QVERIFY(w.document().setProperty(id, QStringLiteral("mass"), 2.0));
+        QVERIFY(!dialog->studiedSceneIsCurrent());
+        QVERIFY(!applyButton->isEnabled());
+        w.document().undoStack()->undo();
+        QVERIFY(dialog->studiedSceneIsCurrent());
+        QVERIFY(applyButton->isEnabled());
 
         // Apply sets the scene's integrator and dt.
         emit dialog->applyRequested(QString::fromStdString(best->integrator), best->dt, 1e-6);
