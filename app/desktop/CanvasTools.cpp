@@ -168,6 +168,13 @@ void CanvasTools::report(bool ok, const QString& error) {
     if (!ok && !error.isEmpty()) emit message(error);
 }
 
+bool CanvasTools::addDrawn(const ObjectDesc& object, QString* error, QString* id) {
+    QString notice;
+    const bool ok = document_.addDrawnObject(object, error, id, &notice);
+    if (ok && !notice.isEmpty()) emit message(notice);
+    return ok;
+}
+
 void CanvasTools::pressed(QPointF world, Qt::MouseButton button, Qt::KeyboardModifiers modifiers) {
     if (button != Qt::LeftButton) return;
     dragging_ = true;
@@ -317,7 +324,7 @@ void CanvasTools::finish(QPointF world) {
             ParticleDesc p;
             p.position = point(start_);
             if (!click) p.velocity = {d.x() * kVelocityPerMetre, d.y() * kVelocityPerMetre};
-            report(document_.addObject(p, &error, &id), error);
+            report(addDrawn(p, &error, &id), error);
             break;
         }
         case Tool::Spring: {
@@ -335,7 +342,7 @@ void CanvasTools::finish(QPointF world) {
             // Stiff enough to hold a 1 kg ball against gravity with a visible stretch.
             s.stiffness = 50.0;
             s.damping = 0.1;
-            report(document_.addObject(s, &error, &id), error);
+            report(addDrawn(s, &error, &id), error);
             break;
         }
         case Tool::Cloth: {
@@ -348,7 +355,7 @@ void CanvasTools::finish(QPointF world) {
                 return std::clamp(int(length / 0.2) + 1, 4, 24);
             };
             c.resolution = {nodes(c.size[0]), nodes(c.size[1])};
-            report(document_.addObject(c, &error, &id), error);
+            report(addDrawn(c, &error, &id), error);
             break;
         }
         case Tool::Box: {
@@ -356,14 +363,14 @@ void CanvasTools::finish(QPointF world) {
             BoxDesc b;
             b.position = {0.5 * (start_.x() + world.x()), 0.5 * (start_.y() + world.y())};
             b.size = {std::abs(d.x()), std::abs(d.y())};
-            report(document_.addObject(b, &error, &id), error);
+            report(addDrawn(b, &error, &id), error);
             break;
         }
         case Tool::Disk: {
             DiskDesc disk;
             disk.position = point(start_);
             disk.radius = click ? kClickDiskRadius : std::hypot(d.x(), d.y());
-            report(document_.addObject(disk, &error, &id), error);
+            report(addDrawn(disk, &error, &id), error);
             break;
         }
         case Tool::Polygon: {
@@ -380,7 +387,7 @@ void CanvasTools::finish(QPointF world) {
                 const double a = std::numbers::pi * (2.0 * k - 1.0) / n - 0.5 * std::numbers::pi;
                 polygon.vertices.push_back({r * std::cos(a), r * std::sin(a)});
             }
-            report(document_.addObject(polygon, &error, &id), error);
+            report(addDrawn(polygon, &error, &id), error);
             break;
         }
         case Tool::Plane: {
@@ -389,7 +396,7 @@ void CanvasTools::finish(QPointF world) {
             p.point = point(start_);
             // Solid to the right of the drag: the normal points to its left.
             p.normal = {-d.y(), d.x()};
-            report(document_.addObject(p, &error, &id), error);
+            report(addDrawn(p, &error, &id), error);
             break;
         }
         case Tool::Joint: {
@@ -489,7 +496,7 @@ bool CanvasTools::closeOutline() {
     outline_.clear();
     view_.setOverlay({});
     QString error, id;
-    const bool ok = document_.addObject(polygon, &error, &id);
+    const bool ok = addDrawn(polygon, &error, &id);
     report(ok, error);
     if (ok) document_.setSelection({id});
     return ok;
@@ -584,7 +591,7 @@ bool CanvasTools::addJoint(const QString& a, const QString& b, QPointF end, QStr
             break;
     }
     QString error;
-    const bool ok = document_.addObject(j, &error, newId);
+    const bool ok = addDrawn(j, &error, newId);
     report(ok, error);
     return ok;
 }

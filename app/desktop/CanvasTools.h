@@ -25,6 +25,7 @@
 #include <QPointF>
 #include <QString>
 
+#include "app/document/PropertyTable.h"
 #include "physics/scene/SceneDesc.h"
 
 #include <QList>
@@ -96,6 +97,9 @@ private:
     void cancel();
     bool isClick(QPointF world) const;
     void report(bool ok, const QString& error);
+    // Adds what the user drew (Document::addDrawnObject) and says so when the integrator had to
+    // change for it to stay stable.
+    bool addDrawn(const ObjectDesc& object, QString* error, QString* id);
     void showPreview(QPointF world);
     // The id of the object under a world point, or empty.
     QString objectAt(QPointF world) const;

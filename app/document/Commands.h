@@ -26,6 +26,11 @@ class DocumentCommand : public QUndoCommand {
 public:
     bool isValid() const { return error_.isEmpty(); }
     const QString& errorString() const { return error_; }
+    // The scene as the edit would leave it (the edit not made): for looking ahead.
+    SceneDesc appliedTo(SceneDesc scene) const {
+        apply(scene);
+        return scene;
+    }
 
     void redo() override;
     void undo() override;

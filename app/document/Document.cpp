@@ -2,6 +2,7 @@
 
 #include "app/document/Commands.h"
 #include "app/io/SceneIO.h"
+#include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/effects/MouseSpringEffect.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneSchema.h"
@@ -19,6 +20,9 @@
 namespace phasebox {
 
 namespace {
+// Power iterations of the stability checks made while drawing (the Parameters panel's too).
+constexpr int kAdviceIterations = 200;
+
 QString keyText(std::string_view s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
@@ -171,6 +175,44 @@ bool Document::addObjects(std::vector<ObjectDesc> objects, QString* error, QStri
     const QStringList ids = command->objectIds();
     if (!push(command, error)) return false;
     if (newIds) *newIds = ids;
+    return true;
+}
+
+bool Document::addDrawnObject(const ObjectDesc& object, QString* error, QString* newId,
+                              QString* notice) {
+    auto* add = new AddObjectsCommand(*this, {object});
+    if (!add->isValid()) return push(add, error);
+    if (newId) *newId = add->objectIds().front();
+    // Stable now and not with the object: the method the advisor recommends instead, the
+    // symplectic ones first (they keep the energy), then implicit Euler.
+    std::string method;
+    if (adviseStability(*world_, kAdviceIterations).currentStable) {
+        BuildResult trial;
+        try {
+            trial = buildWorld(add->appliedTo(setup_));
+        } catch (const SceneError&) {
+            return push(add, error);  // validated: cannot happen; the command reports it
+        }
+        const StabilityAdvice after = adviseStability(*trial.world, kAdviceIterations);
+        if (!after.currentStable) {
+            for (const char* preferred :
+                 {"symplectic_euler", "velocity_verlet", "implicit_euler", "implicit_midpoint"})
+                for (const StepLimit& limit : after.recommended)
+                    if (method.empty() && limit.integrator == preferred) method = preferred;
+        }
+    }
+    if (method.empty()) return push(add, error);
+    SimulationDesc simulation = setup_.simulation;
+    const std::string before = simulation.integrator;
+    simulation.integrator = method;
+    auto* change = new SetSimulationCommand(*this, simulation);
+    undoStack_.beginMacro(add->text());
+    undoStack_.push(add);
+    const bool switched = push(change, error);
+    undoStack_.endMacro();
+    if (switched && notice)
+        *notice = tr("%1 at this dt would blow up with it: switched to %2 (undo to keep %1)")
+                      .arg(QString::fromStdString(before), QString::fromStdString(method));
     return true;
 }
 

@@ -80,6 +80,11 @@ public:
     bool deleteObjects(const QStringList& ids, QString* error = nullptr);
     // Moves a particle, box, plane (its point), cloth (its origin) or a spring's anchor.
     bool moveObject(const QString& id, const Point2& position, QString* error = nullptr);
+    // An object the user draws on the canvas. When it would make the current integrator
+    // unstable at the current step (the scene was stable before: a cloth on a new scene under
+    // symplectic Euler), the same undo step switches to a method the stability advisor finds
+    // stable with margin; *notice then says so.
+    bool addDrawnObject(const ObjectDesc& object, QString* error, QString* newId, QString* notice);
     bool setProperty(const QString& id, const QString& key, double value, QString* error = nullptr);
     // A particle's pinned flag or a box's static flag.
     bool setPinned(const QString& id, bool pinned, QString* error = nullptr);

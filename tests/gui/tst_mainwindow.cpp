@@ -7,6 +7,7 @@
 #include "app/desktop/MainWindow.h"
 #include "app/document/Autosave.h"
 #include "app/io/SceneIO.h"
+#include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
 #include "ui/panels/ParametersPanel.h"
@@ -26,6 +27,7 @@
 #include <QProcess>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -616,6 +618,44 @@ private slots:
         w.document().undoStack()->undo();
         QCOMPARE(w.document().world().settings().contactModel, ContactModel::Impulse);
         QCOMPARE(combo->currentIndex(), static_cast<int>(ContactModel::Impulse));
+    }
+
+    // Issue 19: what a user draws on a new scene is stable at the defaults. A cloth under
+    // symplectic Euler at 1/60 s would blow up; drawing it switches the integrator to one the
+    // stability advisor finds stable with margin, in the same undo step, and says so.
+    void drawingAClothKeepsANewSceneStable() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QCOMPARE(QString::fromStdString(w.document().setup().simulation.integrator),
+                 QStringLiteral("symplectic_euler"));
+        QWidget* canvas = w.canvas();
+        const QPoint c = canvas->rect().center();
+        w.action("toolCloth")->trigger();
+        drag(canvas, c + QPoint(-250, -200), c + QPoint(150, 0));
+        QCOMPARE(w.document().setup().cloths.size(), std::size_t(1));
+        const std::string method = w.document().setup().simulation.integrator;
+        const StabilityAdvice advice = adviseStability(w.document().world());
+        qInfo("cloth %d x %d: omega %.1f rad/s, integrator now %s",
+              w.document().setup().cloths[0].resolution[0],
+              w.document().setup().cloths[0].resolution[1], advice.omegaMax, method.c_str());
+        QVERIFY(method != "symplectic_euler");
+        QVERIFY(advice.currentStable);
+        bool said = false;
+        for (QLabel* label : w.statusBar()->findChildren<QLabel*>())
+            said = said || label->text().contains(QStringLiteral("switched to implicit_euler"));
+        QVERIFY(said);
+        w.controller().play();
+        QVERIFY(w.controller().advance(3.0));
+        w.controller().pause();
+        QVERIFY(!w.document().world().divergence().has_value());
+        QVERIFY(w.document().world().positions().allFinite());
+        // One undo takes back the cloth and the switch together.
+        w.controller().reset();
+        w.document().undoStack()->undo();
+        QCOMPARE(w.document().setup().cloths.size(), std::size_t(0));
+        QCOMPARE(QString::fromStdString(w.document().setup().simulation.integrator),
+                 QStringLiteral("symplectic_euler"));
     }
 
     void selectingAnObjectPlotsItsPhaseSpace() {
