@@ -18,6 +18,8 @@ using Clock = ProfileClock;
 
 // Rounds of contact relax and joint projection after a step that has both (solveJoints).
 constexpr int kJointContactRounds = 32;
+// A round that changes no velocity by more than this (m/s, rad/s) ends them.
+constexpr double kRoundTolerance = 1e-9;
 
 // Times consecutive stages into a profile: each call to start() ends the stage before it.
 class StageTimer {
@@ -553,9 +555,11 @@ bool World::step() {
             const double after = mechanicalEnergy(q_[next], u_[next]);
             if (std::isfinite(after)) {
                 const double motors = joints_->lastMotorWork();
-                const double net = after - before - motors;
+                const double net =
+                    after - before - motors - jointMethodEnergy_ - jointCorrectionEnergy_;
                 ledger_.workNc = booked.workNc + std::min(net, 0.0) + motors;
-                ledger_.correction = booked.correction + std::max(net, 0.0);
+                ledger_.correction =
+                    booked.correction + std::max(net, 0.0) + jointCorrectionEnergy_;
             }
         }
         if (!ok || (substeps > 1 && !(q_[next].allFinite() && u_[next].allFinite())))
@@ -588,20 +592,34 @@ void World::solveJoints(double h, int next) {
     // an inelastic contact (work_nc) and never puts it in (correction); a motor's push is work.
     Vec& q = q_[next];
     Vec& u = u_[next];
+    const bool interleave = contacts_ && contacts_->touching();
+    const double beforeShake = interleave ? mechanicalEnergy(q, u) : 0.0;
     joints_->shake(h, q_[current_], q, u, invMass_);
     const double beforeCorrection = mechanicalEnergy(q, u);
     joints_->correctPositions(q, u, invMass_);
     const double afterCorrection = mechanicalEnergy(q, u);
     bool caught = joints_->projectVelocities(q, u, invMass_);
+    // With contacts the step books the two stages' net change (step()); these parts of it are
+    // the joints' own and keep their booking: SHAKE and the first projection the method's
+    // (drift), the position correction correction.
+    jointMethodEnergy_ = jointCorrectionEnergy_ = 0.0;
+    if (interleave) {
+        const double projected = caught ? afterCorrection : mechanicalEnergy(q, u);
+        jointMethodEnergy_ = (beforeCorrection - beforeShake) + (projected - afterCorrection);
+        jointCorrectionEnergy_ = afterCorrection - beforeCorrection;
+    }
     // Contacts and joints on the same bodies: block Gauss-Seidel between the two solvers, each
     // exact or converged on its own, so that neither undoes the other (a wheel on the ground
     // is held up by the contact and to the car by the hinge). What the contacts do here is
     // their work, as in the contact stage: never energy put in.
-    const bool interleave = contacts_ && contacts_->touching();
     if (interleave) {
+        // Until a round changes no velocity by more than kRoundTolerance: a chain whose links
+        // only lie near each other settles in a round or two, a car on its wheels takes more.
         for (int round = 0; round < kJointContactRounds; ++round) {
+            roundStart_ = u;
             contacts_->relaxVelocities(u, 2);
             caught = joints_->projectVelocities(q, u, invMass_, true) || caught;
+            if ((u - roundStart_).lpNorm<Eigen::Infinity>() <= kRoundTolerance) break;
         }
         contacts_->keepImpulses();
         caught = true;
