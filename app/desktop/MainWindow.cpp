@@ -151,7 +151,7 @@ void MainWindow::createMenus() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : docks_) view->addAction(dock->toggleViewAction());
     addNamedActions(view, *this,
-                    {"", "fit", "trails", "velocityArrows", "forceArrows", "labels", "grid",
+                    {"", "fit", "follow", "trails", "velocityArrows", "forceArrows", "labels", "grid",
                      "errorEstimate", "presentation"});
     menuBar()->addMenu(tr("&Help"))->addAction(tr("&About Phasebox"), this, [this] {
         QMessageBox::about(this, tr("About Phasebox"),

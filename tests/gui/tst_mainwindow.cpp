@@ -658,6 +658,57 @@ private slots:
                  QStringLiteral("symplectic_euler"));
     }
 
+    // Issue 19: an example opens with a view that holds its motion over its duration, and
+    // View > Follow keeps the selection in view however far it goes.
+    void viewHoldsTheMotionAndFollows() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(w.openFile(QStringLiteral(":/scenes/projectile-drag.phasebox.json"), true));
+        const QRectF opened = w.canvas()->view().visibleWorldRect();
+        w.controller().play();
+        QVERIFY(w.controller().advance(3.0));  // every ball has landed
+        w.controller().pause();
+        const World& world = w.document().world();
+        for (int i = 0; i < static_cast<int>(world.particles().size()); ++i) {
+            const Vec2 p = world.particlePosition(i);
+            QVERIFY2(opened.contains(QPointF(p.x(), p.y())),
+                     qPrintable(QString("%1 at (%2, %3) outside the opening view")
+                                    .arg(QString::fromStdString(world.particles()[i].id))
+                                    .arg(p.x())
+                                    .arg(p.y())));
+        }
+
+        // Zoomed in on the start, following the farthest ball: it stays in view.
+        w.controller().reset();
+        ui::ViewTransform close = w.canvas()->view();
+        close.setPixelsPerMetre(close.pixelsPerMetre() * 8.0);
+        close.setCentre(QPointF(0.0, 0.0));
+        w.canvas()->setView(close);
+        // (Reset rebuilt the world: read it afresh.)
+        const std::string far = w.document().world().particles().back().id;
+        w.document().setSelection({QString::fromStdString(far)});
+        w.action("follow")->setChecked(true);
+        w.controller().play();
+        for (int k = 0; k < 30; ++k) {
+            QVERIFY(w.controller().advance(0.1));
+            const Vec2 p = w.document().world().particlePosition(
+                static_cast<int>(w.document().world().particles().size()) - 1);
+            const QRectF r = w.canvas()->view().visibleWorldRect();
+            QVERIFY2(r.contains(QPointF(p.x(), p.y())),
+                     qPrintable(QString("t %1: (%2, %3) outside [%4, %5] x [%6, %7]")
+                                    .arg(w.document().world().time())
+                                    .arg(p.x())
+                                    .arg(p.y())
+                                    .arg(r.left())
+                                    .arg(r.right())
+                                    .arg(r.top())
+                                    .arg(r.bottom())));
+        }
+        w.controller().pause();
+        w.action("follow")->setChecked(false);
+    }
+
     void selectingAnObjectPlotsItsPhaseSpace() {
         MainWindow w;
         w.show();

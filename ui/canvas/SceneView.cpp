@@ -300,6 +300,10 @@ void SceneView::frameNow() const {
             }
             if (j.type == Joint::Type::Track && j.circle) include(j.center, j.radius);
         }
+        if (!alsoInclude_.isEmpty()) {
+            include(Vec2(alsoInclude_.left(), alsoInclude_.top()), 0.0);
+            include(Vec2(alsoInclude_.right(), alsoInclude_.bottom()), 0.0);
+        }
     }
     if (!(lo[0] <= hi[0])) {  // nothing to frame
         view_ = ViewTransform({0.0, 0.0}, std::max(1.0, widget.width()) / 10.0, widget);
@@ -325,8 +329,9 @@ void SceneView::setView(const ViewTransform& view) {
     emit viewChanged();
 }
 
-void SceneView::fitToWorld(double marginPixels) {
+void SceneView::fitToWorld(double marginPixels, const QRectF& alsoInclude) {
     framing_ = Framing::World;
+    alsoInclude_ = alsoInclude;
     fitMargin_ = marginPixels;
     frameNow();
     syncedSize_ = size();

@@ -64,7 +64,9 @@ public:
     // Frames every object with marginPixels around (at least 2 m of world, so a lone small
     // particle is seen in context); with nothing to frame, 10 m across around the origin.
     // Until the user navigates, a resize frames the world again.
-    void fitToWorld(double marginPixels = 32.0);
+    // alsoInclude (left = min x, top = min y; empty = nothing): a world area to frame as well,
+    // such as where the scene's motion will go (kept while the view follows the widget's size).
+    void fitToWorld(double marginPixels = 32.0, const QRectF& alsoInclude = {});
     void zoomBy(double factor);  // around the widget's centre
     QPointF toWorld(QPointF widgetPoint) const { return view().toWorld(widgetPoint); }
     QPointF toWidget(QPointF worldPoint) const { return view().toScreen(worldPoint); }
@@ -133,6 +135,7 @@ private:
     mutable ViewTransform view_;
     mutable QSize syncedSize_;  // the size view_ was last fitted to; invalid at first
     Framing framing_ = Framing::Default;
+    QRectF alsoInclude_;  // fitToWorld's extra area
     double fitMargin_ = 32.0;
 
     RenderOptions options_;

@@ -53,6 +53,34 @@ void ViewTransform::fit(const QRectF& worldRect, QSizeF widgetSize, double margi
     centre_ = r.center();
 }
 
+bool ViewTransform::keepInView(const QRectF& worldRect, double marginPixels) {
+    const QRectF r = worldRect.normalized();
+    const double freeW = std::max(1.0, size_.width() - 2.0 * marginPixels);
+    const double freeH = std::max(1.0, size_.height() - 2.0 * marginPixels);
+    bool changed = false;
+    // Too big for the free area at this scale: zoom out about its centre until it fits.
+    const double needed = std::min(r.width() > 0.0 ? freeW / r.width() : kMaxPixelsPerMetre,
+                                   r.height() > 0.0 ? freeH / r.height() : kMaxPixelsPerMetre);
+    if (needed < scale_) {
+        setPixelsPerMetre(needed);
+        changed = true;
+    }
+    // Then the least pan that brings it inside the free area, axis by axis.
+    const double halfW = 0.5 * freeW / scale_, halfH = 0.5 * freeH / scale_;
+    const auto shift = [](double lo, double hi, double centre, double half) {
+        if (lo < centre - half) return lo - (centre - half);
+        if (hi > centre + half) return hi - (centre + half);
+        return 0.0;
+    };
+    const double dx = shift(r.left(), r.right(), centre_.x(), halfW);
+    const double dy = shift(r.top(), r.bottom(), centre_.y(), halfH);
+    if (dx != 0.0 || dy != 0.0) {
+        centre_ += QPointF(dx, dy);
+        changed = true;
+    }
+    return changed;
+}
+
 double ViewTransform::niceLength(double minPixels) const {
     const double minMetres = std::max(minPixels, 1e-9) / scale_;
     double decade = std::pow(10.0, std::floor(std::log10(minMetres)));

@@ -52,6 +52,11 @@ public:
     // Frames worldRect (left = min x, top = min y) in a widget of this size with at least
     // marginPixels free on every side. An empty rect is framed as a point with 1 m around it.
     void fit(const QRectF& worldRect, QSizeF widgetSize, double marginPixels = 24.0);
+    // Follow mode: keeps worldRect (left = min x, top = min y) inside the widget with
+    // marginPixels free on every side, moving as little as it can: nothing while it is inside,
+    // a pan while it fits at this scale, a zoom out (never in) when it does not. Returns
+    // whether the view changed.
+    bool keepInView(const QRectF& worldRect, double marginPixels);
 
     // The smallest length of the form {1, 2, 5}·10^k metres that is at least minPixels long
     // on screen: the grid's spacing (so lines never crowd) and the scale bar's length.

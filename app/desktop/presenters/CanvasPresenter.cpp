@@ -3,6 +3,7 @@
 #include "app/desktop/CanvasTools.h"
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
+#include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"
 #include "physics/scene/SceneSchema.h"
 #include "physics/world/World.h"
@@ -12,12 +13,15 @@
 #include <QActionGroup>
 #include <QComboBox>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFileDialog>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStandardPaths>
 
+#include <algorithm>
+#include <cmath>
 #include <tuple>
 
 namespace phasebox {
@@ -28,7 +32,7 @@ CanvasPresenter::CanvasPresenter(ui::SceneView& view, CanvasTools& tools, Docume
     connect(&document_, &Document::sceneReset, this, [this] {
         view_.setWorld(&document_.world());
         view_.trails().clear();
-        view_.fitToWorld();
+        view_.fitToWorld(32.0, motionExtent());
         refresh();
     });
     connect(&document_, &Document::sceneEdited, this, [this] {
@@ -87,6 +91,13 @@ void CanvasPresenter::createActions(QWidget& window) {
 
     connect(addWindowAction(window, "fit", tr("&Fit Scene"), Qt::Key_F), &QAction::triggered, this,
             [this] { view_.fitToWorld(); });
+    QAction* follow = addWindowAction(window, "follow", tr("F&ollow"), Qt::SHIFT | Qt::Key_F);
+    follow->setCheckable(true);
+    follow->setToolTip(tr("Keep the selection, or every moving object, in view while it runs"));
+    connect(follow, &QAction::toggled, this, [this](bool on) {
+        following_ = on;
+        if (on) followNow();
+    });
     connect(addWindowAction(window, "exportCanvas", tr("Export &Canvas as PNG…")),
             &QAction::triggered, this, &CanvasPresenter::exportInteractively);
     using O = ui::RenderOptions;
@@ -136,7 +147,75 @@ void CanvasPresenter::setPresentation(bool on) {
     view_.setRenderOptions(options);
 }
 
+QRectF CanvasPresenter::motionExtent() const {
+    // Where the scene's moving objects go over its duration, from a copy of it run ahead for at
+    // most kPreviewSeconds of wall time, so that an example opens with a view that holds its
+    // motion (a projectile's whole arc, not its launch pad). A run that starts to diverge is
+    // not followed past that point.
+    BuildResult built;
+    try {
+        built = buildWorld(document_.setup());
+    } catch (const SceneError&) {
+        return {};
+    }
+    World& world = *built.world;
+    double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+    const auto sample = [&] {
+        for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
+            if (world.particles()[i].dof >= 0)
+                for (int k = 0; k < 2; ++k) {
+                    lo[k] = std::min(lo[k], world.particlePosition(i)[k]);
+                    hi[k] = std::max(hi[k], world.particlePosition(i)[k]);
+                }
+        for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
+            if (world.boxes()[i].dof >= 0)
+                for (int k = 0; k < 2; ++k) {
+                    const double reach = 0.5 * world.boxes()[i].size.norm();
+                    lo[k] = std::min(lo[k], world.boxPosition(i)[k] - reach);
+                    hi[k] = std::max(hi[k], world.boxPosition(i)[k] + reach);
+                }
+    };
+    QElapsedTimer clock;
+    clock.start();
+    const double duration = document_.setup().simulation.duration;
+    while (world.time() < duration && clock.elapsed() < kPreviewMilliseconds) {
+        if (!world.step() || std::abs(world.energy().drift) > world.divergenceScale()) break;
+        sample();
+    }
+    if (!(lo[0] <= hi[0])) return {};
+    return QRectF(QPointF(lo[0], lo[1]), QPointF(hi[0], hi[1]));
+}
+
+void CanvasPresenter::followNow() {
+    // The selected objects' positions, or every dynamic body's when nothing is selected.
+    const World& world = document_.world();
+    double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+    const auto include = [&](const Vec2& p, double reach) {
+        for (int k = 0; k < 2; ++k) {
+            lo[k] = std::min(lo[k], p[k] - reach);
+            hi[k] = std::max(hi[k], p[k] + reach);
+        }
+    };
+    const QStringList& selection = document_.selection();
+    const auto wanted = [&](const std::string& id, bool dynamic) {
+        return selection.isEmpty() ? dynamic : selection.contains(QString::fromStdString(id));
+    };
+    for (int i = 0; i < static_cast<int>(world.particles().size()); ++i) {
+        const Particle& p = world.particles()[i];
+        if (wanted(p.id, p.dof >= 0)) include(world.particlePosition(i), p.radius);
+    }
+    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i) {
+        const Box& b = world.boxes()[i];
+        if (wanted(b.id, b.dof >= 0)) include(world.boxPosition(i), 0.5 * b.size.norm());
+    }
+    if (!(lo[0] <= hi[0])) return;
+    ui::ViewTransform v = view_.view();
+    if (v.keepInView(QRectF(QPointF(lo[0], lo[1]), QPointF(hi[0], hi[1])), kFollowMargin))
+        view_.setView(v);
+}
+
 void CanvasPresenter::refresh() {
+    if (following_) followNow();
     tools_.refreshGrabOverlay();
     const SimulationDesc& s = document_.setup().simulation;
     view_.setHudText(tr("t = %1 s   %2, dt %3 s")

@@ -6,6 +6,7 @@
 #include "ui/canvas/SceneRenderer.h"
 
 #include <QList>
+#include <QRectF>
 
 #include <vector>
 
@@ -57,6 +58,12 @@ private:
 
     void showSelection();
     void setOption(bool ui::RenderOptions::*member, bool on);
+    // Follow mode (View > Follow): the selection, or every moving object, stays in view.
+    void followNow();
+    QRectF motionExtent() const;
+    static constexpr qint64 kPreviewMilliseconds = 150;  // motionExtent's wall-time budget
+    static constexpr double kFollowMargin = 48.0;        // pixels kept free around what is followed
+    bool following_ = false;
 
     ui::SceneView& view_;
     CanvasTools& tools_;
