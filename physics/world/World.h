@@ -238,10 +238,9 @@ private:
     bool penaltyPairsStale_ = true;
     std::unique_ptr<JointSolver> joints_;
     Vec jointScratch_;
-    Vec roundStart_;  // the velocities before a contact-joint round (solveJoints)
-    // Of the joints' energy change in a step with contacts: the method's own (SHAKE, the first
-    // projection) and the position correction's (solveJoints; booked by step()).
-    double jointMethodEnergy_ = 0.0, jointCorrectionEnergy_ = 0.0;
+    Vec roundStart_;                   // the velocities before a contact-joint round (solveJoints)
+    int jointSubsteps_ = 1;            // the joints' sub-steps per frame, held (step())
+    double jointSubstepsSince_ = 0.0;  // seconds since they were last needed
     bool particleCollisions_ = false;
     double particleRestitution_ = 1.0;
 
