@@ -2,7 +2,10 @@
 
 #include "app/accuracy/AccuracyStudy.h"
 #include "app/cli/Cli.h"
+#include "app/cli/Interrupt.h"
+#include "app/io/ChartFile.h"
 #include "app/io/NumberFormat.h"
+#include "app/io/OutputFile.h"
 #include "app/io/SceneIO.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
@@ -14,7 +17,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 
 #include <cmath>
 #include <cstdio>
@@ -134,6 +136,11 @@ QString parseOptions(const QStringList& args, AccuracyCliOptions& o) {
             o.study.tolerances.clear();
             if (!(error = parseNumbers(a, v, kUnbounded, o.study.tolerances)).isEmpty())
                 return error;
+            // As in a scene (CONTRACT §1): a double cannot meet a tighter tolerance.
+            for (const double tolerance : o.study.tolerances)
+                if (tolerance < SceneLimits::kMinTolerance)
+                    return QStringLiteral("--tolerances: must be >= 1e-14 (got %1)")
+                        .arg(formatNumber(tolerance));
         } else if (a == QLatin1String("--duration")) {
             std::vector<double> d;
             if (!(error = parseNumbers(a, v, kUnbounded, d)).isEmpty()) return error;
@@ -293,6 +300,10 @@ int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err)
     }
     AccuracyCliOptions o;
     if (const QString error = parseOptions(args, o); !error.isEmpty()) return fail(err, error);
+    if (const QString error = checkOutputs(
+            o.scene, {{QStringLiteral("--csv"), o.csv}, {QStringLiteral("--plot"), o.plot}});
+        !error.isEmpty())
+        return fail(err, error);
     const SceneLoadResult loaded = SceneIO::load(o.scene);
     if (!loaded.ok()) return fail(err, loaded.errorText());
     const SceneDesc& scene = *loaded.scene;
@@ -303,7 +314,10 @@ int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err)
         // Progress only where a person watches; scripts and pipes get clean output.
         const AccuracyProgress progress =
             stderrIsTerminal() ? AccuracyProgress(writeProgress) : AccuracyProgress();
-        result = runAccuracyStudy(scene, o.study, progress);
+        // Ctrl-C or SIGTERM cancels the study at its next check; the finished runs are written
+        // and the exit status is 130 (CONTRACT §4).
+        const InterruptGuard interrupt;
+        result = runAccuracyStudy(scene, o.study, progress, &InterruptGuard::flag());
     } catch (const SceneError& e) {
         QStringList lines;
         for (const SceneIssue& issue : e.issues())
@@ -336,22 +350,20 @@ int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err)
         if (o.csv == QLatin1String("-")) {
             writeCsv(out, result);
         } else {
-            QSaveFile file(o.csv);
-            file.setDirectWriteFallback(true);
-            bool ok = file.open(QIODevice::WriteOnly | QIODevice::Text);
-            if (ok) {
-                QTextStream s(&file);
+            OutputFile file(o.csv, QStringLiteral("the CSV file"));
+            if (file.open()) {
+                QTextStream s(file.device());
                 writeCsv(s, result);
                 s.flush();
-                ok = file.commit();
             }
-            if (!ok)
-                status = fail(err, QStringLiteral("%1: cannot write the CSV file: %2")
-                                       .arg(o.csv, file.errorString()));
+            if (!file.commit()) status = failWrite(err, file.error());
         }
     }
-    if (o.json)
-        out << QJsonDocument(toJson(result, sceneName, o.scene)).toJson(QJsonDocument::Indented);
+    if (o.json) {
+        QJsonObject report = toJson(result, sceneName, o.scene);
+        if (result.cancelled) report.insert("interrupted", true);
+        out << QJsonDocument(report).toJson(QJsonDocument::Indented);
+    }
     if (table) writeTable(out, result, sceneName);
     out.flush();
 
@@ -366,8 +378,14 @@ int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err)
         if (result.contacts) title += QStringLiteral(" (contacts: every method first-order)");
         const std::unique_ptr<QChart> chart(ui::createWorkPrecisionChart(points, title));
         QString error;
-        if (!ui::exportChart(chart.get(), o.plot, QSize(1100, 720), &error))
-            status = fail(err, error);
+        if (!writeChart(chart.get(), o.plot, QSize(1100, 720), &error))
+            status = failWrite(err, error);
+    }
+    if (result.cancelled) {
+        err << "phasebox-cli: interrupted after " << result.records.size() << " of "
+            << result.plannedRuns << " runs; the finished runs are written\n";
+        err.flush();
+        return status == kSuccess ? kInterrupted : status;
     }
     return status;
 }

@@ -1,8 +1,10 @@
 #include "app/cli/Cli.h"
 
+#include "app/io/OutputFile.h"
 #include "app/io/SceneIO.h"
 
 #include <QFile>
+#include <QFileInfo>
 
 #include <cmath>
 #include "physics/diagnostics/StabilityAdvisor.h"
@@ -26,7 +28,8 @@ const char* kUsage =
     "  scene [NAME] [FILE]      write a built-in scene (pyramid, cloth, gas, ...) as a scene\n"
     "                           file, to FILE or standard output; no NAME lists them\n"
     "\n"
-    "exit status: 0 success, 1 the simulation diverged, 2 bad input\n";
+    "exit status: 0 success, 1 the simulation diverged, 2 bad input, 3 an output could not\n"
+    "be written, 130 interrupted (Ctrl-C or SIGTERM: the results so far are written)\n";
 }  // namespace
 
 int fail(QTextStream& err, const QString& message) {
@@ -34,6 +37,36 @@ int fail(QTextStream& err, const QString& message) {
         err << "phasebox-cli: error: " << line << "\n";
     err.flush();
     return kBadInput;
+}
+
+int failWrite(QTextStream& err, const QString& message) {
+    fail(err, message);
+    return kWriteFailed;
+}
+
+QString checkOutputs(const QString& scene, const QList<QPair<QString, QString>>& outputs) {
+    QList<QPair<QString, QString>> files;
+    for (const auto& [option, path] : outputs)
+        if (!path.isEmpty() && !OutputFile::isStandardOutput(path)) files.append({option, path});
+    for (qsizetype i = 0; i < files.size(); ++i) {
+        const auto& [option, path] = files[i];
+        // The same inode: a hard link, a symbolic link or another spelling of the scene's path.
+        if (OutputFile::sameFile(path, scene))
+            return QStringLiteral(
+                       "%1 %2: that is the scene file being read; writing it would "
+                       "destroy the scene. Choose another file")
+                .arg(option, path);
+        for (qsizetype j = 0; j < i; ++j) {
+            const auto& [otherOption, otherPath] = files[j];
+            const bool same =
+                OutputFile::sameFile(path, otherPath) ||
+                QFileInfo(path).absoluteFilePath() == QFileInfo(otherPath).absoluteFilePath();
+            if (same)
+                return QStringLiteral("%1 and %2 both write %3; give each its own file")
+                    .arg(otherOption, option, path);
+        }
+    }
+    return {};
 }
 
 bool needsGui(const QStringList& arguments) {
@@ -105,7 +138,7 @@ int sceneCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             return kSuccess;
         }
         QString error;
-        if (!SceneIO::save(scene, args[1], &error)) return fail(err, error);
+        if (!SceneIO::save(scene, args[1], &error)) return failWrite(err, error);
         return kSuccess;
     }
     QStringList names;

@@ -1,13 +1,16 @@
 #pragma once
 // phasebox-cli (CONTRACT.md §4). Exit status: 0 success, 1 the simulation diverged,
-// 2 bad input (usage, unreadable or invalid scene).
+// 2 bad input (usage, unreadable or invalid scene, an output that is the scene itself),
+// 3 an output could not be written, 130 interrupted (SIGINT or SIGTERM).
 
+#include <QList>
+#include <QPair>
 #include <QStringList>
 #include <QTextStream>
 
 namespace phasebox::cli {
 
-enum ExitCode { kSuccess = 0, kDiverged = 1, kBadInput = 2 };
+enum ExitCode { kSuccess = 0, kDiverged = 1, kBadInput = 2, kWriteFailed = 3, kInterrupted = 130 };
 
 // Runs one command line (without the program name). Output goes to out, messages to err.
 int run(const QStringList& arguments, QTextStream& out, QTextStream& err);
@@ -24,5 +27,12 @@ int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err)
 
 // "phasebox-cli: error: " + each line of message, on err; returns kBadInput.
 int fail(QTextStream& err, const QString& message);
+// The same for an output that could not be written; returns kWriteFailed.
+int failWrite(QTextStream& err, const QString& message);
+
+// The files a command will write, each with the option that names it ("-" and empty paths
+// are skipped). Returns an error message (for kBadInput) when one is the scene being read,
+// or when two name the same file; else an empty string. Checked before anything runs.
+QString checkOutputs(const QString& scene, const QList<QPair<QString, QString>>& outputs);
 
 }  // namespace phasebox::cli

@@ -1,7 +1,10 @@
 // phasebox-cli run: simulate a scene and report (CONTRACT.md §4).
 
 #include "app/cli/Cli.h"
+#include "app/cli/Interrupt.h"
+#include "app/io/ChartFile.h"
 #include "app/io/NumberFormat.h"
+#include "app/io/OutputFile.h"
 #include "app/io/SceneIO.h"
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/integrators/Integrator.h"
@@ -13,7 +16,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <chrono>
@@ -154,6 +156,11 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
         } else if (a == QLatin1String("--tolerance")) {
             if (!(error = number(a, v, d)).isEmpty()) return error;
             if (!(d > 0.0)) return QStringLiteral("--tolerance: must be > 0 (got %1)").arg(v);
+            // The scene's own range (CONTRACT §1): a double cannot meet a tighter tolerance.
+            static_assert(SceneLimits::kMinTolerance == 1e-14 &&
+                          SceneLimits::kMaxCoefficient == 1e12);
+            if (d < SceneLimits::kMinTolerance || d > SceneLimits::kMaxCoefficient)
+                return QStringLiteral("--tolerance: must be >= 1e-14 and <= 1e12 (got %1)").arg(v);
             o.tolerance = d;
         } else if (a == QLatin1String("--substeps")) {
             if (!(error = integer(a, v, n)).isEmpty()) return error;
@@ -173,10 +180,12 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
         } else if (a == QLatin1String("--probe")) {
             o.probes << v;
         } else if (a == QLatin1String("--plot-energy")) {
+            if (!isChartPath(v, &error)) return error;
             o.plotEnergy = v;
         } else if (a == QLatin1String("--plot-phase")) {
             o.phaseTarget = v;
             o.plotPhase = args[++i];
+            if (!isChartPath(o.plotPhase, &error)) return error;
         } else {
             return QStringLiteral("unknown option \"%1\"; see phasebox-cli run --help").arg(a);
         }
@@ -245,21 +254,21 @@ ui::PhaseSample phaseOf(const World& world, const Tracked& t, int coordinate) {
             world.particleVelocity(t.index)[coordinate]};
 }
 
+// The --csv output: standard output ("-") as it is, anything else through OutputFile. Rows
+// are written whole: an interrupted run stops between steps, never inside a row.
 class CsvOutput {
 public:
     bool open(const QString& path, QTextStream& out, QString* error) {
-        if (path == QLatin1String("-")) {
+        if (OutputFile::isStandardOutput(path)) {
             stream_ = &out;
             return true;
         }
-        file_ = std::make_unique<QSaveFile>(path);
-        file_->setDirectWriteFallback(true);
-        if (!file_->open(QIODevice::WriteOnly | QIODevice::Text)) {
-            *error =
-                QStringLiteral("%1: cannot write the CSV file: %2").arg(path, file_->errorString());
+        file_ = std::make_unique<OutputFile>(path, QStringLiteral("the CSV file"));
+        if (!file_->open()) {
+            *error = file_->error();
             return false;
         }
-        owned_ = std::make_unique<QTextStream>(file_.get());
+        owned_ = std::make_unique<QTextStream>(file_->device());
         stream_ = owned_.get();
         return true;
     }
@@ -268,13 +277,12 @@ public:
         if (!file_) return true;
         owned_->flush();
         if (file_->commit()) return true;
-        *error = QStringLiteral("%1: cannot write the CSV file: %2")
-                     .arg(file_->fileName(), file_->errorString());
+        *error = file_->error();
         return false;
     }
 
 private:
-    std::unique_ptr<QSaveFile> file_;
+    std::unique_ptr<OutputFile> file_;
     std::unique_ptr<QTextStream> owned_;
     QTextStream* stream_ = nullptr;
 };
@@ -314,23 +322,57 @@ void writeCsvRow(QTextStream& s, const World& world, const std::vector<Tracked>&
     s << '\n';
 }
 
-QJsonArray pair(const Vec2& v) {
-    return QJsonArray{v.x(), v.y()};
+// A string as a JSON string literal.
+QString jsonString(const std::string& text) {
+    QString out = QStringLiteral("\"");
+    for (const QChar c : QString::fromStdString(text)) {
+        if (c == QLatin1Char('"') || c == QLatin1Char('\\'))
+            out += QLatin1Char('\\') + c;
+        else if (c.unicode() < 0x20)
+            out += QStringLiteral("\\u%1").arg(c.unicode(), 4, 16, QLatin1Char('0'));
+        else
+            out += c;
+    }
+    return out + QLatin1Char('"');
 }
 
-QJsonObject objectsJson(const World& world) {
-    QJsonObject objects;
-    for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
-        objects.insert(QString::fromStdString(world.particles()[i].id),
-                       QJsonObject{{"position", pair(world.particlePosition(i))},
-                                   {"velocity", pair(world.particleVelocity(i))}});
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-        objects.insert(QString::fromStdString(world.boxes()[i].id),
-                       QJsonObject{{"position", pair(world.boxPosition(i))},
-                                   {"velocity", pair(world.boxVelocity(i))},
-                                   {"angle", world.boxAngle(i)},
-                                   {"angular_velocity", world.boxAngularVelocity(i)}});
-    return objects;
+// A number as QJsonDocument writes it: the shortest text that reads back the same, and null
+// for what JSON cannot hold.
+QString jsonNumber(double v) {
+    return std::isfinite(v) ? formatNumber(v) : QStringLiteral("null");
+}
+
+QString jsonPair(const Vec2& v) {
+    return QLatin1Char('[') + jsonNumber(v.x()) + QStringLiteral(", ") + jsonNumber(v.y()) +
+           QLatin1Char(']');
+}
+
+// The --json report, with "objects" last and written object by object: a million cloth
+// nodes held as one QJsonObject, then as its text, then as that text in a QString, cost
+// several times the memory of the run itself (issue #20 allows --json 1.5 times at most).
+void writeJsonReport(QTextStream& out, const QJsonObject& report, const World& world) {
+    QByteArray head = QJsonDocument(report).toJson(QJsonDocument::Indented);
+    head.truncate(head.lastIndexOf('}'));
+    while (head.endsWith('\n') || head.endsWith(' ')) head.chop(1);
+    out << head << (report.isEmpty() ? "" : ",") << "\n    \"objects\": {";
+    bool first = true;
+    auto next = [&](const std::string& id) {
+        out << (first ? "\n" : ",\n") << "        " << jsonString(id) << ": {";
+        first = false;
+    };
+    for (int i = 0; i < static_cast<int>(world.particles().size()); ++i) {
+        next(world.particles()[i].id);
+        out << "\"position\": " << jsonPair(world.particlePosition(i))
+            << ", \"velocity\": " << jsonPair(world.particleVelocity(i)) << "}";
+    }
+    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i) {
+        next(world.boxes()[i].id);
+        out << "\"position\": " << jsonPair(world.boxPosition(i))
+            << ", \"velocity\": " << jsonPair(world.boxVelocity(i))
+            << ", \"angle\": " << jsonNumber(world.boxAngle(i))
+            << ", \"angular_velocity\": " << jsonNumber(world.boxAngularVelocity(i)) << "}";
+    }
+    out << (first ? "}" : "\n    }") << "\n}\n";
 }
 
 double median(std::vector<double> v) {
@@ -344,8 +386,8 @@ double median(std::vector<double> v) {
 bool writePlot(QChart* chart, const QString& path, QTextStream& err) {
     std::unique_ptr<QChart> owner(chart);
     QString error;
-    if (ui::exportChart(chart, path, QSize(1000, 600), &error)) return true;
-    fail(err, error);
+    if (writeChart(chart, path, QSize(1000, 600), &error)) return true;
+    failWrite(err, error);
     return false;
 }
 
@@ -358,6 +400,12 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     }
     RunOptions o;
     if (const QString error = parseOptions(args, o); !error.isEmpty()) return fail(err, error);
+    if (const QString error =
+            checkOutputs(o.scene, {{QStringLiteral("--csv"), o.csv},
+                                   {QStringLiteral("--plot-energy"), o.plotEnergy},
+                                   {QStringLiteral("--plot-phase"), o.plotPhase}});
+        !error.isEmpty())
+        return fail(err, error);
 
     SceneLoadResult loaded = SceneIO::load(o.scene);
     if (!loaded.ok()) return fail(err, loaded.errorText());
@@ -442,10 +490,13 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     };
     sampleProbes();
 
+    // From here a Ctrl-C or SIGTERM stops the run between steps, and what was computed is
+    // written (CONTRACT §4); before it, the default action ends a load or build at once.
+    const InterruptGuard interrupt;
     CsvOutput csv;
     if (!o.csv.isEmpty()) {
         QString error;
-        if (!csv.open(o.csv, out, &error)) return fail(err, error);
+        if (!csv.open(o.csv, out, &error)) return failWrite(err, error);
         writeCsvHeader(csv.stream(), tracked, o.probes);
         writeCsvRow(csv.stream(), world, tracked, probeValues);
     }
@@ -483,7 +534,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     using Clock = std::chrono::steady_clock;
     const auto wallStart = Clock::now();
     long long done = 0;
-    bool diverged = false;
+    bool diverged = false, interrupted = false;
     // The joints' largest errors over the run, at the end of every step (CONTRACT §6).
     JointErrors worstJoint;
     for (long long k = 1; k <= steps; ++k) {
@@ -505,9 +556,13 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             worstJoint.position = std::max(worstJoint.position, now.position);
             worstJoint.angle = std::max(worstJoint.angle, now.angle);
         }
-        if (!o.csv.isEmpty() && (k % o.every == 0 || k == steps))
+        // The last row of an interrupted run is its final state, as at the end of a full one.
+        interrupted = k < steps && InterruptGuard::interrupted();
+        const bool last = k == steps || interrupted;
+        if (!o.csv.isEmpty() && (k % o.every == 0 || last))
             writeCsvRow(csv.stream(), world, tracked, probeValues);
-        if (plotting && (energy.due(k) || k == steps)) sample();
+        if (plotting && (energy.due(k) || last)) sample();
+        if (interrupted) break;
     }
     const double wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
     // A runaway is confirmed a few steps after it began and the world goes back to where it
@@ -517,7 +572,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     int status = kSuccess;
     if (!o.csv.isEmpty()) {
         QString error;
-        if (!csv.commit(&error)) status = fail(err, error);
+        if (!csv.commit(&error)) status = failWrite(err, error);
     }
     const QString title =
         QStringLiteral("%1 — %2, dt = %3 s")
@@ -525,7 +580,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
                  QString::fromStdString(sim.integrator), QString::number(dt, 'g', 4));
     if (!o.plotEnergy.isEmpty() &&
         !writePlot(ui::createEnergyChart(energy.values(), {}, title), o.plotEnergy, err))
-        status = kBadInput;
+        status = kWriteFailed;
     if (phaseObject) {
         static const char* names[3][2] = {
             {"x [m]", "vx [m/s]"}, {"y [m]", "vy [m/s]"}, {"angle [rad]", "omega [rad/s]"}};
@@ -534,7 +589,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
                 ui::createPhaseChart(phase.values(), who + QLatin1String(names[phaseCoordinate][0]),
                                      who + QLatin1String(names[phaseCoordinate][1]), title),
                 o.plotPhase, err))
-            status = kBadInput;
+            status = kWriteFailed;
     }
 
     const EnergyLedger& e = world.energy();
@@ -572,7 +627,6 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
                                    {"max_abs_drift", e.maxAbsDrift}}},
             {"diverged", diverged},
             {"effects", effects},
-            {"objects", objectsJson(world)},
             {"force_evaluations", static_cast<double>(world.forceEvaluations())},
         };
         if (!probes.empty()) {
@@ -617,7 +671,8 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
                                       {"restored_time", d.restoredTime},
                                       {"message", QString::fromStdString(d.message())}});
         }
-        out << QJsonDocument(report).toJson(QJsonDocument::Indented);
+        if (interrupted) report.insert("interrupted", true);
+        writeJsonReport(out, report, world);
     } else if (o.csv != QLatin1String("-")) {
         out << "scene:      " << (scene.name.empty() ? o.scene : QString::fromStdString(scene.name))
             << "\n"
@@ -668,6 +723,12 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         }
     }
     out.flush();
+    if (interrupted) {
+        err << "phasebox-cli: interrupted at t = " << formatNumber(world.time()) << " s after "
+            << done << " of " << steps << " steps; the results so far are written\n";
+        err.flush();
+        return status == kSuccess ? kInterrupted : status;
+    }
     if (diverged) {
         err << "phasebox-cli: diverged: " << QString::fromStdString(world.divergence()->message());
         // The advisor at the restored state: which step this method needs (the largest stable
@@ -676,7 +737,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             err << " Stability advisor: " << QString::fromStdString(advice.message);
         err << "\n";
         err.flush();
-        return kDiverged;
+        return status == kSuccess ? kDiverged : status;
     }
     return status;
 }

@@ -1,6 +1,8 @@
 #include "app/desktop/AccuracyDialog.h"
 
+#include "app/io/ChartFile.h"
 #include "app/io/NumberFormat.h"
+#include "app/io/OutputFile.h"
 #include "app/io/SceneIO.h"
 #include "physics/integrators/Integrator.h"
 #include "ui/plots/Charts.h"
@@ -19,7 +21,6 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QTextStream>
@@ -377,12 +378,12 @@ void AccuracyDialog::updateCheapest() {
 
 bool AccuracyDialog::exportTo(const QString& path, QString* error) const {
     if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) {
-        QSaveFile file(path);
-        if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
-            if (error) *error = tr("cannot write %1: %2").arg(path, file.errorString());
+        OutputFile file(path, tr("the CSV file"));
+        if (!file.open()) {
+            if (error) *error = file.error();
             return false;
         }
-        QTextStream out(&file);
+        QTextStream out(file.device());
         out << "integrator,dt,steps,force_evals,cpu_seconds,position_error,energy_drift,order,"
                "tolerance\n";
         for (const AccuracyRecord& r : study_.result().records)
@@ -393,7 +394,7 @@ bool AccuracyDialog::exportTo(const QString& path, QString* error) const {
                 << (r.tolerance ? formatNumber(*r.tolerance) : QString()) << '\n';
         out.flush();
         if (!file.commit()) {
-            if (error) *error = tr("cannot write %1: %2").arg(path, file.errorString());
+            if (error) *error = file.error();
             return false;
         }
         return true;
@@ -405,7 +406,7 @@ bool AccuracyDialog::exportTo(const QString& path, QString* error) const {
              r.tolerance ? QStringLiteral("tol %1").arg(*r.tolerance, 0, 'g', 1) : formatDt(r.dt)});
     std::unique_ptr<QChart> chart(ui::createWorkPrecisionChart(
         points, tr("%1: error against CPU time").arg(QString::fromStdString(scene_.name))));
-    return ui::exportChart(chart.get(), path, QSize(1400, 900), error);
+    return writeChart(chart.get(), path, QSize(1400, 900), error);
 }
 
 void AccuracyDialog::exportInteractively(const QString& format) {

@@ -1,11 +1,14 @@
 #include "app/desktop/DesktopOptions.h"
 
 #include "app/desktop/MainWindow.h"
+#include "app/desktop/presenters/InstrumentsPresenter.h"
+#include "app/io/OutputFile.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QBuffer>
 #include <QCommandLineParser>
 #include <QPixmap>
 #include <QTextStream>
@@ -37,7 +40,12 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
         QStringLiteral("select"),
         QStringLiteral("Select the object ID at start (the phase plot follows it)."),
         QStringLiteral("ID"));
-    parser.addOptions({screenshot, runFor, canvas, presentation, select});
+    const QCommandLineOption probe(
+        QStringLiteral("probe"),
+        QStringLiteral("Graph the probe EXPR against time in the Instruments dock (repeatable; "
+                       "CONTRACT §7: ID.x, system.total, distance(A,B), …)."),
+        QStringLiteral("EXPR"));
+    parser.addOptions({screenshot, runFor, canvas, presentation, select, probe});
     parser.addPositionalArgument(QStringLiteral("scene"),
                                  QStringLiteral("Scene file to open (default: the demo)."));
     if (!parser.parse(arguments)) {
@@ -63,6 +71,7 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
     }
     options.presentation = parser.isSet(presentation);
     options.select = parser.value(select);
+    options.probes = parser.values(probe);
     const QStringList positional = parser.positionalArguments();
     if (positional.size() > 1) {
         *error = QStringLiteral("expected at most one scene file, got %1").arg(positional.size());
@@ -82,10 +91,14 @@ int takeScreenshot(MainWindow& window, const DesktopOptions& options, QString* e
     if (options.presentation) window.canvas()->fitToWorld();  // the layout changed under it
     QApplication::processEvents();
     const QPixmap picture = window.grab();
-    if (picture.isNull() || !picture.save(options.screenshot, "PNG")) {
-        *error = QStringLiteral("could not write %1").arg(options.screenshot);
+    QBuffer png;  // written by OutputFile, like every file the app writes
+    png.open(QIODevice::WriteOnly);
+    if (picture.isNull() || !picture.save(&png, "PNG")) {
+        *error = QStringLiteral("could not draw %1").arg(options.screenshot);
         return 2;
     }
+    if (!OutputFile::writeAll(options.screenshot, png.data(), error, QStringLiteral("the picture")))
+        return 2;
     return status;
 }
 
@@ -110,6 +123,13 @@ int runDesktop(QApplication& app) {
         if (headless) return 2;
     }
     if (!options.select.isEmpty()) window.document().setSelection({options.select});
+    for (const QString& probe : std::as_const(options.probes)) {
+        // An unknown probe is refused with the list of known ones, as by phasebox-cli.
+        if (!window.instruments()->plotProbe(probe, {}, &error)) {
+            err << "phasebox: error: --probe: " << error << "\n";
+            if (headless) return 2;
+        }
+    }
     if (headless) {
         if (options.presentation) window.setPresentationMode(true);
         const int status = takeScreenshot(window, options, &error);

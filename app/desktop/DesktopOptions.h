@@ -3,6 +3,7 @@
 // so that tests can drive them.
 
 #include <QString>
+#include <QStringList>
 
 class QApplication;
 
@@ -16,7 +17,8 @@ struct DesktopOptions {
     double runFor = 0.0;  // simulated seconds before the picture
     QString canvas;       // "auto", "raster" or "opengl"
     bool presentation = false;
-    QString select;  // an object to select at start (its phase space is plotted)
+    QString select;      // an object to select at start (its phase space is plotted)
+    QStringList probes;  // probes to graph at start, one graph each (the Instruments dock)
 };
 
 inline const QString kDemoScene = QStringLiteral(":/scenes/demo.phasebox.json");

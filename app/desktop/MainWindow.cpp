@@ -6,6 +6,7 @@
 #include "app/desktop/SceneLibraryMenu.h"
 #include "app/desktop/presenters/CanvasPresenter.h"
 #include "app/desktop/presenters/EffectsPresenter.h"
+#include "app/desktop/presenters/InstrumentsPresenter.h"
 #include "app/desktop/presenters/NotesPresenter.h"
 #include "app/desktop/presenters/ParametersPresenter.h"
 #include "app/desktop/presenters/PlotsPresenter.h"
@@ -14,6 +15,7 @@
 #include "app/desktop/presenters/StatusPresenter.h"
 #include "app/document/Autosave.h"
 #include "ui/canvas/SceneView.h"
+#include "ui/instruments/InstrumentsPanel.h"
 #include "ui/panels/EffectsPanel.h"
 #include "ui/panels/ParametersPanel.h"
 #include "ui/panels/PropertiesPanel.h"
@@ -52,6 +54,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), controller_(docum
     setObjectName(QStringLiteral("MainWindow"));
     setAcceptDrops(true);
     controller_.setRecorder(&recorder_);
+    controller_.setProbeRecorder(&probes_);
     canvas_ = new ui::SceneView(this);
     canvas_->setObjectName(QStringLiteral("canvas"));
     setCentralWidget(canvas_);
@@ -139,6 +142,7 @@ void MainWindow::createMenus() {
     QMenu* exports = file->addMenu(tr("&Export"));
     exports->addAction(action("exportCanvas"));
     plotsPresenter_->addExportActions(*exports);
+    instrumentsPresenter_->addExportActions(*exports);
     addNamedActions(file, *this, {"", "quit"});
     addNamedActions(menuBar()->addMenu(tr("&Edit")), *this,
                     {"undo", "redo", "", "cut", "copy", "paste", "delete"});
@@ -147,12 +151,13 @@ void MainWindow::createMenus() {
                      "doubleDt", "halveDt", "moreSubsteps", "fewerSubsteps", "faster", "slower"});
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     tools->addActions(canvasPresenter_->toolActions());
-    addNamedActions(tools, *this, {"", "accuracyLab"});
+    addNamedActions(tools, *this,
+                    {"", "showInstruments", "stopwatch", "stopwatchLap", "", "accuracyLab"});
     QMenu* view = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : docks_) view->addAction(dock->toggleViewAction());
     addNamedActions(view, *this,
-                    {"", "fit", "follow", "trails", "velocityArrows", "forceArrows", "labels", "grid",
-                     "errorEstimate", "presentation"});
+                    {"", "fit", "follow", "trails", "velocityArrows", "forceArrows", "labels",
+                     "grid", "errorEstimate", "presentation"});
     menuBar()->addMenu(tr("&Help"))->addAction(tr("&About Phasebox"), this, [this] {
         QMessageBox::about(this, tr("About Phasebox"),
                            tr("<b>Phasebox %1</b><p>A 2D physics sandbox for the classroom: drop "
@@ -194,6 +199,8 @@ void MainWindow::createDockWindows() {
     properties_ = new ui::PropertiesPanel(this);
     browser_ = new ui::SceneBrowser(this);
     plots_ = new ui::PlotsPanel(this);
+    instruments_ = new ui::InstrumentsPanel(this);
+    instruments_->setObjectName(QStringLiteral("instruments"));
     notes_ = new QTextBrowser(this);
     notes_->setObjectName(QStringLiteral("notes"));
     QDockWidget* p =
@@ -205,6 +212,11 @@ void MainWindow::createDockWindows() {
         addDock(properties_, tr("Properties"), "propertiesDock", Qt::RightDockWidgetArea);
     QDockWidget* pl = addDock(plots_, tr("Plots"), "plotsDock", Qt::RightDockWidgetArea);
     splitDockWidget(pr, pl, Qt::Vertical);
+    // The instruments share the plots' place: both are things to watch while it runs.
+    QDockWidget* in =
+        addDock(instruments_, tr("Instruments"), "instrumentsDock", Qt::RightDockWidgetArea);
+    tabifyDockWidget(pl, in);
+    pl->raise();
     QDockWidget* notes = addDock(notes_, tr("Notes"), "notesDock", Qt::RightDockWidgetArea);
     tabifyDockWidget(pr, notes);
     notes->raise();
@@ -233,6 +245,13 @@ void MainWindow::createDockWindows() {
             &NotesPresenter::notesToRead, notes, &QDockWidget::raise);
     addPresenter(plotsPresenter_ =
                      new PlotsPresenter(*plots_, document_, controller_, recorder_, this));
+    addPresenter(instrumentsPresenter_ = new InstrumentsPresenter(*instruments_, document_,
+                                                                  controller_, probes_, this));
+    instrumentsPresenter_->createActions(*this);
+    connect(instrumentsPresenter_, &InstrumentsPresenter::instrumentsWanted, in, [in] {
+        in->show();
+        in->raise();
+    });
 }
 
 // ---- views following the document ------------------------------------------------------------
@@ -287,10 +306,13 @@ void MainWindow::setPresentationMode(bool on) {
     QApplication::setFont(font);
     if (on) {
         normalState_ = saveState();
-        // In front of a class the canvas and the plots are what matter; every other control
-        // stays on the keyboard (Simulation menu) and comes back with the layout on exit.
+        // In front of a class the canvas, the plots and the instruments are what matter; every
+        // other control stays on the keyboard (Simulation menu) and comes back with the layout on
+        // exit.
         for (QDockWidget* dock : docks_)
-            if (dock->objectName() != QLatin1String("plotsDock")) dock->hide();
+            if (dock->objectName() != QLatin1String("plotsDock") &&
+                dock->objectName() != QLatin1String("instrumentsDock"))
+                dock->hide();
         for (QToolBar* bar : findChildren<QToolBar*>()) bar->hide();
         showFullScreen();
     } else {

@@ -1,11 +1,12 @@
 #pragma once
 // The main window in the classic Qt shape (createActions, createMenus, createDockWindows,
 // readSettings/writeSettings, maybeSave): the canvas in the middle, docks for Parameters,
-// Effects, Properties, Plots, the Scene list and the scene's Notes. It only composes: each dock
-// has a presenter (presenters/) that connects its ui/ widget to the Document (what is edited),
-// the SimulationController (what runs) and the Recorder (what is plotted).
+// Effects, Properties, Plots, Instruments, the Scene list and the scene's Notes. It only composes:
+// each dock has a presenter (presenters/) that connects its ui/ widget to the Document (what is
+// edited), the SimulationController (what runs) and the Recorder (what is plotted).
 
 #include "app/document/Document.h"
+#include "app/sim/ProbeRecorder.h"
 #include "app/sim/Recorder.h"
 #include "app/sim/SimulationController.h"
 #include "ui/plots/PlotsPanel.h"
@@ -29,6 +30,7 @@ class ParametersPanel;
 class EffectsPanel;
 class PropertiesPanel;
 class SceneBrowser;
+class InstrumentsPanel;
 }  // namespace ui
 
 class CanvasTools;
@@ -39,6 +41,7 @@ class SceneFiles;
 class CanvasPresenter;
 class ParametersPresenter;
 class PlotsPresenter;
+class InstrumentsPresenter;
 class SceneBrowserPresenter;
 class StatusPresenter;
 
@@ -52,6 +55,7 @@ public:
     Document& document() { return document_; }
     SimulationController& controller() { return controller_; }
     Recorder& recorder() { return recorder_; }
+    ProbeRecorder& probeRecorder() { return probes_; }
     ui::SceneView* canvas() const { return canvas_; }
     CanvasTools* tools() const { return tools_; }
     ui::ParametersPanel* parametersPanel() const { return parameters_; }
@@ -59,6 +63,8 @@ public:
     ui::PropertiesPanel* propertiesPanel() const { return properties_; }
     ui::SceneBrowser* sceneBrowser() const { return browser_; }
     ui::PlotsPanel* plotsPanel() const { return plots_; }
+    ui::InstrumentsPanel* instrumentsPanel() const { return instruments_; }
+    InstrumentsPresenter* instruments() const { return instrumentsPresenter_; }
     QAction* action(const QString& name) const;
 
     // Opens a scene file; a bad file shows the loader's message (in a dialog unless quiet) and
@@ -105,6 +111,7 @@ private:
 
     Document document_;
     Recorder recorder_;
+    ProbeRecorder probes_;  // what the instruments read
     SimulationController controller_;
 
     ui::SceneView* canvas_ = nullptr;
@@ -114,6 +121,7 @@ private:
     ui::PropertiesPanel* properties_ = nullptr;
     ui::SceneBrowser* browser_ = nullptr;
     ui::PlotsPanel* plots_ = nullptr;
+    ui::InstrumentsPanel* instruments_ = nullptr;
     QTextBrowser* notes_ = nullptr;  // the scene's name and description: what to try
     QList<QDockWidget*> docks_;
 
@@ -121,6 +129,7 @@ private:
     CanvasPresenter* canvasPresenter_ = nullptr;
     ParametersPresenter* parametersPresenter_ = nullptr;
     PlotsPresenter* plotsPresenter_ = nullptr;
+    InstrumentsPresenter* instrumentsPresenter_ = nullptr;
     SceneBrowserPresenter* browserPresenter_ = nullptr;
     StatusPresenter* status_ = nullptr;
 

@@ -1,6 +1,7 @@
 #include "app/document/Autosave.h"
 
 #include "app/document/Document.h"
+#include "app/io/OutputFile.h"
 #include "app/io/SceneIO.h"
 
 #include <QDir>
@@ -8,7 +9,6 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QStandardPaths>
 #include <QUndoStack>
 
@@ -84,11 +84,8 @@ bool Autosave::autosaveNow() {
         {QStringLiteral("original_path"), document_.filePath()},
         {QStringLiteral("saved_at"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs)},
     };
-    QSaveFile sidecar(sidecarFilePath(dir_));
-    if (!sidecar.open(QIODevice::WriteOnly) || sidecar.write(QJsonDocument(info).toJson()) < 0 ||
-        !sidecar.commit()) {
-        lastError_ = sidecar.fileName() + QStringLiteral(": cannot write the file: ") +
-                     sidecar.errorString();
+    if (!OutputFile::writeAll(sidecarFilePath(dir_), QJsonDocument(info).toJson(), &error)) {
+        lastError_ = error;
         emit autosaveFailed(lastError_);
         // The scene itself is safe; only its origin is lost.
     } else {

@@ -3,7 +3,7 @@
 // changed since the last autosave; a clean exit removes it, so a recovery file found at start
 // means the last session ended without one (a crash, a killed process, a power cut).
 //
-// The recovery file is an ordinary scene file written through SceneIO::save (QSaveFile: a crash
+// The recovery file is an ordinary scene file written through SceneIO::save (OutputFile: a crash
 // during the autosave leaves the previous autosave intact), next to a small JSON sidecar that
 // remembers which file the scene came from and when it was written. Once the document is clean
 // again (saved, or undone back to its saved state) the recovery file is removed: the file on

@@ -92,7 +92,7 @@ SyntaxProblem syntaxProblem(const QByteArray& json, const QJsonParseError& error
         if (word == "nan" || word == "inf" || word == "infinity")
             return {start,
                     QStringLiteral("%1: %2 is not a number JSON allows; write a finite number")
-                        .arg(qtMessage, QString::fromLatin1(token))};
+                        .arg(qtMessage, shortened(QString::fromLatin1(token)))};
         static const QRegularExpression number(
             QStringLiteral("^-?(0|[1-9][0-9]*)(\\.[0-9]+)?([eE][+-]?[0-9]+)?$"));
         // A well-formed number that Qt still refuses is out of the double's range.
@@ -102,7 +102,7 @@ SyntaxProblem syntaxProblem(const QByteArray& json, const QJsonParseError& error
             return {
                 start,
                 QStringLiteral("%1: %2 is %3")
-                    .arg(qtMessage, QString::fromLatin1(token),
+                    .arg(qtMessage, shortened(QString::fromLatin1(token)),
                          huge ? QStringLiteral("beyond the range of numbers (about ±1.8e308)")
                               : QStringLiteral("too close to zero to be represented; write 0"))};
         }
@@ -129,12 +129,16 @@ SyntaxProblem syntaxProblem(const QByteArray& json, const QJsonParseError& error
 
 }  // namespace
 
-std::optional<SyntaxProblem> parse(const QByteArray& text, QJsonDocument& document) {
+std::optional<SyntaxProblem> parse(const QByteArray& text, QJsonDocument& document,
+                                   ScanResult* scanned) {
     if (const auto bad = firstNonTextByte(text))
         return SyntaxProblem{
             *bad, QStringLiteral("binary data (byte 0x%1), not UTF-8 JSON text: "
                                  "is this a scene file?")
                       .arg(static_cast<unsigned char>(text[*bad]), 2, 16, QLatin1Char('0'))};
+    ScanResult found = scan(text);
+    if (found.invalidNumber) return found.invalidNumber;
+    if (scanned) *scanned = std::move(found);
     QJsonParseError error;
     QJsonDocument parsed = QJsonDocument::fromJson(text, &error);
     if (error.error != QJsonParseError::NoError) return syntaxProblem(text, error);

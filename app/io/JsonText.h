@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <utility>
+#include <vector>
 
 namespace phasebox::jsontext {
 
@@ -25,7 +26,37 @@ struct SyntaxProblem {
     QString what;
 };
 
+// A key given twice in one object. Qt's reader keeps the last silently, which would drop the
+// first value without a word (a teacher's spring losing its stiffness).
+struct DuplicateKey {
+    QString path;         // JSON path of the key, e.g. particles[0].mass
+    qsizetype first = 0;  // offsets of the two occurrences, for lineAndColumn
+    qsizetype second = 0;
+};
+
+// What a pass over the raw text finds that Qt's parser hides or misreports.
+struct ScanResult {
+    // A number the JSON grammar forbids (0x10, 01, +1, .5, 1., 1e): Qt calls most of them an
+    // "unterminated object" somewhere else.
+    std::optional<SyntaxProblem> invalidNumber;
+    // The first kMaxReportedDuplicates duplicate keys, and how many there are in all.
+    std::vector<DuplicateKey> duplicates;
+    long long duplicateCount = 0;
+};
+inline constexpr int kMaxReportedDuplicates = 10;
+
+// Scans the text once. It stops quietly at any other syntax error (leaving it to Qt's parser
+// and its messages), so it reports only what comes before the first such error.
+ScanResult scan(const QByteArray& text);
+
+// A token for a message: as it is up to about 40 characters, else its first 40 and its length,
+// so that a 20 MB number or key is never echoed whole.
+QString shortened(const QString& token);
+
 // Parses text into *document; on failure returns where and what without touching *document.
-std::optional<SyntaxProblem> parse(const QByteArray& text, QJsonDocument& document);
+// Duplicate keys do not stop the parse: they are added to *duplicates (when given) for the
+// caller to report with their JSON paths.
+std::optional<SyntaxProblem> parse(const QByteArray& text, QJsonDocument& document,
+                                   ScanResult* scanned = nullptr);
 
 }  // namespace phasebox::jsontext

@@ -12,13 +12,21 @@
 #include <QLocale>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <span>
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#if defined(Q_OS_UNIX)
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
 
 namespace phasebox {
 
@@ -55,8 +63,10 @@ QString toQString(std::string_view s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
+// A key from the file is cut for the path in a message (jsontext::shortened).
 QString join(const QString& path, const QString& key) {
-    return path.isEmpty() ? key : path + QLatin1Char('.') + key;
+    const QString shown = jsontext::shortened(key);
+    return path.isEmpty() ? shown : path + QLatin1Char('.') + shown;
 }
 
 QString join(const QString& path, std::string_view key) {
@@ -287,7 +297,8 @@ public:
         QStringList names;
         for (std::string_view c : choices) names << toQString(c);
         QString what = QStringLiteral("must be one of ") + names.join(QStringLiteral(", "));
-        if (v.isString()) what += QStringLiteral(" (got \"%1\")").arg(v.toString());
+        if (v.isString())
+            what += QStringLiteral(" (got \"%1\")").arg(jsontext::shortened(v.toString()));
         r_.fail(at(key), what);
     }
     // A nested object with its own keys; nullopt when absent or not an object.
@@ -476,7 +487,8 @@ bool readHeader(Reader& r, const QJsonObject& top) {
         r.fail(formatKey, QStringLiteral("is required"));
     } else if (format.toString() != toQString(schema::kFormatName)) {
         QString what = QStringLiteral("must be \"%1\"").arg(toQString(schema::kFormatName));
-        if (format.isString()) what += QStringLiteral(" (got \"%1\")").arg(format.toString());
+        if (format.isString())
+            what += QStringLiteral(" (got \"%1\")").arg(jsontext::shortened(format.toString()));
         r.fail(formatKey, what);
     }
 
@@ -498,6 +510,54 @@ bool readHeader(Reader& r, const QJsonObject& top) {
     return r.clean();
 }
 
+// Opens path for reading if it is a regular file (or a built-in :/ resource); otherwise says
+// what it is. A FIFO would block the open until someone writes to it, and a device such as
+// /dev/zero or /dev/urandom would be read for ever, so neither is opened the ordinary way: the
+// file is opened without blocking and its type checked on the open descriptor, which also
+// leaves no gap for it to be swapped between a check and the open.
+QString openForReading(const QString& path, QFile& file) {
+    const QString cannot = QStringLiteral("cannot read the file: ");
+#if defined(Q_OS_UNIX)
+    if (!path.startsWith(QLatin1Char(':'))) {
+        const int fd =
+            ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+        if (fd < 0) return cannot + QString::fromLocal8Bit(std::strerror(errno));
+        struct stat st {};
+        QString what;
+        if (::fstat(fd, &st) != 0)
+            what = QString::fromLocal8Bit(std::strerror(errno));
+        else if (S_ISDIR(st.st_mode))
+            what = QStringLiteral("it is a folder");
+        else if (S_ISFIFO(st.st_mode))
+            what = QStringLiteral("it is a FIFO (named pipe), not a scene file");
+        else if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
+            what = QStringLiteral("it is a device, not a scene file");
+        else if (S_ISSOCK(st.st_mode))
+            what = QStringLiteral("it is a socket, not a scene file");
+        else if (!S_ISREG(st.st_mode))
+            what = QStringLiteral("it is not a regular file");
+        if (!what.isEmpty()) {
+            ::close(fd);
+            return cannot + what;
+        }
+        // Back to blocking reads for the regular file; QFile owns the descriptor from here.
+        ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+        if (!file.open(fd, QIODevice::ReadOnly, QFileDevice::AutoCloseHandle)) {
+            ::close(fd);
+            return cannot + file.errorString();
+        }
+        return {};
+    }
+#endif
+    // QFile refuses a directory with "Unknown error", which tells the user nothing.
+    const QFileInfo info(path);
+    if (info.isDir()) return cannot + QStringLiteral("it is a folder");
+    if (info.exists() && !info.isFile()) return cannot + QStringLiteral("it is not a regular file");
+    file.setFileName(path);
+    if (!file.open(QIODevice::ReadOnly)) return cannot + file.errorString();
+    return {};
+}
+
 }  // namespace
 
 SceneLoadResult SceneIO::load(const QString& path) {
@@ -506,17 +566,14 @@ SceneLoadResult SceneIO::load(const QString& path) {
         result.errors << path + QStringLiteral(": ") + what;
         return result;
     };
-    // QFile refuses a directory with "Unknown error", which tells the user nothing.
-    if (QFileInfo(path).isDir())
-        return fail(QStringLiteral("cannot read the file: it is a folder"));
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return fail(QStringLiteral("cannot read the file: ") + file.errorString());
+    QFile file;
+    if (const QString refused = openForReading(path, file); !refused.isEmpty())
+        return fail(refused);
     const QString tooLarge =
         QStringLiteral("the file is larger than 64 MiB, too large for a scene");
     if (file.size() > kMaxFileBytes) return fail(tooLarge);
-    // Read one byte past the limit rather than trusting size(), which is 0 for pipes and
-    // files under /proc.
+    // Read one byte past the limit rather than trusting size(), which is 0 for files under
+    // /proc.
     const QByteArray bytes = file.read(kMaxFileBytes + 1);
     if (file.error() != QFileDevice::NoError)
         return fail(QStringLiteral("cannot read the file: ") + file.errorString());
@@ -531,7 +588,8 @@ SceneLoadResult SceneIO::parse(const QByteArray& text, const QString& sourceName
     // of the first line would then count it as a character.
     const QByteArray json = text.startsWith("\xEF\xBB\xBF") ? text.mid(3) : text;
     QJsonDocument document;
-    if (const auto problem = jsontext::parse(json, document)) {
+    jsontext::ScanResult scanned;
+    if (const auto problem = jsontext::parse(json, document, &scanned)) {
         const auto [line, column] = jsontext::lineAndColumn(json, problem->offset);
         result.errors << QStringLiteral("%1:%2:%3: %4")
                              .arg(sourceName, QString::number(line), QString::number(column),
@@ -540,6 +598,21 @@ SceneLoadResult SceneIO::parse(const QByteArray& text, const QString& sourceName
     }
 
     Reader r(sourceName);
+    // Qt keeps the last of two equal keys; which one the author meant is theirs to say.
+    if (!scanned.duplicates.empty()) {
+        auto place = [&](qsizetype offset) {
+            const auto [line, column] = jsontext::lineAndColumn(json, offset);
+            return QStringLiteral("%1:%2").arg(line).arg(column);
+        };
+        for (const jsontext::DuplicateKey& d : scanned.duplicates)
+            r.fail(d.path, QStringLiteral("duplicate key (at %1 and again at %2); JSON keeps only "
+                                          "one of them, so give it once")
+                               .arg(place(d.first), place(d.second)));
+        if (const long long more = scanned.duplicateCount - scanned.duplicates.size(); more > 0)
+            r.failFile(QStringLiteral("and %1 more duplicate keys").arg(more));
+        result.errors = r.takeErrors();
+        return result;
+    }
     if (!document.isObject()) {
         r.failFile(QStringLiteral("the top level must be a JSON object {...}"));
         result.errors = r.takeErrors();

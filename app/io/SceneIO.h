@@ -1,7 +1,8 @@
 #pragma once
 // Scene files (CONTRACT.md §1): JSON ⇄ SceneDesc, with the contract's validation messages.
-// Loading never throws and never touches anything but its result; saving goes through
-// QSaveFile so that a failed or interrupted save leaves the old file intact.
+// Loading never throws, never blocks on a FIFO or device, and never touches anything but its
+// result; saving goes through OutputFile so that a failed or interrupted save leaves the old
+// file intact.
 
 #include "physics/scene/SceneDesc.h"
 
@@ -35,8 +36,9 @@ public:
     // Scene format v1, pretty-printed, every field written (defaults included) so that a file
     // says what the scene is; load → save → load gives the identical scene.
     static QByteArray serialize(const SceneDesc& scene);
-    // Writes through QSaveFile. On failure returns false, sets *error, and the old file (if
-    // any) is untouched.
+    // Writes through OutputFile (QSaveFile for a regular file, in place for a device or FIFO).
+    // On failure returns false, sets *error ("PATH: cannot write the file: REASON"), and the
+    // old file (if any) is untouched.
     static bool save(const SceneDesc& scene, const QString& path, QString* error);
 };
 

@@ -1,7 +1,6 @@
+#include "app/io/OutputFile.h"
 #include "app/io/SceneIO.h"
 #include "physics/scene/SceneSchema.h"
-
-#include <QSaveFile>
 
 #include <algorithm>
 #include <charconv>
@@ -262,28 +261,9 @@ QByteArray SceneIO::serialize(const SceneDesc& scene) {
 }
 
 bool SceneIO::save(const SceneDesc& scene, const QString& path, QString* error) {
-    const QByteArray bytes = serialize(scene);
-    QSaveFile file(path);
-    auto fail = [&](const QString& reason) {
-        if (error) *error = path + QStringLiteral(": cannot write the file: ") + reason;
-        return false;
-    };
-    if (!file.open(QIODevice::WriteOnly)) return fail(file.errorString());
-    if (const qint64 written = file.write(bytes); written != bytes.size()) {
-        // A full disk or a file-size limit gives a short write with no error set, and Qt's
-        // error string is then "Unknown error": say what happened instead.
-        const QString reason =
-            file.error() != QFileDevice::NoError
-                ? file.errorString()
-                : QStringLiteral("only %1 of %2 bytes could be written (is the disk full?)")
-                      .arg(std::max<qint64>(written, 0))
-                      .arg(bytes.size());
-        file.cancelWriting();
-        return fail(reason);
-    }
-    // Until commit() the old file is untouched; commit renames the finished copy over it.
-    if (!file.commit()) return fail(file.errorString());
-    return true;
+    // OutputFile: the old file is replaced only once the new one is complete; a device or
+    // FIFO is written in place.
+    return OutputFile::writeAll(path, serialize(scene), error);
 }
 
 }  // namespace phasebox

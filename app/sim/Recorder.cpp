@@ -1,9 +1,9 @@
 #include "app/sim/Recorder.h"
 
 #include "app/io/NumberFormat.h"
+#include "app/io/OutputFile.h"
 #include "physics/world/World.h"
 
-#include <QSaveFile>
 #include <QTextStream>
 
 #include <algorithm>
@@ -19,20 +19,18 @@ void keepEveryOther(std::vector<T>& v) {
     v.resize(out);
 }
 
-// Writes lines through QSaveFile: a failed export never leaves half a file behind.
+// Writes lines through OutputFile: a failed export never leaves half a file behind.
 template <typename WriteRows>
 bool writeCsv(const QString& path, QString* error, const QString& header, WriteRows&& rows) {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
-        if (error) *error = QObject::tr("cannot write %1: %2").arg(path, file.errorString());
-        return false;
+    OutputFile file(path, QObject::tr("the CSV file"));
+    if (file.open()) {
+        QTextStream out(file.device());
+        out << header << '\n';
+        rows(out);
+        out.flush();
     }
-    QTextStream out(&file);
-    out << header << '\n';
-    rows(out);
-    out.flush();
-    if (out.status() != QTextStream::Ok || !file.commit()) {
-        if (error) *error = QObject::tr("cannot write %1: %2").arg(path, file.errorString());
+    if (!file.commit()) {
+        if (error) *error = file.error();
         return false;
     }
     return true;

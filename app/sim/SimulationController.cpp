@@ -1,6 +1,7 @@
 #include "app/sim/SimulationController.h"
 
 #include "app/document/Document.h"
+#include "app/sim/ProbeRecorder.h"
 #include "app/sim/Recorder.h"
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/world/World.h"
@@ -62,7 +63,7 @@ void SimulationController::togglePlay() {
 void SimulationController::singleStep() {
     pause();
     const bool ok = stepOnce();
-    if (recorder_) recorder_->flush();
+    flushRecorders();
     if (ok) emit stepped();
 }
 
@@ -86,7 +87,7 @@ bool SimulationController::advance(double simSeconds) {
         moved = true;
         if (++steps % stride == 0) estimateError();
     }
-    if (recorder_) recorder_->flush();
+    flushRecorders();
     if (moved) emit stepped();
     return ok;
 }
@@ -111,7 +112,7 @@ void SimulationController::tick() {
             break;
         }
         if (!stepOnce()) {
-            if (recorder_) recorder_->flush();
+            flushRecorders();
             if (moved) emit stepped();
             return;
         }
@@ -120,9 +121,14 @@ void SimulationController::tick() {
         moved = true;
     }
     if (moved) estimateError();
-    if (recorder_) recorder_->flush();
+    flushRecorders();
     updateRealTimeFactor(wall, simulated);
     if (moved) emit stepped();
+}
+
+void SimulationController::flushRecorders() {
+    if (recorder_) recorder_->flush();
+    if (probes_) probes_->flush();
 }
 
 void SimulationController::estimateError() {
@@ -147,6 +153,7 @@ bool SimulationController::stepOnce() {
         return false;
     }
     if (recorder_) recorder_->record(world);
+    if (probes_) probes_->record(world);
     return true;
 }
 

@@ -20,6 +20,7 @@
 namespace phasebox {
 
 class Document;
+class ProbeRecorder;
 class Recorder;
 
 class SimulationController : public QObject {
@@ -40,6 +41,8 @@ public:
     // The recorder is fed after every successful step (and flushed once per tick), so the
     // plots get every sample, not one per frame. nullptr to stop.
     void setRecorder(Recorder* recorder) { recorder_ = recorder; }
+    // The instruments' probes, fed and flushed like the recorder.
+    void setProbeRecorder(ProbeRecorder* probes) { probes_ = probes; }
 
     // Runs synchronously until the world's clock has advanced by simSeconds (to within half a
     // step), without the timer or the frame budget: for tests, the command line and
@@ -85,9 +88,11 @@ private:
     void reportDivergence();
     void updateRealTimeFactor(double wallSeconds, double simSeconds);
     void estimateError();
+    void flushRecorders();
 
     Document& document_;
     Recorder* recorder_ = nullptr;
+    ProbeRecorder* probes_ = nullptr;
     QTimer timer_;
     QElapsedTimer sinceTick_;
     double speed_ = 1.0;

@@ -23,6 +23,17 @@ std::string defaultOr(const std::string& id, const char* prefix, std::size_t ind
     return id.empty() ? prefix + std::to_string(index) : id;
 }
 
+// A name from the file (an id, an integrator) in quotes for a message, cut to its first 40
+// bytes (at a UTF-8 character boundary) and its length when longer: a 20 MB id must not be
+// echoed whole.
+std::string quoted(const std::string& text) {
+    constexpr std::size_t kShown = 40;
+    if (text.size() <= kShown + 10) return "\"" + text + "\"";
+    std::size_t cut = kShown;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    return "\"" + text.substr(0, cut) + "...\" (" + std::to_string(text.size()) + " bytes)";
+}
+
 // Shortest text that reads back as v, so that "got 1.0000001" is never printed as "got 1".
 // The exponent is written as JSON authors write it: 1e300 and 1e-12, not 1e+300 and 1e-012.
 std::string fmt(double v) {
@@ -285,8 +296,8 @@ void checkFields(Checker& check, const std::string& path, const D& d) {
                                             v[i][k], f.range);
                     } else if constexpr (std::is_same_v<V, std::string>) {
                         if (f.rule == schema::Rule::KnownIntegrator && !findIntegrator(v))
-                            check.fail(here, "unknown integrator \"" + v +
-                                                 "\"; known: " + knownIntegratorNames());
+                            check.fail(here, "unknown integrator " + quoted(v) +
+                                                 "; known: " + knownIntegratorNames());
                     }
                 },
                 f.member);
@@ -514,9 +525,9 @@ void checkJoints(Checker& check, const SceneDesc& scene, Claim& claim, Reference
         const std::optional<BodyAtLoad> b = bKnown ? bodies.find(*j.b) : std::nullopt;
         const bool endsKnown = a && (!j.b || b);
         if (endsKnown && a->fixed && (!b || b->fixed))
-            check.fail(path, "a joint needs a dynamic body: \"" + j.a + "\" is " + a->fixedWord() +
-                                 " and " +
-                                 (b ? "\"" + *j.b + "\" is " + b->fixedWord() : "b is the world"));
+            check.fail(path, "a joint needs a dynamic body: " + quoted(j.a) + " is " +
+                                 a->fixedWord() + " and " +
+                                 (b ? quoted(*j.b) + " is " + b->fixedWord() : "b is the world"));
 
         switch (j.type) {
             case JointType::Hinge:
@@ -558,10 +569,9 @@ void checkJoints(Checker& check, const SceneDesc& scene, Claim& claim, Reference
                 break;
             case JointType::Track:
                 if (a && a->rigid)
-                    check.fail(here(key::a),
-                               "\"" + j.a +
-                                   "\" is not a particle; a track holds a particle or "
-                                   "a cloth node");
+                    check.fail(here(key::a), quoted(j.a) +
+                                                 " is not a particle; a track holds a particle or "
+                                                 "a cloth node");
                 if (j.b) check.fail(here(key::b), "a track has no b: it holds a on a fixed curve");
                 if (j.circle && j.line)
                     check.fail(path, "has both circle and line; give one");
@@ -609,11 +619,30 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     // Sizes: past these limits a scene is refused rather than allowed to exhaust memory or
     // hang (the limits are documented in docs/scene-format.md).
     long long clothNodes = 0;
-    for (const ClothDesc& cl : scene.cloths)
-        clothNodes +=
+    bool tooManyClothNodes = false;
+    for (std::size_t i = 0; i < scene.cloths.size(); ++i) {
+        const ClothDesc& cl = scene.cloths[i];
+        const long long nodes =
             static_cast<long long>(std::max(0, cl.resolution[0])) * std::max(0, cl.resolution[1]);
+        clothNodes += nodes;
+        // Named at the cloth that crosses the limit, with the limit and its square side.
+        if (clothNodes > SceneLimits::kMaxClothNodes && !tooManyClothNodes) {
+            tooManyClothNodes = true;
+            const long long side = std::llround(std::sqrt(double(SceneLimits::kMaxClothNodes)));
+            check.fail(join(at(key::cloths, i), key::resolution),
+                       "the cloth has " + std::to_string(nodes) + " nodes (" +
+                           std::to_string(cl.resolution[0]) + " x " +
+                           std::to_string(cl.resolution[1]) + ")" +
+                           (clothNodes > nodes
+                                ? ", " + std::to_string(clothNodes) + " with the cloths before it"
+                                : std::string()) +
+                           "; at most " + std::to_string(SceneLimits::kMaxClothNodes) +
+                           " cloth nodes (" + std::to_string(side) + " x " + std::to_string(side) +
+                           ") are allowed in a scene");
+        }
+    }
     const long long particleCount = static_cast<long long>(scene.particles.size()) + clothNodes;
-    if (particleCount > SceneLimits::kMaxParticles)
+    if (particleCount > SceneLimits::kMaxParticles && !tooManyClothNodes)
         check.fail(std::string(scene.cloths.empty() ? key::particles : key::cloths),
                    "the scene has " + std::to_string(particleCount) +
                        " particles (cloth nodes included); at most " +
@@ -634,7 +663,8 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     if (static_cast<long long>(scene.joints.size()) > SceneLimits::kMaxJoints)
         check.fail(std::string(key::joints),
                    "at most " + std::to_string(SceneLimits::kMaxJoints) + " joints are allowed");
-    if (!issues.empty() && (particleCount > SceneLimits::kMaxParticles)) return issues;
+    if (!issues.empty() && (particleCount > SceneLimits::kMaxParticles || tooManyClothNodes))
+        return issues;
 
     // ids: unique across the scene (cloth node ids included); springs and joints may refer to
     // particles, boxes, disks, polygons and cloth nodes. Each id remembers who holds it, for the
@@ -645,11 +675,11 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
         const auto [it, fresh] = ids.emplace(id, path);
         if (!fresh) {
             if (isDefault)
-                check.fail(path, "the default id \"" + id + "\" is already used by " + it->second +
-                                     "; give this object an id");
+                check.fail(path, "the default id " + quoted(id) + " is already used by " +
+                                     it->second + "; give this object an id");
             else
                 check.fail(join(path, key::id),
-                           "duplicate id \"" + id + "\" (also used by " + it->second + ")");
+                           "duplicate id " + quoted(id) + " (also used by " + it->second + ")");
         }
         if (body) bodies.insert(id);
     };
@@ -679,8 +709,8 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
         const std::string pinned = join(path, key::pinned);
         if (const auto* mode = std::get_if<std::string>(&cl.pinned)) {
             if (*mode != "top" && *mode != "top_corners" && *mode != "left" && *mode != "none")
-                check.fail(pinned, "unknown pinning \"" + *mode +
-                                       "\"; known: top, top_corners, left, none");
+                check.fail(pinned, "unknown pinning " + quoted(*mode) +
+                                       "; known: top, top_corners, left, none");
         } else {
             const auto& nodes = std::get<std::vector<std::array<int, 2>>>(cl.pinned);
             for (std::size_t k = 0; k < nodes.size(); ++k) {
@@ -702,9 +732,9 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
         if (bodies.count(id)) return true;
         const auto it = ids.find(id);
         if (it == ids.end())
-            check.fail(where, "unknown object id \"" + id + "\"");
+            check.fail(where, "unknown object id " + quoted(id));
         else
-            check.fail(where, "\"" + id + "\" is " + it->second + "; " + std::string(what) +
+            check.fail(where, quoted(id) + " is " + it->second + "; " + std::string(what) +
                                   " particles, boxes, disks, polygons and cloth nodes");
         return false;
     };

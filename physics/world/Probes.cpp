@@ -349,6 +349,50 @@ double evaluateProbe(const World& world, const Probe& probe) {
     return 0.0;
 }
 
+// ---- listing the probes a world has ----------------------------------------------------------
+
+std::vector<std::string> objectProbes(const World& world, std::string_view id) {
+    std::vector<std::string> texts;
+    const std::optional<ProbeObject> object = findObject(world, id);
+    if (!object) return texts;
+    const std::string prefix = std::string(id) + '.';
+    for (const Field& f : kObjectFields) {
+        const bool turns = f.kind == ProbeKind::Angle || f.kind == ProbeKind::Omega;
+        if (turns && !object->rigid) continue;
+        texts.push_back(prefix + std::string(f.name));
+    }
+    const bool fixed = object->rigid ? world.boxes()[object->index].isStatic
+                                     : world.particles()[object->index].pinned;
+    if (!fixed) texts.push_back("contact_force(" + std::string(id) + ')');
+    return texts;
+}
+
+std::vector<std::string> listProbes(const World& world) {
+    std::vector<std::string> texts;
+    for (const Field& f : kSystemFields) texts.push_back("system." + std::string(f.name));
+    const auto add = [&](const std::string& id) {
+        const std::vector<std::string> fields = objectProbes(world, id);
+        texts.insert(texts.end(), fields.begin(), fields.end());
+    };
+    for (const Particle& p : world.particles())
+        if (p.cloth < 0) add(p.id);
+    for (const Box& b : world.boxes()) add(b.id);
+    for (const Joint& j : world.joints()) texts.push_back("force(" + j.id + ')');
+    return texts;
+}
+
+std::vector<double> upwardCrossings(std::span<const double> times, std::span<const double> values,
+                                    double level) {
+    std::vector<double> crossings;
+    const std::size_t n = std::min(times.size(), values.size());
+    for (std::size_t i = 1; i < n; ++i) {
+        const double a = values[i - 1], b = values[i];
+        if (!std::isfinite(a) || !std::isfinite(b) || !(a < level && b >= level)) continue;
+        crossings.push_back(times[i - 1] + (level - a) / (b - a) * (times[i] - times[i - 1]));
+    }
+    return crossings;
+}
+
 // ---- PeriodTracker ----------------------------------------------------------------------
 
 void PeriodTracker::Crossings::add(const Sample& a, const Sample& b, double level) {

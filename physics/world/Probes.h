@@ -22,6 +22,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -99,6 +100,15 @@ ProbeParse parseProbe(const World& world, std::string_view text);
 // theirs there, so under them it reads 0.
 double evaluateProbe(const World& world, const Probe& probe);
 
+// The probe texts that parse against this world, for pickers that offer only valid probes: the
+// system's, each particle's and rigid body's fields (angle and omega of rigid bodies only),
+// force(JOINT) of each joint and contact_force(ID) of each moving body. Cloth nodes are left
+// out (a cloth has hundreds): objectProbes() lists one node's.
+std::vector<std::string> listProbes(const World& world);
+// The fields of one object (`ID.x`, …, `contact_force(ID)` when it moves); empty when the world
+// has no object of that id.
+std::vector<std::string> objectProbes(const World& world, std::string_view id);
+
 // The statistics of a probe's samples over a run (CONTRACT §7 `--probe` in `--json`).
 struct ProbeSummary {
     long long samples = 0;
@@ -108,6 +118,12 @@ struct ProbeSummary {
     double mean = 0.0;
     std::optional<double> period;
 };
+
+// The upward crossings of level by the series (times[i], values[i]), each crossing time
+// interpolated linearly within its step, as PeriodTracker counts them: from below the level to
+// at or above it. Pairs with a non-finite value are skipped.
+std::vector<double> upwardCrossings(std::span<const double> times, std::span<const double> values,
+                                    double level);
 
 // Accumulates samples (t, value), t increasing, and reports ProbeSummary.
 //

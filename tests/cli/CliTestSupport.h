@@ -9,6 +9,13 @@
 #include <QTemporaryDir>
 
 #include <chrono>
+#include <vector>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace phasebox::testing {
 
@@ -33,6 +40,55 @@ inline CliResult runCli(const QStringList& args, int timeoutMs = 120000) {
     r.status = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
     r.out = p.readAllStandardOutput();
     r.err = p.readAllStandardError();
+    return r;
+}
+
+// The same, for a run whose cost is measured: the child's own peak resident memory (from
+// wait4's rusage, so only the CLI and not the test is counted). Standard output and error go
+// to files in dir, read back afterwards.
+struct MeasuredResult : CliResult {
+    long long maxRssKb = -1;
+};
+
+inline MeasuredResult runCliMeasured(const QStringList& args, const QString& dir,
+                                     int timeoutMs = 120000) {
+    MeasuredResult r;
+    const QByteArray program = QByteArrayLiteral(PHASEBOX_CLI);
+    std::vector<QByteArray> argv8{program};
+    for (const QString& a : args) argv8.push_back(a.toLocal8Bit());
+    std::vector<char*> argv;
+    for (QByteArray& a : argv8) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const QByteArray outPath = (dir + QStringLiteral("/measured.out")).toLocal8Bit();
+    const QByteArray errPath = (dir + QStringLiteral("/measured.err")).toLocal8Bit();
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        const int out = ::open(outPath.constData(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int err = ::open(errPath.constData(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        ::dup2(out, 1);
+        ::dup2(err, 2);
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    int status = 0;
+    rusage usage{};
+    for (;;) {
+        const pid_t done = ::wait4(pid, &status, WNOHANG, &usage);
+        if (done == pid) break;
+        if (std::chrono::steady_clock::now() - start > std::chrono::milliseconds(timeoutMs)) {
+            ::kill(pid, SIGKILL);
+            ::wait4(pid, &status, 0, &usage);
+            return r;
+        }
+        ::usleep(10000);
+    }
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.maxRssKb = usage.ru_maxrss;
+    QFile out(QString::fromLocal8Bit(outPath)), err(QString::fromLocal8Bit(errPath));
+    if (out.open(QIODevice::ReadOnly)) r.out = out.readAll();
+    if (err.open(QIODevice::ReadOnly)) r.err = err.readAll();
     return r;
 }
 

@@ -199,10 +199,11 @@ private slots:
         }
     }
 
-    void unwritableCsvExitsTwo() {
+    // An output that cannot be written is exit 3 (CONTRACT §4), not bad input.
+    void unwritableCsvExitsThree() {
         const QString plain = write("plain.txt", "a file, not a folder");
         const Result r = cli({"run", ball_, "--csv", plain + "/out.csv"}, 30000);
-        QCOMPARE(r.status, 2);
+        QCOMPARE(r.status, 3);
         QVERIFY2(r.err.startsWith("phasebox-cli: error: " +
                                   (plain + "/out.csv: cannot write the CSV file: ").toUtf8()),
                  r.err.constData());

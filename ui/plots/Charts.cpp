@@ -1,5 +1,6 @@
 #include "ui/plots/Charts.h"
 
+#include <QBuffer>
 #include <QChart>
 #include <QFileInfo>
 #include <QGraphicsScene>
@@ -245,20 +246,17 @@ QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& co
     return chart;
 }
 
-bool exportChart(QChart* chart, const QString& path, QSize size, QString* error) {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix != QLatin1String("png") && suffix != QLatin1String("svg")) {
-        if (error) *error = QStringLiteral("%1: the plot must be a .png or .svg file").arg(path);
-        return false;
-    }
+QByteArray renderChart(QChart* chart, const QString& format, QSize size) {
+    const bool png = format.compare(QLatin1String("png"), Qt::CaseInsensitive) == 0;
+    if (!png && format.compare(QLatin1String("svg"), Qt::CaseInsensitive) != 0) return {};
     // Render through a scene: a chart needs one to lay itself out, but no view or window.
     QGraphicsScene scene;
     scene.addItem(chart);
     chart->setGeometry(QRectF(QPointF(0, 0), size));
     scene.setSceneRect(QRectF(QPointF(0, 0), size));
-    bool ok = false;
-    QString reason;
-    if (suffix == QLatin1String("png")) {
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    if (png) {
         QImage image(size, QImage::Format_ARGB32_Premultiplied);
         image.fill(Qt::white);
         {
@@ -266,27 +264,34 @@ bool exportChart(QChart* chart, const QString& path, QSize size, QString* error)
             painter.setRenderHint(QPainter::Antialiasing);
             scene.render(&painter);
         }
-        QSaveFile file(path);
-        ok = file.open(QIODevice::WriteOnly) && image.save(&file, "PNG") && file.commit();
-        reason = file.errorString();
+        if (!image.save(&buffer, "PNG")) buffer.buffer().clear();
     } else {
-        QSaveFile file(path);
-        if (file.open(QIODevice::WriteOnly)) {
-            QSvgGenerator svg;
-            svg.setOutputDevice(&file);
-            svg.setSize(size);
-            svg.setViewBox(QRect(QPoint(0, 0), size));
-            svg.setTitle(chart->title());
-            {
-                QPainter painter(&svg);
-                scene.render(&painter);
-            }
-            ok = file.commit();
-        }
-        reason = file.errorString();
+        QSvgGenerator svg;
+        svg.setOutputDevice(&buffer);
+        svg.setSize(size);
+        svg.setViewBox(QRect(QPoint(0, 0), size));
+        svg.setTitle(chart->title());
+        QPainter painter(&svg);
+        scene.render(&painter);
     }
     scene.removeItem(chart);
-    if (!ok && error) *error = QStringLiteral("%1: cannot write the plot: %2").arg(path, reason);
+    return buffer.data();
+}
+
+bool exportChart(QChart* chart, const QString& path, QSize size, QString* error) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix != QLatin1String("png") && suffix != QLatin1String("svg")) {
+        if (error) *error = QStringLiteral("%1: the plot must be a .png or .svg file").arg(path);
+        return false;
+    }
+    const QByteArray bytes = renderChart(chart, suffix, size);
+    QSaveFile file(path);
+    // Unbuffered: a short write (full disk, file-size limit) shows in write()'s count, which
+    // a buffered QSaveFile would only cut short at commit() and then report as success.
+    const bool ok = !bytes.isEmpty() && file.open(QIODevice::WriteOnly | QIODevice::Unbuffered) &&
+                    file.write(bytes) == bytes.size() && file.commit();
+    if (!ok && error)
+        *error = QStringLiteral("%1: cannot write the plot: %2").arg(path, file.errorString());
     return ok;
 }
 

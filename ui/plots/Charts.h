@@ -3,6 +3,7 @@
 // phase space. The same code serves the app's live plots, picture export and
 // `phasebox-cli run --plot-energy/--plot-phase`, so a saved plot is what the app shows.
 
+#include <QByteArray>
 #include <QColor>
 #include <QPointF>
 #include <QSize>
@@ -57,8 +58,14 @@ QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& co
 // non-finite samples are left out: a log axis cannot show them).
 QChart* createErrorChart(std::span<const QPointF> samples, const QString& title);
 
-// Writes a chart as PNG or SVG, chosen by the file's extension (.png, .svg). Needs a
-// QApplication (the offscreen platform is enough). Returns false and sets *error on failure.
+// A chart drawn as a PNG or SVG file's bytes (format "png" or "svg"); empty for another
+// format or when drawing fails. Needs a QApplication (the offscreen platform is enough). The
+// app writes them through its one file writer (app/io/OutputFile, app/io/ChartFile).
+QByteArray renderChart(QChart* chart, const QString& format, QSize size);
+
+// Writes a chart as PNG or SVG, chosen by the file's extension (.png, .svg), through
+// QSaveFile. Returns false and sets *error on failure. (The app's exports use
+// app/io/ChartFile's writeChart, which also writes devices and FIFOs in place.)
 bool exportChart(QChart* chart, const QString& path, QSize size, QString* error);
 
 // The series colours, shared with the app's legends.

@@ -2,6 +2,7 @@
 
 #include "app/desktop/CanvasTools.h"
 #include "app/document/Document.h"
+#include "app/io/OutputFile.h"
 #include "app/sim/SimulationController.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"
@@ -11,6 +12,7 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QBuffer>
 #include <QComboBox>
 #include <QDir>
 #include <QElapsedTimer>
@@ -234,9 +236,13 @@ void CanvasPresenter::showSelection() {
 
 bool CanvasPresenter::exportPicture(const QString& path, QString* error) const {
     const QImage image = view_.renderImage(view_.size().expandedTo(QSize(800, 600)));
-    if (image.save(path, "PNG")) return true;
-    if (error) *error = tr("could not write %1").arg(path);
-    return false;
+    QBuffer png;
+    png.open(QIODevice::WriteOnly);
+    if (!image.save(&png, "PNG")) {
+        if (error) *error = tr("%1: cannot draw the picture").arg(path);
+        return false;
+    }
+    return OutputFile::writeAll(path, png.data(), error, tr("the picture"));
 }
 
 void CanvasPresenter::exportInteractively() {

@@ -1,6 +1,7 @@
 #include "app/desktop/presenters/PlotsPresenter.h"
 
 #include "app/document/Document.h"
+#include "app/io/ChartFile.h"
 #include "app/sim/Recorder.h"
 #include "app/sim/SimulationController.h"
 #include "physics/world/World.h"
@@ -165,7 +166,7 @@ bool PlotsPresenter::exportPlot(ui::PlotsPanel::Plot plot, const QString& path,
                                          object + QLatin1Char('.') + recorder_.phaseVelocityName(),
                                          tr("Phase space of %1 (%2)").arg(coordinate, integrator)));
     }
-    return ui::exportChart(chart.get(), path, QSize(1200, 800), error);
+    return writeChart(chart.get(), path, QSize(1200, 800), error);
 }
 
 void PlotsPresenter::addExportActions(QMenu& menu) {

@@ -1,0 +1,131 @@
+#pragma once
+// The Instruments dock (ui::InstrumentsPanel): readouts of the selection, graphs of probes, the
+// period timer and stopwatch, and the data table, all fed from the ProbeRecorder, which records
+// exactly the probes they show (the graphs', the timer's and the table's own columns).
+//
+// It keeps the instruments honest about the scene: the pickers offer only probes that parse in
+// the current world (the selection's first); typed text that is no probe is refused with the
+// reason; after every rebuild of the world the probes are parsed again, so a probe whose object
+// was deleted or renamed is shown as invalid rather than read from another object. New, Open
+// (reopening a file: a revert) and Reset, all Document::sceneReset, clear every recording and the
+// stopwatch; an edit at the setup (t = 0) records the setup sample anew.
+
+#include "app/desktop/presenters/Presenter.h"
+#include "app/sim/Stopwatch.h"
+
+#include <QElapsedTimer>
+#include <QPointF>
+#include <QString>
+#include <QStringList>
+#include <QVector>
+
+#include <vector>
+
+QT_BEGIN_NAMESPACE
+class QMenu;
+QT_END_NAMESPACE
+
+namespace phasebox {
+
+class Document;
+class ProbeRecorder;
+class SimulationController;
+namespace ui {
+class InstrumentsPanel;
+class ProbePicker;
+}  // namespace ui
+
+class InstrumentsPresenter : public Presenter {
+    Q_OBJECT
+
+public:
+    InstrumentsPresenter(ui::InstrumentsPanel& panel, Document& document,
+                         SimulationController& controller, ProbeRecorder& probes,
+                         QObject* parent = nullptr);
+
+    void refresh() override;
+    // Start/stop and lap of the stopwatch, Instruments (raise the dock), for the Tools menu.
+    void createActions(QWidget& window);
+    // "Probe Table as CSV…", for File → Export.
+    void addExportActions(QMenu& menu);
+
+    // The probes the pickers offer now.
+    QStringList offered() const { return offered_; }
+
+    // Plots y against x ("" = time) in the first empty graph, or a new one; false with a
+    // message (and *error) when either is not a probe of the scene or no graph is left.
+    bool plotProbe(const QString& y, const QString& x = {}, QString* error = nullptr);
+    // Sets graph index's probes; false (graph unchanged) when one is not a probe.
+    bool setGraph(int index, const QString& y, const QString& x = {}, QString* error = nullptr);
+    // The period timer's probe ("" for none).
+    bool timeProbe(const QString& probe, QString* error = nullptr);
+    bool addTableColumn(const QString& probe, QString* error = nullptr);
+    void removeTableColumn(const QString& probe);
+
+    // A graph as PNG, SVG (its chart, 1200 × 800) or CSV (t, then x when against a probe, then
+    // y), chosen by the file's extension.
+    bool exportGraph(int index, const QString& path, QString* error) const;
+    // The data table as CSV: t and every recorded probe.
+    bool exportTable(const QString& path, QString* error) const;
+    // Copies the table's selected rows (all when none) as tab-separated text.
+    void copyTable() const;
+
+    Stopwatch& stopwatch() { return stopwatch_; }
+    void startStopStopwatch();
+    void lapStopwatch();
+    void resetStopwatch();
+
+    // Readouts cost little and follow every frame; the graphs, timer and table are rebuilt at
+    // most this often while running (a chart of a few thousand points costs milliseconds).
+    static constexpr qint64 kRefreshIntervalMs = 250;
+    // Past this many objects only the selection's probes are listed (typing still works).
+    static constexpr int kMaxListedObjects = 300;
+
+signals:
+    // An instrument was asked for (from the readouts' menu, the command line): show the dock.
+    void instrumentsWanted();
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    struct Graph {
+        QString y, x;  // x empty: against time
+    };
+
+    void onSceneReset();
+    void onSceneEdited();
+    void updateOffered();
+    // The probes of every instrument, in the order the table shows them.
+    void updateRecordedProbes();
+    // Parses text; on failure marks the picker (if any), says why and returns false.
+    bool check(const QString& text, ui::ProbePicker* picker, QString* error);
+
+    void refreshReadouts();
+    void refreshGraph(int index);
+    void refreshGraphs();
+    void refreshTimer();
+    void refreshStopwatch();
+    void refreshTable();
+    void refreshShown();
+
+    // The samples of a graph: (time or x, y), NaN where a probe had none.
+    QVector<QPointF> graphPoints(const Graph& graph) const;
+    QString axisTitle(const QString& probe) const;
+    void exportGraphInteractively(int index, const QString& format);
+    void exportTableInteractively();
+
+    ui::InstrumentsPanel& panel_;
+    Document& document_;
+    SimulationController& controller_;
+    ProbeRecorder& probes_;
+    std::vector<Graph> graphs_;
+    QString periodProbe_;
+    QStringList tableProbes_;
+    QStringList offered_;
+    Stopwatch stopwatch_;
+    QElapsedTimer sinceRefresh_;
+    long long clears_ = 0;  // recordings cleared, for the table's model
+};
+
+}  // namespace phasebox

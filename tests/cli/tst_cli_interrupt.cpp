@@ -1,0 +1,184 @@
+// Ctrl-C and SIGTERM during `phasebox-cli run` and `accuracy` (issue #20, CONTRACT.md §4): the
+// step in progress finishes, the results so far are written (whole CSV rows; --json with
+// "interrupted": true) and the exit status is 130. Each case starts a long run, waits until it
+// has produced output, sends the signal and checks what is left.
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "CliTestSupport.h"
+
+#include <csignal>
+
+namespace {
+
+const char* kBall = R"({
+  "format": "phasebox-scene", "version": 1, "name": "ball",
+  "simulation": { "integrator": "symplectic_euler", "dt": 0.001, "duration": 1000000 },
+  "effects": { "gravity": {} },
+  "particles": [ { "id": "ball", "position": [0, 1] } ]
+})";
+
+// A spring oscillator for the accuracy study: its rk45 reference and runs at small dt take
+// long enough at this duration to be interrupted midway.
+const char* kOscillator = R"({
+  "format": "phasebox-scene", "version": 1, "name": "oscillator",
+  "simulation": { "integrator": "rk4", "dt": 0.01, "duration": 20000 },
+  "particles": [ { "id": "ball", "position": [1, 0], "mass": 1 } ],
+  "springs": [ { "a": "ball", "anchor": [0, 0], "stiffness": 1, "rest_length": 0 } ]
+})";
+
+struct Stopped {
+    int status = -1;
+    QByteArray out, err;
+};
+
+// Starts the CLI, waits until ready() says it has produced output (polled), sends signal and
+// waits for it to end.
+template <typename Ready>
+Stopped interrupt(const QStringList& args, int signal, Ready ready) {
+    QProcess p;
+    p.start(QStringLiteral(PHASEBOX_CLI), args);
+    Stopped s;
+    if (!p.waitForStarted()) return s;
+    QElapsedTimer waited;
+    waited.start();
+    while (!ready(p) && waited.elapsed() < 30000 && p.state() == QProcess::Running)
+        p.waitForReadyRead(50);
+    if (p.state() != QProcess::Running) return s;  // it ended on its own: not interrupted
+    QTest::qWait(300);                             // into the run proper
+    ::kill(static_cast<pid_t>(p.processId()), signal);
+    if (!p.waitForFinished(60000)) {
+        p.kill();
+        p.waitForFinished();
+        return s;
+    }
+    s.status = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    s.out = p.readAllStandardOutput();
+    s.err = p.readAllStandardError();
+    return s;
+}
+
+// Every row has as many fields as the header, and the file ends with a line break.
+void checkWholeRows(const QByteArray& csv, int minimumRows) {
+    QVERIFY2(csv.endsWith('\n'), "the CSV ends inside a row");
+    const QList<QByteArray> lines = csv.split('\n');
+    QVERIFY(lines.size() >= minimumRows + 2);
+    const qsizetype fields = lines.first().count(',') + 1;
+    QCOMPARE(fields, 11);  // t, 6 energies, ball.x, y, vx, vy
+    for (qsizetype i = 1; i + 1 < lines.size(); ++i) {
+        QCOMPARE(lines[i].count(',') + 1, fields);
+        for (const QByteArray& field : lines[i].split(',')) {
+            bool ok = false;
+            field.toDouble(&ok);
+            QVERIFY2(ok, lines[i].constData());
+        }
+    }
+}
+
+}  // namespace
+
+class TestCliInterrupt : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir dir_;
+    QString ball_, oscillator_;
+
+private slots:
+    void initTestCase() {
+        QVERIFY(dir_.isValid());
+        ball_ = phasebox::testing::writeFile(dir_, "ball.json", kBall);
+        oscillator_ = phasebox::testing::writeFile(dir_, "oscillator.json", kOscillator);
+    }
+
+    // A billion-step run to a file: stopped by SIGINT once the CSV's temporary copy grows.
+    void sigintDuringRunWritesResultsSoFar_data() {
+        QTest::addColumn<int>("signal");
+        QTest::newRow("SIGINT") << SIGINT;
+        QTest::newRow("SIGTERM") << SIGTERM;
+    }
+
+    void sigintDuringRunWritesResultsSoFar() {
+        QFETCH(int, signal);
+        const QString csv = dir_.filePath(QStringLiteral("run-%1.csv").arg(signal));
+        // --every 1000: a row per simulated second. The JSON on standard output comes at the
+        // end only, so the run is known to be under way when its wall clock passes a second.
+        QElapsedTimer started;
+        started.start();
+        const Stopped s = interrupt({"run", ball_, "--csv", csv, "--every", "1000", "--json"},
+                                    signal, [&](QProcess&) { return started.elapsed() > 1500; });
+        QCOMPARE(s.status, 130);
+        QCOMPARE(QString::fromUtf8(s.err).left(33),
+                 QStringLiteral("phasebox-cli: interrupted at t = "));
+        QVERIFY(s.err.trimmed().endsWith("steps; the results so far are written"));
+
+        QJsonParseError error;
+        const QJsonObject report = QJsonDocument::fromJson(s.out, &error).object();
+        QVERIFY2(error.error == QJsonParseError::NoError, qPrintable(error.errorString()));
+        QCOMPARE(report.value("interrupted").toBool(false), true);
+        const double steps = report.value("steps").toDouble();
+        QVERIFY(steps > 0.0 && steps < 1e9);
+        QCOMPARE(report.value("sim_time").toDouble(), steps * 0.001);
+        QVERIFY(report.value("objects").toObject().contains("ball"));
+
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray rows = file.readAll();
+        checkWholeRows(rows, 1);
+        // The last row is the state the report shows: the interrupted run's final time.
+        const QList<QByteArray> lines = rows.trimmed().split('\n');
+        QCOMPARE(lines.last().split(',').first().toDouble(), report.value("sim_time").toDouble());
+    }
+
+    // CSV on standard output: rows stream while the run goes; after SIGINT every row is whole.
+    void sigintDuringRunToStandardOutputLeavesWholeRows() {
+        QByteArray seen;
+        const Stopped s =
+            interrupt({"run", ball_, "--csv", "-", "--every", "10"}, SIGINT, [&](QProcess& p) {
+                seen += p.readAllStandardOutput();
+                return seen.count('\n') > 100;
+            });
+        QCOMPARE(s.status, 130);
+        checkWholeRows(seen + s.out, 100);
+    }
+
+    // The accuracy study: the finished runs are written, the JSON says it was interrupted.
+    void sigintDuringAccuracyWritesFinishedRuns() {
+        const QString csv = dir_.filePath("accuracy.csv");
+        QElapsedTimer started;
+        started.start();
+        const Stopped s = interrupt({"accuracy", oscillator_, "--integrators", "explicit_euler,rk4",
+                                     "--dt", "0.01,0.001,0.0001,0.00001", "--json", "--csv", csv},
+                                    SIGINT, [&](QProcess&) { return started.elapsed() > 2000; });
+        QCOMPARE(s.status, 130);
+        QVERIFY2(s.err.contains("phasebox-cli: interrupted after "), s.err.constData());
+        QJsonParseError error;
+        const QJsonObject report = QJsonDocument::fromJson(s.out, &error).object();
+        QVERIFY2(error.error == QJsonParseError::NoError, qPrintable(error.errorString()));
+        QCOMPARE(report.value("interrupted").toBool(false), true);
+        const qsizetype records = report.value("records").toArray().size();
+        QVERIFY(records < 8);  // not all: it was stopped
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray rows = file.readAll();
+        QVERIFY(rows.endsWith('\n'));
+        QCOMPARE(rows.count('\n'), records + 1);
+    }
+
+    // Without a signal nothing says "interrupted".
+    void uninterruptedRunHasNoInterruptedKey() {
+        const auto r = phasebox::testing::runCli({"run", ball_, "--duration", "0.1", "--json"});
+        QCOMPARE(r.status, 0);
+        QVERIFY(!QJsonDocument::fromJson(r.out).object().contains("interrupted"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliInterrupt)
+#include "tst_cli_interrupt.moc"

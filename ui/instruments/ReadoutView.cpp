@@ -1,0 +1,151 @@
+#include "ui/instruments/ReadoutView.h"
+
+#include "ui/instruments/ProbeFormat.h"
+
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenu>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace phasebox::ui {
+
+namespace {
+enum Column { kQuantity, kValue, kUnit, kColumns };
+
+QString joined(const QVector<double>& values) {
+    if (values.size() == 1) return formatReading(values.front());
+    QStringList parts;
+    for (const double v : values) parts << formatReading(v);
+    return QLatin1Char('(') + parts.join(QStringLiteral(", ")) + QLatin1Char(')');
+}
+}  // namespace
+
+ReadoutView::ReadoutView(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(6, 6, 6, 6);
+    auto* header = new QHBoxLayout;
+    subject_ = new QLabel(this);
+    subject_->setObjectName(QStringLiteral("readoutSubject"));
+    QFont bold = subject_->font();
+    bold.setBold(true);
+    subject_->setFont(bold);
+    subject_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    state_ = new QLabel(this);
+    state_->setObjectName(QStringLiteral("readoutState"));
+    state_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    header->addWidget(subject_, 1);
+    header->addWidget(state_);
+    layout->addLayout(header);
+
+    hint_ = new QLabel(this);
+    hint_->setWordWrap(true);
+    hint_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    layout->addWidget(hint_, 1);  // top-aligned, it takes the room the hidden table leaves
+
+    table_ = new QTableWidget(0, kColumns, this);
+    table_->setObjectName(QStringLiteral("readoutTable"));
+    table_->setHorizontalHeaderLabels({tr("quantity"), tr("value"), tr("unit")});
+    table_->verticalHeader()->hide();
+    table_->setShowGrid(false);
+    table_->setAlternatingRowColors(true);
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->setSelectionMode(QAbstractItemView::SingleSelection);
+    table_->setContextMenuPolicy(Qt::CustomContextMenu);
+    table_->horizontalHeader()->setSectionResizeMode(kQuantity, QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setSectionResizeMode(kValue, QHeaderView::Stretch);
+    table_->horizontalHeader()->setSectionResizeMode(kUnit, QHeaderView::ResizeToContents);
+    table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->setToolTip(tr("Right-click a row to graph it or time its period"));
+    connect(table_, &QWidget::customContextMenuRequested, this, &ReadoutView::showMenu);
+    connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
+        if (row >= 0 && row < rows_.size() && !rows_[row].probes.isEmpty())
+            emit graphRequested(rows_[row].probes.front());
+    });
+    layout->addWidget(table_, 1);
+    showHint(tr("Click an object on the canvas to read its state."));
+}
+
+void ReadoutView::setReadout(const QString& subject, const QString& state, bool live,
+                             const QList<ReadoutRow>& rows) {
+    hint_->hide();
+    table_->show();
+    subject_->setText(subject);
+    state_->setText(state);
+    // Live values in green, the setup in grey: a glance tells which is shown.
+    state_->setStyleSheet(live ? QStringLiteral("QLabel { color: white; background: #2ca02c; "
+                                                "border-radius: 3px; padding: 1px 6px; }")
+                               : QStringLiteral("QLabel { color: white; background: #7f7f7f; "
+                                                "border-radius: 3px; padding: 1px 6px; }"));
+    const bool sameRows = rows.size() == rows_.size() &&
+                          std::equal(rows.begin(), rows.end(), rows_.begin(),
+                                     [](const ReadoutRow& a, const ReadoutRow& b) {
+                                         return a.label == b.label && a.probes == b.probes;
+                                     });
+    rows_ = rows;
+    const QFont digits = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    if (!sameRows) {
+        table_->setRowCount(static_cast<int>(rows.size()));
+        for (int r = 0; r < rows.size(); ++r) {
+            auto* quantity = new QTableWidgetItem(rows[r].label);
+            quantity->setToolTip(rows[r].probes.join(QStringLiteral(", ")));
+            table_->setItem(r, kQuantity, quantity);
+            auto* value = new QTableWidgetItem;
+            value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            value->setFont(digits);
+            table_->setItem(r, kValue, value);
+            table_->setItem(r, kUnit, new QTableWidgetItem(rows[r].unit));
+        }
+    }
+    for (int r = 0; r < rows.size(); ++r) table_->item(r, kValue)->setText(joined(rows[r].values));
+}
+
+void ReadoutView::showHint(const QString& hint) {
+    rows_.clear();
+    table_->setRowCount(0);
+    table_->hide();
+    subject_->clear();
+    state_->clear();
+    state_->setStyleSheet(QString());
+    hint_->setText(hint);
+    hint_->show();
+}
+
+QString ReadoutView::subject() const {
+    return subject_->text();
+}
+
+QString ReadoutView::state() const {
+    return state_->text();
+}
+
+QString ReadoutView::valueText(const QString& label) const {
+    for (int r = 0; r < rows_.size(); ++r)
+        if (rows_[r].label == label) return table_->item(r, kValue)->text();
+    return {};
+}
+
+int ReadoutView::rowCount() const {
+    return static_cast<int>(rows_.size());
+}
+
+void ReadoutView::showMenu(const QPoint& position) {
+    const int row = table_->rowAt(position.y());
+    if (row < 0 || row >= rows_.size()) return;
+    QMenu menu(this);
+    for (const QString& probe : rows_[row].probes)
+        menu.addAction(tr("Graph %1 against time").arg(probe), this,
+                       [this, probe] { emit graphRequested(probe); });
+    menu.addSeparator();
+    for (const QString& probe : rows_[row].probes)
+        menu.addAction(tr("Time the period of %1").arg(probe), this,
+                       [this, probe] { emit periodRequested(probe); });
+    menu.exec(table_->viewport()->mapToGlobal(position));
+}
+
+}  // namespace phasebox::ui

@@ -1,0 +1,61 @@
+#pragma once
+// Readouts of the selected object: position, velocity, speed, angle and ω (rigid bodies),
+// kinetic energy, momentum and angular momentum, each from its probe, under a line that says
+// whose values they are: the live state ("live, t = 1.23 s") or the setup. With two or three
+// objects selected it reads the distance and the angle between them; with a joint, its force.
+//
+// Right-click a row (or double-click it) to graph its probe or time its period.
+
+#include <QList>
+#include <QString>
+#include <QStringList>
+#include <QVector>
+#include <QWidget>
+
+QT_BEGIN_NAMESPACE
+class QLabel;
+class QTableWidget;
+QT_END_NAMESPACE
+
+namespace phasebox::ui {
+
+struct ReadoutRow {
+    QString label;           // "position"
+    QVector<double> values;  // one, or two for a vector: (x, y)
+    QString unit;            // "m"
+    QStringList probes;      // the probes read, one per value
+};
+
+class ReadoutView : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit ReadoutView(QWidget* parent = nullptr);
+
+    // subject: "p0 (particle)"; state: "live, t = 1.23 s" or "setup"; live tints the state.
+    void setReadout(const QString& subject, const QString& state, bool live,
+                    const QList<ReadoutRow>& rows);
+    // Nothing to read: the hint says how to choose something.
+    void showHint(const QString& hint);
+
+    QString subject() const;
+    QString state() const;
+    // The value column's text of the row with this label ("" when there is none).
+    QString valueText(const QString& label) const;
+    int rowCount() const;
+
+signals:
+    void graphRequested(const QString& probe);
+    void periodRequested(const QString& probe);
+
+private:
+    void showMenu(const QPoint& position);
+
+    QLabel* subject_ = nullptr;
+    QLabel* state_ = nullptr;
+    QLabel* hint_ = nullptr;
+    QTableWidget* table_ = nullptr;
+    QList<ReadoutRow> rows_;
+};
+
+}  // namespace phasebox::ui
