@@ -89,6 +89,7 @@ OutputFile::~OutputFile() {
 
 bool OutputFile::sameFile(const QString& a, const QString& b) {
     if (isStandardOutput(a) || isStandardOutput(b)) return false;
+    if (a.contains(QChar(u'\0')) || b.contains(QChar(u'\0'))) return false;
 #if defined(Q_OS_UNIX)
     struct stat sa {
     }, sb{};
@@ -113,6 +114,9 @@ bool OutputFile::writeAll(const QString& path, const QByteArray& bytes, QString*
 bool OutputFile::open() {
     error_.clear();
     ignoreFileSizeSignal();
+    // The system's calls end a name at its first NUL, so the file written would be another
+    // one than the name says (found by fuzz_cli_outputs).
+    if (path_.contains(QChar(u'\0'))) return fail(QStringLiteral("the name holds a NUL character"));
     if (isStandardOutput(path_)) {
         inPlace_ = true;
         direct_ = std::make_unique<QFile>();

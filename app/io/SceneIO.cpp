@@ -517,6 +517,9 @@ bool readHeader(Reader& r, const QJsonObject& top) {
 // leaves no gap for it to be swapped between a check and the open.
 QString openForReading(const QString& path, QFile& file) {
     const QString cannot = QStringLiteral("cannot read the file: ");
+    // The system's calls end a name at its first NUL: another file would be read.
+    if (path.contains(QChar(u'\0')))
+        return cannot + QStringLiteral("the name holds a NUL character");
 #if defined(Q_OS_UNIX)
     if (!path.startsWith(QLatin1Char(':'))) {
         const int fd =

@@ -205,6 +205,17 @@ private slots:
         QCOMPARE(error, dir_.path() + QStringLiteral(": cannot write the file: it is a folder"));
     }
 
+    // A NUL ends a name for the system: "a\0b.csv" would write "a" (found by fuzz_cli_outputs).
+    void nameWithNulIsRefused() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("a")) + QChar(u'\0') + QStringLiteral("b");
+        QString error;
+        QVERIFY(!OutputFile::writeAll(path, "x", &error));
+        QCOMPARE(error, path + QStringLiteral(": cannot write the file: the name holds a NUL "
+                                              "character"));
+        QCOMPARE(filesIn(dir), QStringList());
+    }
+
     void sameFileSeesLinksAndSpellings() {
         QTemporaryDir dir;
         const QString a = dir.filePath("a.json"), b = dir.filePath("b.json");

@@ -224,6 +224,16 @@ private slots:
             QVERIFY(timer.elapsed() < 5000);
         }
         QCOMPARE(SceneIO::serialize(document.setup()), before);
+        // A NUL ends a name for the system: "scene.json\0x" would read "scene.json".
+        const QString real = dir.filePath(QStringLiteral("scene.json"));
+        QFile file(real);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"format": "phasebox-scene", "version": 1})");
+        file.close();
+        QVERIFY(SceneIO::load(real).ok());
+        const QString nul = real + QChar(u'\0') + QStringLiteral("x");
+        QCOMPARE(SceneIO::load(nul).errorText(),
+                 nul + QStringLiteral(": cannot read the file: the name holds a NUL character"));
         // A regular file and a built-in scene still load.
         QVERIFY(SceneIO::load(QStringLiteral(":/scenes/demo.phasebox.json")).ok());
     }
