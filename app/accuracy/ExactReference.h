@@ -77,12 +77,19 @@ public:
     const std::string& kind() const { return kind_; }
     // Every position coordinate of the world's state (its layout) at time t.
     Vec positions(double t) const;
+    // One position coordinate at time t, without the others (the phase plot's one curve).
+    double position(int dof, double t) const;
+    // Its rate, by a central difference of the closed form (relative error about 1e-10).
+    double velocity(int dof, double t) const;
     // The periods of the periodic motions in it (undamped oscillators, pendulums, elliptic
     // orbits); empty when nothing repeats.
     std::vector<double> periods() const;
 
 private:
     friend std::optional<ExactReference> findExactReference(const SceneDesc&, const World&, double);
+    // The closed form as if no contact ever happened; findExactReference checks that none does.
+    static std::optional<ExactReference> ignoringContacts(const SceneDesc& scene,
+                                                          const World& world, double endTime);
     struct Coordinate {
         int dof;
         LinearMotion motion;

@@ -6,6 +6,7 @@
 #include "app/desktop/SceneLibraryMenu.h"
 #include "app/desktop/presenters/CanvasPresenter.h"
 #include "app/desktop/presenters/EffectsPresenter.h"
+#include "app/desktop/presenters/ExactPresenter.h"
 #include "app/desktop/presenters/InstrumentsPresenter.h"
 #include "app/desktop/presenters/NotesPresenter.h"
 #include "app/desktop/presenters/ParametersPresenter.h"
@@ -157,7 +158,7 @@ void MainWindow::createMenus() {
     for (QDockWidget* dock : docks_) view->addAction(dock->toggleViewAction());
     addNamedActions(view, *this,
                     {"", "fit", "follow", "trails", "velocityArrows", "forceArrows", "labels",
-                     "grid", "errorEstimate", "presentation"});
+                     "viewExact", "grid", "errorEstimate", "presentation"});
     menuBar()->addMenu(tr("&Help"))->addAction(tr("&About Phasebox"), this, [this] {
         QMessageBox::about(this, tr("About Phasebox"),
                            tr("<b>Phasebox %1</b><p>A 2D physics sandbox for the classroom: drop "
@@ -245,6 +246,11 @@ void MainWindow::createDockWindows() {
             &NotesPresenter::notesToRead, notes, &QDockWidget::raise);
     addPresenter(plotsPresenter_ =
                      new PlotsPresenter(*plots_, document_, controller_, recorder_, this));
+    addPresenter(exactPresenter_ = new ExactPresenter(*canvas_, *plots_, document_, controller_,
+                                                      recorder_, this));
+    exactPresenter_->createActions(*this);
+    connect(exactPresenter_, &ExactPresenter::phaseReferenceChanged, plotsPresenter_,
+            &PlotsPresenter::refresh);
     addPresenter(instrumentsPresenter_ = new InstrumentsPresenter(*instruments_, document_,
                                                                   controller_, probes_, this));
     instrumentsPresenter_->createActions(*this);

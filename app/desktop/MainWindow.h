@@ -40,6 +40,7 @@ class Presenter;
 class SceneFiles;
 class CanvasPresenter;
 class ParametersPresenter;
+class ExactPresenter;
 class PlotsPresenter;
 class InstrumentsPresenter;
 class SceneBrowserPresenter;
@@ -65,6 +66,7 @@ public:
     ui::PlotsPanel* plotsPanel() const { return plots_; }
     ui::InstrumentsPanel* instrumentsPanel() const { return instruments_; }
     InstrumentsPresenter* instruments() const { return instrumentsPresenter_; }
+    ExactPresenter* exactSolution() const { return exactPresenter_; }
     QAction* action(const QString& name) const;
 
     // Opens a scene file; a bad file shows the loader's message (in a dialog unless quiet) and
@@ -129,6 +131,7 @@ private:
     CanvasPresenter* canvasPresenter_ = nullptr;
     ParametersPresenter* parametersPresenter_ = nullptr;
     PlotsPresenter* plotsPresenter_ = nullptr;
+    ExactPresenter* exactPresenter_ = nullptr;
     InstrumentsPresenter* instrumentsPresenter_ = nullptr;
     SceneBrowserPresenter* browserPresenter_ = nullptr;
     StatusPresenter* status_ = nullptr;

@@ -248,6 +248,7 @@ void SceneView::paintSurface(QPainter& painter, QSize size) {
         SceneRenderer::paint(painter, view_, size, *world_, options_, &trails_);
     else
         SceneRenderer::paintEmpty(painter, view_, size, options_);
+    if (world_) drawReferenceOverlay(painter, view_, reference_, options_);
     drawOverlay(painter, view_, overlay_, options_);
     drawHud(painter, hudText_, options_);
 }
@@ -300,7 +301,8 @@ void SceneView::frameNow() const {
             }
             if (j.type == Joint::Type::Track && j.circle) include(j.center, j.radius);
         }
-        if (!alsoInclude_.isEmpty()) {
+        // isNull, not isEmpty: a motion along one axis has no height and must still count.
+        if (!alsoInclude_.isNull()) {
             include(Vec2(alsoInclude_.left(), alsoInclude_.top()), 0.0);
             include(Vec2(alsoInclude_.right(), alsoInclude_.bottom()), 0.0);
         }
@@ -353,6 +355,11 @@ void SceneView::setRenderOptions(const RenderOptions& options) {
 
 void SceneView::setOverlay(const ToolOverlay& overlay) {
     overlay_ = overlay;
+    surface_->update();
+}
+
+void SceneView::setReferenceOverlay(const ReferenceOverlay& overlay) {
+    reference_ = overlay;
     surface_->update();
 }
 

@@ -8,6 +8,7 @@
 // and the one that runs under the offscreen and minimal platforms and on software GL
 // (llvmpipe), and a multisampled QOpenGLWidget used only where a hardware GL is present.
 
+#include "ui/canvas/ReferenceOverlay.h"
 #include "ui/canvas/SceneRenderer.h"
 #include "ui/canvas/ViewTransform.h"
 
@@ -64,7 +65,7 @@ public:
     // Frames every object with marginPixels around (at least 2 m of world, so a lone small
     // particle is seen in context); with nothing to frame, 10 m across around the origin.
     // Until the user navigates, a resize frames the world again.
-    // alsoInclude (left = min x, top = min y; empty = nothing): a world area to frame as well,
+    // alsoInclude (left = min x, top = min y; null = nothing): a world area to frame as well,
     // such as where the scene's motion will go (kept while the view follows the widget's size).
     void fitToWorld(double marginPixels = 32.0, const QRectF& alsoInclude = {});
     void zoomBy(double factor);  // around the widget's centre
@@ -78,6 +79,9 @@ public:
     TrailHistory& trails() { return trails_; }
 
     void setOverlay(const ToolOverlay& overlay);
+    // The scene's exact solution beside the simulation (empty: none drawn).
+    void setReferenceOverlay(const ReferenceOverlay& overlay);
+    const ReferenceOverlay& referenceOverlay() const { return reference_; }
     const ToolOverlay& overlay() const { return overlay_; }
     void setHudText(const QString& text);
     QString hudText() const { return hudText_; }
@@ -141,6 +145,7 @@ private:
     RenderOptions options_;
     TrailHistory trails_;
     ToolOverlay overlay_;
+    ReferenceOverlay reference_;
     QString hudText_;
 
     Qt::MouseButton panButton_ = Qt::NoButton;

@@ -198,19 +198,23 @@ QChart* createErrorChart(std::span<const QPointF> samples, const QString& title)
 }
 
 QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& coordinateName,
-                         const QString& velocityName, const QString& title) {
+                         const QString& velocityName, const QString& title,
+                         std::span<const PhaseSample> exact, const QString& exactName) {
     QChart* chart = newChart(title);
     QVector<QPointF> points;
     points.reserve(static_cast<qsizetype>(samples.size()));
     double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
-    for (const PhaseSample& s : samples) {
-        points.push_back({s.coordinate, s.velocity});
+    const auto include = [&](const PhaseSample& s) {
         if (std::isfinite(s.coordinate) && std::isfinite(s.velocity)) {
             xlo = std::min(xlo, s.coordinate);
             xhi = std::max(xhi, s.coordinate);
             ylo = std::min(ylo, s.velocity);
             yhi = std::max(yhi, s.velocity);
         }
+    };
+    for (const PhaseSample& s : samples) {
+        points.push_back({s.coordinate, s.velocity});
+        include(s);
     }
     // A phase portrait is a curve, not a function of x: thin it by stride, not by buckets.
     if (points.size() > kMaxPlotPoints) {
@@ -235,6 +239,20 @@ QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& co
         start->setMarkerSize(9);
         start->setColor(energyColor(4));
         chart->addSeries(start);
+    }
+    if (!exact.empty()) {
+        // Dashed over the simulation's curve, which it should be seen to follow or leave.
+        auto* reference = new QLineSeries(chart);
+        reference->setName(exactName);
+        QVector<QPointF> exactPoints;
+        exactPoints.reserve(static_cast<qsizetype>(exact.size()));
+        for (const PhaseSample& s : exact) {
+            exactPoints.push_back({s.coordinate, s.velocity});
+            include(s);
+        }
+        reference->replace(exactPoints);
+        reference->setPen(QPen(QColor(0xd0, 0x60, 0x10), 1.6, Qt::DashLine));
+        chart->addSeries(reference);
     }
     auto* x = new QValueAxis;
     x->setTitleText(coordinateName);

@@ -50,9 +50,11 @@ QVector<QPointF> decimate(const QVector<QPointF>& points, int maxPoints = kMaxPl
 QChart* createEnergyChart(std::span<const EnergySample> samples,
                           std::span<const PlotMarker> markers, const QString& title);
 
-// Phase space of one coordinate against its velocity.
+// Phase space of one coordinate against its velocity, with the exact solution's curve over the
+// same times dashed beside it when there is one (exactName names it in the legend).
 QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& coordinateName,
-                         const QString& velocityName, const QString& title);
+                         const QString& velocityName, const QString& title,
+                         std::span<const PhaseSample> exact = {}, const QString& exactName = {});
 
 // The live local error estimate against time, on a logarithmic error axis (non-positive and
 // non-finite samples are left out: a log axis cannot show them).

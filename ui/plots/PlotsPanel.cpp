@@ -15,6 +15,8 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <utility>
+
 namespace phasebox::ui {
 
 namespace {
@@ -165,8 +167,14 @@ void PlotsPanel::setPhase(std::span<const PhaseSample> samples, const QString& c
                             : QString());
     phaseView_->setVisible(!coordinateName.isEmpty());
     if (paused_) return;
-    replaceChart(phaseView_, createPhaseChart(samples, coordinateName, velocityName, title));
+    replaceChart(phaseView_, createPhaseChart(samples, coordinateName, velocityName, title,
+                                              phaseReference_, phaseReferenceName_));
     styleChart(phaseView_);
+}
+
+void PlotsPanel::setPhaseReference(std::vector<PhaseSample> samples, const QString& name) {
+    phaseReference_ = std::move(samples);
+    phaseReferenceName_ = name;
 }
 
 void PlotsPanel::setError(std::span<const QPointF> samples, const QString& title,

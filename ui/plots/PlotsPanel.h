@@ -12,6 +12,7 @@
 #include <QWidget>
 
 #include <span>
+#include <vector>
 
 QT_BEGIN_NAMESPACE
 class QChartView;
@@ -37,6 +38,12 @@ public:
     // Replaces the phase plot; an empty coordinate name shows how to choose an object.
     void setPhase(std::span<const PhaseSample> samples, const QString& coordinateName,
                   const QString& velocityName, const QString& title);
+
+    // The exact solution's curve in the phase plot's coordinates, kept for every later
+    // setPhase (empty: none, the scene has no closed form or the overlay is off).
+    void setPhaseReference(std::vector<PhaseSample> samples, const QString& name);
+    const std::vector<PhaseSample>& phaseReference() const { return phaseReference_; }
+    const QString& phaseReferenceName() const { return phaseReferenceName_; }
 
     // The live error estimate; an empty series shows why there is none (text).
     void setError(std::span<const QPointF> samples, const QString& title, const QString& emptyText);
@@ -77,6 +84,8 @@ private:
     QToolButton* pauseButton_ = nullptr;
     bool paused_ = false;
     bool presentation_ = false;
+    std::vector<PhaseSample> phaseReference_;
+    QString phaseReferenceName_;
 };
 
 }  // namespace phasebox::ui

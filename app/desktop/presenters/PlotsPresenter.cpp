@@ -164,7 +164,8 @@ bool PlotsPresenter::exportPlot(ui::PlotsPanel::Plot plot, const QString& path,
         const QString integrator = QString::fromStdString(document_.setup().simulation.integrator);
         chart.reset(ui::createPhaseChart(recorder_.phaseSamples(), coordinate,
                                          object + QLatin1Char('.') + recorder_.phaseVelocityName(),
-                                         tr("Phase space of %1 (%2)").arg(coordinate, integrator)));
+                                         tr("Phase space of %1 (%2)").arg(coordinate, integrator),
+                                         panel_.phaseReference(), panel_.phaseReferenceName()));
     }
     return writeChart(chart.get(), path, QSize(1200, 800), error);
 }

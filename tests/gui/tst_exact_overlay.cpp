@@ -1,0 +1,163 @@
+// The exact solution beside the simulation (View > Exact Solution, issue 19 item 8 and issue 18
+// item 4): where a scene has a closed form the canvas draws where each body would be now and
+// its path, and the phase plot the exact curve; both are checked here against the closed forms
+// themselves (x = cos 2t for the midpoint lesson's spring, the pendulum's circle), not against
+// numbers the code printed. A scene with contacts has none, and the View action clears it.
+
+#include "app/desktop/MainWindow.h"
+#include "app/desktop/presenters/ExactPresenter.h"
+#include "app/document/Document.h"
+#include "app/sim/SimulationController.h"
+#include "physics/world/World.h"
+#include "ui/canvas/SceneView.h"
+#include "ui/plots/PlotsPanel.h"
+
+#include <QAction>
+#include <QChart>
+#include <QChartView>
+#include <QDir>
+#include <QLineSeries>
+#include <QStandardPaths>
+#include <QTest>
+
+#include <cmath>
+
+using namespace phasebox;
+
+namespace {
+
+struct Window {
+    MainWindow w;
+    Window() {
+        w.resize(1400, 900);
+        w.show();
+    }
+    void open(const QString& path) {
+        QString error;
+        QVERIFY2(w.openFile(path, true, &error), qPrintable(error));
+    }
+    const ui::ReferenceOverlay& overlay() {
+        return w.findChild<ui::SceneView*>()->referenceOverlay();
+    }
+    QLineSeries* exactSeries() {
+        auto* plots = w.findChild<ui::PlotsPanel*>();
+        for (QAbstractSeries* s : plots->phaseView()->chart()->series())
+            if (s->name() == QStringLiteral("exact solution")) return qobject_cast<QLineSeries*>(s);
+        return nullptr;
+    }
+};
+
+}  // namespace
+
+class TestExactOverlay : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    // k = 4 N/m, m = 1 kg, x0 = 1 m at rest: x = cos 2t, v = −2 sin 2t.
+    void midpointLessonShowsCosTwoT() {
+        Window window;
+        window.open(QStringLiteral(":/lessons/midpoint-vs-rk4.phasebox.json"));
+        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("harmonic oscillator"));
+        QVERIFY(window.w.controller().advance(5.0));
+        window.w.document().setSelection({QStringLiteral("ball")});
+        window.w.refreshNow();
+        const double t = window.w.document().world().time();
+        QCOMPARE(window.overlay().ghosts.size(), 1);
+        const QPointF ghost = window.overlay().ghosts.front().centre;
+        qInfo("t = %.2f s: ghost at (%.9f, %.9f), cos 2t = %.9f; the midpoint ball at %.9f", t,
+              ghost.x(), ghost.y(), std::cos(2.0 * t),
+              window.w.document().world().particlePosition(0).x());
+        QVERIFY(std::abs(ghost.x() - std::cos(2.0 * t)) < 1e-9);
+        QVERIFY(std::abs(ghost.y()) < 1e-12);
+        // The path covers one period: x from −1 to 1 on the axis.
+        QCOMPARE(window.overlay().paths.size(), 1);
+        double lo = 1e9, hi = -1e9;
+        for (const QPointF& p : window.overlay().paths.front()) {
+            lo = std::min(lo, p.x());
+            hi = std::max(hi, p.x());
+        }
+        QVERIFY(std::abs(lo + 1.0) < 1e-4 && std::abs(hi - 1.0) < 1e-12);
+        QVERIFY(window.overlay().label.contains(QStringLiteral("harmonic oscillator")));
+        // The phase plot's exact curve lies on the ellipse x² + (v/2)² = 1.
+        QLineSeries* exact = window.exactSeries();
+        QVERIFY(exact != nullptr);
+        QVERIFY(exact->count() > 100);
+        double worst = 0.0;
+        for (const QPointF& p : exact->points())
+            worst = std::max(worst, std::abs(p.x() * p.x() + 0.25 * p.y() * p.y() - 1.0));
+        qInfo("exact phase curve: %lld points, largest |x² + (v/2)² − 1| = %.2e",
+              static_cast<long long>(exact->count()), worst);
+        QVERIFY(worst < 1e-6);
+        // It spans the simulated times: its last point is the state at t.
+        const QPointF last = exact->points().back();
+        QVERIFY(std::abs(last.x() - std::cos(2.0 * t)) < 1e-9);
+        QVERIFY(std::abs(last.y() + 2.0 * std::sin(2.0 * t)) < 1e-6);
+
+        // View > Exact Solution off: nothing drawn, no curve; on again: back.
+        QAction* action = window.w.action(QStringLiteral("viewExact"));
+        QVERIFY(action && action->isChecked());
+        action->trigger();
+        window.w.refreshNow();
+        QVERIFY(window.overlay().isEmpty());
+        QVERIFY(window.exactSeries() == nullptr);
+        action->trigger();
+        window.w.refreshNow();
+        QCOMPARE(window.overlay().ghosts.size(), 1);
+        QVERIFY(window.exactSeries() != nullptr);
+    }
+
+    // Rods of 1 m: every ghost lies on its circle about the pivot, at any amplitude.
+    void pendulumGhostsStayOnTheirCircles() {
+        Window window;
+        window.open(QStringLiteral(":/lessons/simple-pendulum.phasebox.json"));
+        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("simple pendulum"));
+        const World& world = window.w.document().world();
+        QVERIFY(window.w.controller().advance(1.7));
+        window.w.refreshNow();
+        QCOMPARE(window.overlay().ghosts.size(), 2);
+        for (const auto& ghost : window.overlay().ghosts) {
+            double nearest = 1e9;
+            for (const Joint& j : world.joints())
+                nearest = std::min(nearest, std::abs(std::hypot(ghost.centre.x() - j.b.point.x(),
+                                                                ghost.centre.y() - j.b.point.y()) -
+                                                     j.length));
+            QVERIFY2(nearest < 1e-9, qPrintable(QString::number(nearest)));
+        }
+    }
+
+    // Contacts act as impulses: no closed form, nothing drawn, no curve.
+    void contactSceneHasNone() {
+        Window window;
+        window.open(QStringLiteral(":/scenes/bouncing-balls.phasebox.json"));
+        QVERIFY(window.w.exactSolution()->kind().isEmpty());
+        QVERIFY(window.w.controller().advance(0.5));
+        window.w.refreshNow();
+        QVERIFY(window.overlay().isEmpty());
+        QVERIFY(window.exactSeries() == nullptr);
+    }
+
+    // Every lesson and example is searched; which have a closed form is printed to look at.
+    void lessonsWithClosedFormsHaveOne() {
+        Window window;
+        for (const QString& folder : {QStringLiteral(":/lessons"), QStringLiteral(":/scenes")})
+            for (const QString& name : QDir(folder).entryList()) {
+                window.open(folder + QLatin1Char('/') + name);
+                qInfo("%s: %s", qPrintable(name),
+                      qPrintable(window.w.exactSolution()->kind().isEmpty()
+                                     ? QStringLiteral("-")
+                                     : window.w.exactSolution()->kind()));
+            }
+        for (const auto& [name, kind] : {std::pair{"midpoint-vs-rk4", "harmonic oscillator"},
+                                         std::pair{"simple-pendulum", "simple pendulum"},
+                                         std::pair{"bead-on-hoop", "simple pendulum"},
+                                         std::pair{"euler-orbit-spiral", "Kepler orbit"}}) {
+            window.open(QStringLiteral(":/lessons/%1.phasebox.json").arg(QLatin1String(name)));
+            QCOMPARE(window.w.exactSolution()->kind(), QString::fromLatin1(kind));
+        }
+    }
+};
+
+QTEST_MAIN(TestExactOverlay)
+#include "tst_exact_overlay.moc"

@@ -1,0 +1,52 @@
+#include "ui/canvas/ReferenceOverlay.h"
+
+#include "ui/canvas/SceneRenderer.h"
+#include "ui/canvas/ViewTransform.h"
+
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+
+namespace phasebox::ui {
+
+void drawReferenceOverlay(QPainter& p, const ViewTransform& view, const ReferenceOverlay& overlay,
+                          const RenderOptions& options) {
+    if (overlay.isEmpty()) return;
+    const double lw = options.lineWidthScale;
+    // A colour no object has: the reference must never be taken for a body.
+    const QColor colour(0xd0, 0x60, 0x10);
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setBrush(Qt::NoBrush);
+    QPen path(colour, 1.0 * lw, Qt::DashLine);
+    path.setCosmetic(true);
+    p.setPen(path);
+    for (const QPolygonF& world : overlay.paths) {
+        QPolygonF screen;
+        screen.reserve(world.size());
+        for (const QPointF& q : world) screen.append(view.toScreen(q));
+        p.drawPolyline(screen);
+    }
+    QPen ghost(colour, 2.0 * lw, Qt::DashLine);
+    p.setPen(ghost);
+    for (const ReferenceOverlay::Ghost& g : overlay.ghosts) {
+        const double r =
+            std::max(view.toPixels(g.radius), SceneRenderer::kMinParticlePixels + 3.0 * lw);
+        p.drawEllipse(view.toScreen(g.centre), r, r);
+    }
+    if (!overlay.label.isEmpty()) {
+        // Bottom right, clear of the scale bar (bottom left) and the HUD (top left).
+        QFont font = p.font();
+        font.setPixelSize(std::max(6, static_cast<int>(std::lround(12.0 * options.fontScale))));
+        p.setFont(font);
+        const QRectF viewport = p.viewport();
+        const QRectF box(viewport.left(), viewport.top(), viewport.width() - 10.0,
+                         viewport.height() - 8.0);
+        p.setPen(colour.darker(130));
+        p.drawText(box, Qt::AlignRight | Qt::AlignBottom, overlay.label);
+    }
+    p.restore();
+}
+
+}  // namespace phasebox::ui
