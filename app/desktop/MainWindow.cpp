@@ -68,6 +68,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), controller_(docum
     connect(&document_, &Document::sceneReset, this, &MainWindow::updateTitle);
     connect(&document_, &Document::modifiedChanged, this, &MainWindow::updateTitle);
     connect(&document_, &Document::filePathChanged, this, &MainWindow::updateTitle);
+    const auto revertable = [this] {
+        action("revert")->setEnabled(!document_.filePath().isEmpty());
+    };
+    connect(&document_, &Document::modifiedChanged, this, revertable);
+    connect(&document_, &Document::filePathChanged, this, revertable);
+    revertable();
     connect(&controller_, &SimulationController::diverged, this, &MainWindow::onDiverged);
     readSettings();
     autosave_ = std::make_unique<Autosave>(document_);
@@ -96,6 +102,9 @@ void MainWindow::createActions() {
         if (maybeSave()) files_->openInteractively();
     });
     make("save", tr("&Save"), QKeySequence::Save, [this] { files_->save(); });
+    make("revert", tr("Re&vert"), QKeySequence(), [this] {
+        revert();
+    })->setToolTip(tr("Reopen the scene's file as it was last saved, dropping the edits"));
     make("saveAs", tr("Save &As…"), QKeySequence::SaveAs, [this] { files_->saveAs(); });
     make("quit", tr("&Quit"), QKeySequence::Quit, [this] { close(); });
     QUndoStack* stack = document_.undoStack();
@@ -139,7 +148,7 @@ void MainWindow::createMenus() {
         menu->setObjectName(name);
         fillSceneLibraryMenu(*menu, folder, [this](const QString& path) { openIfSaved(path); });
     }
-    addNamedActions(file, *this, {"", "save", "saveAs"});
+    addNamedActions(file, *this, {"", "save", "saveAs", "revert"});
     QMenu* exports = file->addMenu(tr("&Export"));
     exports->addAction(action("exportCanvas"));
     plotsPresenter_->addExportActions(*exports);

@@ -73,6 +73,10 @@ public:
     // leaves the open scene untouched.
     bool openFile(const QString& path, bool quiet = false, QString* error = nullptr);
     bool saveFile(const QString& path, QString* error = nullptr);
+    // File > Revert: reopens the scene's file as it is on disk (a built-in lesson as it ships),
+    // dropping the edits, the run and every plot and instrument; asks first when there are
+    // unsaved edits (not under the offscreen platform). False when there is no file or it fails.
+    bool revert();
     // Brings every view up to date at once (plots included), for pictures and tests.
     void refreshNow();
     void setPresentationMode(bool on);

@@ -8,9 +8,11 @@
 #include "app/desktop/presenters/PlotsPresenter.h"
 #include "app/document/Autosave.h"
 
+#include <QApplication>
 #include <QCloseEvent>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QFileInfo>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSettings>
@@ -23,6 +25,22 @@ bool MainWindow::openFile(const QString& path, bool quiet, QString* error) {
 
 bool MainWindow::saveFile(const QString& path, QString* error) {
     return files_->saveTo(path, error);
+}
+
+bool MainWindow::revert() {
+    const QString path = document_.filePath();
+    if (path.isEmpty()) return false;
+    if (document_.isModified() && isVisible() &&
+        !QApplication::platformName().startsWith(QLatin1String("offscreen"))) {
+        const auto answer =
+            QMessageBox::question(this, tr("Revert"),
+                                  tr("Drop your changes and reopen %1 as it was last saved?")
+                                      .arg(QFileInfo(path).fileName()),
+                                  QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Discard) return false;
+    }
+    controller_.pause();
+    return openFile(path);
 }
 
 void MainWindow::offerRecovery() {

@@ -11,6 +11,7 @@
 #include "app/desktop/DesktopOptions.h"
 #include "app/desktop/MainWindow.h"
 #include "app/desktop/presenters/InstrumentsPresenter.h"
+#include "app/document/Document.h"
 #include "app/io/SceneIO.h"
 #include "app/sim/ProbeRecorder.h"
 #include "physics/world/World.h"
@@ -315,7 +316,7 @@ private slots:
     }
 
     // New, Open and Reset clear every instrument: graphs, table, period timer, stopwatch.
-    void newOpenResetClearTheInstruments() {
+    void newOpenResetRevertClearTheInstruments() {
         QTemporaryDir dir;
         Window window;
         window.load(springScene(50.0, 2.0));
@@ -364,9 +365,22 @@ private slots:
         QVERIFY(window.w.openFile(path, true));
         checkCleared("open");
 
+        // Revert (File menu): an edit and a run dropped, the file's scene back as saved.
+        runAndCheckFull();
+        QVERIFY(window.w.document().moveObject(QStringLiteral("bob"), {0.9, 0.0}));
+        QVERIFY(window.w.document().isModified());
+        QVERIFY(window.w.action("revert")->isEnabled());
+        window.w.action("revert")->trigger();
+        checkCleared("revert");
+        QVERIFY(!window.w.document().isModified());
+        QCOMPARE(window.w.document().setup().particles.front().position[0], 0.5);
+        QCOMPARE(window.w.document().world().time(), 0.0);
+        QVERIFY(!window.w.document().undoStack()->canUndo());
+
         runAndCheckFull();
         window.w.action("new")->trigger();
         checkCleared("new");
+        QVERIFY(!window.w.action("revert")->isEnabled());  // nothing to revert to
         // The new scene has no bob: the graph says so instead of reading another object.
         QVERIFY(graphs->graph(0)->message().contains(QStringLiteral("no object \"bob\"")));
         QVERIFY(window.w.controller().advance(0.5));
