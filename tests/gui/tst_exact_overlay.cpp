@@ -156,6 +156,14 @@ private slots:
             window.open(QStringLiteral(":/lessons/%1.phasebox.json").arg(QLatin1String(name)));
             QCOMPARE(window.w.exactSolution()->kind(), QString::fromLatin1(kind));
         }
+        for (const auto& [name, kind] :
+             {std::pair{"pendulum-wave", "simple pendulum"},
+              std::pair{"damped-oscillators", "damped harmonic oscillator"},
+              std::pair{"spring-oscillator", "harmonic oscillator"},
+              std::pair{"orbit", "Kepler orbit"}}) {
+            window.open(QStringLiteral(":/scenes/%1.phasebox.json").arg(QLatin1String(name)));
+            QCOMPARE(window.w.exactSolution()->kind(), QString::fromLatin1(kind));
+        }
     }
 };
 
