@@ -1,5 +1,6 @@
 #include "app/accuracy/ExactReference.h"
 
+#include "physics/contacts/ContactModel.h"
 #include "physics/core/EffectNames.h"
 #include "physics/scene/SceneDesc.h"
 #include "physics/world/World.h"
@@ -208,12 +209,76 @@ Vec2 PendulumMotion::at(double t) const {
     return centre + length * (std::cos(theta) * down + std::sin(theta) * side);
 }
 
+namespace {
+// The rate of a LinearMotion, by a central difference on its own time scale.
+double rateOf(const LinearMotion& m, double t) {
+    const double h = 1e-6 / std::max({std::sqrt(m.omega2), m.gamma, 1.0});
+    return (m.at(t + h) - m.at(t - h)) / (2.0 * h);
+}
+}  // namespace
+
+PenaltyBounceMotion PenaltyBounceMotion::fromState(double s0, double v0, double g, double radius,
+                                                   double k, double c, double m, double endTime) {
+    constexpr int kMaxPhases = 10000;
+    PenaltyBounceMotion out;
+    double t = 0.0, s = s0, v = v0;
+    const double omega2 = k / m, gamma = c / m;
+    while (t < endTime && static_cast<int>(out.phases.size()) < kMaxPhases) {
+        if (s > radius || (s == radius && v >= 0.0)) {
+            // Flight until the centre is back at one radius above the plane.
+            const LinearMotion flight{0.0, 0.0, -g, s, v};
+            out.phases.push_back({t, flight, false});
+            double tau = 0.0;
+            if (g > 0.0)
+                tau = (v + std::sqrt(v * v + 2.0 * g * (s - radius))) / g;
+            else if (v < 0.0)
+                tau = (s - radius) / -v;
+            else
+                break;  // rising or still with nothing pulling it down
+            t += tau;
+            v -= g * tau;
+            s = radius;
+            continue;
+        }
+        // Contact: s'' + γ·s' + ω²·s = ω²·r − g, until s is back at r on its way up.
+        const LinearMotion contact{omega2, gamma, omega2 * radius - g, s, v};
+        out.phases.push_back({t, contact, true});
+        const double step = 2.0 * std::numbers::pi / std::sqrt(omega2) / 400.0;
+        double a = 0.0, b = -1.0;
+        for (double tau = step; t + tau < endTime; tau += step)
+            if (contact.at(tau) >= radius) {
+                a = tau - step;
+                b = tau;
+                break;
+            }
+        if (b < 0.0) break;  // still in contact at the end (or come to rest)
+        for (int i = 0; i < 80; ++i) {
+            const double mid = 0.5 * (a + b);
+            (contact.at(mid) >= radius ? b : a) = mid;
+        }
+        t += b;
+        v = rateOf(contact, b);
+        s = radius;
+        if (v <= 0.0) break;  // touching the surface with no speed: rests from here
+    }
+    return out;
+}
+
+double PenaltyBounceMotion::height(double t) const {
+    if (phases.empty()) return 0.0;
+    auto phase = std::upper_bound(phases.begin(), phases.end(), t,
+                                  [](double x, const Phase& p) { return x < p.start; });
+    if (phase != phases.begin()) --phase;
+    return phase->s.at(t - phase->start);
+}
+
 Vec ExactReference::positions(double t) const {
     Vec q = Vec::Zero(dimension_);
     for (const Pendulum& p : pendulums_) q.segment<2>(p.dof) = p.motion.at(t);
     for (const Coordinate& c : coordinates_) q[c.dof] = c.motion.at(t);
     for (const AxisMotion& a : axes_) q.segment<2>(a.dof) = a.anchor + a.s.at(t) * a.axis;
     for (const Orbit& o : orbits_) q.segment<2>(o.dof) = o.orbit.at(t);
+    for (const Bounce& b : bounces_) q.segment<2>(b.dof) = b.base + b.motion.height(t) * b.normal;
     return q;
 }
 
@@ -227,7 +292,21 @@ double ExactReference::position(int dof, double t) const {
             return a.anchor[dof - a.dof] + a.s.at(t) * a.axis[dof - a.dof];
     for (const Orbit& o : orbits_)
         if (dof == o.dof || dof == o.dof + 1) return o.orbit.at(t)[dof - o.dof];
+    for (const Bounce& b : bounces_)
+        if (dof == b.dof || dof == b.dof + 1)
+            return b.base[dof - b.dof] + b.motion.height(t) * b.normal[dof - b.dof];
     return 0.0;
+}
+
+bool ExactReference::covers(int dof) const {
+    const auto pair = [dof](int first) { return dof == first || dof == first + 1; };
+    return std::any_of(pendulums_.begin(), pendulums_.end(),
+                       [&](auto& p) { return pair(p.dof); }) ||
+           std::any_of(coordinates_.begin(), coordinates_.end(),
+                       [&](auto& c) { return dof == c.dof; }) ||
+           std::any_of(axes_.begin(), axes_.end(), [&](auto& a) { return pair(a.dof); }) ||
+           std::any_of(orbits_.begin(), orbits_.end(), [&](auto& o) { return pair(o.dof); }) ||
+           std::any_of(bounces_.begin(), bounces_.end(), [&](auto& b) { return pair(b.dof); });
 }
 
 double ExactReference::velocity(int dof, double t) const {
@@ -503,6 +582,114 @@ std::optional<ExactReference> ExactReference::ignoringContacts(const SceneDesc& 
         ref.kind_ = damped ? "free fall with linear drag" : "free fall";
     else
         ref.kind_ = damped ? "motion with linear drag" : "free motion";
+    return ref;
+}
+
+std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const World& world,
+                                                 double endTime) {
+    if (!world.contacts() || world.settings().contactModel != ContactModel::Penalty)
+        return std::nullopt;
+    // Gravity alone moves a free body (springs move only what they hold, left out below).
+    for (const auto& effect : world.effects())
+        if (effect->name() != effectName::gravity && effect->name() != effectName::springs)
+            return std::nullopt;
+    if (!scene.effects.gravity) return std::nullopt;
+    const Vec2 g(scene.effects.gravity->g[0], scene.effects.gravity->g[1]);
+    if (!(g.norm() > 0.0)) return std::nullopt;
+    const Vec2 up = -g.normalized();
+    const double k = world.penaltyStiffness(), c = world.settings().contactDamping;
+    if (!(k > 0.0)) return std::nullopt;
+
+    // What is attached to something cannot move on its own.
+    const auto& particles = world.particles();
+    const auto& boxes = world.boxes();
+    std::vector<char> attachedParticle(particles.size(), 0), attachedBox(boxes.size(), 0);
+    const auto attach = [&](SpringEnd::Kind kind, int index) {
+        if (kind == SpringEnd::Kind::Particle) attachedParticle[index] = 1;
+        if (kind == SpringEnd::Kind::Box) attachedBox[index] = 1;
+    };
+    for (const Spring& sp : world.springs()) {
+        attach(sp.a.kind, sp.a.index);
+        attach(sp.b.kind, sp.b.index);
+    }
+    for (const Joint& j : world.joints())
+        for (const JointBody* body : {&j.a, &j.b}) {
+            if (body->kind == JointBody::Kind::Particle) attachedParticle[body->index] = 1;
+            if (body->kind == JointBody::Kind::Rigid) attachedBox[body->index] = 1;
+        }
+
+    struct Candidate {
+        int dof;
+        Vec2 position, velocity;
+        double radius, mass;
+    };
+    std::vector<Candidate> candidates;
+    std::vector<std::pair<Vec2, double>> others;  // every body's start and reach
+    const Vec& q = world.positions();
+    const Vec& u = world.velocities();
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const Particle& p = particles[i];
+        const Vec2 x = p.dof >= 0 ? Vec2(q.segment<2>(p.dof)) : p.position;
+        others.emplace_back(x, p.radius);
+        if (p.dof >= 0 && p.cloth < 0 && !attachedParticle[i])
+            candidates.push_back({p.dof, x, u.segment<2>(p.dof), p.radius, p.mass});
+    }
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const Box& b = boxes[i];
+        const Vec2 x = b.dof >= 0 ? Vec2(q.segment<2>(b.dof)) : b.position;
+        const double reach = b.shape == RigidShape::Disk ? b.radius : 0.5 * b.size.norm();
+        others.emplace_back(x, reach);
+        if (b.dof >= 0 && b.shape == RigidShape::Disk && !attachedBox[i] && u[b.dof + 2] == 0.0)
+            candidates.push_back({b.dof, x, u.segment<2>(b.dof), b.radius, b.mass});
+    }
+
+    ExactReference ref;
+    ref.dimension_ = world.dimension();
+    ref.kind_ = "penalty bounce";
+    constexpr double kMargin = 0.02;  // m, the contact stage's speculative distance
+    constexpr int kSamples = 2000;
+    for (const Candidate& body : candidates) {
+        if (!alongAxis(body.velocity, up)) continue;
+        // The plane it falls on: the nearest below, facing up.
+        const Plane* floor = nullptr;
+        double height = HUGE_VAL;
+        for (const Plane& plane : world.planes()) {
+            const double s = (body.position - plane.point).dot(plane.normal);
+            if (plane.normal.dot(up) > 1.0 - 1e-12 && s > 0.0 && s < height) {
+                floor = &plane;
+                height = s;
+            }
+        }
+        if (!floor) continue;
+        const PenaltyBounceMotion motion = PenaltyBounceMotion::fromState(
+            height, body.velocity.dot(up), g.norm(), body.radius, k, c, body.mass, endTime);
+        double lo = height, hi = height;
+        for (int i = 0; i <= kSamples; ++i) {
+            const double s = motion.height(endTime * i / kSamples);
+            lo = std::min(lo, s);
+            hi = std::max(hi, s);
+        }
+        // The column it sweeps must stay clear of every other body and plane.
+        const Vec2 base = body.position - height * up;
+        const Vec2 bottom = base + lo * up, top = base + hi * up;
+        bool clear = std::isfinite(hi) && hi - lo < 1e6;
+        for (const Plane& plane : world.planes()) {
+            if (&plane == floor) continue;
+            const double reach = body.radius + kMargin;
+            if ((bottom - plane.point).dot(plane.normal) < reach ||
+                (top - plane.point).dot(plane.normal) < reach)
+                clear = false;
+        }
+        for (const auto& [centre, reach] : others) {
+            if ((centre - body.position).norm() < 1e-12) continue;  // itself
+            // Distance from the centre to the segment bottom–top.
+            const double along = std::clamp((centre - bottom).dot(up), 0.0, hi - lo);
+            if ((centre - (bottom + along * up)).norm() < body.radius + reach + kMargin)
+                clear = false;
+        }
+        if (clear) ref.bounces_.push_back({body.dof, base, up, motion});
+    }
+    if (ref.bounces_.empty()) return std::nullopt;
     return ref;
 }
 

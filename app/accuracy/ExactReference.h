@@ -68,6 +68,24 @@ struct PendulumMotion {
                                                    const Vec2& position, const Vec2& velocity);
     Vec2 at(double t) const;
 };
+// A ball moving straight along a plane's normal under gravity and penalty contact (CONTRACT §6,
+// issue 18's closed forms): flights with s'' = −g and contacts in which the overlap
+// d = r − s obeys m·d'' = m·g − k·d − c·d' (F = k·d + c·ḋ, not clamped while d > 0), each phase
+// a LinearMotion of the height s of the centre above the plane, joined where s crosses r. A
+// contact lasts π·√(m/k)/√(1 − ζ²) without gravity; with it, slightly longer.
+struct PenaltyBounceMotion {
+    struct Phase {
+        double start = 0.0;
+        LinearMotion s;
+        bool contact = false;
+    };
+    std::vector<Phase> phases;
+
+    static PenaltyBounceMotion fromState(double s0, double v0, double g, double radius, double k,
+                                         double c, double m, double endTime);
+    double height(double t) const;
+};
+
 // Jacobi's sn(u, k), 0 ≤ k < 1, by the arithmetic–geometric mean (Abramowitz & Stegun 16.4).
 double jacobiSn(double u, double k);
 
@@ -81,6 +99,8 @@ public:
     double position(int dof, double t) const;
     // Its rate, by a central difference of the closed form (relative error about 1e-10).
     double velocity(int dof, double t) const;
+    // Whether the closed form gives this coordinate (findBodyReferences covers only some).
+    bool covers(int dof) const;
     // The periods of the periodic motions in it (undamped oscillators, pendulums, elliptic
     // orbits); empty when nothing repeats.
     std::vector<double> periods() const;
@@ -108,17 +128,32 @@ private:
         int dof;
         PendulumMotion motion;
     };
+    // x = plane point + s·n + the start's offset along the plane (which stays).
+    struct Bounce {
+        int dof;
+        Vec2 base, normal;
+        PenaltyBounceMotion motion;
+    };
+    friend std::optional<ExactReference> findBodyReferences(const SceneDesc&, const World&, double);
     std::string kind_;
     int dimension_ = 0;
     std::vector<Coordinate> coordinates_;
     std::vector<AxisMotion> axes_;
     std::vector<Orbit> orbits_;
     std::vector<Pendulum> pendulums_;
+    std::vector<Bounce> bounces_;
 };
 
 // The closed form of the scene's motion up to endTime, or nullopt when there is none that is
 // exact for this world. `world` is the scene built by buildWorld(scene), at t = 0.
 std::optional<ExactReference> findExactReference(const SceneDesc& scene, const World& world,
+                                                 double endTime);
+
+// Closed forms for single bodies of a scene that has none as a whole: today a ball bouncing
+// straight on a plane under penalty contact (the lesson "Three ways to collide"), with nothing
+// else within reach of its path at the start and nothing attached to it. nullopt when no body
+// qualifies; covers() tells which coordinates the answer gives.
+std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const World& world,
                                                  double endTime);
 
 }  // namespace phasebox

@@ -11,6 +11,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <numbers>
 
 using namespace phasebox;
 
@@ -50,6 +51,36 @@ private slots:
         QVERIFY(std::abs(early->position(1, 1.0) - (10.0 - 0.5 * 9.81)) < 1e-12);
         QVERIFY(!find(dropOverFloor(1.5)).has_value());  // lands at 1.42 s
         QVERIFY(!find(dropOverFloor(10.0)).has_value());
+    }
+
+    // Issue 18's closed forms, from the phases alone: m = 2 kg at 3 m/s onto a plane with
+    // k = 2e4 N/m and no gravity: contact lasts π·√(m/k)/√(1 − ζ²), the ball sinks v·√(m/k)
+    // when c = 0, and leaves at e·v, e = exp(−ζπ/√(1 − ζ²)), ζ = c/(2·√(k·m)).
+    void penaltyBounceHasTheLectureClosedForms() {
+        const double m = 2.0, k = 2e4, v = 3.0, r = 0.1;
+        for (const double zeta : {0.0, 0.1, 0.3}) {
+            const double c = 2.0 * zeta * std::sqrt(k * m);
+            const PenaltyBounceMotion motion =
+                PenaltyBounceMotion::fromState(1.0, -v, 0.0, r, k, c, m, 10.0);
+            QCOMPARE(motion.phases.size(), std::size_t(3));  // in, contact, out
+            QVERIFY(motion.phases[1].contact && !motion.phases[2].contact);
+            const double duration = motion.phases[2].start - motion.phases[1].start;
+            const double root = std::sqrt(1.0 - zeta * zeta);
+            const double expected = std::numbers::pi * std::sqrt(m / k) / root;
+            const double exit = motion.phases[2].s.v0;
+            const double e = std::exp(-zeta * std::numbers::pi / root);
+            qInfo("zeta %.1f: contact %.6f s (theory %.6f), exit %.6f m/s (theory %.6f)", zeta,
+                  duration, expected, exit, e * v);
+            QVERIFY(std::abs(duration - expected) < 1e-9);
+            QVERIFY(std::abs(exit - e * v) < 1e-6);
+            if (zeta == 0.0) {
+                double deepest = 0.0;
+                for (int i = 0; i <= 1000; ++i)
+                    deepest = std::max(
+                        deepest, r - motion.height(motion.phases[1].start + duration * i / 1000));
+                QVERIFY(std::abs(deepest - v * std::sqrt(m / k)) < 1e-6);
+            }
+        }
     }
 
     void beadOnAHoopNeverReachesTheFloorBelow() {

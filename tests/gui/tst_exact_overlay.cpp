@@ -8,6 +8,8 @@
 #include "app/desktop/presenters/ExactPresenter.h"
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
+#include "physics/contacts/ContactModel.h"
+#include "physics/scene/SceneDesc.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
 #include "ui/plots/PlotsPanel.h"
@@ -21,6 +23,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <numbers>
 
 using namespace phasebox;
 
@@ -125,6 +128,46 @@ private slots:
                                                      j.length));
             QVERIFY2(nearest < 1e-9, qPrintable(QString::number(nearest)));
         }
+    }
+
+    // The lesson "Three ways to collide" (issue 18 item 4): under penalty contacts the dropped
+    // ball's closed form (free fall, then the damped contact spring) is drawn beside it, the
+    // only ghost of the scene; under impulses there is none.
+    void penaltyBallHasItsClosedFormInTheLesson() {
+        Window window;
+        window.open(QStringLiteral(":/lessons/three-ways-to-collide.phasebox.json"));
+        QVERIFY(window.w.exactSolution()->kind().isEmpty());
+        SimulationDesc simulation = window.w.document().setup().simulation;
+        simulation.contactModel = ContactModel::Penalty;
+        QVERIFY(window.w.document().applySimulationSettings(simulation));
+        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("penalty bounce"));
+        const double g = 9.81, h0 = 2.25, r = 0.25;
+        QVERIFY(window.w.controller().advance(0.5));
+        window.w.refreshNow();
+        QCOMPARE(window.overlay().ghosts.size(), 1);
+        const double t = window.w.document().world().time();
+        const QPointF ghost = window.overlay().ghosts.front().centre;
+        QVERIFY(std::abs(ghost.y() - (h0 - 0.5 * g * t * t)) < 1e-9);
+        QVERIFY(std::abs(ghost.x() + 4.0) < 1e-12);
+        // The first rebound's apex, from the reference, against (e·v)²/(2g) above the touch
+        // with e = exp(−ζπ/√(1 − ζ²)): gravity during the 26 ms contact costs a little.
+        const auto& ref = window.w.exactSolution()->reference();
+        int dof = -1;
+        for (const Particle& p : window.w.document().world().particles())
+            if (p.id == "ball") dof = p.dof;
+        QVERIFY(ref && ref->covers(dof) && ref->covers(dof + 1));
+        double apex = 0.0;
+        for (int i = 0; i <= 4000; ++i) {
+            const double y = ref->position(dof + 1, 0.7 + 1.1 * i / 4000.0);
+            apex = std::max(apex, y);
+        }
+        const double k = window.w.document().world().penaltyStiffness(), m = 1.0;
+        const double zeta = simulation.contactDamping / (2.0 * std::sqrt(k * m));
+        const double e = std::exp(-zeta * std::numbers::pi / std::sqrt(1.0 - zeta * zeta));
+        const double rise = e * e * (h0 - r);
+        qInfo("k = %.0f N/m, zeta = %.4f, e = %.4f: apex %.4f m, r + e^2 h = %.4f m", k, zeta, e,
+              apex, r + rise);
+        QVERIFY(std::abs(apex - (r + rise)) < 0.03 * rise);
     }
 
     // Contacts act as impulses: no closed form, nothing drawn, no curve.

@@ -70,6 +70,7 @@ void ExactPresenter::rebuild() {
         const World& start = built ? *built : live;
         const double duration = setup.simulation.duration;
         reference_ = findExactReference(setup, start, duration);
+        if (!reference_) reference_ = findBodyReferences(setup, start, duration);
         dimension_ = start.dimension();
         if (reference_) {
             // Each moving particle's and body's path over the run (one period is enough for
@@ -81,9 +82,9 @@ void ExactPresenter::rebuild() {
                     : std::min(duration, *std::max_element(periods.begin(), periods.end()));
             std::vector<int> dofs;
             for (const Particle& p : start.particles())
-                if (p.dof >= 0 && p.cloth < 0) dofs.push_back(p.dof);
+                if (p.dof >= 0 && p.cloth < 0 && reference_->covers(p.dof)) dofs.push_back(p.dof);
             for (const Box& b : start.boxes())
-                if (b.dof >= 0) dofs.push_back(b.dof);
+                if (b.dof >= 0 && reference_->covers(b.dof)) dofs.push_back(b.dof);
             if (dofs.size() > static_cast<std::size_t>(kMaxPaths)) dofs.resize(kMaxPaths);
             for (const int dof : dofs) {
                 QPolygonF path;
@@ -121,7 +122,7 @@ void ExactPresenter::updatePhase() {
     sincePhase_.restart();
     const World& world = document_.world();
     const int dof = shown_ && reference_ && world.dimension() == dimension_ ? phaseDof() : -1;
-    if (dof < 0) {
+    if (dof < 0 || !reference_->covers(dof)) {
         if (!plots_.phaseReference().empty()) plots_.setPhaseReference({}, {});
         return;
     }
@@ -148,15 +149,17 @@ void ExactPresenter::refresh() {
     const double t = world.time();
     int ghosts = 0;
     for (const Particle& p : world.particles()) {
-        if (p.dof < 0 || p.cloth >= 0 || ghosts++ >= kMaxPaths) continue;
+        if (p.dof < 0 || p.cloth >= 0 || !reference_->covers(p.dof) || ghosts++ >= kMaxPaths)
+            continue;
         overlay.ghosts.append(
             {QPointF(reference_->position(p.dof, t), reference_->position(p.dof + 1, t)),
              p.radius});
     }
     for (const Box& b : world.boxes()) {
-        if (b.dof < 0 || ghosts++ >= kMaxPaths) continue;
+        if (b.dof < 0 || !reference_->covers(b.dof) || ghosts++ >= kMaxPaths) continue;
         overlay.ghosts.append(
-            {QPointF(reference_->position(b.dof, t), reference_->position(b.dof + 1, t)), 0.0});
+            {QPointF(reference_->position(b.dof, t), reference_->position(b.dof + 1, t)),
+             b.shape == RigidShape::Disk ? b.radius : 0.0});
     }
     overlay.label = tr("dashed: exact solution (%1)").arg(kind());
     view_.setReferenceOverlay(overlay);
