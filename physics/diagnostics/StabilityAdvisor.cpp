@@ -119,7 +119,17 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
         std::ostringstream out;
         out << method << " at a sub-step of " << number(advice.dt)
             << " s has omega*h = " << number(wh);
-        if (bound > 0.0)
+        // Between the penalty margin and the method's linear limit the step is stable for a
+        // contact already pressed, but one that begins mid-step can gain energy at every touch.
+        const bool marginOnly = bound < info.stabilityBound && wh < info.stabilityBound;
+        if (bound > 0.0 && marginOnly)
+            out << " (below the linear limit " << number(info.stabilityBound) << " but above "
+                << number(bound)
+                << ", the margin for penalty contacts): a contact that begins within a step can "
+                   "gain energy at every touch. Use dt/substeps below "
+                << number(bound / omega) << " s (" << std::ceil(settings.dt * omega / bound)
+                << " sub-steps)";
+        else if (bound > 0.0)
             out << " (stable below " << number(bound)
                 << "): it will blow up. Use dt/substeps below " << number(bound / omega) << " s ("
                 << std::ceil(settings.dt * omega / bound) << " sub-steps, more for a margin)";
