@@ -45,7 +45,7 @@ struct Window {
     QLineSeries* exactSeries() {
         auto* plots = w.findChild<ui::PlotsPanel*>();
         for (QAbstractSeries* s : plots->phaseView()->chart()->series())
-            if (s->name() == QStringLiteral("exact solution")) return qobject_cast<QLineSeries*>(s);
+            if (s->name() == QStringLiteral("exact")) return qobject_cast<QLineSeries*>(s);
         return nullptr;
     }
 };

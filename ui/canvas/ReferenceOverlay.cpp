@@ -3,6 +3,7 @@
 #include "ui/canvas/SceneRenderer.h"
 #include "ui/canvas/ViewTransform.h"
 
+#include <QFontMetricsF>
 #include <QPainter>
 
 #include <algorithm>
@@ -36,15 +37,21 @@ void drawReferenceOverlay(QPainter& p, const ViewTransform& view, const Referenc
         p.drawEllipse(view.toScreen(g.centre), r, r);
     }
     if (!overlay.label.isEmpty()) {
-        // Bottom right, clear of the scale bar (bottom left) and the HUD (top left).
+        // Top right, clear of the HUD (top left) and the scale bar (bottom left); cut with "…"
+        // rather than run off a narrow canvas.
         QFont font = p.font();
         font.setPixelSize(std::max(6, static_cast<int>(std::lround(12.0 * options.fontScale))));
         p.setFont(font);
         const QRectF viewport = p.viewport();
-        const QRectF box(viewport.left(), viewport.top(), viewport.width() - 10.0,
-                         viewport.height() - 8.0);
+        const QFontMetricsF metrics(font);
+        const QString text =
+            metrics.elidedText(overlay.label, Qt::ElideRight, 0.9 * viewport.width());
+        // Below the HUD's line, which a narrow canvas gives its whole width.
+        const double top = 8.0 + 2.0 * metrics.height() + 4.0;
+        const QRectF box(viewport.left(), viewport.top() + top, viewport.width() - 10.0,
+                         viewport.height() - top);
         p.setPen(colour.darker(130));
-        p.drawText(box, Qt::AlignRight | Qt::AlignBottom, overlay.label);
+        p.drawText(box, Qt::AlignRight | Qt::AlignTop, text);
     }
     p.restore();
 }

@@ -225,7 +225,9 @@ QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& co
         points = std::move(thinned);
     }
     auto* series = new QLineSeries(chart);
-    series->setName(coordinateName + QStringLiteral(" – ") + velocityName);
+    // The axes name the coordinates; the legend says which curve is which.
+    series->setName(exact.empty() ? coordinateName + QStringLiteral(" – ") + velocityName
+                                  : QStringLiteral("simulation"));
     series->replace(points);
     QPen pen(energyColor(0));
     pen.setWidthF(1.8);

@@ -29,12 +29,12 @@ void replaceChart(QChartView* view, QChart* chart) {
 
 void applyPresentation(QChart* chart, bool presentation) {
     if (!presentation) return;
+    // The application's font is already 1.4 times larger in presentation mode (MainWindow), and
+    // charts take theirs from it: a little more for the title only, so that a narrow dock still
+    // has room for the curves and whole legend labels.
     QFont font = chart->titleFont();
-    font.setPointSizeF(font.pointSizeF() * 1.5);
+    font.setPointSizeF(font.pointSizeF() * 1.15);
     chart->setTitleFont(font);
-    QFont legend = chart->legend()->font();
-    legend.setPointSizeF(legend.pointSizeF() * 1.4);
-    chart->legend()->setFont(legend);
 }
 
 // A legend along the bottom is a single row, and Qt cuts its labels to "kine…" when the row
@@ -48,7 +48,7 @@ void fitLegend(QChartView* view) {
     for (const QLegendMarker* marker : legend->markers()) {
         // Label, marker (a line 1.5 font heights long) and the gaps around them.
         if (marker->isVisible())
-            row += metrics.horizontalAdvance(marker->label()) + 3.0 * metrics.height();
+            row += metrics.horizontalAdvance(marker->label()) + 4.0 * metrics.height();
     }
     const qreal margins = 4.0 * metrics.height();  // the chart's and the legend's own
     legend->setAlignment(row + margins <= view->width() ? Qt::AlignBottom : Qt::AlignRight);

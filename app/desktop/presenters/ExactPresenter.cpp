@@ -134,7 +134,7 @@ void ExactPresenter::updatePhase() {
         const double t = end * i / kPhaseSamples;
         samples.push_back({reference_->position(dof, t), reference_->velocity(dof, t)});
     }
-    plots_.setPhaseReference(std::move(samples), tr("exact solution"));
+    plots_.setPhaseReference(std::move(samples), tr("exact"));
 }
 
 void ExactPresenter::refresh() {
