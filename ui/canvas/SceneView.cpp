@@ -248,6 +248,7 @@ void SceneView::paintSurface(QPainter& painter, QSize size) {
         SceneRenderer::paint(painter, view_, size, *world_, options_, &trails_);
     else
         SceneRenderer::paintEmpty(painter, view_, size, options_);
+    MeasureRenderer::paint(painter, view_, size, measurements_, options_);
     drawOverlay(painter, view_, overlay_, options_);
     drawHud(painter, hudText_, options_);
 }
@@ -351,6 +352,11 @@ void SceneView::setRenderOptions(const RenderOptions& options) {
     surface_->update();
 }
 
+void SceneView::setMeasurements(const MeasureOverlay& measurements) {
+    measurements_ = measurements;
+    surface_->update();
+}
+
 void SceneView::setOverlay(const ToolOverlay& overlay) {
     overlay_ = overlay;
     surface_->update();
@@ -379,6 +385,7 @@ QImage SceneView::renderImage(QSize size) const {
         SceneRenderer::paint(painter, v, size, *world_, options, &trails_);
     else
         SceneRenderer::paintEmpty(painter, v, size, options);
+    MeasureRenderer::paint(painter, v, size, measurements_, options);
     return image;
 }
 
