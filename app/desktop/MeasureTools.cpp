@@ -154,14 +154,16 @@ bool MeasureTools::addProtractor(const QString& ends, QString* error) {
 }
 
 void MeasureTools::clear() {
+    cancelGesture();
     rulers_.clear();
     protractors_.clear();
-    cancelGesture();
     select(Kind::None, -1);
     refresh();
 }
 
 bool MeasureTools::removeSelected() {
+    // An end being dragged belongs to the selected instrument: the drag ends with it.
+    if (gesture_ == Gesture::MoveEnd) gesture_ = Gesture::None;
     if (selectedKind_ == Kind::Ruler && selectedIndex_ < rulers_.size())
         rulers_.removeAt(selectedIndex_);
     else if (selectedKind_ == Kind::Protractor && selectedIndex_ < protractors_.size())
@@ -196,6 +198,7 @@ void MeasureTools::dropOrphans() {
         return std::any_of(std::begin(instrument.ends), std::end(instrument.ends),
                            [this](const End& e) { return !exists(e); });
     };
+    if (gesture_ == Gesture::MoveEnd) cancelGesture();  // its index may go
     const qsizetype before = rulers_.size() + protractors_.size();
     rulers_.removeIf(orphan);
     protractors_.removeIf(orphan);
@@ -323,6 +326,29 @@ std::pair<MeasureTools::Kind, int> MeasureTools::instrumentAt(QPointF world) con
     return {Kind::None, -1};
 }
 
+MeasureTools::EndRef MeasureTools::endAt(QPointF world) const {
+    const QPointF p = view_.toWidget(world);
+    EndRef best;
+    double nearest = kEndPickPixels;
+    const auto consider = [&](Kind kind, int index, int end, const End& e) {
+        const double d = QLineF(p, view_.toWidget(position(e))).length();
+        if (d <= nearest) {
+            nearest = d;
+            best = {kind, index, end};
+        }
+    };
+    for (int i = 0; i < rulers_.size(); ++i)
+        for (int k = 0; k < 2; ++k) consider(Kind::Ruler, i, k, rulers_[i].ends[k]);
+    for (int i = 0; i < protractors_.size(); ++i)
+        for (int k = 0; k < 3; ++k) consider(Kind::Protractor, i, k, protractors_[i].ends[k]);
+    return best;
+}
+
+MeasureTools::End& MeasureTools::endOf(const EndRef& ref) {
+    return ref.kind == Kind::Ruler ? rulers_[ref.index].ends[ref.end]
+                                   : protractors_[ref.index].ends[ref.end];
+}
+
 void MeasureTools::pressed(QPointF world, Qt::MouseButton button) {
     if (button != Qt::LeftButton) return;
     const CanvasTools::Tool tool = tools_.tool();
@@ -344,6 +370,15 @@ void MeasureTools::pressed(QPointF world, Qt::MouseButton button) {
         return;
     }
     if (tool != CanvasTools::Tool::Ruler && tool != CanvasTools::Tool::Protractor) return;
+    if (const EndRef end = endAt(world); end.kind != Kind::None) {
+        moving_ = end;
+        movedFrom_ = endOf(end);
+        pressedAt_ = world;
+        gesture_ = Gesture::MoveEnd;
+        select(end.kind, end.index);
+        refresh();
+        return;
+    }
     if (kind != Kind::None) {
         select(kind, index);
         refresh();
@@ -356,7 +391,9 @@ void MeasureTools::pressed(QPointF world, Qt::MouseButton button) {
 }
 
 void MeasureTools::moved(QPointF world, Qt::MouseButtons buttons) {
-    if (gesture_ == Gesture::ProtractorSecondArm) {
+    if (gesture_ == Gesture::MoveEnd && (buttons & Qt::LeftButton)) {
+        endOf(moving_) = snap(world);
+    } else if (gesture_ == Gesture::ProtractorSecondArm) {
         pending_[2] = snap(world);
     } else if ((gesture_ == Gesture::Ruler || gesture_ == Gesture::ProtractorFirstArm) &&
                (buttons & Qt::LeftButton)) {
@@ -368,6 +405,15 @@ void MeasureTools::moved(QPointF world, Qt::MouseButtons buttons) {
 }
 
 void MeasureTools::released(QPointF world, Qt::MouseButton button) {
+    if (button == Qt::LeftButton && gesture_ == Gesture::MoveEnd) {
+        // A click on an end only selects its instrument.
+        if (QLineF(view_.toWidget(pressedAt_), view_.toWidget(world)).length() >=
+            CanvasTools::kClickPixels)
+            endOf(moving_) = snap(world);
+        gesture_ = Gesture::None;
+        refresh();
+        return;
+    }
     if (button != Qt::LeftButton ||
         (gesture_ != Gesture::Ruler && gesture_ != Gesture::ProtractorFirstArm))
         return;
@@ -396,6 +442,7 @@ void MeasureTools::released(QPointF world, Qt::MouseButton button) {
 }
 
 void MeasureTools::cancelGesture() {
+    if (gesture_ == Gesture::MoveEnd) endOf(moving_) = movedFrom_;
     gesture_ = Gesture::None;
 }
 

@@ -4,6 +4,7 @@
 //   Ruler       drag from one point to another; the label reads the distance (m) with dx, dy
 //   Protractor  drag from the vertex along the first arm, release, then click the second arm;
 //               the label reads the angle between the arms (degrees, 0 to 180)
+//   either      drag an end of one to move it (and attach or detach it)
 //
 // An end pressed or dropped on a particle or rigid body attaches to its centre and follows it
 // while the simulation runs (the reading is live); elsewhere it stays at that point of the
@@ -78,8 +79,9 @@ public:
     // The free body the view draws now (nullopt: no moving body selected).
     std::optional<FreeBody> freeBody() const;
 
-    // Pixels within which a click selects an instrument.
+    // Pixels within which a click selects an instrument, and a press grabs its end.
     static constexpr double kPickPixels = 6.0;
+    static constexpr double kEndPickPixels = 9.0;
 
 signals:
     void freeBodyShownChanged(bool on);
@@ -91,8 +93,13 @@ private:
     struct Protractor {
         End ends[3];  // vertex, first arm, second arm
     };
-    enum class Gesture { None, Ruler, ProtractorFirstArm, ProtractorSecondArm };
+    enum class Gesture { None, Ruler, ProtractorFirstArm, ProtractorSecondArm, MoveEnd };
     enum class Kind { None, Ruler, Protractor };
+    struct EndRef {
+        Kind kind = Kind::None;
+        int index = -1;
+        int end = -1;
+    };
 
     void pressed(QPointF world, Qt::MouseButton button);
     void moved(QPointF world, Qt::MouseButtons buttons);
@@ -104,8 +111,11 @@ private:
     // Where an end is now; the object's last place when it is gone.
     QPointF position(const End& end) const;
     bool exists(const End& end) const;
-    // The instrument within kPickPixels of a widget point.
+    // The instrument within kPickPixels of a world point; the end of one within
+    // kEndPickPixels.
     std::pair<Kind, int> instrumentAt(QPointF world) const;
+    EndRef endAt(QPointF world) const;
+    End& endOf(const EndRef& ref);
     // Drops the instruments attached to objects that are gone.
     void dropOrphans();
     void select(Kind kind, int index);
@@ -123,6 +133,8 @@ private:
     Gesture gesture_ = Gesture::None;
     End pending_[3];
     QPointF pressedAt_;
+    EndRef moving_;  // MoveEnd: the end dragged, and where it was (Esc puts it back)
+    End movedFrom_;
     bool freeBodyShown_ = false;
 };
 

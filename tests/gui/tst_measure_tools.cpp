@@ -55,6 +55,13 @@ struct Window {
                             (std::round(0.5 * size.height()) - 0.5 * size.height()) / 50.0));
         canvas()->setView(v);
     }
+    // A scene of one particle, seen through exactView.
+    void openWithParticle(const std::string& id, Point2 position) {
+        SceneDesc scene;
+        scene.particles.push_back(particle(id, position));
+        load(scene);
+        exactView();
+    }
     QPoint pixel(double x, double y) { return canvas()->toWidget(QPointF(x, y)).toPoint(); }
     void drag(QPoint from, QPoint to) {
         QTest::mousePress(canvas(), Qt::LeftButton, {}, from);
@@ -91,8 +98,10 @@ private slots:
     void rulerAttachedToParticlesFollowsThem();
     void protractorReadsRightAndHalfRightAngles();
     void instrumentsAreRemovedWithEscDeleteOrClear();
+    void draggingAnEndMovesAndAttachesIt();
     void freeBodyOfABodyRestingOnAPlane();
     void freeBodyOfABodyHangingAtEquilibrium();
+    void freeBodyOfABoxHangingOnARod();
     void momentumOfAFreeSystemStaysConstant();
     void arrowScaleIsOneTwoFive();
     void commandLineSwitches();
@@ -180,11 +189,8 @@ void TestMeasureTools::protractorReadsRightAndHalfRightAngles() {
 }
 
 void TestMeasureTools::instrumentsAreRemovedWithEscDeleteOrClear() {
-    SceneDesc scene;
-    scene.particles.push_back(particle("p", {5.0, 5.0}));
     Window win;
-    win.load(scene);
-    win.exactView();
+    win.openWithParticle("p", {5.0, 5.0});
     win.w.tools()->setTool(CanvasTools::Tool::Ruler);
     win.drag(win.pixel(0.0, 0.0), win.pixel(2.0, 0.0));
     win.drag(win.pixel(0.0, 1.0), win.pixel(2.0, 1.0));
@@ -208,6 +214,31 @@ void TestMeasureTools::instrumentsAreRemovedWithEscDeleteOrClear() {
     win.w.action(QStringLiteral("clearMeasurements"))->trigger();
     QCOMPARE(win.measure()->rulerCount(), 0);
     QVERIFY(win.canvas()->measurements().rulers.isEmpty());
+}
+
+void TestMeasureTools::draggingAnEndMovesAndAttachesIt() {
+    Window win;
+    win.openWithParticle("p", {4.0, 3.0});
+    QCOMPARE(win.w.action(QStringLiteral("toolRuler"))->shortcut(), QKeySequence(Qt::Key_R));
+    QCOMPARE(win.w.action(QStringLiteral("toolProtractor"))->shortcut(), QKeySequence(Qt::Key_P));
+    QCOMPARE(win.w.action(QStringLiteral("freeBody"))->shortcut(), QKeySequence(Qt::Key_B));
+    win.w.tools()->setTool(CanvasTools::Tool::Ruler);
+    win.drag(win.pixel(0.0, 0.0), win.pixel(2.0, 0.0));
+    QVERIFY(std::abs(win.measure()->rulerLength(0) - 2.0) < 1e-12);
+    // The end at (2, 0) dropped on p: attached, 5 m from the origin.
+    win.drag(win.pixel(2.0, 0.0), win.pixel(4.0, 3.0));
+    QCOMPARE(win.measure()->rulerCount(), 1);
+    QVERIFY(win.canvas()->measurements().rulers[0].attachedB);
+    QVERIFY(std::abs(win.measure()->rulerLength(0) - 5.0) < 1e-12);
+    // Moving p moves the end.
+    QString error;
+    QVERIFY2(win.w.document().moveObject(QStringLiteral("p"), {0.0, 3.0}, &error),
+             qPrintable(error));
+    QVERIFY(std::abs(win.measure()->rulerLength(0) - 3.0) < 1e-12);
+    // Dragged off into empty space the end stays there, detached.
+    win.drag(win.pixel(0.0, 3.0), win.pixel(0.0, -1.0));
+    QVERIFY(!win.canvas()->measurements().rulers[0].attachedB);
+    QVERIFY(std::abs(win.measure()->rulerLength(0) - 1.0) < 1e-12);
 }
 
 void TestMeasureTools::freeBodyOfABodyRestingOnAPlane() {
@@ -283,6 +314,43 @@ void TestMeasureTools::freeBodyOfABodyHangingAtEquilibrium() {
     QVERIFY(std::abs(pull.force.y() - m * kG) < 1e-9);
     QVERIFY(body->net().norm() < 1e-9);
     win.snapshot(QStringLiteral("free-body-spring.png"));
+}
+
+void TestMeasureTools::freeBodyOfABoxHangingOnARod() {
+    // A box hangs at rest straight below the rod's fixed end: the rod holds its weight m·g.
+    SceneDesc scene;
+    scene.effects.gravity = GravityDesc{{0.0, -kG}};
+    BoxDesc box;
+    box.id = "crate";
+    box.position = {0.0, -1.5};
+    box.mass = 3.0;
+    scene.boxes.push_back(box);
+    JointDesc rod;
+    rod.id = "rod";
+    rod.type = JointType::Rod;
+    rod.a = "crate";
+    rod.anchor = Point2{0.0, 0.0};
+    scene.joints.push_back(rod);
+    Window win;
+    win.load(scene);
+    win.w.document().setSelection({QStringLiteral("crate")});
+    win.measure()->setFreeBodyShown(true);
+    QVERIFY(win.w.controller().advance(1.0));
+    const std::optional<FreeBody> body = win.measure()->freeBody();
+    QVERIFY(body.has_value());
+    QVERIFY(body->body.rigid);
+    QCOMPARE(body->forces.size(), std::size_t(2));
+    const BodyForce& joint = body->forces[1];
+    QCOMPARE(joint.source, BodyForce::Source::Joint);
+    QCOMPARE(joint.name, std::string("rod"));
+    qInfo("gravity %.12g N, rod %.12g N (x %.3g), net %.3g N", body->forces[0].force.y(),
+          joint.force.y(), joint.force.x(), body->net().norm());
+    QVERIFY(std::abs(body->forces[0].force.y() + 3.0 * kG) < 1e-12);
+    QVERIFY(std::abs(joint.force.y() - 3.0 * kG) < 1e-9 * 3.0 * kG);
+    QVERIFY(body->net().norm() < 1e-9 * 3.0 * kG);
+    // What the canvas shows is the same.
+    QCOMPARE(win.canvas()->measurements().freeBody->forces.size(), std::size_t(2));
+    win.snapshot(QStringLiteral("free-body-rod.png"));
 }
 
 void TestMeasureTools::momentumOfAFreeSystemStaysConstant() {
