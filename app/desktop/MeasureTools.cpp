@@ -299,6 +299,8 @@ void MeasureTools::refresh() {
             overlay.centreOfMass = QPointF(com->x(), com->y());
         overlay.systemMomentum = QPointF(system.momentum.x(), system.momentum.y());
     }
+    // Nothing shown before or now: no repaint for it (this runs after every step).
+    if (overlay.isEmpty() && view_.measurements().isEmpty()) return;
     view_.setMeasurements(overlay);
 }
 

@@ -240,13 +240,15 @@ void drawFreeBody(const Painter& g, const MeasureOverlay& o, QSize viewport) {
                       .arg(MeasureRenderer::number(o.systemMomentum.x()),
                            MeasureRenderer::number(o.systemMomentum.y()));
     }
-    // The legend in the top right corner.
+    // The legend in the bottom right corner: the time is top left, the scale bar bottom left.
     const QString text = legend.join(QLatin1Char('\n'));
     const QFont f = g.font(12.0);
     g.p.setFont(f);
     const QSizeF size =
         QFontMetricsF(f).boundingRect(QRectF(0, 0, 4000, 4000), 0, text).size() + QSizeF(12, 8);
-    const QRectF box(QPointF(viewport.width() - size.width() - 8.0, 8.0), size);
+    const QRectF box(QPointF(std::max(8.0, viewport.width() - size.width() - 8.0),
+                             viewport.height() - size.height() - 8.0),
+                     size);
     g.p.setPen(Qt::NoPen);
     g.p.setBrush(QColor(255, 255, 255, 225));
     g.p.drawRoundedRect(box, 4.0, 4.0);
