@@ -62,8 +62,11 @@ MeasureTools::MeasureTools(Document& document, CanvasTools& tools, ui::SceneView
     connect(&view_, &ui::SceneView::worldMouseReleased, this,
             [this](QPointF world, Qt::MouseButton button) { released(world, button); });
     view_.installEventFilter(this);  // Esc and Delete
-    connect(&tools_, &CanvasTools::toolChanged, this, [this] {
+    connect(&tools_, &CanvasTools::toolChanged, this, [this](CanvasTools::Tool tool) {
         cancelGesture();
+        // A drawing tool has its own Esc (the polygon's outline): an instrument lets go.
+        using T = CanvasTools::Tool;
+        if (tool != T::Select && tool != T::Ruler && tool != T::Protractor) select(Kind::None, -1);
         refresh();
     });
     connect(&controller, &SimulationController::stepped, this, &MeasureTools::refresh);
