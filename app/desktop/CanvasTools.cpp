@@ -92,6 +92,10 @@ QString CanvasTools::toolName(Tool tool) {
             return tr("Pin / unpin");
         case Tool::Joint:
             return tr("Add joint");
+        case Tool::Ruler:
+            return tr("Ruler");
+        case Tool::Protractor:
+            return tr("Protractor");
     }
     return {};
 }
@@ -129,6 +133,15 @@ QString CanvasTools::toolHelp(Tool tool) {
                 "pivots where the drag starts; a rod or rope joins the two points; a weld "
                 "holds two bodies together; a pulley hangs two bodies over two wheels a metre "
                 "above; a track puts a particle on a hoop centred where the drag ends.");
+        case Tool::Ruler:
+            return tr(
+                "Drag from one point to another to measure the distance; an end dropped on an "
+                "object follows it. Click a ruler to select it, Esc or Delete removes it.");
+        case Tool::Protractor:
+            return tr(
+                "Drag from the vertex along the first arm, then click the second arm: the angle "
+                "between them. Ends dropped on objects follow them; Esc or Delete removes the "
+                "selected one.");
     }
     return {};
 }
@@ -411,6 +424,9 @@ void CanvasTools::finish(QPointF world) {
                 return;
             break;
         }
+        case Tool::Ruler:
+        case Tool::Protractor:
+            return;  // MeasureTools' gestures
         case Tool::Pin: {
             if (!click || startObject_.isEmpty()) return;
             const ObjectRef ref = findObject(document_.setup(), startObject_.toStdString());

@@ -20,6 +20,7 @@
 //            where the drag starts), rod, rope (between the points pressed and released),
 //            weld, pulley (wheels a metre above) or track (a hoop centred where the drag
 //            ends), as jointType() says
+//   Ruler, Protractor   measuring instruments: MeasureTools handles them (nothing is edited)
 
 #include <QObject>
 #include <QPointF>
@@ -43,7 +44,20 @@ class CanvasTools : public QObject {
     Q_OBJECT
 
 public:
-    enum class Tool { Select, Particle, Spring, Cloth, Box, Disk, Polygon, Plane, Pin, Joint };
+    enum class Tool {
+        Select,
+        Particle,
+        Spring,
+        Cloth,
+        Box,
+        Disk,
+        Polygon,
+        Plane,
+        Pin,
+        Joint,
+        Ruler,
+        Protractor
+    };
 
     CanvasTools(Document& document, ui::SceneView& view, QObject* parent = nullptr);
 

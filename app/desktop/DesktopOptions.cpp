@@ -1,6 +1,7 @@
 #include "app/desktop/DesktopOptions.h"
 
 #include "app/desktop/MainWindow.h"
+#include "app/desktop/MeasureTools.h"
 #include "app/desktop/presenters/InstrumentsPresenter.h"
 #include "app/io/OutputFile.h"
 #include "physics/world/World.h"
@@ -45,7 +46,21 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
         QStringLiteral("Graph the probe EXPR against time in the Instruments dock (repeatable; "
                        "CONTRACT §7: ID.x, system.total, distance(A,B), …)."),
         QStringLiteral("EXPR"));
-    parser.addOptions({screenshot, runFor, canvas, presentation, select, probe});
+    const QCommandLineOption ruler(
+        QStringLiteral("ruler"),
+        QStringLiteral("Put a ruler on the canvas from A to B, each an object id (the end follows "
+                       "it) or a point X:Y in metres (repeatable)."),
+        QStringLiteral("A,B"));
+    const QCommandLineOption protractor(
+        QStringLiteral("protractor"),
+        QStringLiteral("Put a protractor on the canvas with its vertex at V and arms to A and B, "
+                       "each an object id or X:Y (repeatable)."),
+        QStringLiteral("V,A,B"));
+    const QCommandLineOption freeBody(
+        QStringLiteral("free-body"),
+        QStringLiteral("Show the free-body view (of the object chosen with --select)."));
+    parser.addOptions(
+        {screenshot, runFor, canvas, presentation, select, probe, ruler, protractor, freeBody});
     parser.addPositionalArgument(QStringLiteral("scene"),
                                  QStringLiteral("Scene file to open (default: the demo)."));
     if (!parser.parse(arguments)) {
@@ -72,6 +87,9 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
     options.presentation = parser.isSet(presentation);
     options.select = parser.value(select);
     options.probes = parser.values(probe);
+    options.rulers = parser.values(ruler);
+    options.protractors = parser.values(protractor);
+    options.freeBody = parser.isSet(freeBody);
     const QStringList positional = parser.positionalArguments();
     if (positional.size() > 1) {
         *error = QStringLiteral("expected at most one scene file, got %1").arg(positional.size());
@@ -130,6 +148,18 @@ int runDesktop(QApplication& app) {
             if (headless) return 2;
         }
     }
+    MeasureTools& measure = *window.measureTools();
+    for (const QString& ruler : std::as_const(options.rulers))
+        if (!measure.addRuler(ruler, &error)) {
+            err << "phasebox: error: " << error << "\n";
+            if (headless) return 2;
+        }
+    for (const QString& protractor : std::as_const(options.protractors))
+        if (!measure.addProtractor(protractor, &error)) {
+            err << "phasebox: error: " << error << "\n";
+            if (headless) return 2;
+        }
+    measure.setFreeBodyShown(options.freeBody);
     if (headless) {
         if (options.presentation) window.setPresentationMode(true);
         const int status = takeScreenshot(window, options, &error);

@@ -17,8 +17,11 @@ struct DesktopOptions {
     double runFor = 0.0;  // simulated seconds before the picture
     QString canvas;       // "auto", "raster" or "opengl"
     bool presentation = false;
-    QString select;      // an object to select at start (its phase space is plotted)
-    QStringList probes;  // probes to graph at start, one graph each (the Instruments dock)
+    QString select;           // an object to select at start (its phase space is plotted)
+    QStringList probes;       // probes to graph at start, one graph each (the Instruments dock)
+    QStringList rulers;       // "A,B": a ruler between two objects or X:Y points
+    QStringList protractors;  // "V,A,B": a protractor with its vertex at V
+    bool freeBody = false;    // the free-body view on (of the --select object)
 };
 
 inline const QString kDemoScene = QStringLiteral(":/scenes/demo.phasebox.json");

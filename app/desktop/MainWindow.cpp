@@ -2,6 +2,7 @@
 
 #include "app/desktop/AccuracyDialog.h"
 #include "app/desktop/CanvasTools.h"
+#include "app/desktop/MeasureTools.h"
 #include "app/desktop/SceneFiles.h"
 #include "app/desktop/SceneLibraryMenu.h"
 #include "app/desktop/presenters/CanvasPresenter.h"
@@ -162,12 +163,13 @@ void MainWindow::createMenus() {
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     tools->addActions(canvasPresenter_->toolActions());
     addNamedActions(tools, *this,
-                    {"", "showInstruments", "stopwatch", "stopwatchLap", "", "accuracyLab"});
+                    {"", "clearMeasurements", "", "showInstruments", "stopwatch", "stopwatchLap",
+                     "", "accuracyLab"});
     QMenu* view = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* dock : docks_) view->addAction(dock->toggleViewAction());
     addNamedActions(view, *this,
-                    {"", "fit", "follow", "trails", "velocityArrows", "forceArrows", "labels",
-                     "viewExact", "grid", "errorEstimate", "presentation"});
+                    {"", "fit", "follow", "trails", "velocityArrows", "forceArrows", "freeBody",
+                     "labels", "viewExact", "grid", "errorEstimate", "presentation"});
     menuBar()->addMenu(tr("&Help"))->addAction(tr("&About Phasebox"), this, [this] {
         QMessageBox::about(this, tr("About Phasebox"),
                            tr("<b>Phasebox %1</b><p>A 2D physics sandbox for the classroom: drop "
@@ -240,6 +242,8 @@ void MainWindow::createDockWindows() {
     addPresenter(canvasPresenter_ =
                      new CanvasPresenter(*canvas_, *tools_, document_, controller_, this));
     canvasPresenter_->createActions(*this);
+    addPresenter(measure_ = new MeasureTools(document_, *tools_, *canvas_, controller_, this));
+    measure_->createActions(*this);
     addPresenter(parametersPresenter_ =
                      new ParametersPresenter(*parameters_, document_, controller_, this));
     parametersPresenter_->createActions(*this);

@@ -1,9 +1,10 @@
 #pragma once
 // The main window in the classic Qt shape (createActions, createMenus, createDockWindows,
-// readSettings/writeSettings, maybeSave): the canvas in the middle, docks for Parameters,
-// Effects, Properties, Plots, Instruments, the Scene list and the scene's Notes. It only composes:
-// each dock has a presenter (presenters/) that connects its ui/ widget to the Document (what is
-// edited), the SimulationController (what runs) and the Recorder (what is plotted).
+// readSettings/writeSettings, maybeSave): the canvas in the middle (with its measuring tools),
+// docks for Parameters, Effects, Properties, Plots, Instruments, the Scene list and the scene's
+// Notes. It only composes: each dock has a presenter (presenters/) that connects its ui/ widget to
+// the Document (what is edited), the SimulationController (what runs) and the Recorder (what is
+// plotted).
 
 #include "app/document/Document.h"
 #include "app/sim/ProbeRecorder.h"
@@ -34,6 +35,7 @@ class InstrumentsPanel;
 }  // namespace ui
 
 class CanvasTools;
+class MeasureTools;
 class AccuracyDialog;
 class Autosave;
 class Presenter;
@@ -59,6 +61,8 @@ public:
     ProbeRecorder& probeRecorder() { return probes_; }
     ui::SceneView* canvas() const { return canvas_; }
     CanvasTools* tools() const { return tools_; }
+    // The ruler, protractor and free-body view.
+    MeasureTools* measureTools() const { return measure_; }
     ui::ParametersPanel* parametersPanel() const { return parameters_; }
     ui::EffectsPanel* effectsPanel() const { return effects_; }
     ui::PropertiesPanel* propertiesPanel() const { return properties_; }
@@ -122,6 +126,7 @@ private:
 
     ui::SceneView* canvas_ = nullptr;
     CanvasTools* tools_ = nullptr;
+    MeasureTools* measure_ = nullptr;
     ui::ParametersPanel* parameters_ = nullptr;
     ui::EffectsPanel* effects_ = nullptr;
     ui::PropertiesPanel* properties_ = nullptr;

@@ -82,14 +82,6 @@ std::vector<std::string_view> splitArguments(std::string_view text) {
     return args;
 }
 
-std::optional<ProbeObject> findObject(const World& world, std::string_view id) {
-    for (std::size_t i = 0; i < world.particles().size(); ++i)
-        if (world.particles()[i].id == id) return ProbeObject{false, static_cast<int>(i)};
-    for (std::size_t i = 0; i < world.boxes().size(); ++i)
-        if (world.boxes()[i].id == id) return ProbeObject{true, static_cast<int>(i)};
-    return std::nullopt;
-}
-
 ProbeParse refuse(std::string_view text, const std::string& reason = {}) {
     ProbeParse result;
     result.error = "unknown probe \"" + std::string(text) + "\"";
@@ -144,7 +136,7 @@ std::optional<ProbeParse> parseInstrument(const World& world, std::string_view t
         return ProbeParse{std::move(probe), {}};
     }
     for (std::size_t k = 0; k < args.size(); ++k) {
-        const std::optional<ProbeObject> object = findObject(world, args[k]);
+        const std::optional<ProbeObject> object = findProbeObject(world, args[k]);
         if (!object) return refuse(text, "no object " + quoted(args[k]));
         probe.objects[k] = *object;
     }
@@ -191,19 +183,32 @@ ObjectState stateOf(const World& world, const ProbeObject& o) {
     return s;
 }
 
-Vec2 positionOf(const World& world, const ProbeObject& o) {
+}  // namespace
+
+std::optional<ProbeObject> findProbeObject(const World& world, std::string_view id) {
+    for (std::size_t i = 0; i < world.particles().size(); ++i)
+        if (world.particles()[i].id == id) return ProbeObject{false, static_cast<int>(i)};
+    for (std::size_t i = 0; i < world.boxes().size(); ++i)
+        if (world.boxes()[i].id == id) return ProbeObject{true, static_cast<int>(i)};
+    return std::nullopt;
+}
+
+Vec2 probeObjectPosition(const World& world, const ProbeObject& o) {
     return o.rigid ? world.boxPosition(o.index) : world.particlePosition(o.index);
 }
 
-// Σ over the dynamic objects from the flat state: particles (x, y) then rigid bodies (x, y, θ),
-// with the per-coordinate masses (m, m, I).
-struct SystemSums {
-    Vec2 momentum{0.0, 0.0}, massMoment{0.0, 0.0};
-    double angularMomentum = 0.0, mass = 0.0;
-};
+double signedAngle(const Vec2& a, const Vec2& vertex, const Vec2& c) {
+    const Vec2 ba = a - vertex, bc = c - vertex;
+    // atan2 answers in [−π, π]; −π (BC exactly opposite BA, approached from below) is reported
+    // as π so that the range is (−π, π] as CONTRACT §7 says.
+    const double angle = std::atan2(cross(ba, bc), ba.dot(bc));
+    return angle <= -std::numbers::pi ? std::numbers::pi : angle;
+}
 
-SystemSums systemSums(const World& world) {
-    SystemSums s;
+// From the flat state: particles (x, y) then rigid bodies (x, y, θ), with the per-coordinate
+// masses (m, m, I).
+SystemMotion systemMotion(const World& world) {
+    SystemMotion s;
     const Vec& q = world.positions();
     const Vec& u = world.velocities();
     const Vec& m = world.mass();
@@ -223,8 +228,6 @@ SystemSums systemSums(const World& world) {
     }
     return s;
 }
-
-}  // namespace
 
 std::string_view probeVocabulary() {
     return kVocabulary;
@@ -253,7 +256,7 @@ ProbeParse parseProbe(const World& world, std::string_view text) {
             return ProbeParse{std::move(probe), {}};
         }
     }
-    const std::optional<ProbeObject> object = findObject(world, id);
+    const std::optional<ProbeObject> object = findProbeObject(world, id);
     const std::optional<ProbeKind> kind = findField(kObjectFields, field);
     if (!kind) return refuse(t);
     if (!object) return refuse(t, "no object " + quoted(id));
@@ -268,9 +271,9 @@ double evaluateProbe(const World& world, const Probe& probe) {
     const EnergyLedger& e = world.energy();
     switch (probe.kind) {
         case ProbeKind::X:
-            return positionOf(world, probe.objects[0]).x();
+            return probeObjectPosition(world, probe.objects[0]).x();
         case ProbeKind::Y:
-            return positionOf(world, probe.objects[0]).y();
+            return probeObjectPosition(world, probe.objects[0]).y();
         case ProbeKind::Vx:
             return stateOf(world, probe.objects[0]).velocity.x();
         case ProbeKind::Vy:
@@ -310,31 +313,26 @@ double evaluateProbe(const World& world, const Probe& probe) {
         case ProbeKind::SystemCorrection:
             return e.correction;
         case ProbeKind::SystemPx:
-            return systemSums(world).momentum.x();
+            return systemMotion(world).momentum.x();
         case ProbeKind::SystemPy:
-            return systemSums(world).momentum.y();
+            return systemMotion(world).momentum.y();
         case ProbeKind::SystemAngularMomentum:
-            return systemSums(world).angularMomentum;
+            return systemMotion(world).angularMomentum;
         case ProbeKind::SystemComX:
         case ProbeKind::SystemComY: {
             // 0 when nothing is dynamic: there is no centre of mass to follow.
-            const SystemSums s = systemSums(world);
-            if (!(s.mass > 0.0)) return 0.0;
-            return (probe.kind == ProbeKind::SystemComX ? s.massMoment.x() : s.massMoment.y()) /
-                   s.mass;
+            const std::optional<Vec2> com = systemMotion(world).centreOfMass();
+            if (!com) return 0.0;
+            return probe.kind == ProbeKind::SystemComX ? com->x() : com->y();
         }
         case ProbeKind::Distance:
-            return (positionOf(world, probe.objects[1]) - positionOf(world, probe.objects[0]))
+            return (probeObjectPosition(world, probe.objects[1]) -
+                    probeObjectPosition(world, probe.objects[0]))
                 .norm();
-        case ProbeKind::AngleAt: {
-            const Vec2 b = positionOf(world, probe.objects[1]);
-            const Vec2 ba = positionOf(world, probe.objects[0]) - b;
-            const Vec2 bc = positionOf(world, probe.objects[2]) - b;
-            // atan2 answers in [−π, π]; −π (BC exactly opposite BA, approached from below) is
-            // reported as π so that the range is (−π, π] as CONTRACT §7 says.
-            const double angle = std::atan2(cross(ba, bc), ba.dot(bc));
-            return angle <= -std::numbers::pi ? std::numbers::pi : angle;
-        }
+        case ProbeKind::AngleAt:
+            return signedAngle(probeObjectPosition(world, probe.objects[0]),
+                               probeObjectPosition(world, probe.objects[1]),
+                               probeObjectPosition(world, probe.objects[2]));
         case ProbeKind::JointForce: {
             const JointSolver* joints = world.jointSolver();
             if (!joints || probe.joint >= joints->jointCount()) return 0.0;
@@ -353,7 +351,7 @@ double evaluateProbe(const World& world, const Probe& probe) {
 
 std::vector<std::string> objectProbes(const World& world, std::string_view id) {
     std::vector<std::string> texts;
-    const std::optional<ProbeObject> object = findObject(world, id);
+    const std::optional<ProbeObject> object = findProbeObject(world, id);
     if (!object) return texts;
     const std::string prefix = std::string(id) + '.';
     for (const Field& f : kObjectFields) {

@@ -85,6 +85,31 @@ struct ProbeParse {
     explicit operator bool() const { return probe.has_value(); }
 };
 
+// The pieces the probes are made of, for the instruments that measure between places that are
+// not all objects (a ruler from a body to a fixed point) and for the free-body view.
+//
+// The object of this id (a particle, a cloth node, a rigid body), or nullopt.
+std::optional<ProbeObject> findProbeObject(const World& world, std::string_view id);
+// Where it is now (a fixed object at its fixed place).
+Vec2 probeObjectPosition(const World& world, const ProbeObject& object);
+// The signed angle at vertex from a − vertex to c − vertex, counter-clockwise positive, in
+// (−π, π] (angle(A,B,C)); 0 when an arm has no length.
+double signedAngle(const Vec2& a, const Vec2& vertex, const Vec2& c);
+
+// Σ over the dynamic objects (pinned and static excluded): system.px, .py, .L, .com_x, .com_y.
+struct SystemMotion {
+    Vec2 momentum{0.0, 0.0};
+    Vec2 massMoment{0.0, 0.0};  // Σ m·x
+    double angularMomentum = 0.0;
+    double mass = 0.0;
+    // The centre of mass; nullopt when nothing is dynamic.
+    std::optional<Vec2> centreOfMass() const {
+        if (!(mass > 0.0)) return std::nullopt;
+        return Vec2(massMoment / mass);
+    }
+};
+SystemMotion systemMotion(const World& world);
+
 // The vocabulary's forms, comma-separated (for messages and help texts).
 std::string_view probeVocabulary();
 

@@ -7,6 +7,7 @@
 //
 // With PHASEBOX_SCREENSHOT_DIR set, pictures of the dock's tabs are written there to look at.
 
+#include "GuiTestSupport.h"
 #include "app/desktop/CanvasTools.h"
 #include "app/desktop/DesktopOptions.h"
 #include "app/desktop/MainWindow.h"
@@ -50,19 +51,10 @@
 #include <numbers>
 
 using namespace phasebox;
+using phasebox::testing::freeScene;
+using phasebox::testing::particle;
 
 namespace {
-
-ParticleDesc particle(const std::string& id, Point2 position, double mass = 1.0,
-                      Point2 velocity = {0.0, 0.0}) {
-    ParticleDesc p;
-    p.id = id;
-    p.position = position;
-    p.velocity = velocity;
-    p.mass = mass;
-    p.radius = 0.1;
-    return p;
-}
 
 // A mass m on a spring k (rest length 0) to the origin, released at x = 0.5 m, no gravity: it
 // swings along x with T = 2π·√(m/k).
@@ -78,26 +70,6 @@ SceneDesc springScene(double k, double m) {
     spring.anchor = Point2{0.0, 0.0};
     spring.stiffness = k;
     spring.restLength = 0.0;
-    scene.springs.push_back(spring);
-    return scene;
-}
-
-// Two masses on a spring and a spinning box, no external force: the total momentum
-// (1·1 + 3·(−0.2), 1·0.5 + 3·0.1) = (0.4, 0.8) stays.
-SceneDesc freeScene() {
-    SceneDesc scene;
-    scene.name = "Free system";
-    scene.particles.push_back(particle("a", {-1.0, 0.0}, 1.0, {1.0, 0.5}));
-    scene.particles.push_back(particle("b", {1.0, 0.0}, 3.0, {-0.2, 0.1}));
-    BoxDesc box;
-    box.id = "spinner";
-    box.position = {0.0, 3.0};
-    box.angularVelocity = 2.0;
-    scene.boxes.push_back(box);
-    SpringDesc spring;
-    spring.a = "a";
-    spring.b = "b";
-    spring.stiffness = 20.0;
     scene.springs.push_back(spring);
     return scene;
 }

@@ -249,6 +249,7 @@ void SceneView::paintSurface(QPainter& painter, QSize size) {
     else
         SceneRenderer::paintEmpty(painter, view_, size, options_);
     if (world_) drawReferenceOverlay(painter, view_, reference_, options_);
+    MeasureRenderer::paint(painter, view_, size, measurements_, options_);
     drawOverlay(painter, view_, overlay_, options_);
     drawHud(painter, hudText_, options_);
 }
@@ -353,6 +354,11 @@ void SceneView::setRenderOptions(const RenderOptions& options) {
     surface_->update();
 }
 
+void SceneView::setMeasurements(const MeasureOverlay& measurements) {
+    measurements_ = measurements;
+    surface_->update();
+}
+
 void SceneView::setOverlay(const ToolOverlay& overlay) {
     overlay_ = overlay;
     surface_->update();
@@ -386,6 +392,7 @@ QImage SceneView::renderImage(QSize size) const {
         SceneRenderer::paint(painter, v, size, *world_, options, &trails_);
     else
         SceneRenderer::paintEmpty(painter, v, size, options);
+    MeasureRenderer::paint(painter, v, size, measurements_, options);
     return image;
 }
 

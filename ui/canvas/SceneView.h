@@ -8,6 +8,7 @@
 // and the one that runs under the offscreen and minimal platforms and on software GL
 // (llvmpipe), and a multisampled QOpenGLWidget used only where a hardware GL is present.
 
+#include "ui/canvas/MeasureOverlay.h"
 #include "ui/canvas/ReferenceOverlay.h"
 #include "ui/canvas/SceneRenderer.h"
 #include "ui/canvas/ViewTransform.h"
@@ -83,11 +84,15 @@ public:
     void setReferenceOverlay(const ReferenceOverlay& overlay);
     const ReferenceOverlay& referenceOverlay() const { return reference_; }
     const ToolOverlay& overlay() const { return overlay_; }
+    // The rulers, protractors and free-body view (drawn over the scene, under the tool's
+    // preview; in renderImage too: they are part of the picture).
+    void setMeasurements(const MeasureOverlay& measurements);
+    const MeasureOverlay& measurements() const { return measurements_; }
     void setHudText(const QString& text);
     QString hudText() const { return hudText_; }
 
-    // The scene alone (no overlay, no HUD) framed as on screen, at another size: a larger
-    // picture is the same view in more pixels, lines and text thickened to match.
+    // The scene and its measurements (no tool preview, no HUD) framed as on screen, at another
+    // size: a larger picture is the same view in more pixels, lines and text thickened to match.
     QImage renderImage(QSize size) const;
     PickResult pick(QPointF widgetPoint, double tolerancePixels = 6.0) const;
 
@@ -146,6 +151,7 @@ private:
     TrailHistory trails_;
     ToolOverlay overlay_;
     ReferenceOverlay reference_;
+    MeasureOverlay measurements_;
     QString hudText_;
 
     Qt::MouseButton panButton_ = Qt::NoButton;

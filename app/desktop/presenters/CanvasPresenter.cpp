@@ -49,12 +49,16 @@ CanvasPresenter::CanvasPresenter(ui::SceneView& view, CanvasTools& tools, Docume
 
 void CanvasPresenter::createActions(QWidget& window) {
     auto* group = new QActionGroup(this);
-    static const char* const names[] = {"toolSelect", "toolParticle", "toolSpring",  "toolCloth",
-                                        "toolBox",    "toolDisk",     "toolPolygon", "toolPlane",
-                                        "toolPin",    "toolJoint"};
+    static const char* const names[] = {
+        "toolSelect",  "toolParticle", "toolSpring", "toolCloth", "toolBox",   "toolDisk",
+        "toolPolygon", "toolPlane",    "toolPin",    "toolJoint", "toolRuler", "toolProtractor"};
+    // The drawing tools on the digits, the measuring ones on their initials.
+    static const int keys[] = {Qt::Key_1, Qt::Key_2, Qt::Key_3, Qt::Key_4, Qt::Key_5, Qt::Key_6,
+                               Qt::Key_7, Qt::Key_8, Qt::Key_9, Qt::Key_0, Qt::Key_R, Qt::Key_P};
+    static_assert(std::size(names) == std::size(keys));
     for (int i = 0; i < static_cast<int>(std::size(names)); ++i) {  // CanvasTools::Tool's order
         const auto tool = static_cast<CanvasTools::Tool>(i);
-        const QKeySequence key(i < 9 ? Qt::Key_1 + i : Qt::Key_0);
+        const QKeySequence key(keys[i]);
         QAction* a = addWindowAction(window, names[i], CanvasTools::toolName(tool), key);
         connect(a, &QAction::triggered, this, [this, tool] { tools_.setTool(tool); });
         a->setCheckable(true);

@@ -31,8 +31,8 @@ public:
                     SimulationController& controller, QObject* parent = nullptr);
 
     void refresh() override;
-    // The canvas's actions: the tools (keys 1 to 7), Fit Scene, the drawing options (trails,
-    // velocity arrows, labels, grid) and the picture export.
+    // The canvas's actions: the tools (keys 1 to 0, R and P), Fit Scene, the drawing options
+    // (trails, velocity arrows, labels, grid) and the picture export.
     void createActions(QWidget& window);
     QList<QAction*> toolActions() const { return toolActions_; }
     // The polygon tool's number of sides, for the tool bar (made by createActions).
