@@ -197,6 +197,8 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
     }
     shifted_.resize(2 * rows_.size());
     bounces_.resize(2 * rows_.size());
+    checkedAt_.resize(rows_.size());
+    changedAt_.resize(bodies_.size() + 1);
     colourRows();
 }
 
@@ -487,14 +489,24 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
     for (const int i : bouncing_) {
         shifted_[2 * i] = shifted_[2 * i + 1] = 0;
         bounces_[2 * i] = bounces_[2 * i + 1] = 0;
+        checkedAt_[i] = 0;
     }
     const int world = static_cast<int>(bodies_.size());
+    // A row whose bodies took no impulse since it was last looked at would decide as it did
+    // then (its separation and smooth change are fixed for the call): it is skipped, so the
+    // later passes cost what changes, not every row again.
+    changedAt_.resize(bodies_.size() + 1);  // no allocation once warm
+    std::fill(changedAt_.begin(), changedAt_.end(), 0u);
+    std::uint32_t clock = 1;
     BodyState* state = state_.data();
     bool moved = false;
     for (int pass = 0; pass < kMaxCollisionPasses; ++pass) {
         bool any = false;
         for (const int i : bouncing_) {
             Row& c = rows_[i];
+            if (pass > 0 && changedAt_[c.a] <= checkedAt_[i] && changedAt_[c.b] <= checkedAt_[i])
+                continue;
+            checkedAt_[i] = clock;
             const double ownRestitution = constraints_[i].restitution;
             BodyState& a = state[c.a];
             BodyState& b = state[c.b];
@@ -523,6 +535,9 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
                 applyImpulse(b, p.rBx, p.rBy, lambda * c.nx, lambda * c.ny);
                 any = true;
                 ++bounces_[2 * i + k];
+                ++clock;
+                if (c.a != world) changedAt_[c.a] = clock;
+                if (c.b != world) changedAt_[c.b] = clock;
                 // Time of impact: the bodies meet s/|v_n| into the sub-step and separate for the
                 // rest of it, so they end (1 + e)·s closer than moving by h·v_new from the
                 // sub-step's start implies; without this shift every rebound would start early
