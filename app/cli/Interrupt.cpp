@@ -4,6 +4,7 @@
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <signal.h>
+#include <time.h>
 #define PHASEBOX_POSIX_SIGNALS 1
 #endif
 
@@ -16,7 +17,34 @@ namespace {
 std::atomic<bool> gInterrupted{false};
 static_assert(std::atomic<bool>::is_always_lock_free);
 
-extern "C" void onInterrupt(int) {
+#if PHASEBOX_POSIX_SIGNALS
+// When the first signal came (CLOCK_MONOTONIC, ns): a second one within kRepeatNs is the same
+// request delivered twice (GNU timeout signals the child and then its process group), a later
+// one is the user's second Ctrl-C and ends the program at once.
+std::atomic<long long> gFirstNs{0};
+static_assert(std::atomic<long long>::is_always_lock_free);
+constexpr long long kRepeatNs = 500'000'000;
+
+long long monotonicNs() {
+    timespec ts{};
+    ::clock_gettime(CLOCK_MONOTONIC, &ts);  // async-signal-safe (POSIX)
+    return static_cast<long long>(ts.tv_sec) * 1'000'000'000LL + ts.tv_nsec;
+}
+#endif
+
+extern "C" void onInterrupt(int signal) {
+#if PHASEBOX_POSIX_SIGNALS
+    const long long now = monotonicNs();
+    if (gInterrupted.load(std::memory_order_relaxed)) {
+        if (now - gFirstNs.load(std::memory_order_relaxed) < kRepeatNs) return;
+        ::signal(signal, SIG_DFL);
+        ::raise(signal);
+        return;
+    }
+    gFirstNs.store(now, std::memory_order_relaxed);
+#else
+    (void)signal;
+#endif
     gInterrupted.store(true, std::memory_order_relaxed);
 }
 
@@ -33,9 +61,10 @@ InterruptGuard::InterruptGuard() {
     struct sigaction action {};
     action.sa_handler = onInterrupt;
     sigemptyset(&action.sa_mask);
-    // One-shot: the first signal asks for a clean stop, a second one ends the program at once.
-    // SA_RESTART: system calls under way carry on (not every library retries after EINTR).
-    action.sa_flags = SA_RESETHAND | SA_RESTART;
+    // The first signal asks for a clean stop; a second one half a second later or more ends
+    // the program at once (onInterrupt). SA_RESTART: system calls under way carry on (not every
+    // library retries after EINTR).
+    action.sa_flags = SA_RESTART;
     ::sigaction(SIGINT, &action, &gPreviousInt);
     ::sigaction(SIGTERM, &action, &gPreviousTerm);
 #else

@@ -1,6 +1,7 @@
 // phasebox-cli entry point: a QCoreApplication, or a QApplication when a plot is written
-// (Qt Charts draws through widgets). With no display the offscreen platform is used, so plots
-// work on a headless machine.
+// (Qt Charts draws through widgets) on the offscreen platform whatever the environment says: the
+// program shows no window, and a DISPLAY that cannot be reached (or a platform plugin that is
+// missing) would otherwise abort a plot command.
 //
 // Standard output goes through OutputFile like every file the program writes, so that a
 // failed write (a full disk, /dev/full, a file-size limit) is noticed and reported (exit 3)
@@ -13,6 +14,7 @@
 #include <QApplication>
 #include <QCoreApplication>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -24,17 +26,26 @@ bool gShowQtMessages = false;
 // Qt warns about things a command-line user cannot act on (XDG_RUNTIME_DIR, the offscreen
 // platform's missing features); a script reading standard error must see only our lines.
 void qtMessage(QtMsgType type, const QMessageLogContext&, const QString& message) {
+    // Every line carries the prefix: Qt's messages may span several.
+    QString text = message;
     if (type == QtFatalMsg) {
-        std::fprintf(stderr, "phasebox-cli: error: %s\n", qPrintable(message));
+        text.replace(QLatin1Char('\n'), QStringLiteral("\nphasebox-cli: error: "));
+        std::fprintf(stderr, "phasebox-cli: error: %s\n", qPrintable(text));
         std::abort();
     }
     if (!gShowQtMessages) return;
-    std::fprintf(stderr, "phasebox-cli: qt: %s\n", qPrintable(message));
+    text.replace(QLatin1Char('\n'), QStringLiteral("\nphasebox-cli: qt: "));
+    std::fprintf(stderr, "phasebox-cli: qt: %s\n", qPrintable(text));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+#if defined(__unix__) || defined(__APPLE__)
+    // A reader that goes away (`| head`) makes a write fail with EPIPE, reported as a failed
+    // write (exit 3), instead of killing the program silently with SIGPIPE.
+    std::signal(SIGPIPE, SIG_IGN);
+#endif
     gShowQtMessages = !qEnvironmentVariableIsEmpty("PHASEBOX_QT_MESSAGES");
     qInstallMessageHandler(qtMessage);
 
@@ -43,10 +54,7 @@ int main(int argc, char** argv) {
 
     std::unique_ptr<QCoreApplication> app;
     if (phasebox::cli::needsGui(arguments)) {
-        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") &&
-            qEnvironmentVariableIsEmpty("DISPLAY") &&
-            qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY"))
-            qputenv("QT_QPA_PLATFORM", "offscreen");
+        qputenv("QT_QPA_PLATFORM", "offscreen");
         app = std::make_unique<QApplication>(argc, argv);
     } else {
         app = std::make_unique<QCoreApplication>(argc, argv);

@@ -683,8 +683,12 @@ bool World::failSubstep(double t, bool integratorFailed, int next) {
     Divergence d;
     d.time = t;
     d.objectId = firstNonFinite(q_[next], u_[next]);
-    d.what = integratorFailed ? std::string(integrator_->info().name) + " failed"
-                              : std::string("a non-finite value");
+    const IntegratorInfo& info = integrator_->info();
+    d.what = !integratorFailed ? std::string("a non-finite value")
+             : info.adaptive   ? std::string(info.name) +
+                                   " could not meet its tolerance within its budget of internal "
+                                   "steps: the scene is too stiff for it"
+                             : std::string(info.name) + " failed";
     current_ = next;  // restore() reads the frame start from the right place
     if (guard_.onNonFinite() == DivergenceGuard::Verdict::RestoreRunawayStart)
         restore(guard_.runawayStart(), false);

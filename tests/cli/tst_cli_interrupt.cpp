@@ -40,10 +40,11 @@ struct Stopped {
     QByteArray out, err;
 };
 
-// Starts the CLI, waits until ready() says it has produced output (polled), sends signal and
+// Starts the CLI, waits until ready() says it has produced output (polled), sends signal
+// (`times` times at once, as GNU timeout does to the child and then its process group) and
 // waits for it to end.
 template <typename Ready>
-Stopped interrupt(const QStringList& args, int signal, Ready ready) {
+Stopped interrupt(const QStringList& args, int signal, Ready ready, int times = 1) {
     QProcess p;
     p.start(QStringLiteral(PHASEBOX_CLI), args);
     Stopped s;
@@ -54,7 +55,7 @@ Stopped interrupt(const QStringList& args, int signal, Ready ready) {
         p.waitForReadyRead(50);
     if (p.state() != QProcess::Running) return s;  // it ended on its own: not interrupted
     QTest::qWait(300);                             // into the run proper
-    ::kill(static_cast<pid_t>(p.processId()), signal);
+    for (int i = 0; i < times; ++i) ::kill(static_cast<pid_t>(p.processId()), signal);
     if (!p.waitForFinished(60000)) {
         p.kill();
         p.waitForFinished();
@@ -101,19 +102,24 @@ private slots:
     // A billion-step run to a file: stopped by SIGINT once the CSV's temporary copy grows.
     void sigintDuringRunWritesResultsSoFar_data() {
         QTest::addColumn<int>("signal");
-        QTest::newRow("SIGINT") << SIGINT;
-        QTest::newRow("SIGTERM") << SIGTERM;
+        QTest::addColumn<int>("times");
+        QTest::newRow("SIGINT") << SIGINT << 1;
+        QTest::newRow("SIGTERM") << SIGTERM << 1;
+        // One request delivered twice (timeout -s INT): still a clean stop, not "end now".
+        QTest::newRow("SIGINT twice at once") << SIGINT << 2;
     }
 
     void sigintDuringRunWritesResultsSoFar() {
         QFETCH(int, signal);
-        const QString csv = dir_.filePath(QStringLiteral("run-%1.csv").arg(signal));
+        QFETCH(int, times);
+        const QString csv = dir_.filePath(QStringLiteral("run-%1-%2.csv").arg(signal).arg(times));
         // --every 1000: a row per simulated second. The JSON on standard output comes at the
         // end only, so the run is known to be under way when its wall clock passes a second.
         QElapsedTimer started;
         started.start();
-        const Stopped s = interrupt({"run", ball_, "--csv", csv, "--every", "1000", "--json"},
-                                    signal, [&](QProcess&) { return started.elapsed() > 1500; });
+        const Stopped s = interrupt(
+            {"run", ball_, "--csv", csv, "--every", "1000", "--json"}, signal,
+            [&](QProcess&) { return started.elapsed() > 1500; }, times);
         QCOMPARE(s.status, 130);
         QCOMPARE(QString::fromUtf8(s.err).left(33),
                  QStringLiteral("phasebox-cli: interrupted at t = "));

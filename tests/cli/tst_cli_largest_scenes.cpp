@@ -20,15 +20,22 @@ using phasebox::testing::MeasuredResult;
 constexpr double kSecondsBound = 20.0;
 constexpr long long kMemoryBoundKb = 3LL * 1024 * 1024;
 
-QByteArray cloth(int nx, int ny, const char* integrator) {
+// stiffness 0: the format's default springs; else every spring of the cloth at that value.
+QByteArray cloth(int nx, int ny, const char* integrator, double stiffness = 0.0) {
+    const QString springs =
+        stiffness > 0.0
+            ? QStringLiteral(R"("stiffness": {"structural": %1, "shear": %1, "bend": %1},)")
+                  .arg(stiffness, 0, 'g', 17)
+            : QString();
     return QStringLiteral(R"({"format": "phasebox-scene", "version": 1, "name": "largest cloth",
   "simulation": {"integrator": "%1", "dt": 0.016666666666666666},
   "effects": {"gravity": {}},
-  "cloths": [{"id": "c", "origin": [0, 0], "size": [10, 10], "resolution": [%2, %3],
+  "cloths": [{"id": "c", "origin": [0, 0], "size": [10, 10], "resolution": [%2, %3], %4
               "pinned": "top"}]})")
         .arg(QLatin1String(integrator))
         .arg(nx)
         .arg(ny)
+        .arg(springs)
         .toUtf8();
 }
 
@@ -92,6 +99,22 @@ private slots:
             // 0, or 1 if the method diverges at once (then the advisor runs too): within the
             // bounds either way.
             QVERIFY2(step.status == 0 || step.status == 1, qPrintable(describe(step)));
+            QVERIFY2(step.seconds < kSecondsBound && step.maxRssKb < kMemoryBoundKb,
+                     qPrintable(QLatin1String(integrator) + QLatin1String(": ") + describe(step)));
+        }
+    }
+
+    // The same cloth at the largest stiffness the format takes: the adaptive methods would
+    // shrink their steps for minutes (rk45 had not finished one step after 568 s); they stop
+    // at a budget of internal steps and say the scene is too stiff for them.
+    void stiffestLargestClothStopsAdaptiveMethodsWithinBounds() {
+        const QString scene = phasebox::testing::writeFile(dir_, "cloth128-stiff.json",
+                                                           cloth(128, 128, "implicit_euler", 1e12));
+        for (const char* integrator : {"adaptive_euler", "rk45"}) {
+            const MeasuredResult step = measure({"run", scene, "--duration", "0.016666666666666666",
+                                                 "--integrator", QString::fromLatin1(integrator)});
+            QVERIFY2(step.status == 1, qPrintable(describe(step)));
+            QVERIFY2(step.err.contains("could not meet its tolerance"), qPrintable(describe(step)));
             QVERIFY2(step.seconds < kSecondsBound && step.maxRssKb < kMemoryBoundKb,
                      qPrintable(QLatin1String(integrator) + QLatin1String(": ") + describe(step)));
         }

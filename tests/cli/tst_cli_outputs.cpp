@@ -282,6 +282,38 @@ private slots:
                            "device"));
     }
 
+    // A reader that goes away (`| head`): a failed write (exit 3, with the reason), not a
+    // silent death by SIGPIPE (exit 141).
+    void standardOutputToAClosedPipeExitsThree() {
+        QProcess p;
+        p.start(QStringLiteral("bash"),
+                {"-c", QStringLiteral("'%1' run '%2' --duration 100 --csv - | head -c 10 > "
+                                      "/dev/null; exit ${PIPESTATUS[0]}")
+                           .arg(QStringLiteral(PHASEBOX_CLI), ball_)});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 3);
+        QCOMPARE(QString::fromUtf8(p.readAllStandardError()).trimmed(),
+                 QStringLiteral("phasebox-cli: error: cannot write to standard output: Broken "
+                                "pipe"));
+    }
+
+    // Plots need no display: a DISPLAY that cannot be reached does not abort them.
+    void plotWithAnUnreachableDisplayIsWritten() {
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+        env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+        env.insert(QStringLiteral("DISPLAY"), QStringLiteral(":99"));
+        p.setProcessEnvironment(env);
+        const QString png = dir_.filePath("no-display.png");
+        p.start(QStringLiteral(PHASEBOX_CLI), {"run", ball_, "--plot-energy", png});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 0);
+        QCOMPARE(strayStderrLine(p.readAllStandardError()), QString());
+        QVERIFY(QFileInfo(png).size() > 0);
+    }
+
     void standardOutputPastFileSizeLimitExitsThree() {
         QTemporaryDir dir;
         const QString out = dir.filePath("stdout.csv");

@@ -2,7 +2,6 @@
 
 #include <QBuffer>
 #include <QChart>
-#include <QFileInfo>
 #include <QGraphicsScene>
 #include <QImage>
 #include <QLegend>
@@ -10,7 +9,6 @@
 #include <QLogValueAxis>
 #include <QPainter>
 #include <QPen>
-#include <QSaveFile>
 #include <QSvgGenerator>
 #include <QValueAxis>
 
@@ -296,23 +294,6 @@ QByteArray renderChart(QChart* chart, const QString& format, QSize size) {
     }
     scene.removeItem(chart);
     return buffer.data();
-}
-
-bool exportChart(QChart* chart, const QString& path, QSize size, QString* error) {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix != QLatin1String("png") && suffix != QLatin1String("svg")) {
-        if (error) *error = QStringLiteral("%1: the plot must be a .png or .svg file").arg(path);
-        return false;
-    }
-    const QByteArray bytes = renderChart(chart, suffix, size);
-    QSaveFile file(path);
-    // Unbuffered: a short write (full disk, file-size limit) shows in write()'s count, which
-    // a buffered QSaveFile would only cut short at commit() and then report as success.
-    const bool ok = !bytes.isEmpty() && file.open(QIODevice::WriteOnly | QIODevice::Unbuffered) &&
-                    file.write(bytes) == bytes.size() && file.commit();
-    if (!ok && error)
-        *error = QStringLiteral("%1: cannot write the plot: %2").arg(path, file.errorString());
-    return ok;
 }
 
 }  // namespace phasebox::ui

@@ -65,11 +65,6 @@ QChart* createErrorChart(std::span<const QPointF> samples, const QString& title)
 // app writes them through its one file writer (app/io/OutputFile, app/io/ChartFile).
 QByteArray renderChart(QChart* chart, const QString& format, QSize size);
 
-// Writes a chart as PNG or SVG, chosen by the file's extension (.png, .svg), through
-// QSaveFile. Returns false and sets *error on failure. (The app's exports use
-// app/io/ChartFile's writeChart, which also writes devices and FIFOs in place.)
-bool exportChart(QChart* chart, const QString& path, QSize size, QString* error);
-
 // The series colours, shared with the app's legends.
 // 0 kinetic, 1 potential, 2 total, 3 work_nc, 4 drift, 5 correction.
 QColor energyColor(int series);

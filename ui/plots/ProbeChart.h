@@ -1,7 +1,7 @@
 #pragma once
 // The instruments' graphs: one probe against time or against another probe, as a Qt Chart with
 // readable ticks. The same chart serves the Instruments dock and the graphs' PNG and SVG export
-// (ui::exportChart), so a saved graph is the graph on screen.
+// (ui::renderChart, written by app/io/ChartFile), so a saved graph is the graph on screen.
 //
 // Ticks fall on whole multiples of a step of 1, 2 or 5 × 10^k (QValueAxis::TicksDynamic), with
 // as many decimals as the step needs: "0, 0.5, 1, 1.5" rather than Qt's default division of the
