@@ -647,6 +647,13 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
                    "the scene has " + std::to_string(particleCount) +
                        " particles (cloth nodes included); at most " +
                        std::to_string(SceneLimits::kMaxParticles) + " are allowed");
+    const long long charged = std::count_if(scene.particles.begin(), scene.particles.end(),
+                                            [](const ParticleDesc& p) { return p.charge != 0.0; });
+    if (charged > SceneLimits::kMaxChargedParticles)
+        check.fail(std::string(key::particles),
+                   "the scene has " + std::to_string(charged) + " charged particles; at most " +
+                       std::to_string(SceneLimits::kMaxChargedParticles) +
+                       " are allowed (Coulomb's law acts between every pair of them)");
     if (static_cast<long long>(scene.boxes.size() + scene.disks.size() + scene.polygons.size()) >
         SceneLimits::kMaxBoxes)
         check.fail(std::string(!scene.polygons.empty() ? key::polygons

@@ -293,6 +293,9 @@ struct SceneLimits {
     // with the nodes, and an explicit adaptive method's steps with its stiffest mode too
     // (adaptive_euler's first step of a 256 x 256 cloth took 81 s, of 128 x 128 4.8 s).
     static constexpr long long kMaxClothNodes = 16'384;
+    // Particles with a charge: Coulomb's law runs over every pair (2e8 pairs at the limit, 3.2 s
+    // a step on two cores; 50,000 took 20 s and the particle limit's 250,000 would take minutes).
+    static constexpr long long kMaxChargedParticles = 20'000;
     static constexpr long long kMaxBoxes = 25'000;  // rigid bodies: boxes, disks, polygons
     static constexpr int kMaxPolygonVertices = 16;
     static constexpr long long kMaxSprings = 250'000;

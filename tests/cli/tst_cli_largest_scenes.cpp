@@ -120,6 +120,35 @@ private slots:
         }
     }
 
+    // Coulomb's law over every pair: 20,000 charged particles step within the bounds, one more
+    // is refused at load naming the limit (250,000 would have run for minutes).
+    void chargedParticlesAreBounded() {
+        const auto charged = [](int count) {
+            QByteArray text = R"({"format": "phasebox-scene", "version": 1, "name": "charges",
+  "simulation": {"dt": 0.016666666666666666}, "particles": [)";
+            for (int i = 0; i < count; ++i)
+                text += QStringLiteral(R"(%1{"position": [%2, %3], "radius": 0, "charge": 1e-9})")
+                            .arg(i ? ",\n" : "\n")
+                            .arg(0.1 * (i % 200))
+                            .arg(0.1 * (i / 200))
+                            .toLatin1();
+            return text + "]}";
+        };
+        const QString ok = phasebox::testing::writeFile(dir_, "charged.json", charged(20000));
+        const MeasuredResult step = measure({"run", ok, "--duration", "0.016666666666666666"});
+        QVERIFY2(step.status == 0, qPrintable(describe(step)));
+        QVERIFY2(step.seconds < kSecondsBound && step.maxRssKb < kMemoryBoundKb,
+                 qPrintable(describe(step)));
+        const QString over =
+            phasebox::testing::writeFile(dir_, "charged-over.json", charged(20001));
+        const MeasuredResult refused = measure({"info", over});
+        QCOMPARE(refused.status, 2);
+        QVERIFY2(refused.err.contains("the scene has 20001 charged particles; at most 20000 are "
+                                      "allowed"),
+                 qPrintable(describe(refused)));
+        QVERIFY(refused.seconds < 5.0);
+    }
+
     // One node row past the limit, and the issue's 1000 x 1000: refused at load, at once.
     void clothPastTheLimitIsRefusedNamingIt_data() {
         QTest::addColumn<int>("nx");
