@@ -792,6 +792,14 @@ void World::resetProfile() {
 // Expensive invariants (PHASEBOX_EXPENSIVE_CHECKS): after the stages that end a step, the
 // layout is consistent with the objects, the state kept is finite, and the ledger balances
 // when recomputed from scratch (which checks the summary the integrator fused into its pass).
+bool World::expensiveChecksEnabled() {
+#if PHASEBOX_EXPENSIVE_CHECKS
+    return true;
+#else
+    return false;
+#endif
+}
+
 void World::checkInvariants([[maybe_unused]] StepStage after) const {
 #if PHASEBOX_EXPENSIVE_CHECKS
     auto fail = [](const char* what) {
