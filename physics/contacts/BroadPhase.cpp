@@ -79,6 +79,37 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
         nearCount_.assign(boxes.size(), 0);
     }
     const int axis = axis_, cross = 1 - axis_;
+    // The positions in the order of the boxes that are not kApart: a kApart box (a particle
+    // when particles do not collide) looks only at those, so that many particles piled at one
+    // point beside a single rigid body cost a linear sweep, not a visit of every pair.
+    otherAt_.clear();
+    if (capped)
+        for (int k = 0; k < count; ++k)
+            if ((*cap.limited)[order_[k]] != PairCap::kApart) otherAt_.push_back(k);
+    std::size_t nextOther = 0;  // the first entry of otherAt_ after the current position
+    // Whether a pair of limited box i and box j is kept (and counted against their caps).
+    const auto admit = [&](int i, int j, const Aabb& box, const Aabb& o) {
+        const unsigned char kindJ = (*cap.limited)[j];
+        if (kindJ == PairCap::kFree) return true;
+        if (kindJ == PairCap::kApart && (*cap.limited)[i] == PairCap::kApart) return false;
+        // Overlapping shapes (centres closer than the sum of the sizes; the boxes are grown
+        // symmetrically, so their centres are the shapes') and near ones have caps of their
+        // own, so that the overlapping ones of a pile cannot use up the places of a contact
+        // about to be made. Each side counts the other when the other is at least half its
+        // size.
+        const double sizeI = (*cap.size)[i], sizeJ = (*cap.size)[j];
+        const Vec2 twiceOffset = (o.lower + o.upper) - (box.lower + box.upper);
+        const double twiceReach = 2.0 * (sizeI + sizeJ);
+        const bool overlapping = twiceOffset.squaredNorm() < twiceReach * twiceReach;
+        std::vector<int>& taken = overlapping ? pairCount_ : nearCount_;
+        const int limit = overlapping ? cap.perBox : cap.nearPerBox;
+        const bool countsForI = sizeJ >= 0.5 * sizeI;
+        const bool countsForJ = sizeI >= 0.5 * sizeJ;
+        if ((countsForI && taken[i] >= limit) || (countsForJ && taken[j] >= limit)) return false;
+        taken[i] += countsForI;
+        taken[j] += countsForJ;
+        return true;
+    };
 
     // The boxes that overlap box i along the axis and start no earlier than it are those that
     // follow it in the order up to the first one starting beyond its upper bound; the other
@@ -89,38 +120,64 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
         const double upper = box.upper[axis];
         const unsigned char kindI = capped ? (*cap.limited)[i] : PairCap::kFree;
         const bool limitedI = kindI != PairCap::kFree;
-        const double sizeI = limitedI ? (*cap.size)[i] : 0.0;
+        while (nextOther < otherAt_.size() && otherAt_[nextOther] <= k) ++nextOther;
+        if (kindI == PairCap::kApart) {
+            std::size_t m = nextOther;
+            for (; m < otherAt_.size(); ++m) {
+                const int j = order_[otherAt_[m]];
+                const Aabb& o = boxes[j];
+                if (o.lower[axis] > upper) break;
+                if (o.lower[cross] > box.upper[cross] || box.lower[cross] > o.upper[cross])
+                    continue;
+                if (!admit(i, j, box, o)) continue;
+                pairs.emplace_back(std::min(i, j), std::max(i, j));
+            }
+            candidatesVisited_ += static_cast<long long>(m - nextOther);
+            continue;
+        }
         int l = k + 1;
         for (; l < count; ++l) {
             const int j = order_[l];
             const Aabb& o = boxes[j];
             if (o.lower[axis] > upper) break;
             if (o.lower[cross] > box.upper[cross] || box.lower[cross] > o.upper[cross]) continue;
-            if (limitedI && (*cap.limited)[j] != PairCap::kFree) {
-                if (kindI == PairCap::kApart && (*cap.limited)[j] == PairCap::kApart) continue;
-                // Overlapping shapes (centres closer than the sum of the sizes; the boxes are
-                // grown symmetrically, so their centres are the shapes') and near ones have
-                // caps of their own, so that the overlapping ones of a pile cannot use up the
-                // places of a contact about to be made. Each side counts the other when the
-                // other is at least half its size.
-                const double sizeJ = (*cap.size)[j];
-                const Vec2 twiceOffset = (o.lower + o.upper) - (box.lower + box.upper);
-                const double twiceReach = 2.0 * (sizeI + sizeJ);
-                const bool overlapping = twiceOffset.squaredNorm() < twiceReach * twiceReach;
-                std::vector<int>& taken = overlapping ? pairCount_ : nearCount_;
-                const int limit = overlapping ? cap.perBox : cap.nearPerBox;
-                const bool countsForI = sizeJ >= 0.5 * sizeI;
-                const bool countsForJ = sizeI >= 0.5 * sizeJ;
-                if ((countsForI && taken[i] >= limit) || (countsForJ && taken[j] >= limit))
-                    continue;
-                taken[i] += countsForI;
-                taken[j] += countsForJ;
-            }
+            if (limitedI && !admit(i, j, box, o)) continue;
             pairs.emplace_back(std::min(i, j), std::max(i, j));
         }
         candidatesVisited_ += l - (k + 1);
     }
-    std::sort(pairs.begin(), pairs.end());
+    sortPairs(pairs, count);
+}
+
+void BroadPhase::sortPairs(std::vector<std::pair<int, int>>& pairs, int count) {
+    // By (i, j): a counting sort by i, then each box's few partners by j (a comparison sort
+    // of the whole list was a fifth of the broad phase's time in a dense pile).
+    firstOf_.assign(count + 1, 0);
+    for (const auto& pair : pairs) ++firstOf_[pair.first + 1];
+    std::partial_sum(firstOf_.begin(), firstOf_.end(), firstOf_.begin());
+    sorted_.resize(pairs.size());
+    for (const auto& pair : pairs) sorted_[firstOf_[pair.first]++] = pair;
+    // firstOf_[i] is now where box i's pairs end, and firstOf_[i - 1] where they start.
+    int start = 0;
+    for (int i = 0; i < count; ++i) {
+        const int end = firstOf_[i];
+        if (end - start > 32) {  // a large body among many small ones
+            std::sort(sorted_.begin() + start, sorted_.begin() + end);
+            start = end;
+            continue;
+        }
+        for (int k = start + 1; k < end; ++k) {
+            const auto pair = sorted_[k];
+            int slot = k;
+            while (slot > start && sorted_[slot - 1].second > pair.second) {
+                sorted_[slot] = sorted_[slot - 1];
+                --slot;
+            }
+            sorted_[slot] = pair;
+        }
+        start = end;
+    }
+    pairs.swap(sorted_);
 }
 
 }  // namespace phasebox

@@ -57,10 +57,14 @@ public:
 
 private:
     void sortOrder(const std::vector<Aabb>& boxes, bool fresh);
+    void sortPairs(std::vector<std::pair<int, int>>& pairs, int count);
 
     std::vector<int> order_;      // indices sorted by lower bound on axis_, kept between calls
     std::vector<int> pairCount_;  // per box: overlapping capped partners taken in this call
     std::vector<int> nearCount_;  // per box: near capped partners taken in this call
+    std::vector<int> otherAt_;    // positions in order_ of the boxes not kApart (this call)
+    std::vector<int> firstOf_;    // per box + 1: where its pairs start (sorting)
+    std::vector<std::pair<int, int>> sorted_;  // the pairs by (i, j), before the swap
     int axis_ = 0;
     long long candidatesVisited_ = 0;
 };

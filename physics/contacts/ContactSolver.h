@@ -258,10 +258,19 @@ private:
     std::vector<int> overflow_;       // rows no colour could take, solved after the wide ones
     std::vector<std::uint64_t> colourBits_;  // per colour, a bit per body: taken
     std::vector<int> colourCount_;           // rows per colour, then the first wide row
-    std::vector<int> bouncing_;              // rows with restitution > 0
+    // A row with restitution, with what its bounce passes read (fixed for the step): the
+    // passes then touch this array, the row and the body states only.
+    struct BounceRow {
+        int row;
+        int a, b;  // the row's bodies (the later passes' skip test reads only this array)
+        double restitution;
+        double smoothChange[2];   // smoothNormalChange of each point, over the whole step
+        bool isolated;            // neither body touches anything else (see bounce())
+        std::uint32_t checkedAt;  // bounce()'s clock when last looked at
+    };
+    std::vector<BounceRow> bouncing_;     // rows with restitution > 0
     std::vector<unsigned char> shifted_;  // per row point (2 per row): moved to its time of impact
     std::vector<unsigned char> bounces_;  // per row point: bounces in this inner sub-step
-    std::vector<std::uint32_t> checkedAt_;  // per row: bounce()'s clock when last looked at
     std::vector<std::uint32_t> changedAt_;  // per body (+ the world): clock of its last impulse
     // stackSubsteps: per body (+ the static world) the predicted sag, and per contact that
     // carries load which body rests on which and how far the upper one sinks into the lower.

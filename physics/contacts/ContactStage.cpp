@@ -198,6 +198,7 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
     const int count = static_cast<int>(colliders_.size());
     std::vector<double>& sweep = sweep_;
     sweep.assign(count, 0.0);
+    motion_.assign(count, Motion{});
     for (int i = 0; i < count; ++i) {
         const Collider& c = colliders_[i];
         bounds_[i] = c.kind == Collider::Kind::Disk      ? boundingBox(disks_[i])
@@ -212,11 +213,14 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
                 return std::max(std::abs(u[k]), std::abs(u[k] + extrapolate * (uNext[k] - u[k])));
             };
             double speed = std::hypot(reach(c.dof), reach(c.dof + 1));
+            Motion& motion = motion_[i];
+            motion.start = u.segment<2>(c.dof);
+            motion.end = motion.start + extrapolate * (uNext.segment<2>(c.dof) - motion.start);
             if (c.kind == Collider::Kind::Box)
-                speed += reach(c.dof + 2) * boxes_[i].halfExtents.norm();
+                motion.turn = reach(c.dof + 2) * boxes_[i].halfExtents.norm() * dt;
             if (c.kind == Collider::Kind::Polygon)
-                speed += reach(c.dof + 2) * 0.5 * bodies.boxes[c.object].size.x();
-            sweep[i] = speed * dt;
+                motion.turn = reach(c.dof + 2) * 0.5 * bodies.boxes[c.object].size.x() * dt;
+            sweep[i] = speed * dt + motion.turn;
         }
         const Vec2 grow = Vec2::Constant(settings.speculativeDistance + sweep[i]);
         bounds_[i].lower -= grow;
@@ -319,7 +323,16 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
         return (static_cast<std::uint64_t>(first) << 32) | static_cast<std::uint64_t>(second);
     };
     for (const auto& [i, j] : pairs_) {
-        const double margin = settings.speculativeDistance + sweep[i] + sweep[j];
+        // How much closer the two can come in this step: their relative velocity (largest at
+        // the step's start or end, the change being linear in between) and their turns, not
+        // the sum of their speeds. Bodies moving together (a pile spreading out, boxes falling
+        // side by side) need no speculative contact with each other.
+        const Motion& a = motion_[i];
+        const Motion& b = motion_[j];
+        const double closing =
+            std::sqrt(std::max((b.start - a.start).squaredNorm(), (b.end - a.end).squaredNorm()));
+        const double margin = settings.speculativeDistance +
+                              std::min(sweep[i] + sweep[j], closing * dt + a.turn + b.turn);
         if (narrowPhase(bodies, i, j, margin, m, pair))
             addConstraint(pairKey(pair.a, pair.b), pair.a, pair.b, m, pair.friction,
                           pair.restitution, q);

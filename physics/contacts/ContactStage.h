@@ -126,6 +126,13 @@ private:
     std::vector<OrientedPolygon> polygons_;  // per collider, when a polygon (vertices: its body's)
     std::vector<Aabb> bounds_;
     std::vector<double> sweep_;  // per collider: how far it can move in this step
+    // Per collider, for a pair's margin: its velocity at the step's start and at its end (the
+    // smooth forces' change extrapolated), and how far a point of it can move by turning.
+    struct Motion {
+        Vec2 start = Vec2::Zero(), end = Vec2::Zero();
+        double turn = 0.0;
+    };
+    std::vector<Motion> motion_;
     std::vector<std::pair<int, int>> pairs_;
     std::vector<unsigned char> pairLimited_;  // per collider: disk pairs capped (PairCap)
     std::vector<double> pairSize_;            // per collider: disk radius, for the cap

@@ -106,10 +106,6 @@ public:
     // Contacts between boxes, planes and disks run whenever two such things can touch.
     void setParticleCollisions(bool enabled, double restitution);
     bool particleCollisions() const { return particleCollisions_; }
-    // Whether the engine was built with PHASEBOX_EXPENSIVE_CHECKS (the checked preset), which
-    // recomputes the ledger and checks the layout after every step: timing bounds in the tests
-    // are the release build's, and allow for that extra work.
-    static bool expensiveChecksEnabled();
     // The contact stage, or nullptr when nothing in the scene can touch.
     const ContactStage* contacts() const { return contacts_.get(); }
     // The penalty model's stiffness per contact point (N/m) as it runs: the scene's, or the

@@ -104,7 +104,7 @@ private slots:
                                      << "rk4" << quint64(0x1d968951c30d1715ull);
         QTest::newRow("gas symplectic_euler")
             << "gas"
-            << "symplectic_euler" << quint64(0x70a0e5838ae23b34ull);
+            << "symplectic_euler" << quint64(0x8c86375eb28eb6daull);
         QTest::newRow("cloth symplectic_euler")
             << "cloth"
             << "symplectic_euler" << quint64(0x11952b28e17ae1b1ull);
