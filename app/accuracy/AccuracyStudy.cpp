@@ -147,8 +147,13 @@ SceneDesc referenceScene(const SceneDesc& scene, double endTime, bool contacts, 
         const double target =
             std::min(scene.simulation.dt / scene.simulation.substeps, finestDt) / 4.0;
         const double substeps = std::ceil(scene.simulation.dt / target - 1e-9);
-        s.simulation.substeps = static_cast<int>(std::clamp(
-            substeps, double(scene.simulation.substeps), double(SceneLimits::kMaxSubsteps)));
+        // Within the format's limits, so that the reference costs what a scene may ask for.
+        const double most =
+            std::min<double>(SceneLimits::kMaxSubsteps,
+                             SceneLimits::kMaxSubstepWork / std::max(1LL, stepWorkUnits(scene)));
+        s.simulation.substeps =
+            static_cast<int>(std::clamp(substeps, double(scene.simulation.substeps),
+                                        std::max(most, double(scene.simulation.substeps))));
     }
     return s;
 }

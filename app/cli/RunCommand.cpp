@@ -417,6 +417,8 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     if (o.substeps) sim.substeps = *o.substeps;
     if (o.duration) sim.duration = *o.duration;
     if (o.tolerance) sim.tolerance = *o.tolerance;
+    if (const std::string problem = substepWorkProblem(scene, sim.substeps); !problem.empty())
+        return fail(err, QStringLiteral("--substeps: ") + QString::fromStdString(problem));
 
     BuildResult built;
     try {

@@ -27,11 +27,12 @@ const IntegratorInfo kDormandPrinceInfo{
 
 namespace {
 constexpr long long kMaxInternalSteps = 10'000'000;
-// Internal steps times coordinates per caller step: a stiff scene the method cannot step
-// (a large cloth at a high stiffness) gives up in seconds instead of running for minutes
-// (issue 20: every accepted scene's first step within 20 s). Seven stages a step: 6e7 is 1,800
-// internal steps of the largest cloth, 11 s of work on a loaded two-core machine (2e8 took 38 s).
-constexpr double kMaxInternalWork = 6e7;
+// Internal steps times coordinates per frame (each sub-step gets its share): a stiff scene the
+// method cannot step (a large cloth at a high stiffness) gives up in seconds instead of running for
+// minutes (issue 20: every accepted scene's first step within 20 s). Seven stages a step: 3e7 is
+// 900 internal steps of the largest cloth (32,768 coordinates); 6e7 took 19.4 s of CPU on an idle
+// day of this machine, too near the bound (2e8 took 38 s).
+constexpr double kMaxInternalWork = 3e7;
 constexpr int kStages = 7;
 
 // Butcher tableau.
@@ -72,8 +73,8 @@ public:
         double time = t;
         long long internal = 0;
         const long long maxInternal = std::min<long long>(
-            kMaxInternalSteps,
-            static_cast<long long>(kMaxInternalWork / static_cast<double>(q0.size() + 1)));
+            kMaxInternalSteps, static_cast<long long>(settings_.workShare * kMaxInternalWork /
+                                                      static_cast<double>(q0.size() + 1)));
         // First stage at the start of this call; later ones reuse the last stage.
         power_[0] = sys.acceleration(time, q, u, ku_[0]);
         kq_[0] = u;

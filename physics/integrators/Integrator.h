@@ -39,6 +39,9 @@ struct IntegratorInfo {
 struct IntegratorSettings {
     double tolerance = 1e-6;   // adaptive methods' local error tolerance
     int newtonIterations = 1;  // implicit_euler: 1 = the linearised step of Baraff & Witkin
+    // The share of a frame's work budget (adaptive methods) one call may use: 1 / the
+    // sub-steps a frame, so that sub-steps do not multiply what a frame may cost.
+    double workShare = 1.0;
 };
 
 // Counters since the integrator was made or reset; the world reports them.

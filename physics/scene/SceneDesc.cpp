@@ -398,6 +398,31 @@ std::string planeId(const SceneDesc& s, std::size_t i) {
 std::string springId(const SceneDesc& s, std::size_t i) {
     return defaultOr(s.springs[i].id, "s", i);
 }
+long long stepWorkUnits(const SceneDesc& scene) {
+    long long units =
+        static_cast<long long>(scene.particles.size() + scene.boxes.size() + scene.disks.size() +
+                               scene.polygons.size() + scene.springs.size() + scene.joints.size());
+    for (const ClothDesc& cloth : scene.cloths) {
+        const long long nx = std::max(0, cloth.resolution[0]),
+                        ny = std::max(0, cloth.resolution[1]);
+        // Its nodes and at most its structural, shear and bend springs.
+        units += nx * ny + nx * std::max(0LL, ny - 1) + ny * std::max(0LL, nx - 1) +
+                 2 * std::max(0LL, nx - 1) * std::max(0LL, ny - 1) + nx * std::max(0LL, ny - 2) +
+                 ny * std::max(0LL, nx - 2);
+    }
+    return units;
+}
+
+std::string substepWorkProblem(const SceneDesc& scene, long long substeps) {
+    const long long units = std::max(1LL, stepWorkUnits(scene));
+    if (substeps <= SceneLimits::kMaxSubstepWork / units) return {};
+    return std::to_string(substeps) + " sub-steps of a scene of " + std::to_string(units) +
+           " objects (particles, cloth nodes and springs, rigid bodies, springs, joints) is " +
+           "too much work a step: sub-steps times objects may be at most " +
+           std::to_string(SceneLimits::kMaxSubstepWork) + ", so at most " +
+           std::to_string(SceneLimits::kMaxSubstepWork / units) + " sub-steps for this scene";
+}
+
 std::string jointId(const SceneDesc& s, std::size_t i) {
     return defaultOr(s.joints[i].id, "j", i);
 }
@@ -654,6 +679,19 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
                    "the scene has " + std::to_string(charged) + " charged particles; at most " +
                        std::to_string(SceneLimits::kMaxChargedParticles) +
                        " are allowed (Coulomb's law acts between every pair of them)");
+    if ((fx.particleCollisions || fx.flocking) &&
+        particleCount > SceneLimits::kMaxInteractingParticles && !tooManyClothNodes &&
+        particleCount <= SceneLimits::kMaxParticles)
+        check.fail(join(effects, fx.particleCollisions ? key::particleCollisions : key::flocking),
+                   "the scene has " + std::to_string(particleCount) +
+                       " particles (cloth nodes included); with particle_collisions or flocking "
+                       "at most " +
+                       std::to_string(SceneLimits::kMaxInteractingParticles) +
+                       " are allowed (either acts between every pair of particles near each "
+                       "other)");
+    if (const std::string problem = substepWorkProblem(scene, scene.simulation.substeps);
+        !problem.empty() && !tooManyClothNodes && particleCount <= SceneLimits::kMaxParticles)
+        check.fail(join(std::string(key::simulation), key::substeps), problem);
     if (static_cast<long long>(scene.boxes.size() + scene.disks.size() + scene.polygons.size()) >
         SceneLimits::kMaxBoxes)
         check.fail(std::string(!scene.polygons.empty() ? key::polygons

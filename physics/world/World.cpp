@@ -356,7 +356,8 @@ void World::setSettings(const SimulationSettings& settings) {
         integrator_ = makeIntegrator(settings_.integrator);
         integrator_->reset(layout_.dimension());
     }
-    integrator_->setSettings({settings_.tolerance, settings_.newtonIterations});
+    integrator_->setSettings(
+        {settings_.tolerance, settings_.newtonIterations, 1.0 / std::max(1, settings_.substeps)});
     // A switch of contact model keeps the state: only the response changes. The penalty's
     // potential of the overlaps there are comes or goes with it, which is not integration error.
     if (committed_ && !layoutDirty_ && contacts_) {
@@ -792,14 +793,6 @@ void World::resetProfile() {
 // Expensive invariants (PHASEBOX_EXPENSIVE_CHECKS): after the stages that end a step, the
 // layout is consistent with the objects, the state kept is finite, and the ledger balances
 // when recomputed from scratch (which checks the summary the integrator fused into its pass).
-bool World::expensiveChecksEnabled() {
-#if PHASEBOX_EXPENSIVE_CHECKS
-    return true;
-#else
-    return false;
-#endif
-}
-
 void World::checkInvariants([[maybe_unused]] StepStage after) const {
 #if PHASEBOX_EXPENSIVE_CHECKS
     auto fail = [](const char* what) {

@@ -48,6 +48,9 @@ inline CliResult runCli(const QStringList& args, int timeoutMs = 120000) {
 // to files in dir, read back afterwards.
 struct MeasuredResult : CliResult {
     long long maxRssKb = -1;
+    // The child's CPU time (user + system, all its threads): its cost, whatever else the
+    // machine runs (CI runs two suites at once, which doubled the wall time of a 19 s run).
+    double cpuSeconds = 0.0;
 };
 
 inline MeasuredResult runCliMeasured(const QStringList& args, const QString& dir,
@@ -86,6 +89,8 @@ inline MeasuredResult runCliMeasured(const QStringList& args, const QString& dir
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     r.maxRssKb = usage.ru_maxrss;
+    const auto toSeconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * t.tv_usec; };
+    r.cpuSeconds = toSeconds(usage.ru_utime) + toSeconds(usage.ru_stime);
     QFile out(QString::fromLocal8Bit(outPath)), err(QString::fromLocal8Bit(errPath));
     if (out.open(QIODevice::ReadOnly)) r.out = out.readAll();
     if (err.open(QIODevice::ReadOnly)) r.err = err.readAll();
