@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -336,7 +338,10 @@ namespace {
 // form holds when, along it, no moving body comes within reach of a plane or of another body.
 // Bounding circles and a margin of the speculative distance plus the largest move between two
 // samples make the test conservative: a contact it misses cannot happen.
-bool contactFree(const ExactReference& ref, const World& world, double endTime) {
+// A body within reach that moves away (a weight lifted off the floor by its rope) is not
+// touched: contacts push, they do not pull. Returns the first sample time at which a contact
+// can happen, +∞ when none can before endTime.
+double contactFreeUntil(const ExactReference& ref, const World& world, double endTime) {
     struct Body {
         int dof;
         double reach;
@@ -359,30 +364,41 @@ bool contactFree(const ExactReference& ref, const World& world, double endTime) 
     constexpr std::size_t kMaxBodies = 64;  // pairs are checked at every sample
     constexpr int kSamples = 4000;
     constexpr double kMargin = 0.02;  // m, the contact stage's speculative distance
-    if (moving.size() > kMaxBodies || !(endTime > 0.0)) return false;
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    if (moving.size() > kMaxBodies || !(endTime > 0.0)) return 0.0;
     std::vector<Vec2> previous(moving.size()), now(moving.size());
+    // Within reach and closer than at the last sample (at the first sample: within reach and
+    // closer at the second, checked there).
+    const auto touches = [&](double gap, double before, double reach, int sample) {
+        return gap < reach && (sample == 0 ? false : gap < before);
+    };
     for (int i = 0; i <= kSamples; ++i) {
         const double t = endTime * i / kSamples;
         double largestMove = 0.0;
         for (std::size_t k = 0; k < moving.size(); ++k) {
             now[k] = Vec2(ref.position(moving[k].dof, t), ref.position(moving[k].dof + 1, t));
-            if (!now[k].allFinite()) return false;
+            if (!now[k].allFinite()) return t;
             if (i > 0) largestMove = std::max(largestMove, (now[k] - previous[k]).norm());
         }
         const double margin = kMargin + largestMove;
         for (std::size_t k = 0; k < moving.size(); ++k) {
             for (const Plane& plane : world.planes())
-                if ((now[k] - plane.point).dot(plane.normal) < moving[k].reach + margin)
-                    return false;
+                if (touches((now[k] - plane.point).dot(plane.normal),
+                            (previous[k] - plane.point).dot(plane.normal), moving[k].reach + margin,
+                            i))
+                    return t;
             for (const auto& [centre, reach] : fixed)
-                if ((now[k] - centre).norm() < moving[k].reach + reach + margin) return false;
+                if (touches((now[k] - centre).norm(), (previous[k] - centre).norm(),
+                            moving[k].reach + reach + margin, i))
+                    return t;
             for (std::size_t j = k + 1; j < moving.size(); ++j)
-                if ((now[k] - now[j]).norm() < moving[k].reach + moving[j].reach + margin)
-                    return false;
+                if (touches((now[k] - now[j]).norm(), (previous[k] - previous[j]).norm(),
+                            moving[k].reach + moving[j].reach + margin, i))
+                    return t;
         }
         previous.swap(now);
     }
-    return true;
+    return kNone;
 }
 
 }  // namespace
@@ -390,7 +406,26 @@ bool contactFree(const ExactReference& ref, const World& world, double endTime) 
 std::optional<ExactReference> findExactReference(const SceneDesc& scene, const World& world,
                                                  double endTime) {
     std::optional<ExactReference> ref = ExactReference::ignoringContacts(scene, world, endTime);
-    if (ref && world.contacts() && !contactFree(*ref, world, endTime)) return std::nullopt;
+    if (ref && world.contacts() && contactFreeUntil(*ref, world, endTime) <= endTime)
+        return std::nullopt;
+    return ref;
+}
+
+std::optional<ExactReference> findDisplayReference(const SceneDesc& scene, const World& world,
+                                                   double endTime) {
+    std::optional<ExactReference> ref = ExactReference::ignoringContacts(scene, world, endTime);
+    if (ref && world.contacts()) {
+        const double until = contactFreeUntil(*ref, world, endTime);
+        if (until <= endTime) {
+            // Drawn up to the first contact that can happen, when that leaves ten steps or more
+            // to draw (bodies resting on one another at the start meet at once).
+            if (until >= 10.0 * scene.simulation.dt)
+                ref->validUntil_ = until;
+            else
+                ref.reset();
+        }
+    }
+    if (!ref) ref = findBodyReferences(scene, world, endTime);
     return ref;
 }
 
@@ -410,6 +445,81 @@ std::optional<ExactReference> ExactReference::ignoringContacts(const SceneDesc& 
     const auto coordinate = [&](int dof, double omega2, double gamma, double force) {
         ref.coordinates_.push_back({dof, {omega2, gamma, force, q[dof], u[dof]}});
     };
+
+    if (!world.joints().empty() &&
+        std::all_of(world.joints().begin(), world.joints().end(),
+                    [](const Joint& j) { return j.type == Joint::Type::Pulley; })) {
+        // Atwood machines: every dynamic body hangs on one pulley rope straight below its
+        // ground point, under gravity alone along the ropes, moving along them. The rope keeps
+        // y_a + r·y_b fixed, so m_a·ÿ_a = m_a·g + T and m_b·ÿ_b = m_b·g + r·T with ÿ_a = −r·ÿ_b
+        // give constant accelerations ÿ_b = g·(m_b − r·m_a)/(m_b + r²·m_a) (g signed, along y).
+        if (world.effects().size() != 1 || !fx.gravity || fx.gravity->g[0] != 0.0)
+            return std::nullopt;
+        const double g = fx.gravity->g[1];
+        std::vector<int> held(static_cast<std::size_t>(world.dimension()), 0);
+        const auto bodyOf = [&](const JointBody& body, int& dof, double& mass) {
+            if (body.kind == JointBody::Kind::Particle) {
+                const Particle& p = world.particles()[body.index];
+                dof = p.dof;
+                mass = p.mass;
+                return true;
+            }
+            if (body.kind != JointBody::Kind::Rigid) return false;
+            const Box& b = world.boxes()[body.index];
+            dof = b.dof;
+            mass = b.mass;
+            return true;
+        };
+        const auto& joints = world.joints();
+        for (int j = 0; j < static_cast<int>(joints.size()); ++j) {
+            const Joint& joint = joints[j];
+            int dofA = -1, dofB = -1;
+            double massA = 0.0, massB = 0.0;
+            if (!bodyOf(joint.a, dofA, massA) || !bodyOf(joint.b, dofB, massB) || dofA < 0 ||
+                dofB < 0 || held[dofA] || held[dofB] || !(massA > 0.0) || !(massB > 0.0))
+                return std::nullopt;
+            const Vec2 pa = world.jointSolver()->pointA(j, q),
+                       pb = world.jointSolver()->pointB(j, q);
+            const Vec2 ca = q.segment<2>(dofA), cb = q.segment<2>(dofB);
+            const double r = joint.ratio;
+            // Straight ropes from points on the vertical through each centre (no torque), taut,
+            // and a start that moves along them as the rope allows.
+            const auto vertical = [](const Vec2& ground, const Vec2& point, const Vec2& centre) {
+                const double tolerance = 1e-9 * std::max(1.0, std::abs(ground.y() - point.y()));
+                return std::abs(ground.x() - point.x()) <= tolerance &&
+                       std::abs(point.x() - centre.x()) <= tolerance && ground.y() > point.y();
+            };
+            if (!vertical(joint.groundA, pa, ca) || !vertical(joint.groundB, pb, cb))
+                return std::nullopt;
+            const double va = u[dofA + 1], vb = u[dofB + 1];
+            if (u[dofA] != 0.0 || u[dofB] != 0.0 ||
+                std::abs(va + r * vb) > 1e-12 * std::max(1.0, std::abs(va)))
+                return std::nullopt;
+            const double rotating = [&] {
+                double w = 0.0;
+                for (const JointBody* body : {&joint.a, &joint.b})
+                    if (body->kind == JointBody::Kind::Rigid)
+                        w = std::max(w, std::abs(u[world.boxes()[body->index].dof + 2]));
+                return w;
+            }();
+            if (rotating != 0.0) return std::nullopt;
+            const double accelerationB = g * (massB - r * massA) / (massB + r * r * massA);
+            for (const auto& [dof, acceleration, kind] :
+                 {std::tuple{dofA, -r * accelerationB, joint.a.kind},
+                  std::tuple{dofB, accelerationB, joint.b.kind}}) {
+                held[dof] = 1;
+                coordinate(dof, 0.0, 0.0, 0.0);
+                coordinate(dof + 1, 0.0, 0.0, acceleration);
+                if (kind == JointBody::Kind::Rigid) coordinate(dof + 2, 0.0, 0.0, 0.0);
+            }
+        }
+        for (const Particle& p : world.particles())
+            if (p.dof >= 0 && !held[p.dof]) return std::nullopt;
+        for (const Box& b : world.boxes())
+            if (b.dof >= 0 && !held[b.dof]) return std::nullopt;
+        ref.kind_ = "Atwood machine";
+        return ref;
+    }
 
     if (!world.joints().empty()) {
         // Simple pendulums only: every dynamic body a particle held by one rod to a fixed

@@ -13,6 +13,7 @@
 
 #include "physics/core/Types.h"
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -104,6 +105,9 @@ public:
     // The periods of the periodic motions in it (undamped oscillators, pendulums, elliptic
     // orbits); empty when nothing repeats.
     std::vector<double> periods() const;
+    // The closed form holds up to this time (the first contact that can happen along it);
+    // +∞ when it holds throughout (findDisplayReference alone answers shorter ones).
+    double validUntil() const { return validUntil_; }
 
 private:
     friend std::optional<ExactReference> findExactReference(const SceneDesc&, const World&, double);
@@ -135,7 +139,10 @@ private:
         PenaltyBounceMotion motion;
     };
     friend std::optional<ExactReference> findBodyReferences(const SceneDesc&, const World&, double);
+    friend std::optional<ExactReference> findDisplayReference(const SceneDesc&, const World&,
+                                                              double);
     std::string kind_;
+    double validUntil_ = std::numeric_limits<double>::infinity();
     int dimension_ = 0;
     std::vector<Coordinate> coordinates_;
     std::vector<AxisMotion> axes_;
@@ -155,5 +162,11 @@ std::optional<ExactReference> findExactReference(const SceneDesc& scene, const W
 // qualifies; covers() tells which coordinates the answer gives.
 std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const World& world,
                                                  double endTime);
+
+// What View → Exact Solution draws: findExactReference's answer, else the closed form up to the
+// first contact that can happen along it (validUntil(); an Atwood machine until a weight lands),
+// else findBodyReferences'. Not for the accuracy study, which needs the whole run.
+std::optional<ExactReference> findDisplayReference(const SceneDesc& scene, const World& world,
+                                                   double endTime);
 
 }  // namespace phasebox

@@ -170,15 +170,54 @@ private slots:
         QVERIFY(std::abs(apex - (r + rise)) < 0.03 * rise);
     }
 
-    // Contacts act as impulses: no closed form, nothing drawn, no curve.
-    void contactSceneHasNone() {
+    // Contacts act as impulses: a closed form holds only until the first contact that can
+    // happen. Balls dropped onto a floor fall freely until the first lands, and nothing is
+    // drawn after it; boxes resting on one another from the start have none at all.
+    void contactScenesHaveOnlyUntilTheFirstContact() {
         Window window;
         window.open(QStringLiteral(":/scenes/bouncing-balls.phasebox.json"));
-        QVERIFY(window.w.exactSolution()->kind().isEmpty());
+        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("free fall"));
+        const auto& ref = window.w.exactSolution()->reference();
+        QVERIFY(ref.has_value());
+        const double until = ref->validUntil();
+        QVERIFY2(until > 0.1 && until < 2.0, qPrintable(QString::number(until)));
+        QVERIFY(window.w.controller().advance(0.5 * until));
+        window.w.refreshNow();
+        QVERIFY(!window.overlay().ghosts.isEmpty());
+        QVERIFY(window.overlay().label.contains(QStringLiteral("until the first contact")));
+        QVERIFY(window.w.controller().advance(until));
+        window.w.refreshNow();
+        QVERIFY(window.overlay().ghosts.isEmpty());
+        for (const char* name : {"box-pyramid", "dominoes", "polygon-pile", "newtons-cradle"}) {
+            window.open(QStringLiteral(":/scenes/%1.phasebox.json").arg(QLatin1String(name)));
+            QVERIFY2(window.w.exactSolution()->kind().isEmpty(), name);
+            QVERIFY(window.w.controller().advance(0.5));
+            window.w.refreshNow();
+            QVERIFY(window.overlay().isEmpty());
+            QVERIFY(window.exactSeries() == nullptr);
+        }
+    }
+
+    // The Atwood machine lesson: the weights' constant accelerations until the first weight
+    // lands (app/accuracy tst_exact_reference checks the numbers against the simulation).
+    void atwoodLessonDrawsItsClosedFormUntilAWeightLands() {
+        Window window;
+        window.open(QStringLiteral(":/lessons/atwood-machine.phasebox.json"));
+        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("Atwood machine"));
         QVERIFY(window.w.controller().advance(0.5));
         window.w.refreshNow();
-        QVERIFY(window.overlay().isEmpty());
-        QVERIFY(window.exactSeries() == nullptr);
+        QCOMPARE(window.overlay().ghosts.size(), 4);
+        const double t = window.w.document().world().time();
+        bool found = false;
+        for (const auto& ghost : window.overlay().ghosts)
+            if (std::abs(ghost.centre.x() + 1.9) < 1e-12) {
+                found = true;
+                QVERIFY(std::abs(ghost.centre.y() - (3.22 - 0.5 * 4.905 * t * t)) < 1e-9);
+            }
+        QVERIFY(found);
+        QVERIFY(window.w.controller().advance(1.0));
+        window.w.refreshNow();
+        QVERIFY(window.overlay().ghosts.isEmpty());
     }
 
     // Every lesson and example is searched; which have a closed form is printed to look at.
@@ -193,6 +232,7 @@ private slots:
                                      : window.w.exactSolution()->kind()));
             }
         for (const auto& [name, kind] : {std::pair{"midpoint-vs-rk4", "harmonic oscillator"},
+                                         std::pair{"atwood-machine", "Atwood machine"},
                                          std::pair{"simple-pendulum", "simple pendulum"},
                                          std::pair{"bead-on-hoop", "simple pendulum"},
                                          std::pair{"euler-orbit-spiral", "Kepler orbit"}}) {

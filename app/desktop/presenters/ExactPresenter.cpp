@@ -40,7 +40,8 @@ void ExactPresenter::createActions(QWidget& window) {
     action_->setChecked(shown_);
     action_->setToolTip(
         tr("Draw the exact (closed-form) motion beside the simulation, dashed, "
-           "when the scene has one: oscillators, free fall, orbits, pendulums"));
+           "when the scene has one: oscillators, free fall, orbits, pendulums, Atwood "
+           "machines (up to the first contact)"));
     connect(action_, &QAction::toggled, this, &ExactPresenter::setShown);
 }
 
@@ -69,17 +70,17 @@ void ExactPresenter::rebuild() {
         if (live.time() != 0.0) built = buildWorld(setup).world;
         const World& start = built ? *built : live;
         const double duration = setup.simulation.duration;
-        reference_ = findExactReference(setup, start, duration);
-        if (!reference_) reference_ = findBodyReferences(setup, start, duration);
+        reference_ = findDisplayReference(setup, start, duration);
         dimension_ = start.dimension();
         if (reference_) {
             // Each moving particle's and body's path over the run (one period is enough for
             // what repeats; free motion over the whole duration).
             const std::vector<double> periods = reference_->periods();
-            const double span =
+            const double span = std::min(
+                reference_->validUntil(),
                 periods.empty()
                     ? duration
-                    : std::min(duration, *std::max_element(periods.begin(), periods.end()));
+                    : std::min(duration, *std::max_element(periods.begin(), periods.end())));
             std::vector<int> dofs;
             for (const Particle& p : start.particles())
                 if (p.dof >= 0 && p.cloth < 0 && reference_->covers(p.dof)) dofs.push_back(p.dof);
@@ -126,8 +127,9 @@ void ExactPresenter::updatePhase() {
         if (!plots_.phaseReference().empty()) plots_.setPhaseReference({}, {});
         return;
     }
-    // Over the times the simulation has covered, so the two curves can be compared as they grow.
-    const double end = world.time();
+    // Over the times the simulation has covered, so the two curves can be compared as they grow
+    // (up to where the closed form holds).
+    const double end = std::min(world.time(), reference_->validUntil());
     std::vector<ui::PhaseSample> samples;
     samples.reserve(kPhaseSamples + 1);
     for (int i = 0; i <= kPhaseSamples; ++i) {
@@ -147,7 +149,9 @@ void ExactPresenter::refresh() {
     ui::ReferenceOverlay overlay;
     overlay.paths = paths_;
     const double t = world.time();
-    int ghosts = 0;
+    // Past the first contact that can happen the closed form says nothing: no ghosts then.
+    const bool holds = t <= reference_->validUntil();
+    int ghosts = holds ? 0 : kMaxPaths;
     for (const Particle& p : world.particles()) {
         if (p.dof < 0 || p.cloth >= 0 || !reference_->covers(p.dof) || ghosts++ >= kMaxPaths)
             continue;
@@ -161,7 +165,11 @@ void ExactPresenter::refresh() {
             {QPointF(reference_->position(b.dof, t), reference_->position(b.dof + 1, t)),
              b.shape == RigidShape::Disk ? b.radius : 0.0});
     }
-    overlay.label = tr("dashed: exact solution (%1)").arg(kind());
+    overlay.label = std::isinf(reference_->validUntil())
+                        ? tr("dashed: exact solution (%1)").arg(kind())
+                        : tr("dashed: exact solution (%1) until the first contact, t = %2 s")
+                              .arg(kind())
+                              .arg(reference_->validUntil(), 0, 'f', 2);
     view_.setReferenceOverlay(overlay);
 }
 
