@@ -141,6 +141,8 @@ private:
     friend std::optional<ExactReference> findBodyReferences(const SceneDesc&, const World&, double);
     friend std::optional<ExactReference> findDisplayReference(const SceneDesc&, const World&,
                                                               double);
+    friend std::optional<ExactReference> findSupportedReferences(const SceneDesc&, const World&,
+                                                                 double);
     std::string kind_;
     double validUntil_ = std::numeric_limits<double>::infinity();
     int dimension_ = 0;
@@ -162,6 +164,14 @@ std::optional<ExactReference> findExactReference(const SceneDesc& scene, const W
 // qualifies; covers() tells which coordinates the answer gives.
 std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const World& world,
                                                  double endTime);
+
+// Boxes and disks lying on a face of a static rectangle (a ramp, a table) under gravity alone
+// with impulse contacts: a box slides with Coulomb friction μ = √(μ_body·μ_support) (stopping
+// where friction wins), a disk from rest rolls without slipping at g_t/(1 + I/(m·r²)) when
+// friction can hold it, else slides and spins up. Each until it leaves its face; a body with
+// anything else within reach of its path is left out. nullopt when no body qualifies.
+std::optional<ExactReference> findSupportedReferences(const SceneDesc& scene, const World& world,
+                                                      double endTime);
 
 // What View → Exact Solution draws: findExactReference's answer, else the closed form up to the
 // first contact that can happen along it (validUntil(); an Atwood machine until a weight lands),

@@ -184,7 +184,7 @@ private slots:
         QVERIFY(window.w.controller().advance(0.5 * until));
         window.w.refreshNow();
         QVERIFY(!window.overlay().ghosts.isEmpty());
-        QVERIFY(window.overlay().label.contains(QStringLiteral("until the first contact")));
+        QVERIFY(window.overlay().label.contains(QStringLiteral("where a contact begins or ends")));
         QVERIFY(window.w.controller().advance(until));
         window.w.refreshNow();
         QVERIFY(window.overlay().ghosts.isEmpty());
@@ -233,6 +233,8 @@ private slots:
             }
         for (const auto& [name, kind] : {std::pair{"midpoint-vs-rk4", "harmonic oscillator"},
                                          std::pair{"atwood-machine", "Atwood machine"},
+                                         std::pair{"rolling-race", "rolling and sliding"},
+                                         std::pair{"restitution-friction", "rolling and sliding"},
                                          std::pair{"simple-pendulum", "simple pendulum"},
                                          std::pair{"bead-on-hoop", "simple pendulum"},
                                          std::pair{"euler-orbit-spiral", "Kepler orbit"}}) {
@@ -243,7 +245,8 @@ private slots:
              {std::pair{"pendulum-wave", "simple pendulum"},
               std::pair{"damped-oscillators", "damped harmonic oscillator"},
               std::pair{"spring-oscillator", "harmonic oscillator"},
-              std::pair{"orbit", "Kepler orbit"}}) {
+              std::pair{"box-incline", "rolling and sliding"},
+              std::pair{"bouncing-balls", "free fall"}, std::pair{"orbit", "Kepler orbit"}}) {
             window.open(QStringLiteral(":/scenes/%1.phasebox.json").arg(QLatin1String(name)));
             QCOMPARE(window.w.exactSolution()->kind(), QString::fromLatin1(kind));
         }

@@ -41,7 +41,7 @@ void ExactPresenter::createActions(QWidget& window) {
     action_->setToolTip(
         tr("Draw the exact (closed-form) motion beside the simulation, dashed, "
            "when the scene has one: oscillators, free fall, orbits, pendulums, Atwood "
-           "machines (up to the first contact)"));
+           "machines, rolling and sliding on ramps (until a contact begins or ends)"));
     connect(action_, &QAction::toggled, this, &ExactPresenter::setShown);
 }
 
@@ -165,11 +165,12 @@ void ExactPresenter::refresh() {
             {QPointF(reference_->position(b.dof, t), reference_->position(b.dof + 1, t)),
              b.shape == RigidShape::Disk ? b.radius : 0.0});
     }
-    overlay.label = std::isinf(reference_->validUntil())
-                        ? tr("dashed: exact solution (%1)").arg(kind())
-                        : tr("dashed: exact solution (%1) until the first contact, t = %2 s")
-                              .arg(kind())
-                              .arg(reference_->validUntil(), 0, 'f', 2);
+    overlay.label =
+        std::isinf(reference_->validUntil())
+            ? tr("dashed: exact solution (%1)").arg(kind())
+            : tr("dashed: exact solution (%1) until t = %2 s, where a contact begins or ends")
+                  .arg(kind())
+                  .arg(reference_->validUntil(), 0, 'f', 2);
     view_.setReferenceOverlay(overlay);
 }
 
