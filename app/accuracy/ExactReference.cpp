@@ -1,6 +1,7 @@
 #include "app/accuracy/ExactReference.h"
 
 #include "physics/contacts/ContactModel.h"
+#include "physics/contacts/ContactSolver.h"
 #include "physics/core/EffectNames.h"
 #include "physics/scene/SceneDesc.h"
 #include "physics/world/World.h"
@@ -218,6 +219,32 @@ double rateOf(const LinearMotion& m, double t) {
     return (m.at(t + h) - m.at(t - h)) / (2.0 * h);
 }
 }  // namespace
+
+PenaltyBounceMotion PenaltyBounceMotion::impulse(double s0, double v0, double g, double radius,
+                                                 double restitution, double threshold,
+                                                 double endTime) {
+    // Free flights s'' = −g joined at the impacts (s = r), where v ← −e·v; an impact slower
+    // than threshold·(1 − e) does not bounce (ContactSettings::restitutionThreshold) and the
+    // ball rests on the plane from then on.
+    constexpr int kMaxPhases = 10000;
+    PenaltyBounceMotion out;
+    double t = 0.0, s = std::max(s0, radius), v = v0;
+    while (static_cast<int>(out.phases.size()) < kMaxPhases) {
+        out.phases.push_back({t, LinearMotion{0.0, 0.0, -g, s, v}, false});
+        // When the flight comes down to s = r: r = s + v·τ − g·τ²/2.
+        const double tau = (v + std::sqrt(v * v + 2.0 * g * (s - radius))) / g;
+        if (!(t + tau < endTime) || !std::isfinite(tau)) break;
+        t += tau;
+        const double impact = v - g * tau;  // < 0
+        s = radius;
+        if (-impact <= threshold * (1.0 - restitution)) {
+            out.phases.push_back({t, LinearMotion{0.0, 0.0, 0.0, radius, 0.0}, true});
+            break;
+        }
+        v = -restitution * impact;
+    }
+    return out;
+}
 
 PenaltyBounceMotion PenaltyBounceMotion::fromState(double s0, double v0, double g, double radius,
                                                    double k, double c, double m, double endTime) {
@@ -566,20 +593,26 @@ std::optional<ExactReference> findSupportedReferences(const SceneDesc& scene, co
 
 std::optional<ExactReference> findDisplayReference(const SceneDesc& scene, const World& world,
                                                    double endTime) {
+    // A closed form for the whole run first, then single bodies' (which go on through their
+    // contacts: bounces, rolling and sliding), then the scene's up to its first contact.
+    if (auto whole = findExactReference(scene, world, endTime)) return whole;
+    std::optional<ExactReference> bodies = findBodyReferences(scene, world, endTime);
+    if (auto supported = findSupportedReferences(scene, world, endTime)) {
+        if (!bodies) return supported;
+        bodies->kind_ += ", " + supported->kind_;
+        bodies->validUntil_ = std::min(bodies->validUntil_, supported->validUntil_);
+        for (const auto& b : supported->bounces_) bodies->bounces_.push_back(b);
+        for (const auto& c : supported->coordinates_) bodies->coordinates_.push_back(c);
+    }
+    if (bodies) return bodies;
     std::optional<ExactReference> ref = ExactReference::ignoringContacts(scene, world, endTime);
     if (ref && world.contacts()) {
         const double until = contactFreeUntil(*ref, world, endTime);
-        if (until <= endTime) {
-            // Drawn up to the first contact that can happen, when that leaves ten steps or more
-            // to draw (bodies resting on one another at the start meet at once).
-            if (until >= 10.0 * scene.simulation.dt)
-                ref->validUntil_ = until;
-            else
-                ref.reset();
-        }
+        // Drawn up to the first contact that can happen, when that leaves ten steps or more to
+        // draw (bodies resting on one another at the start meet at once).
+        if (until < 10.0 * scene.simulation.dt) return std::nullopt;
+        if (until <= endTime) ref->validUntil_ = until;
     }
-    if (!ref) ref = findBodyReferences(scene, world, endTime);
-    if (!ref) ref = findSupportedReferences(scene, world, endTime);
     return ref;
 }
 
@@ -851,8 +884,10 @@ std::optional<ExactReference> ExactReference::ignoringContacts(const SceneDesc& 
 
 std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const World& world,
                                                  double endTime) {
-    if (!world.contacts() || world.settings().contactModel != ContactModel::Penalty)
-        return std::nullopt;
+    if (!world.contacts()) return std::nullopt;
+    const ContactModel model = world.settings().contactModel;
+    if (model != ContactModel::Penalty && model != ContactModel::Impulse) return std::nullopt;
+    const bool penalty = model == ContactModel::Penalty;
     // Gravity alone moves a free body (springs move only what they hold, left out below).
     for (const auto& effect : world.effects())
         if (effect->name() != effectName::gravity && effect->name() != effectName::springs)
@@ -862,7 +897,7 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
     if (!(g.norm() > 0.0)) return std::nullopt;
     const Vec2 up = -g.normalized();
     const double k = world.penaltyStiffness(), c = world.settings().contactDamping;
-    if (!(k > 0.0)) return std::nullopt;
+    if (penalty && !(k > 0.0)) return std::nullopt;
 
     // What is attached to something cannot move on its own.
     const auto& particles = world.particles();
@@ -885,7 +920,7 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
     struct Candidate {
         int dof;
         Vec2 position, velocity;
-        double radius, mass;
+        double radius, mass, restitution;
     };
     std::vector<Candidate> candidates;
     std::vector<std::pair<Vec2, double>> others;  // every body's start and reach
@@ -896,7 +931,7 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
         const Vec2 x = p.dof >= 0 ? Vec2(q.segment<2>(p.dof)) : p.position;
         others.emplace_back(x, p.radius);
         if (p.dof >= 0 && p.cloth < 0 && !attachedParticle[i])
-            candidates.push_back({p.dof, x, u.segment<2>(p.dof), p.radius, p.mass});
+            candidates.push_back({p.dof, x, u.segment<2>(p.dof), p.radius, p.mass, p.restitution});
     }
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         const Box& b = boxes[i];
@@ -904,12 +939,12 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
         const double reach = b.shape == RigidShape::Disk ? b.radius : 0.5 * b.size.norm();
         others.emplace_back(x, reach);
         if (b.dof >= 0 && b.shape == RigidShape::Disk && !attachedBox[i] && u[b.dof + 2] == 0.0)
-            candidates.push_back({b.dof, x, u.segment<2>(b.dof), b.radius, b.mass});
+            candidates.push_back({b.dof, x, u.segment<2>(b.dof), b.radius, b.mass, b.restitution});
     }
 
     ExactReference ref;
     ref.dimension_ = world.dimension();
-    ref.kind_ = "penalty bounce";
+    ref.kind_ = penalty ? "penalty bounce" : "bounce";
     constexpr double kMargin = 0.02;  // m, the contact stage's speculative distance
     constexpr int kSamples = 2000;
     for (const Candidate& body : candidates) {
@@ -925,8 +960,14 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
             }
         }
         if (!floor) continue;
-        const PenaltyBounceMotion motion = PenaltyBounceMotion::fromState(
-            height, body.velocity.dot(up), g.norm(), body.radius, k, c, body.mass, endTime);
+        // Impulses: the pair's restitution is the larger of the two (ContactStage).
+        const PenaltyBounceMotion motion =
+            penalty
+                ? PenaltyBounceMotion::fromState(height, body.velocity.dot(up), g.norm(),
+                                                 body.radius, k, c, body.mass, endTime)
+                : PenaltyBounceMotion::impulse(height, body.velocity.dot(up), g.norm(), body.radius,
+                                               std::max(body.restitution, floor->restitution),
+                                               ContactSettings{}.restitutionThreshold, endTime);
         double lo = height, hi = height;
         for (int i = 0; i <= kSamples; ++i) {
             const double s = motion.height(endTime * i / kSamples);

@@ -84,6 +84,10 @@ struct PenaltyBounceMotion {
 
     static PenaltyBounceMotion fromState(double s0, double v0, double g, double radius, double k,
                                          double c, double m, double endTime);
+    // The same ball under impulse contacts (no overlap: flights joined where v ← −e·v, at rest
+    // once an impact is slower than threshold·(1 − e)).
+    static PenaltyBounceMotion impulse(double s0, double v0, double g, double radius,
+                                       double restitution, double threshold, double endTime);
     double height(double t) const;
 };
 
@@ -173,9 +177,11 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
 std::optional<ExactReference> findSupportedReferences(const SceneDesc& scene, const World& world,
                                                       double endTime);
 
-// What View → Exact Solution draws: findExactReference's answer, else the closed form up to the
-// first contact that can happen along it (validUntil(); an Atwood machine until a weight lands),
-// else findBodyReferences'. Not for the accuracy study, which needs the whole run.
+// What View → Exact Solution draws: findExactReference's answer (for the whole run), else
+// single bodies' closed forms (findBodyReferences and findSupportedReferences together: they go
+// on through their bodies' contacts), else the scene's closed form up to the first contact that
+// can happen along it (validUntil(); an Atwood machine until a weight lands). Not for the
+// accuracy study, which needs the whole run.
 std::optional<ExactReference> findDisplayReference(const SceneDesc& scene, const World& world,
                                                    double endTime);
 
