@@ -308,7 +308,18 @@ Vec ExactReference::positions(double t) const {
     for (const AxisMotion& a : axes_) q.segment<2>(a.dof) = a.anchor + a.s.at(t) * a.axis;
     for (const Orbit& o : orbits_) q.segment<2>(o.dof) = o.orbit.at(t);
     for (const Bounce& b : bounces_) q.segment<2>(b.dof) = b.base + b.motion.height(t) * b.normal;
+    for (const Modes& m : modes_)
+        for (std::size_t i = 0; i < m.dofs.size(); ++i)
+            q.segment<2>(m.dofs[i]) = m.origin + m.along(i, t) * m.axis;
     return q;
+}
+
+double ExactReference::Modes::along(std::size_t i, double t) const {
+    double s = equilibrium[static_cast<Eigen::Index>(i)];
+    for (Eigen::Index k = 0; k < omega.size(); ++k)
+        s += shapes(static_cast<Eigen::Index>(i), k) *
+             (a[k] * std::cos(omega[k] * t) + b[k] * std::sin(omega[k] * t) / omega[k]);
+    return s;
 }
 
 double ExactReference::position(int dof, double t) const {
@@ -324,6 +335,10 @@ double ExactReference::position(int dof, double t) const {
     for (const Bounce& b : bounces_)
         if (dof == b.dof || dof == b.dof + 1)
             return b.base[dof - b.dof] + b.motion.height(t) * b.normal[dof - b.dof];
+    for (const Modes& m : modes_)
+        for (std::size_t i = 0; i < m.dofs.size(); ++i)
+            if (dof == m.dofs[i] || dof == m.dofs[i] + 1)
+                return m.origin[dof - m.dofs[i]] + m.along(i, t) * m.axis[dof - m.dofs[i]];
     return 0.0;
 }
 
@@ -335,7 +350,10 @@ bool ExactReference::covers(int dof) const {
                        [&](auto& c) { return dof == c.dof; }) ||
            std::any_of(axes_.begin(), axes_.end(), [&](auto& a) { return pair(a.dof); }) ||
            std::any_of(orbits_.begin(), orbits_.end(), [&](auto& o) { return pair(o.dof); }) ||
-           std::any_of(bounces_.begin(), bounces_.end(), [&](auto& b) { return pair(b.dof); });
+           std::any_of(bounces_.begin(), bounces_.end(), [&](auto& b) { return pair(b.dof); }) ||
+           std::any_of(modes_.begin(), modes_.end(), [&](const Modes& m) {
+               return std::any_of(m.dofs.begin(), m.dofs.end(), pair);
+           });
 }
 
 double ExactReference::velocity(int dof, double t) const {
@@ -355,6 +373,8 @@ std::vector<double> ExactReference::periods() const {
         if (!o.orbit.hyperbolic) out.push_back(kTwoPi / o.orbit.meanMotion);
     for (const Pendulum& p : pendulums_)
         out.push_back(4.0 * std::comp_ellint_1(p.motion.k) / p.motion.omega0);
+    for (const Modes& m : modes_)
+        for (Eigen::Index k = 0; k < m.omega.size(); ++k) out.push_back(kTwoPi / m.omega[k]);
     return out;
 }
 
@@ -616,6 +636,118 @@ std::optional<ExactReference> findDisplayReference(const SceneDesc& scene, const
     return ref;
 }
 
+std::optional<ExactReference> coupledOnALine(const World& world, double endTime) {
+    // Springs alone (undamped), particles only, everything on one line and moving along it:
+    // each spring's force is then linear in the coordinates along the line while no spring's
+    // ends pass each other (checked along the solution).
+    for (const auto& effect : world.effects())
+        if (effect->name() != effectName::springs) return std::nullopt;
+    if (!world.joints().empty() || !(endTime > 0.0)) return std::nullopt;
+    const auto& particles = world.particles();
+    for (const Box& b : world.boxes())
+        if (b.dof >= 0) return std::nullopt;
+    const Vec& q = world.positions();
+    const Vec& u = world.velocities();
+    std::vector<int> index(particles.size(), -1);  // particle → unknown
+    std::vector<int> dofs;
+    for (std::size_t i = 0; i < particles.size(); ++i)
+        if (particles[i].dof >= 0) {
+            index[i] = static_cast<int>(dofs.size());
+            dofs.push_back(particles[i].dof);
+        }
+    const int n = static_cast<int>(dofs.size());
+    if (n < 2 || n > 64 || world.springs().empty()) return std::nullopt;
+    // The line: through the first two moving particles.
+    const Vec2 origin = q.segment<2>(dofs[0]);
+    const Vec2 span = Vec2(q.segment<2>(dofs[1])) - origin;
+    if (!(span.norm() > 0.0)) return std::nullopt;
+    const Vec2 axis = span.normalized();
+    const auto onLine = [&](const Vec2& x) {
+        const Vec2 d = x - origin;
+        return std::abs(d.x() * axis.y() - d.y() * axis.x()) <= 1e-12 * std::max(1.0, d.norm());
+    };
+    for (const int dof : dofs)
+        if (!onLine(q.segment<2>(dof)) || !alongAxis(u.segment<2>(dof), axis)) return std::nullopt;
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(n), mass(n);
+    for (std::size_t i = 0; i < particles.size(); ++i)
+        if (index[i] >= 0) mass[index[i]] = particles[i].mass;
+    // Each spring end: an unknown, or a fixed coordinate along the line.
+    struct End {
+        int unknown;
+        double at;
+    };
+    const auto endOf = [&](const SpringEnd& end) -> std::optional<End> {
+        if (end.kind == SpringEnd::Kind::Particle) {
+            const Particle& p = particles[end.index];
+            const Vec2 x = p.dof >= 0 ? Vec2(q.segment<2>(p.dof)) : p.position;
+            if (!onLine(x)) return std::nullopt;
+            return End{index[end.index], (x - origin).dot(axis)};
+        }
+        if (end.kind == SpringEnd::Kind::Anchor && onLine(end.point))
+            return End{-1, (end.point - origin).dot(axis)};
+        return std::nullopt;  // a static box's point: left to the general search
+    };
+    std::vector<std::tuple<End, End, double>> sides;  // ends and the sign of b − a at the start
+    for (const Spring& sp : world.springs()) {
+        const auto a = endOf(sp.a), b = endOf(sp.b);
+        if (!a || !b || sp.damping != 0.0) return std::nullopt;
+        const double sign = b->at > a->at ? 1.0 : -1.0;
+        if (b->at == a->at && sp.restLength != 0.0) return std::nullopt;
+        // Tension k·(|s_b − s_a| − L) pulls b towards a: on b −k·(s_b − s_a − σL), on a the
+        // opposite.
+        const double k = sp.stiffness, L = sign * sp.restLength;
+        const auto add = [&](const End& e, double side) {
+            if (e.unknown < 0) return;
+            // side = +1 for b, −1 for a: force side·(−k)·(s_b − s_a − L).
+            for (const auto& [other, weight] : {std::pair{*b, 1.0}, std::pair{*a, -1.0}}) {
+                if (other.unknown >= 0)
+                    K(e.unknown, other.unknown) += side * k * weight;
+                else
+                    f[e.unknown] -= side * k * weight * other.at;
+            }
+            f[e.unknown] += side * k * L;
+        };
+        add(*b, 1.0);
+        add(*a, -1.0);
+        sides.push_back({*a, *b, sign});
+    }
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
+        K, Eigen::MatrixXd(mass.asDiagonal()));
+    if (eigen.info() != Eigen::Success) return std::nullopt;
+    const Eigen::VectorXd omega2 = eigen.eigenvalues();
+    if (!(omega2.minCoeff() > 1e-12 * std::max(1.0, omega2.maxCoeff()))) return std::nullopt;
+    ExactReference ref;
+    ref.dimension_ = world.dimension();
+    ref.kind_ = "coupled oscillators";
+    ExactReference::Modes m;
+    m.dofs = dofs;
+    m.origin = origin;
+    m.axis = axis;
+    m.omega = omega2.cwiseSqrt();
+    m.shapes = eigen.eigenvectors();
+    m.equilibrium = K.ldlt().solve(f);
+    Eigen::VectorXd s0(n), v0(n);
+    for (int i = 0; i < n; ++i) {
+        s0[i] = (Vec2(q.segment<2>(dofs[i])) - origin).dot(axis);
+        v0[i] = Vec2(u.segment<2>(dofs[i])).dot(axis);
+    }
+    m.a = m.shapes.transpose() * mass.asDiagonal() * (s0 - m.equilibrium);
+    m.b = m.shapes.transpose() * mass.asDiagonal() * v0;
+    // No spring's ends may pass each other, or its force turns round.
+    constexpr int kSamples = 4000;
+    for (int k = 0; k <= kSamples; ++k) {
+        const double t = endTime * k / kSamples;
+        for (const auto& [a, b, sign] : sides) {
+            const double sa = a.unknown >= 0 ? m.along(a.unknown, t) : a.at;
+            const double sb = b.unknown >= 0 ? m.along(b.unknown, t) : b.at;
+            if (!((sb - sa) * sign > 0.0)) return std::nullopt;
+        }
+    }
+    ref.modes_.push_back(std::move(m));
+    return ref;
+}
+
 std::optional<ExactReference> ExactReference::ignoringContacts(const SceneDesc& scene,
                                                                const World& world, double endTime) {
     for (const auto& effect : world.effects()) {
@@ -821,7 +953,7 @@ std::optional<ExactReference> ExactReference::ignoringContacts(const SceneDesc& 
         else if (pb >= 0 && fixedA)
             springsOf[pb].push_back({&s, *fixedA});
         else
-            return std::nullopt;
+            return coupledOnALine(world, endTime);
     }
 
     bool anySpring = false, damped = drag.linear > 0.0 || drag.angular > 0.0 || windDrag > 0.0;

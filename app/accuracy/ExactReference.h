@@ -13,6 +13,8 @@
 
 #include "physics/core/Types.h"
 
+#include <Eigen/Dense>
+
 #include <limits>
 #include <optional>
 #include <string>
@@ -155,6 +157,18 @@ private:
     std::vector<Orbit> orbits_;
     std::vector<Pendulum> pendulums_;
     std::vector<Bounce> bounces_;
+    // Particles on a line joined by springs to each other and to fixed points: x_i = origin +
+    // s_i·axis with M·s'' = −K·s + f, so s(t) = s* + Σ_k φ_k·(a_k·cos ω_k t + b_k·sin ω_k t/ω_k)
+    // over the normal modes K·φ = ω²·M·φ (φᵀ·M·φ = 1).
+    struct Modes {
+        std::vector<int> dofs;
+        Vec2 origin{0.0, 0.0}, axis{1.0, 0.0};
+        Eigen::VectorXd equilibrium, omega, a, b;
+        Eigen::MatrixXd shapes;  // column k: φ_k
+        double along(std::size_t i, double t) const;
+    };
+    std::vector<Modes> modes_;
+    friend std::optional<ExactReference> coupledOnALine(const World&, double);
 };
 
 // The closed form of the scene's motion up to endTime, or nullopt when there is none that is
@@ -176,6 +190,11 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
 // anything else within reach of its path is left out. nullopt when no body qualifies.
 std::optional<ExactReference> findSupportedReferences(const SceneDesc& scene, const World& world,
                                                       double endTime);
+
+// Particles joined by undamped springs to each other and to fixed points, all on one line and
+// moving along it, with no other force: the normal modes (kind "coupled oscillators"), while no
+// spring's ends pass each other. findExactReference tries it when springs couple particles.
+std::optional<ExactReference> coupledOnALine(const World& world, double endTime);
 
 // What View → Exact Solution draws: findExactReference's answer (for the whole run), else
 // single bodies' closed forms (findBodyReferences and findSupportedReferences together: they go

@@ -248,6 +248,7 @@ private slots:
               std::pair{"rolling-race", "rolling and sliding"},
               std::pair{"restitution-friction", "bounce, rolling and sliding"},
               std::pair{"three-ways-to-collide", "bounce"},
+              std::pair{"stiff-spring-implicit", "coupled oscillators"},
               std::pair{"simple-pendulum", "simple pendulum"},
               std::pair{"bead-on-hoop", "simple pendulum"},
               std::pair{"euler-orbit-spiral", "Kepler orbit"}}) {
