@@ -10,6 +10,7 @@
 #include "app/document/PropertyTable.h"
 #include "app/io/SceneIO.h"
 #include "physics/world/World.h"
+#include "tests/support/SceneBuilders.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -21,6 +22,8 @@
 #include <cmath>
 
 using namespace phasebox;
+using testing::anchorSpring;
+using testing::bodySpring;
 
 namespace {
 
@@ -33,22 +36,6 @@ ParticleDesc particle(double x, double y, const std::string& id = {}) {
     p.id = id;
     p.position = {x, y};
     return p;
-}
-
-SpringDesc anchorSpring(const std::string& a, Point2 anchor, double k) {
-    SpringDesc s;
-    s.a = a;
-    s.anchor = anchor;
-    s.stiffness = k;
-    return s;
-}
-
-SpringDesc bodySpring(const std::string& a, const std::string& b, double k) {
-    SpringDesc s;
-    s.a = a;
-    s.b = b;
-    s.stiffness = k;
-    return s;
 }
 
 // Two particles on springs under gravity: something that moves.

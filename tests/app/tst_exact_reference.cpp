@@ -8,6 +8,7 @@
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"
 #include "physics/world/World.h"
+#include "tests/support/SceneBuilders.h"
 
 #include <QTest>
 
@@ -25,11 +26,7 @@ SceneDesc dropOverFloor(double duration) {
     SceneDesc s;
     s.simulation.duration = duration;
     s.effects.gravity = GravityDesc{};
-    ParticleDesc ball;
-    ball.id = "ball";
-    ball.position = {0.0, 10.0};
-    ball.radius = 0.1;
-    s.particles.push_back(ball);
+    s.particles.push_back(testing::particle("ball", {0.0, 10.0}, 1.0, {0.0, 0.0}, 0.1));
     PlaneDesc floor;
     floor.id = "floor";
     s.planes.push_back(floor);
@@ -109,11 +106,7 @@ private slots:
         SceneDesc s;
         s.simulation.duration = 10.0;
         s.effects.gravity = GravityDesc{};
-        ParticleDesc bead;
-        bead.id = "bead";
-        bead.position = {1.0, 0.0};
-        bead.radius = 0.08;
-        s.particles.push_back(bead);
+        s.particles.push_back(testing::particle("bead", {1.0, 0.0}, 1.0, {0.0, 0.0}, 0.08));
         PlaneDesc floor;
         floor.point = {0.0, -1.4};
         s.planes.push_back(floor);

@@ -10,9 +10,9 @@
 #include "app/io/OutputFile.h"
 #include "app/io/SceneIO.h"
 #include "app/sim/Recorder.h"
+#include "tests/support/OutputTargets.h"
 
 #include <QDir>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -20,33 +20,20 @@
 #include <QTest>
 #include <QTextStream>
 
-#include <fcntl.h>
-#include <poll.h>
 #include <sys/resource.h>
-#include <sys/stat.h>
-#include <sys/sysmacros.h>
 #include <unistd.h>
 
-#include <csignal>
-#include <thread>
-
 using namespace phasebox;
+using testing::FifoReader;
+using testing::isStillDevice;
+using testing::readAll;
+using testing::SystemDevice;
 
 namespace {
-
-QByteArray readAll(const QString& path) {
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("<unreadable>");
-}
 
 bool writePlain(const QString& path, const QByteArray& bytes) {
     QFile f(path);
     return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
-}
-
-bool isCharDevice(const QString& path) {
-    struct stat st {};
-    return ::lstat(QFile::encodeName(path).constData(), &st) == 0 && S_ISCHR(st.st_mode);
 }
 
 // RLIMIT_FSIZE in this process for a scope (it binds root too); SIGXFSZ is OutputFile's to
@@ -78,13 +65,11 @@ class TestOutputFile : public QObject {
 
     QTemporaryDir dir_;
 
-    // A private /dev/full (1,7) or /dev/null (1,3).
-    QString deviceNode(const QString& name, unsigned minor) {
+    // A device that behaves as /dev/full or /dev/null, named name (testing::makeDevice).
+    QString device(const QString& name, SystemDevice kind) {
         const QString path = dir_.filePath(name);
         QFile::remove(path);
-        if (::mknod(QFile::encodeName(path).constData(), S_IFCHR | 0666, makedev(1, minor)) != 0)
-            return {};
-        return path;
+        return testing::makeDevice(path, kind) ? path : QString();
     }
 
 private slots:
@@ -147,16 +132,16 @@ private slots:
     }
 
     void deviceIsWrittenInPlace() {
-        const QString full = deviceNode("full", 7);
-        const QString null = deviceNode("null", 3);
-        if (full.isEmpty() || null.isEmpty())
-            QSKIP("cannot create a private device node here (mknod needs root)");
+        const QString full = device("full", SystemDevice::Full);
+        const QString null = device("null", SystemDevice::Null);
+        QVERIFY(!full.isEmpty() && !null.isEmpty());
         QString error;
         QVERIFY(!OutputFile::writeAll(full, "some bytes", &error));
         QCOMPARE(error, full + QStringLiteral(": cannot write the file: No space left on device"));
-        QVERIFY2(isCharDevice(full), "the device was replaced by a regular file");
+        QVERIFY2(isStillDevice(full, SystemDevice::Full),
+                 "the device was replaced by a regular file");
         QVERIFY2(OutputFile::writeAll(null, QByteArray(100000, 'x'), &error), qPrintable(error));
-        QVERIFY(isCharDevice(null));
+        QVERIFY(isStillDevice(null, SystemDevice::Null));
         OutputFile file(null);
         QVERIFY(file.open());
         QVERIFY(file.inPlace());
@@ -164,39 +149,14 @@ private slots:
 
     void fifoIsWrittenInPlace() {
         const QString fifo = dir_.filePath("pipe");
-        QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0644), 0);
-        // The reader opens without blocking and gives up after 30 s, so that a writer that
-        // never comes fails the test instead of hanging it.
-        QByteArray received;
-        std::thread reader([&] {
-            const int fd = ::open(QFile::encodeName(fifo).constData(), O_RDONLY | O_NONBLOCK);
-            QElapsedTimer timer;
-            timer.start();
-            bool writerSeen = false;
-            while (fd >= 0 && timer.elapsed() < 30000) {
-                pollfd p{fd, POLLIN, 0};
-                if (::poll(&p, 1, 100) <= 0) continue;
-                char buffer[4096];
-                const ssize_t n = ::read(fd, buffer, sizeof buffer);
-                if (n > 0) {
-                    received.append(buffer, n);
-                    writerSeen = true;
-                } else if (n == 0 && writerSeen) {
-                    break;
-                } else if (n == 0) {
-                    ::usleep(10000);
-                }
-            }
-            if (fd >= 0) ::close(fd);
-        });
+        QVERIFY(testing::makeFifo(fifo));
+        FifoReader reader(fifo);
         QString error;
         const bool ok = OutputFile::writeAll(fifo, "through the pipe\n", &error);
-        reader.join();
+        const QByteArray received = reader.take();
         QVERIFY2(ok, qPrintable(error));
         QCOMPARE(received, QByteArray("through the pipe\n"));
-        struct stat st {};
-        QCOMPARE(::lstat(QFile::encodeName(fifo).constData(), &st), 0);
-        QVERIFY(S_ISFIFO(st.st_mode));
+        QVERIFY(testing::isFifo(fifo));
     }
 
     void folderIsRefused() {
@@ -236,8 +196,8 @@ private slots:
     // The app's Save: a failure says why, and the document stays modified (the work is not
     // marked as saved).
     void documentSaveOntoFullDeviceStaysModified() {
-        const QString full = deviceNode("full.phasebox.json", 7);
-        if (full.isEmpty()) QSKIP("cannot create a private device node here (mknod needs root)");
+        const QString full = device("full.phasebox.json", SystemDevice::Full);
+        QVERIFY(!full.isEmpty());
         Document doc;
         ParticleDesc p;
         p.id = "ball";
@@ -248,15 +208,14 @@ private slots:
         QCOMPARE(error, full + QStringLiteral(": cannot write the file: No space left on device"));
         QVERIFY(doc.isModified());
         QVERIFY(doc.filePath() != full);
-        QVERIFY(isCharDevice(full));
+        QVERIFY(isStillDevice(full, SystemDevice::Full));
     }
 
     // The autosave reports a failed write with the reason (and keeps trying later).
     void autosaveOntoFullDeviceReportsWhy() {
         QTemporaryDir recovery;
         const QString file = Autosave::recoveryFilePath(recovery.path());
-        if (::mknod(QFile::encodeName(file).constData(), S_IFCHR | 0666, makedev(1, 7)) != 0)
-            QSKIP("cannot create a private device node here (mknod needs root)");
+        QVERIFY(testing::makeDevice(file, SystemDevice::Full));
         Document doc;
         Autosave autosave(doc, recovery.path(), 3600000);
         QSignalSpy failed(&autosave, &Autosave::autosaveFailed);
@@ -267,7 +226,7 @@ private slots:
         QCOMPARE(failed.size(), 1);
         QCOMPARE(autosave.lastError(),
                  file + QStringLiteral(": cannot write the file: No space left on device"));
-        QVERIFY(isCharDevice(file));
+        QVERIFY(isStillDevice(file, SystemDevice::Full));
     }
 
     void recorderCsvPastFileSizeLimitFails() {

@@ -6,7 +6,6 @@
 // "phasebox-cli:" lines.
 
 #include <QDir>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -16,21 +15,19 @@
 #include <QTest>
 
 #include "CliTestSupport.h"
+#include "tests/support/OutputTargets.h"
 
-#include <fcntl.h>
-#include <poll.h>
 #include <sys/resource.h>
-#include <sys/stat.h>
-#include <sys/sysmacros.h>
-#include <sys/types.h>
 #include <unistd.h>
-
-#include <csignal>
-#include <thread>
 
 namespace {
 
 using Result = phasebox::testing::CliResult;
+using phasebox::testing::FifoReader;
+using phasebox::testing::isFifo;
+using phasebox::testing::isStillDevice;
+using phasebox::testing::readAll;
+using phasebox::testing::SystemDevice;
 
 const char* kBall = R"({
   "format": "phasebox-scene", "version": 1, "name": "ball",
@@ -68,65 +65,12 @@ Result cliLimited(const QStringList& args, rlim_t bytes, const QString& stdoutFi
     return r;
 }
 
-QByteArray readAll(const QString& path) {
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("<unreadable>");
-}
-
-bool isCharDevice(const QString& path) {
-    struct stat st {};
-    return ::lstat(QFile::encodeName(path).constData(), &st) == 0 && S_ISCHR(st.st_mode);
-}
-
-bool isFifo(const QString& path) {
-    struct stat st {};
-    return ::lstat(QFile::encodeName(path).constData(), &st) == 0 && S_ISFIFO(st.st_mode);
-}
-
 // Every line of standard error is one of phasebox-cli's own.
 QString strayStderrLine(const QByteArray& err) {
     for (const QString& line : QString::fromUtf8(err).split(QLatin1Char('\n'), Qt::SkipEmptyParts))
         if (!line.startsWith(QLatin1String("phasebox-cli: "))) return line;
     return {};
 }
-
-// Reads a FIFO to its end in a thread (the CLI's write waits for a reader). Opened without
-// blocking and polled with a deadline, so that a program that never writes to it (the old one
-// renamed a regular file over it) fails the test instead of hanging it.
-class FifoReader {
-public:
-    explicit FifoReader(const QString& path)
-        : thread_([this, path] {
-              const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK);
-              if (fd < 0) return;
-              QElapsedTimer timer;
-              timer.start();
-              bool writerSeen = false;
-              while (timer.elapsed() < 30000) {
-                  pollfd p{fd, POLLIN, 0};
-                  if (::poll(&p, 1, 100) <= 0) continue;
-                  char buffer[65536];
-                  const ssize_t n = ::read(fd, buffer, sizeof buffer);
-                  if (n > 0) {
-                      bytes_.append(buffer, n);
-                      writerSeen = true;
-                  } else if (n == 0 && (writerSeen || (p.revents & POLLHUP))) {
-                      break;  // the writer closed its end
-                  } else if (n == 0) {
-                      ::usleep(10000);  // no writer yet
-                  }
-              }
-              ::close(fd);
-          }) {}
-    QByteArray take() {
-        thread_.join();
-        return bytes_;
-    }
-
-private:
-    QByteArray bytes_;
-    std::thread thread_;
-};
 
 }  // namespace
 
@@ -139,19 +83,17 @@ class TestCliOutputs : public QObject {
     QString write(const QString& name, const QByteArray& bytes) {
         return phasebox::testing::writeFile(dir_, name, bytes);
     }
-    // A private copy of /dev/full (1,7) or /dev/null (1,3): if the program wrongly replaced
-    // it, no system device is harmed, and the test sees it.
-    QString deviceNode(const QString& name, unsigned minor) {
+    // A device that behaves as /dev/full or /dev/null, named name (testing::makeDevice: a
+    // private node where mknod is allowed, else a link to the system's device).
+    QString device(const QString& name, SystemDevice kind) {
         const QString path = dir_.filePath(name);
         QFile::remove(path);
-        if (::mknod(QFile::encodeName(path).constData(), S_IFCHR | 0666, makedev(1, minor)) != 0)
-            return {};
-        return path;
+        return phasebox::testing::makeDevice(path, kind) ? path : QString();
     }
     QString fifo(const QString& name) {
         const QString path = dir_.filePath(name);
         QFile::remove(path);
-        return ::mkfifo(QFile::encodeName(path).constData(), 0644) == 0 ? path : QString();
+        return phasebox::testing::makeFifo(path) ? path : QString();
     }
 
 private slots:
@@ -163,57 +105,58 @@ private slots:
     // --csv onto a full device: exit 3, the path and ENOSPC's words, and the device is still a
     // device (QSaveFile alone renames a regular file over it).
     void csvOntoFullDeviceExitsThreeAndKeepsTheDevice() {
-        const QString full = deviceNode("full", 7);
-        if (full.isEmpty()) QSKIP("cannot create a private device node here (mknod needs root)");
+        const QString full = device("full", SystemDevice::Full);
+        QVERIFY(!full.isEmpty());
         const Result r = cli({"run", ball_, "--csv", full});
         QCOMPARE(r.status, 3);
         QCOMPARE(QString::fromUtf8(r.err).trimmed(),
                  QStringLiteral("phasebox-cli: error: %1: cannot write the CSV file: No space "
                                 "left on device")
                      .arg(full));
-        QVERIFY2(isCharDevice(full), "the device was replaced by a regular file");
+        QVERIFY2(isStillDevice(full, SystemDevice::Full),
+                 "the device was replaced by a regular file");
     }
 
     void plotOntoFullDeviceExitsThree() {
-        const QString full = deviceNode("full.png", 7);
-        if (full.isEmpty()) QSKIP("cannot create a private device node here (mknod needs root)");
+        const QString full = device("full.png", SystemDevice::Full);
+        QVERIFY(!full.isEmpty());
         const Result r = cli({"run", ball_, "--plot-energy", full});
         QCOMPARE(r.status, 3);
         QVERIFY2(r.err.contains(": cannot write the plot: No space left on device"),
                  r.err.constData());
-        QVERIFY(isCharDevice(full));
+        QVERIFY(isStillDevice(full, SystemDevice::Full));
         QCOMPARE(strayStderrLine(r.err), QString());
     }
 
     void accuracyCsvOntoFullDeviceExitsThree() {
-        const QString full = deviceNode("full-accuracy", 7);
-        if (full.isEmpty()) QSKIP("cannot create a private device node here (mknod needs root)");
+        const QString full = device("full-accuracy", SystemDevice::Full);
+        QVERIFY(!full.isEmpty());
         const Result r =
             cli({"accuracy", ball_, "--integrators", "rk4", "--dt", "0.01", "--csv", full});
         QCOMPARE(r.status, 3);
         QVERIFY2(r.err.contains(
                      (full + ": cannot write the CSV file: No space left on device").toUtf8()),
                  r.err.constData());
-        QVERIFY(isCharDevice(full));
+        QVERIFY(isStillDevice(full, SystemDevice::Full));
     }
 
     void sceneCommandOntoFullDeviceExitsThree() {
-        const QString full = deviceNode("full-scene", 7);
-        if (full.isEmpty()) QSKIP("cannot create a private device node here (mknod needs root)");
+        const QString full = device("full-scene", SystemDevice::Full);
+        QVERIFY(!full.isEmpty());
         const Result r = cli({"scene", "pyramid", full});
         QCOMPARE(r.status, 3);
         QVERIFY2(r.err.contains(": cannot write the file: No space left on device"),
                  r.err.constData());
-        QVERIFY(isCharDevice(full));
+        QVERIFY(isStillDevice(full, SystemDevice::Full));
     }
 
     // A null device takes everything: exit 0, and it stays a device.
     void csvOntoNullDeviceIsWrittenInPlace() {
-        const QString null = deviceNode("null", 3);
-        if (null.isEmpty()) QSKIP("cannot create a private device node here (mknod needs root)");
+        const QString null = device("null", SystemDevice::Null);
+        QVERIFY(!null.isEmpty());
         const Result r = cli({"run", ball_, "--csv", null, "--json"});
         QCOMPARE(r.status, 0);
-        QVERIFY(isCharDevice(null));
+        QVERIFY(isStillDevice(null, SystemDevice::Null));
     }
 
     // A FIFO gets the CSV and the plot through the pipe, and stays a FIFO.

@@ -2,20 +2,16 @@
 // Scenes shared by the GUI suites, built from the scene description as the app loads them.
 
 #include "physics/scene/SceneDesc.h"
+#include "tests/support/SceneBuilders.h"
 
 #include <string>
 
 namespace phasebox::testing {
 
-inline ParticleDesc particle(const std::string& id, Point2 position, double mass = 1.0,
-                             Point2 velocity = {0.0, 0.0}) {
-    ParticleDesc p;
-    p.id = id;
-    p.position = position;
-    p.velocity = velocity;
-    p.mass = mass;
-    p.radius = 0.1;
-    return p;
+// The GUI suites' particles are 10 cm in radius: big enough to be seen and picked.
+inline ParticleDesc visibleParticle(const std::string& id, Point2 position, double mass = 1.0,
+                                    Point2 velocity = {0.0, 0.0}) {
+    return particle(id, position, mass, velocity, 0.1);
 }
 
 // Two masses on a spring and a spinning box, no external force: the total momentum
@@ -23,18 +19,14 @@ inline ParticleDesc particle(const std::string& id, Point2 position, double mass
 inline SceneDesc freeScene() {
     SceneDesc scene;
     scene.name = "Free system";
-    scene.particles.push_back(particle("a", {-1.0, 0.0}, 1.0, {1.0, 0.5}));
-    scene.particles.push_back(particle("b", {1.0, 0.0}, 3.0, {-0.2, 0.1}));
+    scene.particles.push_back(visibleParticle("a", {-1.0, 0.0}, 1.0, {1.0, 0.5}));
+    scene.particles.push_back(visibleParticle("b", {1.0, 0.0}, 3.0, {-0.2, 0.1}));
     BoxDesc box;
     box.id = "spinner";
     box.position = {0.0, 3.0};
     box.angularVelocity = 2.0;
     scene.boxes.push_back(box);
-    SpringDesc spring;
-    spring.a = "a";
-    spring.b = "b";
-    spring.stiffness = 20.0;
-    scene.springs.push_back(spring);
+    scene.springs.push_back(bodySpring("a", "b", 20.0));
     return scene;
 }
 

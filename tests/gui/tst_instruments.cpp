@@ -52,7 +52,7 @@
 
 using namespace phasebox;
 using phasebox::testing::freeScene;
-using phasebox::testing::particle;
+using phasebox::testing::visibleParticle;
 
 namespace {
 
@@ -61,8 +61,8 @@ namespace {
 SceneDesc springScene(double k, double m) {
     SceneDesc scene;
     scene.name = "Mass on a spring";
-    scene.particles.push_back(particle("bob", {0.5, 0.0}, m));
-    scene.particles.push_back(particle("marker", {-1.0, 1.0}));
+    scene.particles.push_back(visibleParticle("bob", {0.5, 0.0}, m));
+    scene.particles.push_back(visibleParticle("marker", {-1.0, 1.0}));
     scene.particles.back().pinned = true;
     SpringDesc spring;
     spring.id = "spring";

@@ -27,7 +27,7 @@
 
 using namespace phasebox;
 using phasebox::testing::freeScene;
-using phasebox::testing::particle;
+using phasebox::testing::visibleParticle;
 
 namespace {
 
@@ -58,7 +58,7 @@ struct Window {
     // A scene of one particle, seen through exactView.
     void openWithParticle(const std::string& id, Point2 position) {
         SceneDesc scene;
-        scene.particles.push_back(particle(id, position));
+        scene.particles.push_back(visibleParticle(id, position));
         load(scene);
         exactView();
     }
@@ -81,7 +81,7 @@ SceneDesc restingScene(double m) {
     SceneDesc scene;
     scene.name = "Resting";
     scene.effects.gravity = GravityDesc{{0.0, -kG}};
-    scene.particles.push_back(particle("ball", {0.0, 0.1}, m));
+    scene.particles.push_back(visibleParticle("ball", {0.0, 0.1}, m));
     PlaneDesc floor;
     floor.id = "floor";
     scene.planes.push_back(floor);
@@ -134,8 +134,8 @@ void TestMeasureTools::rulerAttachedToParticlesFollowsThem() {
     // No force: a moves along x at 1 m/s, b along y at 0.5 m/s, so at time t the ruler reads
     // √((3 − t)² + (4 + 0.5 t)²).
     SceneDesc scene;
-    scene.particles.push_back(particle("a", {0.0, 0.0}, 1.0, {1.0, 0.0}));
-    scene.particles.push_back(particle("b", {3.0, 4.0}, 2.0, {0.0, 0.5}));
+    scene.particles.push_back(visibleParticle("a", {0.0, 0.0}, 1.0, {1.0, 0.0}));
+    scene.particles.push_back(visibleParticle("b", {3.0, 4.0}, 2.0, {0.0, 0.5}));
     Window win;
     win.load(scene);
     win.exactView();
@@ -286,7 +286,7 @@ void TestMeasureTools::freeBodyOfABodyHangingAtEquilibrium() {
     const double m = 1.5, k = 60.0, L0 = 1.0;
     SceneDesc scene;
     scene.effects.gravity = GravityDesc{{0.0, -kG}};
-    scene.particles.push_back(particle("bob", {0.0, -(L0 + m * kG / k)}, m));
+    scene.particles.push_back(visibleParticle("bob", {0.0, -(L0 + m * kG / k)}, m));
     SpringDesc spring;
     spring.id = "spring";
     spring.a = "bob";

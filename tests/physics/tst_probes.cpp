@@ -7,6 +7,7 @@
 
 #include "PhysicsTestSupport.h"
 #include "physics/world/Probes.h"
+#include "tests/support/SceneBuilders.h"
 
 #include <QTest>
 
@@ -28,17 +29,6 @@ Probe probe(const World& world, const std::string& text) {
 
 double value(const World& world, const std::string& text) {
     return evaluateProbe(world, probe(world, text));
-}
-
-ParticleDesc particle(const std::string& id, Point2 position, double mass = 1.0,
-                      Point2 velocity = {0.0, 0.0}) {
-    ParticleDesc p;
-    p.id = id;
-    p.position = position;
-    p.velocity = velocity;
-    p.mass = mass;
-    p.radius = 0.0;
-    return p;
 }
 
 }  // namespace

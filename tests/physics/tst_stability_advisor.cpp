@@ -3,6 +3,7 @@
 #include "PhysicsTestSupport.h"
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/scene/BuildWorld.h"
+#include "tests/support/SceneBuilders.h"
 
 #include <QTest>
 
@@ -48,17 +49,8 @@ private slots:
         // Anchor –k– m –k– m (zero rest lengths): ω² = (3 ± √5)/2 · k/m; the advisor must
         // find the higher one.
         SceneDesc s = spring(100.0, 1.0, "symplectic_euler", 0.01);
-        ParticleDesc p2;
-        p2.id = "second";
-        p2.position = {0.3, 0.1};
-        p2.radius = 0.0;
-        s.particles.push_back(p2);
-        SpringDesc sp;
-        sp.a = "ball";
-        sp.b = "second";
-        sp.stiffness = 100.0;
-        sp.restLength = 0.0;
-        s.springs.push_back(sp);
+        s.particles.push_back(testing::particle("second", {0.3, 0.1}));
+        s.springs.push_back(testing::bodySpring("ball", "second", 100.0, 0.0));
         auto world = buildWorld(s).world;
         const double expected = std::sqrt((3.0 + std::sqrt(5.0)) / 2.0 * 100.0);
         QVERIFY(std::abs(adviseStability(*world).omegaMax - expected) < 1e-3 * expected);
