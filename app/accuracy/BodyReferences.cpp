@@ -18,19 +18,6 @@ namespace phasebox {
 
 using namespace exact_detail;
 
-namespace {
-
-// Distance from a point to a static rectangle (zero inside).
-double distanceToBox(const Box& box, const Vec2& point) {
-    const Vec2 local = rotation(-box.angle) * (point - box.position);
-    const Vec2 half = 0.5 * box.size;
-    const Vec2 outside(std::max(std::abs(local.x()) - half.x(), 0.0),
-                       std::max(std::abs(local.y()) - half.y(), 0.0));
-    return outside.norm();
-}
-
-}  // namespace
-
 std::optional<ExactReference> findSupportedReferences(const SceneDesc& scene, const World& world,
                                                       double endTime) {
     if (!world.contacts() || world.settings().contactModel != ContactModel::Impulse ||
@@ -251,12 +238,12 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
         if (!floor) continue;
         // Impulses: the pair's restitution is the larger of the two (ContactStage).
         const PenaltyBounceMotion motion =
-            penalty
-                ? PenaltyBounceMotion::fromState(height, body.velocity.dot(up), g.norm(),
-                                                 body.radius, k, c, body.mass, endTime)
-                : PenaltyBounceMotion::impulse(height, body.velocity.dot(up), g.norm(), body.radius,
-                                               std::max(body.restitution, floor->restitution),
-                                               ContactSettings{}.restitutionThreshold, endTime);
+            penalty ? PenaltyBounceMotion::fromState(height, body.velocity.dot(up), g.norm(),
+                                                     body.radius, k, c, body.mass, endTime)
+                    : PenaltyBounceMotion::impulse(
+                          height, body.velocity.dot(up), g.norm(), body.radius,
+                          std::max(body.restitution, floor->restitution),
+                          world.settings().contacts.restitutionThreshold, endTime);
         double lo = height, hi = height;
         for (int i = 0; i <= kSamples; ++i) {
             const double s = motion.height(endTime * i / kSamples);

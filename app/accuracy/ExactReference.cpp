@@ -29,6 +29,10 @@ Vec ExactReference::positions(double t) const {
     for (const Modes& m : modes_)
         for (std::size_t i = 0; i < m.dofs.size(); ++i)
             q.segment<2>(m.dofs[i]) = m.origin + m.along(i, t) * m.axis;
+    for (const Flight& f : flights_) {
+        q.segment<2>(f.dof) = f.position(t);
+        if (f.rigid) q[f.dof + 2] = f.angle(t);
+    }
     return q;
 }
 
@@ -57,6 +61,10 @@ double ExactReference::position(int dof, double t) const {
         for (std::size_t i = 0; i < m.dofs.size(); ++i)
             if (dof == m.dofs[i] || dof == m.dofs[i] + 1)
                 return m.origin[dof - m.dofs[i]] + m.along(i, t) * m.axis[dof - m.dofs[i]];
+    for (const Flight& f : flights_) {
+        if (dof == f.dof || dof == f.dof + 1) return f.position(t)[dof - f.dof];
+        if (f.rigid && dof == f.dof + 2) return f.angle(t);
+    }
     return 0.0;
 }
 
@@ -69,8 +77,11 @@ bool ExactReference::covers(int dof) const {
            std::any_of(axes_.begin(), axes_.end(), [&](auto& a) { return pair(a.dof); }) ||
            std::any_of(orbits_.begin(), orbits_.end(), [&](auto& o) { return pair(o.dof); }) ||
            std::any_of(bounces_.begin(), bounces_.end(), [&](auto& b) { return pair(b.dof); }) ||
-           std::any_of(modes_.begin(), modes_.end(), [&](const Modes& m) {
-               return std::any_of(m.dofs.begin(), m.dofs.end(), pair);
+           std::any_of(
+               modes_.begin(), modes_.end(),
+               [&](const Modes& m) { return std::any_of(m.dofs.begin(), m.dofs.end(), pair); }) ||
+           std::any_of(flights_.begin(), flights_.end(), [&](const Flight& f) {
+               return pair(f.dof) || (f.rigid && dof == f.dof + 2);
            });
 }
 
@@ -181,6 +192,7 @@ std::optional<ExactReference> findDisplayReference(const SceneDesc& scene, const
     // A closed form for the whole run first, then single bodies' (which go on through their
     // contacts: bounces, rolling and sliding), then the scene's up to its first contact.
     if (auto whole = findExactReference(scene, world, endTime)) return whole;
+    if (auto impact = findImpactReference(scene, world, endTime)) return impact;
     std::optional<ExactReference> bodies = findBodyReferences(scene, world, endTime);
     if (auto supported = findSupportedReferences(scene, world, endTime)) {
         if (!bodies) return supported;

@@ -169,6 +169,25 @@ private:
     };
     std::vector<Modes> modes_;
     friend std::optional<ExactReference> coupledOnALine(const World&, double);
+    // A free body (no force but uniform gravity) moving in flights joined where an impulse
+    // changes its velocity and spin: x = x_k + v_k·τ + ½·g·τ², angle = θ_k + ω_k·τ, τ = t − t_k.
+    struct Flight {
+        int dof;
+        bool rigid;  // the angle is the state's third coordinate
+        Vec2 g{0.0, 0.0};
+        struct Phase {
+            double start;
+            Vec2 x, v;
+            double angle, omega;
+        };
+        std::vector<Phase> phases;
+        const Phase& at(double t) const;
+        Vec2 position(double t) const;
+        double angle(double t) const;
+    };
+    std::vector<Flight> flights_;
+    friend std::optional<ExactReference> findImpactReference(const SceneDesc&, const World&,
+                                                             double);
 };
 
 // The closed form of the scene's motion up to endTime, or nullopt when there is none that is
@@ -195,6 +214,16 @@ std::optional<ExactReference> findSupportedReferences(const SceneDesc& scene, co
 // moving along it, with no other force: the normal modes (kind "coupled oscillators"), while no
 // spring's ends pass each other. findExactReference tries it when springs couple particles.
 std::optional<ExactReference> coupledOnALine(const World& world, double endTime);
+
+// Two free bodies (a particle or disk against a disk or a box that does not spin before it is
+// hit) that meet once under impulse contacts, with nothing but uniform gravity acting and
+// nothing else within reach: each body flies until the impact, where one impulse
+// j = −(1 + e)·v_n/(1/m₁ + 1/m₂ + (r₁×n)²/I₁ + (r₂×n)²/I₂) along the normal changes both
+// momenta and spins, and flies on (kind "impact"). Holds for the whole run when they do not
+// meet again; frictionless pairs only, unless the impact has no sliding to resist. nullopt
+// otherwise. The lesson "Impulse and spin".
+std::optional<ExactReference> findImpactReference(const SceneDesc& scene, const World& world,
+                                                  double endTime);
 
 // What View → Exact Solution draws: findExactReference's answer (for the whole run), else
 // single bodies' closed forms (findBodyReferences and findSupportedReferences together: they go

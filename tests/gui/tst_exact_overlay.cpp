@@ -231,6 +231,29 @@ private slots:
         QVERIFY(window.overlay().ghosts.isEmpty());
     }
 
+    // "Impulse and spin": the box's ghost is its outline, turned by the closed form's spin
+    // after the hit (tst_exact_reference checks the numbers).
+    void impulseSpinLessonDrawsTheBoxTurning() {
+        Window window;
+        window.open(QStringLiteral(":/lessons/impulse-spin.phasebox.json"));
+        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("impact"));
+        QVERIFY(window.w.controller().advance(1.0));
+        window.w.refreshNow();
+        QCOMPARE(window.overlay().ghosts.size(), 2);
+        const World& world = window.w.document().world();
+        const Box& box = world.boxes()[0];
+        bool found = false;
+        for (const auto& ghost : window.overlay().ghosts)
+            if (!ghost.size.isEmpty()) {
+                found = true;
+                QCOMPARE(ghost.size, QSizeF(1.0, 0.5));
+                // Clockwise after the hit, as the simulated box turns.
+                QVERIFY(ghost.angle < -1.0);
+                QVERIFY(std::abs(ghost.angle - world.positions()[box.dof + 2]) < 1e-6);
+            }
+        QVERIFY(found);
+    }
+
     // Every lesson and example is searched; which have a closed form is printed to look at.
     void lessonsWithClosedFormsHaveOne() {
         Window window;
@@ -249,7 +272,7 @@ private slots:
               std::pair{"restitution-friction", "bounce, rolling and sliding"},
               std::pair{"three-ways-to-collide", "bounce"},
               std::pair{"stiff-spring-implicit", "coupled oscillators"},
-              std::pair{"simple-pendulum", "simple pendulum"},
+              std::pair{"impulse-spin", "impact"}, std::pair{"simple-pendulum", "simple pendulum"},
               std::pair{"bead-on-hoop", "simple pendulum"},
               std::pair{"euler-orbit-spiral", "Kepler orbit"}}) {
             window.open(QStringLiteral(":/lessons/%1.phasebox.json").arg(QLatin1String(name)));

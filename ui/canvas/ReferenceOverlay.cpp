@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace phasebox::ui {
 
@@ -32,6 +33,15 @@ void drawReferenceOverlay(QPainter& p, const ViewTransform& view, const Referenc
     QPen ghost(colour, 2.0 * lw, Qt::DashLine);
     p.setPen(ghost);
     for (const ReferenceOverlay::Ghost& g : overlay.ghosts) {
+        if (!g.size.isEmpty()) {
+            const double c = std::cos(g.angle), s = std::sin(g.angle);
+            const double hw = 0.5 * g.size.width(), hh = 0.5 * g.size.height();
+            QPolygonF outline;
+            for (const auto& [x, y] : {std::pair{-hw, -hh}, {hw, -hh}, {hw, hh}, {-hw, hh}})
+                outline.append(view.toScreen(g.centre + QPointF(c * x - s * y, s * x + c * y)));
+            p.drawPolygon(outline);
+            continue;
+        }
         const double r =
             std::max(view.toPixels(g.radius), SceneRenderer::kMinParticlePixels + 3.0 * lw);
         p.drawEllipse(view.toScreen(g.centre), r, r);

@@ -6,6 +6,7 @@
 #include <QList>
 #include <QPointF>
 #include <QPolygonF>
+#include <QSizeF>
 #include <QString>
 
 QT_BEGIN_NAMESPACE
@@ -21,6 +22,10 @@ struct ReferenceOverlay {
     struct Ghost {
         QPointF centre;       // world m
         double radius = 0.0;  // m; drawn at least a few pixels wide
+        // A rectangle's width and height (m) and angle (rad), drawn as its outline; a circle's
+        // ghost has none.
+        QSizeF size;
+        double angle = 0.0;
     };
     QList<QPolygonF> paths;  // world m
     QList<Ghost> ghosts;

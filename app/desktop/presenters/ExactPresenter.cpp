@@ -155,15 +155,24 @@ void ExactPresenter::refresh() {
     for (const Particle& p : world.particles()) {
         if (p.dof < 0 || p.cloth >= 0 || !reference_->covers(p.dof) || ghosts++ >= kMaxPaths)
             continue;
-        overlay.ghosts.append(
-            {QPointF(reference_->position(p.dof, t), reference_->position(p.dof + 1, t)),
-             p.radius});
+        ui::ReferenceOverlay::Ghost ghost;
+        ghost.centre = QPointF(reference_->position(p.dof, t), reference_->position(p.dof + 1, t));
+        ghost.radius = p.radius;
+        overlay.ghosts.append(ghost);
     }
     for (const Box& b : world.boxes()) {
         if (b.dof < 0 || !reference_->covers(b.dof) || ghosts++ >= kMaxPaths) continue;
-        overlay.ghosts.append(
-            {QPointF(reference_->position(b.dof, t), reference_->position(b.dof + 1, t)),
-             b.shape == RigidShape::Disk ? b.radius : 0.0});
+        ui::ReferenceOverlay::Ghost ghost;
+        ghost.centre = QPointF(reference_->position(b.dof, t), reference_->position(b.dof + 1, t));
+        ghost.radius = b.shape == RigidShape::Disk ? b.radius : 0.0;
+        // A rectangle turned by the closed form's angle, or by the simulation's where the
+        // closed form gives none.
+        if (b.shape == RigidShape::Rectangle) {
+            ghost.size = QSizeF(b.size.x(), b.size.y());
+            ghost.angle = reference_->covers(b.dof + 2) ? reference_->position(b.dof + 2, t)
+                                                        : world.positions()[b.dof + 2];
+        }
+        overlay.ghosts.append(ghost);
     }
     overlay.label =
         std::isinf(reference_->validUntil())
