@@ -342,6 +342,44 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
     if (!eb.turns) r.jb.col(2).setZero();
 }
 
+Vec2 JointSolver::pointOf(const End& e, const Vec& q) const {
+    if (e.dof < 0) return e.fixed;
+    if (!e.turns) return q.segment<2>(e.dof);
+    return q.segment<2>(e.dof) + rotations_[e.slot] * e.local;
+}
+
+JointSolver::Vec3 JointSolver::violationOf(int k, const Vec& q) const {
+    const Joint& j = joints_[k];
+    const End& ea = endA_[k];
+    const End& eb = endB_[k];
+    const Vec2 pa = pointOf(ea, q);
+    Vec3 c = Vec3::Zero();
+    switch (j.type) {
+        case Joint::Type::Hinge:
+        case Joint::Type::Weld: {
+            c.head<2>() = pa - pointOf(eb, q) - j.offset;
+            // The angle row, where it is one of the equalities (a weld's).
+            const double angleA = ea.dof < 0 ? ea.angle0 : ea.turns ? q[ea.dof + 2] : 0.0;
+            const double angleB = eb.dof < 0 ? eb.angle0 : eb.turns ? q[eb.dof + 2] : 0.0;
+            c[2] = angleB - angleA - j.referenceAngle;
+            break;
+        }
+        case Joint::Type::Rod:
+        case Joint::Type::Rope:
+            c[0] = (pa - pointOf(eb, q)).norm() - j.length;
+            break;
+        case Joint::Type::Pulley:
+            c[0] =
+                -j.length + (pa - j.groundA).norm() + j.ratio * (pointOf(eb, q) - j.groundB).norm();
+            break;
+        case Joint::Type::Track:
+            c[0] =
+                j.circle ? (pa - j.center).norm() - j.radius : j.lineNormal.dot(pa - j.linePoint);
+            break;
+    }
+    return c;
+}
+
 void JointSolver::evaluateRows(Mode mode, const Vec& q, const Vec& u) {
     cacheRotations(q);
     for (int k = 0; k < jointCount(); ++k) rowsOf(k, mode, q, u, rows_[k], true);
@@ -544,16 +582,15 @@ bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invM
     dropInequalities();
     bool factored = false;
     double previous = std::numeric_limits<double>::infinity();
-    Rows at;
     for (int it = 0; it < kProjectionIterations; ++it) {
         double worst = 0.0;
         cacheRotations(q);
         for (int k = 0; k < jointCount(); ++k) {
-            rowsOf(k, Mode::Position, q, u, at, true);
+            const Vec3 c = violationOf(k, q);
             rhs_[k].setZero();
             for (int i = 0; i < rows_[k].count; ++i) {
-                rhs_[k][i] = -at.c[i];
-                worst = std::max(worst, std::abs(at.c[i]));
+                rhs_[k][i] = -c[i];
+                worst = std::max(worst, std::abs(c[i]));
             }
         }
         if (worst <= kProjectionTolerance) return true;

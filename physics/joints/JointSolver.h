@@ -131,6 +131,11 @@ private:
     // The active rows of joint k at (q, u) in the given mode.
     void rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& rows,
                 bool cached = false) const;
+    // The equality rows' C of joint k at q (as rowsOf in Position mode computes it, without
+    // the Jacobian), the rotations cached: what each SHAKE iteration needs.
+    Vec3 violationOf(int k, const Vec& q) const;
+    // An end's point at q, the rotation cached.
+    Vec2 pointOf(const End& e, const Vec& q) const;
     void evaluateRows(Mode mode, const Vec& q, const Vec& u);
     // λ of the equality rows for the unconstrained acceleration accel (a rope that would
     // push goes slack); keeps forces_.
