@@ -19,6 +19,7 @@
 //   - after exit 0 every regular output named exists and a plot is a whole PNG or SVG.
 
 #include "app/cli/Cli.h"
+#include "tests/support/OutputTargets.h"
 
 #include <QBuffer>
 #include <QByteArray>
@@ -29,8 +30,6 @@
 #include <QStringList>
 #include <QTextStream>
 
-#include <sys/stat.h>
-#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <cstddef>
@@ -69,12 +68,10 @@ public:
             return false;
         ::link(QFile::encodeName(path("scene.json")).constData(),
                QFile::encodeName(path("scene-link.json")).constData());
-        devices_ = true;
-        for (const auto& [name, minor] : {std::pair{"full", 7u}, std::pair{"full.png", 7u},
-                                          std::pair{"null", 3u}, std::pair{"null.csv", 3u}})
-            devices_ = ::mknod(QFile::encodeName(path(QLatin1String(name))).constData(),
-                               S_IFCHR | 0666, makedev(1, minor)) == 0 &&
-                       devices_;
+        // A private node where mknod is allowed, else a link to the system's device
+        // (tests/support/OutputTargets.h): the device cases always run.
+        for (const auto& [name, device] : kDevices)
+            if (!testing::makeDevice(path(QLatin1String(name)), device)) return false;
         return true;
     }
 
@@ -98,9 +95,6 @@ public:
                                                         {"@null", "null"},
                                                         {"@null.csv", "null.csv"}};
         if (const auto it = targets.find(raw); it != targets.end()) {
-            if (!devices_ &&
-                (raw.startsWith(QLatin1String("@full")) || raw.startsWith(QLatin1String("@null"))))
-                return path(QStringLiteral("new.csv"));
             return path(it->second);
         }
         if (isOutput && raw != QLatin1String("-")) {
@@ -129,11 +123,12 @@ public:
         return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
     }
     bool exists(const QString& name) const { return QFileInfo::exists(path(name)); }
-    bool isCharDevice(const QString& name) const {
-        struct stat st {};
-        return ::lstat(QFile::encodeName(path(name)).constData(), &st) == 0 && S_ISCHR(st.st_mode);
+    // The devices reset() made, each still what it put there (not replaced by a file).
+    const char* replacedDevice() const {
+        for (const auto& [name, device] : kDevices)
+            if (!testing::isStillDevice(path(QLatin1String(name)), device)) return name;
+        return nullptr;
     }
-    bool devices() const { return devices_; }
     QStringList files() const {
         return QDir(root_).entryList(
             QDir::Files | QDir::System | QDir::Hidden | QDir::Dirs | QDir::NoDotAndDotDot,
@@ -146,8 +141,12 @@ private:
         return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
     }
 
+    static constexpr std::pair<const char*, testing::SystemDevice> kDevices[] = {
+        {"full", testing::SystemDevice::Full},
+        {"full.png", testing::SystemDevice::Full},
+        {"null", testing::SystemDevice::Null},
+        {"null.csv", testing::SystemDevice::Null}};
     QString root_;
-    bool devices_ = false;
 };
 
 // statusOut (when given) gets the exit status, for a replay to see which paths its seeds take.
@@ -207,10 +206,8 @@ inline QString checkCliOutputInput(const std::uint8_t* data, std::size_t size, C
             return broken(QStringLiteral("a standard error line without the prefix: ") + line);
     if (ws.read(QStringLiteral("scene.json")) != kFuzzScene)
         return broken(QStringLiteral("the scene file was written"));
-    if (ws.devices())
-        for (const char* device : {"full", "full.png", "null", "null.csv"})
-            if (!ws.isCharDevice(QLatin1String(device)))
-                return broken(QStringLiteral("the device %1 was replaced").arg(device));
+    if (const char* device = ws.replacedDevice())
+        return broken(QStringLiteral("the device %1 was replaced").arg(QLatin1String(device)));
     if (!QFileInfo(ws.path(QStringLiteral("dir"))).isDir())
         return broken(QStringLiteral("the folder was replaced"));
     for (const QString& name : ws.files())
