@@ -396,7 +396,8 @@ JointSolver::Vec3 JointSolver::jTimes(int k, const Vec& x) const {
     return out;
 }
 
-void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x) const {
+template <class Add>
+void JointSolver::forEachJTranspose(const Vec& invMass, Add&& add) const {
     for (int k = 0; k < jointCount(); ++k) {
         const Rows& r = rows_[k];
         if (r.count == 0) continue;
@@ -404,9 +405,21 @@ void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x) const 
             if (end->dof < 0) continue;
             const Vec3 f = jac->transpose() * lambda_[k];
             const int dofs = end->turns ? 3 : 2;
-            for (int i = 0; i < dofs; ++i) x[end->dof + i] += scale * invMass[end->dof + i] * f[i];
+            for (int i = 0; i < dofs; ++i) add(end->dof + i, invMass[end->dof + i], f[i]);
         }
     }
+}
+
+void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x) const {
+    forEachJTranspose(invMass, [&](int dof, double w, double f) { x[dof] += scale * w * f; });
+}
+
+void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x, double scaleY,
+                                Vec& y) const {
+    forEachJTranspose(invMass, [&](int dof, double w, double f) {
+        x[dof] += scale * w * f;
+        y[dof] += scaleY * w * f;
+    });
 }
 
 // ---- the block LDLᵀ --------------------------------------------------------------------------
@@ -601,8 +614,7 @@ bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invM
         if (!factored) factor(invMass);
         factored = true;
         solve();
-        addJTranspose(invMass, 1.0, q);
-        addJTranspose(invMass, 1.0 / h, u);  // the same impulse moves the velocity
+        addJTranspose(invMass, 1.0, q, 1.0 / h, u);  // the same impulse moves the velocity
     }
     return false;
 }

@@ -147,8 +147,14 @@ private:
     void solveFor(const Vec& invMass, Vec& x, double scale, bool fromViolation, const Vec& u);
     // J·x for joint k's rows (x a state-sized vector).
     Vec3 jTimes(int k, const Vec& x) const;
-    // x += scale·W·Jᵀ·λ over every joint (W = M⁻¹).
+    // add(dof, W[dof], (Jᵀ·λ)[dof]) over every joint's dynamic ends (W = M⁻¹).
+    template <class Add>
+    void forEachJTranspose(const Vec& invMass, Add&& add) const;
+    // x += scale·W·Jᵀ·λ over every joint.
     void addJTranspose(const Vec& invMass, double scale, Vec& x) const;
+    // The same impulse into two vectors in one pass: x += scale·W·Jᵀ·λ, y += scaleY·W·Jᵀ·λ
+    // (SHAKE moves the positions and the velocities alike).
+    void addJTranspose(const Vec& invMass, double scale, Vec& x, double scaleY, Vec& y) const;
     // Assembles J·W·Jᵀ from rows_, factors it and solves for lambda_ from rhs_.
     void factor(const Vec& invMass);
     void solve();
