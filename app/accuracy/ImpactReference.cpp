@@ -182,7 +182,7 @@ std::optional<ExactReference> findImpactReference(const SceneDesc& scene, const 
     const Vec2 va = a.v + tc * g, vb = b.v + tc * g;
     const Vec2 ra = point - xa, rb = point - xb;
     const auto pointVelocity = [](const Vec2& v, double omega, const Vec2& r) {
-        return Vec2(v + omega * Vec2(-r.y(), r.x()));
+        return Vec2(v + omega * perp(r));
     };
     const Vec2 relative = pointVelocity(vb, b.omega, rb) - pointVelocity(va, a.omega, ra);
     const double vn = relative.dot(n);
