@@ -548,33 +548,40 @@ bool World::step() {
         }
         timer.start(StepStage::Integrate);
         const bool ok = integrate(t, h, next, sumHere ? &summary : nullptr);
+        if (ok && joints_) {
+            // The joints complete the integrator's step before anything else moves the bodies
+            // (SHAKE, the velocities onto the tangent, the motors): what they change is booked
+            // as the joints' own, and SHAKE answers only the integrator's drift.
+            timer.start(StepStage::SolveJoints);
+            solveJoints(h, next);
+        }
         if (ok && contacts_ && !penalty_ && s == 0) {
             // Once per frame, after the first smooth step shows where the bodies are heading.
             timer.start(StepStage::Collide);
             collide(next, substeps);
         }
-        // Contacts and joints on the same step trade energy back and forth (each stage books
-        // what it moves); what counts is their net change, booked once after both.
-        const bool both = ok && contacts_ && joints_;
+        // Contacts move jointed bodies apart, and the joints answer (rejoin()): the two trade
+        // energy back and forth (each stage books what it moves), and what counts is their net
+        // change, booked once after both: taken out, work_nc; put in, correction.
+        const bool kinematic = settings_.contactModel == ContactModel::Kinematic;
+        const bool both =
+            ok && contacts_ && !penalty_ && joints_ && (kinematic || contacts_->touching());
         const EnergyLedger booked = ledger_;
         const double before = both ? mechanicalEnergy(q_[next], u_[next]) : 0.0;
         if (ok && contacts_ && !penalty_) {
             timer.start(StepStage::SolveContacts);
-            if (settings_.contactModel == ContactModel::Kinematic)
+            if (kinematic)
                 solveKinematic(next);
             else
                 solveContacts(h, next);
         }
-        if (ok && joints_) {
+        if (both) {
             timer.start(StepStage::SolveJoints);
-            solveJoints(h, next);
-        }
-        if (both && contacts_->touching()) {
+            rejoin(next);
             const double after = mechanicalEnergy(q_[next], u_[next]);
             if (std::isfinite(after)) {
-                const double motors = joints_->lastMotorWork();
-                const double net = after - before - motors;
-                ledger_.workNc = booked.workNc + std::min(net, 0.0) + motors;
+                const double net = after - before;
+                ledger_.workNc = booked.workNc + std::min(net, 0.0);
                 ledger_.correction = booked.correction + std::max(net, 0.0);
             }
         }
@@ -601,35 +608,19 @@ bool World::integrate(double t, double h, int next, StateSummary* summary) {
 }
 
 void World::solveJoints(double h, int next) {
-    // The booking (CONTRACT §6): SHAKE and the velocities' projection onto the tangent are the
-    // discrete constraint forces of the method, so what they change is the method's own (it
-    // stays in drift); moving positions further (what SHAKE could not reach, inequalities past
-    // their bounds) is error correction; an inequality catching a body takes energy out like
-    // an inelastic contact (work_nc) and never puts it in (correction); a motor's push is work.
+    // Straight after the integrator. The booking (CONTRACT §6): SHAKE and the velocities'
+    // projection onto the tangent are the discrete constraint forces of the method, so what
+    // they change is the method's own (it stays in drift); moving positions further (what
+    // SHAKE could not reach, inequalities past their bounds) is error correction; an inequality
+    // catching a body takes energy out like an inelastic contact (work_nc) and never puts it in
+    // (correction); a motor's push is work.
     Vec& q = q_[next];
     Vec& u = u_[next];
-    const bool interleave = contacts_ && contacts_->touching();
     joints_->shake(h, q_[current_], q, u, invMass_);
     const double beforeCorrection = mechanicalEnergy(q, u);
     joints_->correctPositions(q, u, invMass_);
     const double afterCorrection = mechanicalEnergy(q, u);
-    bool caught = joints_->projectVelocities(q, u, invMass_);
-    // Contacts and joints on the same bodies: block Gauss-Seidel between the two solvers, each
-    // exact or converged on its own, so that neither undoes the other (a wheel on the ground
-    // is held up by the contact and to the car by the hinge). What the contacts do here is
-    // their work, as in the contact stage: never energy put in.
-    if (interleave) {
-        // Until a round changes no velocity by more than kRoundTolerance: a chain whose links
-        // only lie near each other settles in a round or two, a car on its wheels takes more.
-        for (int round = 0; round < kJointContactRounds; ++round) {
-            roundStart_ = u;
-            contacts_->relaxVelocities(u, 2);
-            caught = joints_->projectVelocities(q, u, invMass_, true) || caught;
-            if ((u - roundStart_).lpNorm<Eigen::Infinity>() <= kRoundTolerance) break;
-        }
-        contacts_->keepImpulses();
-        caught = true;
-    }
+    const bool caught = joints_->projectVelocities(q, u, invMass_);
     const double projected = caught ? mechanicalEnergy(q, u) : afterCorrection;
     const double motorWork = joints_->driveMotors(h, q, u, mass_, invMass_);
     if (!std::isfinite(projected) || !std::isfinite(motorWork)) return;  // the guard reports it
@@ -637,6 +628,27 @@ void World::solveJoints(double h, int next) {
     const double catchEnergy = projected - afterCorrection;
     ledger_.workNc += std::min(catchEnergy, 0.0) + motorWork;
     ledger_.correction += std::max(catchEnergy, 0.0);
+}
+
+void World::rejoin(int next) {
+    // After the contacts: the joints back onto what the contacts moved (positions, then
+    // velocities), then block Gauss-Seidel between the two solvers, each exact or converged on
+    // its own, so that neither undoes the other (a wheel on the ground is held up by the
+    // contact and to the car by the hinge). step() books the net of contacts and joints.
+    Vec& q = q_[next];
+    Vec& u = u_[next];
+    joints_->correctPositions(q, u, invMass_);
+    joints_->projectVelocities(q, u, invMass_);
+    if (!contacts_->touching()) return;
+    // Until a round changes no velocity by more than kRoundTolerance: a chain whose links only
+    // lie near each other settles in a round or two, a car on its wheels takes more.
+    for (int round = 0; round < kJointContactRounds; ++round) {
+        roundStart_ = u;
+        contacts_->relaxVelocities(u, 2);
+        joints_->projectVelocities(q, u, invMass_, true);
+        if ((u - roundStart_).lpNorm<Eigen::Infinity>() <= kRoundTolerance) break;
+    }
+    contacts_->keepImpulses();
 }
 
 JointErrors World::jointErrors() const {

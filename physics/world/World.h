@@ -207,6 +207,7 @@ private:
     bool integrate(double t, double h, int next, StateSummary* summary);
     void solveContacts(double h, int next);
     void solveJoints(double h, int next);
+    void rejoin(int next);
     StateSummary closeLedger(const StateSummary* summed);
     bool guard(const StateSummary& summary);
     bool failSubstep(double t, bool integratorFailed, int next);
@@ -238,7 +239,7 @@ private:
     bool penaltyPairsStale_ = true;
     std::unique_ptr<JointSolver> joints_;
     Vec jointScratch_;
-    Vec roundStart_;                   // the velocities before a contact-joint round (solveJoints)
+    Vec roundStart_;                   // the velocities before a contact-joint round (rejoin)
     int jointSubsteps_ = 1;            // the joints' sub-steps per frame, held (step())
     double jointSubstepsSince_ = 0.0;  // seconds since they were last needed
     bool particleCollisions_ = false;
