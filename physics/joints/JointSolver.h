@@ -55,7 +55,8 @@ public:
 
     // After a step of h, in this order (the world books each phase's energy):
     // 1. shake: the equality joints' positions back onto C = 0 along their directions at the
-    //    step's start q0, the same impulse moving the velocities (Δu = Δq/h). This is SHAKE,
+    //    step's start q0, the same impulse moving the velocities (Δu = Δq/h); the iterations
+    //    are Anderson-mixed (accelerate()). This is SHAKE,
     //    the discrete constraint force of the method: with it symplectic Euler stays
     //    symplectic on the constraint manifold and a pendulum keeps its period, and its energy
     //    is the method's own (drift). False when it did not converge (a step long against the
@@ -157,6 +158,9 @@ private:
     void addJTranspose(const Vec& invMass, double scale, Vec& x, double scaleY, Vec& y) const;
     // Assembles J·W·Jᵀ from rows_, factors it and solves for lambda_ from rhs_.
     void factor(const Vec& invMass);
+    // SHAKE's iterations: turns the plain step in lambda_ into the Anderson-mixed one, from the
+    // last iteration's (withPrevious) or, at the first, keeps it.
+    void accelerate(bool withPrevious);
     void solve();
 
     std::vector<Joint> joints_;
@@ -170,6 +174,12 @@ private:
     // Per evaluation (sized in bind).
     std::vector<Rows> rows_;
     std::vector<Vec3> rhs_, lambda_;
+    // SHAKE's Anderson mixing: the last plain step f and the last move, and a ring of the last
+    // kAndersonDepth differences of f and of λ.
+    static constexpr int kAndersonDepth = 3;
+    std::vector<Vec3> previousStep_, lastDelta_;
+    std::array<std::vector<Vec3>, kAndersonDepth> andersonDf_, andersonDl_;
+    int andersonCount_ = 0, andersonNext_ = 0;
     std::vector<double> forces_;
     std::vector<std::array<Vec2, 2>> forceOn_;
     std::vector<double> motorImpulse_;
