@@ -420,14 +420,6 @@ void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x) const 
     forEachJTranspose(invMass, [&](int dof, double w, double f) { x[dof] += scale * w * f; });
 }
 
-void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x, double scaleY,
-                                Vec& y) const {
-    forEachJTranspose(invMass, [&](int dof, double w, double f) {
-        x[dof] += scale * w * f;
-        y[dof] += scaleY * w * f;
-    });
-}
-
 // ---- the block LDLᵀ --------------------------------------------------------------------------
 
 void JointSolver::factor(const Vec& invMass) {
@@ -621,7 +613,13 @@ bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invM
         factored = true;
         solve();
         accelerate(it > 0);
-        addJTranspose(invMass, 1.0, q, 1.0 / h, u);  // the same impulse moves the velocity
+        // The same impulse moves the positions and the velocities: summed over the joints per
+        // body once, then applied to both.
+        impulse_.setZero(invMass.size());
+        forEachJTranspose(invMass, [&](int dof, double, double f) { impulse_[dof] += f; });
+        impulse_.array() *= invMass.array();
+        q += impulse_;
+        u += impulse_ / h;
     }
     return false;
 }

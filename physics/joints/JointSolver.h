@@ -153,9 +153,6 @@ private:
     void forEachJTranspose(const Vec& invMass, Add&& add) const;
     // x += scale·W·Jᵀ·λ over every joint.
     void addJTranspose(const Vec& invMass, double scale, Vec& x) const;
-    // The same impulse into two vectors in one pass: x += scale·W·Jᵀ·λ, y += scaleY·W·Jᵀ·λ
-    // (SHAKE moves the positions and the velocities alike).
-    void addJTranspose(const Vec& invMass, double scale, Vec& x, double scaleY, Vec& y) const;
     // Assembles J·W·Jᵀ from rows_, factors it and solves for lambda_ from rhs_.
     void factor(const Vec& invMass);
     // SHAKE's iterations: turns the plain step in lambda_ into the Anderson-mixed one, from the
@@ -166,6 +163,7 @@ private:
     std::vector<Joint> joints_;
     std::vector<int> turningDofs_;  // per slot: the turning body's first state index
     std::vector<Mat2> rotations_;   // per slot: R(θ) at the last cacheRotations()
+    Vec impulse_;                   // SHAKE: Jᵀ·λ per state index
     std::vector<End> endA_, endB_;
     bool hasMotors_ = false, hasInequalities_ = false;
     double lastMotorWork_ = 0.0;
