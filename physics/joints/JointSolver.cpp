@@ -199,6 +199,7 @@ void JointSolver::bind(const Bodies& bodies) {
     y_.assign(m, Vec3::Zero());
     factoredRows_.assign(m, Rows{});
     factoredValid_ = false;
+    rowsQ_.resize(0);
 }
 
 // ---- rows ------------------------------------------------------------------------------------
@@ -387,6 +388,7 @@ JointSolver::Vec3 JointSolver::violationOf(int k, const Vec& q) const {
 }
 
 void JointSolver::evaluateRows(Mode mode, const Vec& q, const Vec& u) {
+    rowsQ_ = q;  // same size after the first: no allocation
     cacheRotations(q);
     for (int k = 0; k < jointCount(); ++k) rowsOf(k, mode, q, u, rows_[k], true);
 }
@@ -589,7 +591,9 @@ void JointSolver::solveFor(const Vec& invMass, Vec& x, double scale, bool fromVi
 bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invMass) {
     // The equality rows in their directions at the step's start, factored once: each
     // iteration only evaluates C at q.
-    evaluateRows(Mode::Position, q0, q0);
+    // Rows of any mode at q0 have the same equalities: a step's single derivative evaluation
+    // (symplectic Euler's) has left them.
+    if (rowsQ_.size() != q0.size() || rowsQ_ != q0) evaluateRows(Mode::Position, q0, q0);
     dropInequalities();
     bool factored = false;
     double previous = std::numeric_limits<double>::infinity();

@@ -45,6 +45,8 @@ public:
     // pairs that share a body plus the fill. For chains and trees there is no fill.
     int factorBlocks() const { return static_cast<int>(upper_.size()); }
     bool hasMotors() const { return hasMotors_; }
+    // Ropes or hinge limits: rows that switch on and off.
+    bool hasInequalities() const { return hasInequalities_; }
 
     // accel holds M⁻¹·F of every other force; adds M⁻¹·Jᵀ·λ so that the joints' second
     // derivatives vanish.
@@ -171,6 +173,7 @@ private:
 
     // Per evaluation (sized in bind).
     std::vector<Rows> rows_;
+    Vec rowsQ_;  // the q of the last evaluateRows()
     std::vector<Vec3> rhs_, lambda_;
     // SHAKE's Anderson mixing: the last plain step f and the last move, and a ring of the last
     // kAndersonDepth differences of f and of λ.

@@ -616,10 +616,14 @@ void World::solveJoints(double h, int next) {
     // (correction); a motor's push is work.
     Vec& q = q_[next];
     Vec& u = u_[next];
-    joints_->shake(h, q_[current_], q, u, invMass_);
+    const bool shaken = joints_->shake(h, q_[current_], q, u, invMass_);
     const double beforeCorrection = mechanicalEnergy(q, u);
-    joints_->correctPositions(q, u, invMass_);
-    const double afterCorrection = mechanicalEnergy(q, u);
+    double afterCorrection = beforeCorrection;
+    // A converged SHAKE has left the equalities on C = 0: only inequalities can remain.
+    if (!shaken || joints_->hasInequalities()) {
+        joints_->correctPositions(q, u, invMass_);
+        afterCorrection = mechanicalEnergy(q, u);
+    }
     const bool caught = joints_->projectVelocities(q, u, invMass_);
     const double projected = caught ? mechanicalEnergy(q, u) : afterCorrection;
     const double motorWork = joints_->driveMotors(h, q, u, mass_, invMass_);
