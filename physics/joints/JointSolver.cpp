@@ -102,6 +102,7 @@ void JointSolver::bind(const Bodies& bodies) {
         andersonDl_[i].assign(m, Vec3::Zero());
     }
     forces_.assign(m, 0.0);
+    forcesKnown_ = false;
     forceOn_.assign(m, {Vec2::Zero(), Vec2::Zero()});
     motorImpulse_.assign(m, 0.0);
 
@@ -522,6 +523,7 @@ void JointSolver::solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, 
             }
         if (!slackened) break;
     }
+    forcesKnown_ = true;
     for (int k = 0; k < jointCount(); ++k) {
         const Rows& r = rows_[k];
         for (int i = r.count; i < 3; ++i) lambda_[k][i] = 0.0;
@@ -611,7 +613,13 @@ bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invM
         if (worst <= kProjectionTolerance) return true;
         // Past the asymptotic regime (the step moved a joint a good part of its size) or not
         // contracting: an impulse that large would pump energy in; positions only, then.
-        if (worst > (it == 0 ? shakeReach_ : 0.5 * previous)) return false;
+        if (worst > (it == 0 ? shakeReach_ : 0.5 * previous)) {
+            if (it > 0) {  // the last iteration did not help: back to the state before it
+                q -= impulse_;
+                u -= impulse_ / h;
+            }
+            return false;
+        }
         previous = worst;
         if (!factored) factor(invMass);
         factored = true;
@@ -765,6 +773,50 @@ int JointSolver::substepsFor(double h, const Vec& q, const Vec& u) const {
     }
     const double n = std::ceil(h * rate / kMaxTurnPerStep);
     return n >= kMaxSubsteps ? kMaxSubsteps : std::max(1, static_cast<int>(n));
+}
+
+double JointSolver::geometricFrequency(const Vec& q, const Vec& invMass) {
+    // Gershgorin's bound on the largest eigenvalue of W·K, row by row of K: a hinge's or a
+    // weld's point row is linear in the positions and curved only in the angle, F·r on the
+    // diagonal; a distance row of length d adds F/d on each end's translation and as much
+    // again across to the other end, and F·r²/d with F·r on a turning end's angle.
+    stiffness_.assign(static_cast<std::size_t>(invMass.size()), 0.0);  // same size: no allocation
+    for (int k = 0; k < jointCount(); ++k) {
+        const double f = forces_[k];
+        if (!(f > 0.0)) continue;
+        const Joint& j = joints_[k];
+        double length = 0.0;  // a distance row's current length; 0: no distance row
+        switch (j.type) {
+            case Joint::Type::Rod:
+            case Joint::Type::Rope:
+                length = (pointA(k, q) - pointB(k, q)).norm();
+                break;
+            case Joint::Type::Pulley:
+                length =
+                    std::min((pointA(k, q) - j.groundA).norm(), (pointB(k, q) - j.groundB).norm());
+                break;
+            case Joint::Type::Track:
+                if (j.circle) length = (pointA(k, q) - j.center).norm();
+                break;
+            case Joint::Type::Hinge:
+            case Joint::Type::Weld:
+                break;
+        }
+        const double sideways = length > 0.0 ? f / length : 0.0;
+        for (const End* e : {&endA_[k], &endB_[k]}) {
+            if (e->dof < 0) continue;
+            stiffness_[e->dof] += 2.0 * sideways;
+            stiffness_[e->dof + 1] += 2.0 * sideways;
+            if (e->turns) {
+                const double r = e->local.norm();
+                stiffness_[e->dof + 2] += f * r + 2.0 * sideways * r * r;
+            }
+        }
+    }
+    double fastest = 0.0;
+    for (std::size_t i = 0; i < stiffness_.size(); ++i)
+        fastest = std::max(fastest, stiffness_[i] * invMass[static_cast<Eigen::Index>(i)]);
+    return std::sqrt(fastest);
 }
 
 JointErrors JointSolver::errors(const Vec& q) const {

@@ -86,6 +86,17 @@ public:
     int substepsFor(double h, const Vec& q, const Vec& u) const;
     static constexpr double kMaxTurnPerStep = 0.1;  // rad
     static constexpr int kMaxSubsteps = 64;
+    // The highest frequency the joints' forces give the bodies they hold (rad/s): a joint
+    // under a force F turns the lever arm r it holds a body by with a stiffness F·r (and a
+    // distance joint of length d moves its ends sideways with F/d), so a chain pulled hard, as
+    // by a heavy weight or in a whip, has fast modes in which its links zig-zag that an explicit
+    // method steps stably only while ω·h stays below its bound. The bound taken here is
+    // Gershgorin's on W·K with K the joints' geometric stiffness (the Hessian of λᵀ·C): no mode
+    // of the free bodies is faster, and holding them by the joints only slows the modes down.
+    // From the forces of the last derivative evaluation (forcesKnown()).
+    double geometricFrequency(const Vec& q, const Vec& invMass);
+    // False from bind() until a derivative evaluation has found the joints' forces.
+    bool forcesKnown() const { return forcesKnown_; }
 
     // The joints' violation at q (every joint, inequalities by how far they are past).
     JointErrors errors(const Vec& q) const;
@@ -182,6 +193,8 @@ private:
     std::array<std::vector<Vec3>, kAndersonDepth> andersonDf_, andersonDl_;
     int andersonCount_ = 0, andersonNext_ = 0;
     std::vector<double> forces_;
+    bool forcesKnown_ = false;
+    std::vector<double> stiffness_;  // per state index: geometric stiffness (geometricFrequency)
     std::vector<std::array<Vec2, 2>> forceOn_;
     std::vector<double> motorImpulse_;
 

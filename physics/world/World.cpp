@@ -20,6 +20,9 @@ using Clock = ProfileClock;
 constexpr int kJointContactRounds = 32;
 // Seconds a joint sub-step count is held after the need for it has passed (step()).
 constexpr double kJointSubstepHold = 2.0;
+// The share of an explicit method's stability bound on ω·h that the joints' fastest mode may
+// use (jointSubstepsForFrame()).
+constexpr double kJointStabilityShare = 0.5;
 // A round that changes no velocity by more than this (m/s, rad/s) ends them.
 constexpr double kRoundTolerance = 1e-9;
 
@@ -507,26 +510,7 @@ std::string World::objectAtDof(int dof) const {
 bool World::step() {
     ensureLayout();
     divergence_.reset();
-    // Joints that turn fast (a chain's whip) take more sub-steps of their own, chosen from the
-    // frame's start: the user's dt stays what it is. A count goes up at once; down at once only
-    // to less than half of it (a whip calming down), otherwise after kJointSubstepHold seconds
-    // without need: a swing that needs two near the bottom and one elsewhere would change its
-    // step twice a swing, and a symplectic method with a changing step loses its energy (a
-    // 0.385 m pendulum at 90° under symplectic Euler kept 70% of it after 30 s and swung 5%
-    // short).
-    int jointSubsteps = 1;
-    if (joints_) {
-        const int wanted =
-            joints_->substepsFor(settings_.dt / settings_.substeps, q_[current_], u_[current_]);
-        // Contacts already make the step non-smooth: there the count follows the need.
-        const bool smooth = !contacts_ || !contacts_->touching();
-        if (!smooth || wanted >= jointSubsteps_ || 2 * wanted < jointSubsteps_ ||
-            (jointSubstepsSince_ += settings_.dt) > kJointSubstepHold) {
-            jointSubsteps_ = wanted;
-            jointSubstepsSince_ = 0.0;
-        }
-        jointSubsteps = jointSubsteps_;
-    }
+    const int jointSubsteps = joints_ ? jointSubstepsForFrame() : 1;
     const int substeps = settings_.substeps * jointSubsteps;
     const double h = settings_.dt / substeps;
     // With one sub-step the other state buffer keeps the frame start for free.
@@ -600,6 +584,70 @@ bool World::step() {
     const bool good = guard(summary);
     checkInvariants(StepStage::Guard);
     return good;
+}
+
+int World::jointSubstepsForFrame() {
+    // The joints take sub-steps of their own, chosen from the frame's start (the user's dt
+    // stays what it is), for two needs, and the larger count wins.
+    const double h = settings_.dt / settings_.substeps;
+    const Vec& q = q_[current_];
+    const Vec& u = u_[current_];
+
+    // 1. Joints that turn fast (a chain's whip): SHAKE's directions of the step's start must
+    // not turn far. A count goes up at once; down at once only to less than half of it (a whip
+    // calming down), otherwise after kJointSubstepHold seconds without need: a swing that needs
+    // two near the bottom and one elsewhere would change its step twice a swing, and a
+    // symplectic method with a changing step loses its energy (a 0.385 m pendulum at 90° under
+    // symplectic Euler kept 70% of it after 30 s and swung 5% short).
+    const int turning = joints_->substepsFor(h, q, u);
+    // Contacts already make the step non-smooth: there the count follows the need.
+    const bool smooth = !contacts_ || !contacts_->touching();
+    if (!smooth || turning >= jointSubsteps_ || 2 * turning < jointSubsteps_ ||
+        (jointSubstepsSince_ += settings_.dt) > kJointSubstepHold) {
+        jointSubsteps_ = turning;
+        jointSubstepsSince_ = 0.0;
+    }
+
+    // 2. Joints pulled hard (a heavy weight on a light chain, a whip's root): an explicit method
+    // is stable only while ω·h stays below its bound, for ω the fastest mode the joints' forces
+    // make (JointSolver::geometricFrequency). kJointStabilityShare of the bound leaves room for
+    // the force to grow within the frame; a method that gains energy at any step (bound 0) gets
+    // ω·h ≤ kJointStabilityShare. The implicit methods' Newton iterations see the forces'
+    // Jacobians but not this stiffness, which they meet explicitly, as symplectic Euler does
+    // (bound 2: without it a 1000 kg weight on 20 links broke implicit Euler within 1.3 s);
+    // the adaptive methods choose their own steps (bound ∞) and need none. This count
+    // goes up at once and down only to the most the last kJointSubstepHold seconds needed: a
+    // tension that swings with a pendulum would otherwise change the step every swing.
+    const IntegratorInfo& info = integrator_->info();
+    const double bound = info.implicit && !info.adaptive ? 2.0 : info.stabilityBound;
+    int pulled = 1;
+    if (std::isfinite(bound)) {
+        if (!joints_->forcesKnown()) {
+            // The first frame: the joints' forces at the start, from one evaluation (not
+            // counted as one of the method's).
+            double power = 0.0;
+            if (!addAccelerations(clock_.time, q, u, jointScratch_, fieldEffects_, power))
+                jointScratch_.setZero();
+            joints_->constrainAccelerations(q, u, invMass_, jointScratch_);
+        }
+        const double limit = kJointStabilityShare * (bound > 0.0 ? bound : 1.0);
+        const double n = std::ceil(h * joints_->geometricFrequency(q, invMass_) / limit);
+        pulled = n >= JointSolver::kMaxSubsteps ? JointSolver::kMaxSubsteps
+                                                : std::max(1, static_cast<int>(n));
+    }
+    if (pulled >= pulledSubsteps_) {
+        pulledSubsteps_ = pulled;
+        pulledSince_ = 0.0;
+        pulledPeak_ = 1;
+    } else {
+        pulledPeak_ = std::max(pulledPeak_, pulled);
+        if ((pulledSince_ += settings_.dt) > kJointSubstepHold) {
+            pulledSubsteps_ = pulledPeak_;
+            pulledSince_ = 0.0;
+            pulledPeak_ = 1;
+        }
+    }
+    return std::max(jointSubsteps_, pulledSubsteps_);
 }
 
 bool World::integrate(double t, double h, int next, StateSummary* summary) {

@@ -206,6 +206,8 @@ private:
     void solveKinematic(int next);
     bool integrate(double t, double h, int next, StateSummary* summary);
     void solveContacts(double h, int next);
+    // How many sub-steps the joints need this frame.
+    int jointSubstepsForFrame();
     void solveJoints(double h, int next);
     void rejoin(int next);
     StateSummary closeLedger(const StateSummary* summed);
@@ -239,9 +241,13 @@ private:
     bool penaltyPairsStale_ = true;
     std::unique_ptr<JointSolver> joints_;
     Vec jointScratch_;
-    Vec roundStart_;                   // the velocities before a contact-joint round (rejoin)
-    int jointSubsteps_ = 1;            // the joints' sub-steps per frame, held (step())
-    double jointSubstepsSince_ = 0.0;  // seconds since they were last needed
+    Vec roundStart_;  // the velocities before a contact-joint round (rejoin)
+    // The joints' sub-steps per frame (jointSubstepsForFrame()): for turning, held since when,
+    // and for the pull of their forces, held since when, and the most needed since then.
+    int jointSubsteps_ = 1;
+    double jointSubstepsSince_ = 0.0;
+    int pulledSubsteps_ = 1, pulledPeak_ = 1;
+    double pulledSince_ = 0.0;
     bool particleCollisions_ = false;
     double particleRestitution_ = 1.0;
 
