@@ -210,6 +210,25 @@ void JointSolver::cacheRotations(const Vec& q) {
         rotations_[s] = rotation(q[turningDofs_[s] + 2]);
 }
 
+void JointSolver::turnRotations(const Vec& delta) {
+    for (std::size_t s = 0; s < turningDofs_.size(); ++s) {
+        const double d = delta[turningDofs_[s] + 2];
+        if (d == 0.0) continue;
+        // R(θ + δ) = R(θ)·R(δ); a SHAKE iteration's δ is small, and then the series to δ⁵ is
+        // exact to 1e-21.
+        const double d2 = d * d;
+        Mat2 turn;
+        if (std::abs(d) < 1e-3) {
+            const double c = 1.0 - d2 * (0.5 - d2 / 24.0);
+            const double sn = d * (1.0 - d2 * (1.0 / 6.0 - d2 / 120.0));
+            turn << c, -sn, sn, c;
+        } else {
+            turn = rotation(d);
+        }
+        rotations_[s] = rotations_[s] * turn;
+    }
+}
+
 JointSolver::EndState JointSolver::evaluate(const End& e, const Vec& q, const Vec& u,
                                             bool cached) const {
     EndState s;
@@ -601,7 +620,10 @@ bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invM
     double previous = std::numeric_limits<double>::infinity();
     for (int it = 0; it < kProjectionIterations; ++it) {
         double worst = 0.0;
-        cacheRotations(q);
+        if (it == 0)
+            cacheRotations(q);
+        else
+            turnRotations(impulse_);
         for (int k = 0; k < jointCount(); ++k) {
             const Vec3 c = violationOf(k, q);
             rhs_[k].setZero();

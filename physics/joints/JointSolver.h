@@ -142,6 +142,8 @@ private:
     EndState evaluate(const End& e, const Vec& q, const Vec& u, bool cached = false) const;
     // Each turning body's rotation at q, once, for the rows of every joint that holds it.
     void cacheRotations(const Vec& q);
+    // The cached rotations of bodies turned further by delta's angles (a SHAKE iteration's).
+    void turnRotations(const Vec& delta);
     // The active rows of joint k at (q, u) in the given mode.
     void rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& rows,
                 bool cached = false) const;
