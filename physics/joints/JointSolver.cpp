@@ -80,7 +80,8 @@ void JointSolver::bind(const Bodies& bodies) {
         endA_.push_back(withSlot(resolve(j.a)));
         endB_.push_back(withSlot(resolve(j.b)));
         hasMotors_ = hasMotors_ || j.hasMotor;
-        hasInequalities_ = hasInequalities_ || j.hasLimits || j.type == Joint::Type::Rope;
+        hasInequalities_ = hasInequalities_ || j.hasLimits || j.type == Joint::Type::Rope ||
+                           j.type == Joint::Type::Pulley;
     }
     // SHAKE's reach: a tenth of the smallest length a joint holds (a rod's, a lever arm).
     double smallest = std::numeric_limits<double>::infinity();
@@ -260,6 +261,7 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
     r.jb.setZero();
     r.c.setZero();
     r.bias.setZero();
+    r.target.setZero();
     // The centripetal part of each point's acceleration, −ω²·arm: J̇·u of a point row.
     const Vec2 centripetalA = -a.omega * a.omega * a.arm, centripetalB = -b.omega * b.omega * b.arm;
     // A row that keeps a distance: d = pa − pb, C = |d| − length.
@@ -327,22 +329,51 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
         }
         case Joint::Type::Pulley: {
             double c = -j.length;
-            const auto side = [&](const EndState& s, const Vec2& ground, const Vec2& centripetal,
-                                  double scale, Mat3& jac) {
+            // Each side's length, direction and rate, for the stops below.
+            std::array<double, 2> lengths{}, rates{}, curvatures{};
+            std::array<Vec2, 2> directions;
+            const auto side = [&](int which, const EndState& s, const Vec2& ground,
+                                  const Vec2& centripetal, double scale, Mat3& jac) {
                 const Vec2 d = s.p - ground;
                 const double len = d.norm();
                 const Vec2 n = len > 0.0 ? Vec2(d / len) : Vec2(0.0, -1.0);
                 jac.row(0) = pointRow(n, s.arm, scale);
                 const double along = n.dot(s.v);
-                r.bias[0] +=
-                    scale * (n.dot(centripetal) +
-                             (len > 0.0 ? (s.v.squaredNorm() - along * along) / len : 0.0));
+                // The side's length's J̇·u: the point's centripetal part and its turning.
+                curvatures[which] = n.dot(centripetal) +
+                                    (len > 0.0 ? (s.v.squaredNorm() - along * along) / len : 0.0);
+                r.bias[0] += scale * curvatures[which];
                 c += scale * len;
+                lengths[which] = len;
+                rates[which] = along;
+                directions[which] = n;
             };
-            side(a, j.groundA, centripetalA, 1.0, r.ja);
-            side(b, j.groundB, centripetalB, j.ratio, r.jb);
+            side(0, a, j.groundA, centripetalA, 1.0, r.ja);
+            side(1, b, j.groundB, centripetalB, j.ratio, r.jb);
             r.c[0] = c;
             r.count = 1;
+            // A side whose rope has run up to its pulley stops there (pulleyStop()): an
+            // inequality. After the step it catches the side (positions, then the speculative
+            // velocities); a side resting at its stop is held there by a constraint force, as a
+            // taut rope is, until that force would have to pull (solveDynamics()).
+            const double stop = pulleyStop(j);
+            for (int which = 0; which < 2; ++which) {
+                const double left = lengths[which] - stop;  // to the stop
+                const bool active =
+                    mode == Mode::Dynamics ? left < kTautFraction * j.length
+                    : mode == Mode::Position
+                        ? left < 0.0
+                        : rates[which] < 0.0 && left + stepLength_ * rates[which] < 1e-9;
+                if (!active) continue;
+                const EndState& s = which == 0 ? a : b;
+                (which == 0 ? r.ja : r.jb).row(1) = pointRow(directions[which], s.arm, 1.0);
+                r.c[1] = left;
+                r.bias[1] = curvatures[which];
+                if (mode == Mode::Velocity && stepLength_ > 0.0)
+                    r.target[1] = std::min(0.0, -left / stepLength_);
+                r.count = 2;
+                break;
+            }
             break;
         }
         case Joint::Type::Track:
@@ -522,7 +553,8 @@ void JointSolver::solve() {
 
 void JointSolver::solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, const Vec& accel) {
     evaluateRows(Mode::Dynamics, q, u);
-    // A taut rope that would have to push goes slack and the system is solved again.
+    // A taut rope that would have to push goes slack, and a pulley's stop that would have to
+    // pull lets go, and the system is solved again.
     for (int pass = 0; pass < 3; ++pass) {
         factor(invMass);
         for (int k = 0; k < jointCount(); ++k) {
@@ -538,6 +570,12 @@ void JointSolver::solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, 
                 rows_[k].count = 0;
                 rows_[k].ja.setZero();
                 rows_[k].jb.setZero();
+                slackened = true;
+            } else if (joints_[k].type == Joint::Type::Pulley && rows_[k].count > 1 &&
+                       lambda_[k][1] < 0.0) {
+                rows_[k].count = 1;
+                rows_[k].ja.row(1).setZero();
+                rows_[k].jb.row(1).setZero();
                 slackened = true;
             }
         if (!slackened) break;
@@ -584,6 +622,7 @@ void JointSolver::dropInequalities() {
         const Joint::Type type = joints_[k].type;
         if (type == Joint::Type::Rope) r.count = 0;
         if (type == Joint::Type::Hinge) r.count = std::min(r.count, 2);
+        if (type == Joint::Type::Pulley) r.count = std::min(r.count, 1);
         for (int i = r.count; i < 3; ++i) {
             r.ja.row(i).setZero();
             r.jb.row(i).setZero();
@@ -602,7 +641,7 @@ void JointSolver::solveFor(const Vec& invMass, Vec& x, double scale, bool fromVi
                            const Vec& u) {
     factor(invMass);
     for (int k = 0; k < jointCount(); ++k) {
-        rhs_[k] = fromViolation ? Vec3(-rows_[k].c) : Vec3(-jTimes(k, u));
+        rhs_[k] = fromViolation ? Vec3(-rows_[k].c) : Vec3(rows_[k].target - jTimes(k, u));
         for (int i = rows_[k].count; i < 3; ++i) rhs_[k][i] = 0.0;
     }
     solve();
@@ -614,6 +653,7 @@ bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invM
     // iteration only evaluates C at q.
     // Rows of any mode at q0 have the same equalities: a step's single derivative evaluation
     // (symplectic Euler's) has left them.
+    stepLength_ = h;
     if (rowsQ_.size() != q0.size() || rowsQ_ != q0) evaluateRows(Mode::Position, q0, q0);
     dropInequalities();
     bool factored = false;
@@ -727,7 +767,8 @@ bool JointSolver::projectVelocities(const Vec& q, Vec& u, const Vec& invMass, bo
     for (int k = 0; k < jointCount(); ++k) {
         const Joint::Type type = joints_[k].type;
         inequality = inequality || (type == Joint::Type::Rope && rows_[k].count > 0) ||
-                     (type == Joint::Type::Hinge && rows_[k].count > 2);
+                     (type == Joint::Type::Hinge && rows_[k].count > 2) ||
+                     (type == Joint::Type::Pulley && rows_[k].count > 1);
     }
     const Vec& v = u;
     solveFor(invMass, u, 1.0, false, v);
@@ -851,7 +892,9 @@ JointErrors JointSolver::errors(const Vec& q) const {
             joints_[k].type == Joint::Type::Hinge || joints_[k].type == Joint::Type::Weld
                 ? std::min(r.count, 2)
                 : r.count;
-        if (positional == 2)
+        if (joints_[k].type == Joint::Type::Pulley)  // the rope, and a stop it is past
+            e.position = std::max(e.position, r.c.head(r.count).cwiseAbs().maxCoeff());
+        else if (positional == 2)
             e.position = std::max(e.position, r.c.head<2>().norm());
         else if (positional == 1)
             e.position = std::max(e.position, std::abs(r.c[0]));

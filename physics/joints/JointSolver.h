@@ -25,6 +25,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -98,6 +99,13 @@ public:
     // False from bind() until a derivative evaluation has found the joints' forces.
     bool forcesKnown() const { return forcesKnown_; }
 
+    // Where a pulley's rope end stops at its pulley: each side keeps at least this length, 1%
+    // of the rope's (the pulleys are points; a body run up to one would otherwise go through
+    // it, where the rope's direction turns over, and the light side of a 1000 : 0.1 kg pair
+    // flew off). The stop is speculative, as Box2D's contacts are: the velocity projection
+    // lets a side close in by at most what it has left in the next step, so that a fast body
+    // cannot pass it within one. A body caught there is an inelastic catch (work_nc).
+    static double pulleyStop(const Joint& j) { return std::max(0.01 * j.length, 1e-3); }
     // The joints' violation at q (every joint, inequalities by how far they are past).
     JointErrors errors(const Vec& q) const;
     // The magnitude of joint i's constraint force at the last evaluation (N; a weld's or a
@@ -135,6 +143,9 @@ private:
         int count = 0;
         Mat3 ja = Mat3::Zero(), jb = Mat3::Zero();
         Vec3 c = Vec3::Zero(), bias = Vec3::Zero();
+        // Velocity mode: the rate J·u the projection sets each row to (0 but for a pulley's
+        // stop, which lets a side close in at most what it has left to its stop in a step).
+        Vec3 target = Vec3::Zero();
     };
     enum class Mode { Dynamics, Position, Velocity };
 
@@ -183,6 +194,7 @@ private:
     bool hasMotors_ = false, hasInequalities_ = false;
     double lastMotorWork_ = 0.0;
     double shakeReach_ = 0.01;  // m: the largest violation SHAKE answers with an impulse
+    double stepLength_ = 0.0;   // s: the last shake()'s h, for the pulleys' stops
 
     // Per evaluation (sized in bind).
     std::vector<Rows> rows_;

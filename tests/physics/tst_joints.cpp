@@ -190,6 +190,58 @@ private slots:
         QVERIFY(std::abs(w.jointSolver()->force(0) - 2.0 * 3.0 * 1.0 * kG / 4.0) < 1e-6);
     }
 
+    // The light side of an Atwood machine runs up to its pulley and stops there
+    // (JointSolver::pulleyStop, 1% of the rope): 2 kg against 1 kg, and 1000 kg against 0.1 kg,
+    // the light one 1 m below its pulley, at a new scene's defaults. Before the stop, it went
+    // through the pulley point: the 2 : 1 pair froze there with 10 J booked as drift, and the
+    // 1000 : 0.1 pair came apart by metres. Now the light side stays at the stop, everything
+    // comes to rest, the rope holds, and what the catch takes out is the kinetic energy the
+    // pair has on arriving, ½·(m1 + m2)·v² with v² = 2·a·(1 m − stop), a = g·(m1 − m2)/(m1 + m2):
+    // work_nc and the method's drift add up to it within 1%. The drift is symplectic Euler's
+    // own under a constant force: the pair falls ½·a·h·t further than ½·a·t² by the time t it
+    // arrives, which is h/t of the arrival energy (within 10%).
+    void pulleyStopsTheLightSideAtItsWheel_data() {
+        QTest::addColumn<double>("heavy");
+        QTest::addColumn<double>("light");
+        QTest::newRow("2 : 1 kg") << 2.0 << 1.0;
+        QTest::newRow("1000 : 0.1 kg") << 1000.0 << 0.1;
+    }
+    void pulleyStopsTheLightSideAtItsWheel() {
+        QFETCH(double, heavy);
+        QFETCH(double, light);
+        SceneDesc s = scene("symplectic_euler", 1.0 / 60.0);
+        s.particles = {particle("heavy", {-1.0, -1.0}, heavy),
+                       particle("light", {1.0, -1.0}, light)};
+        JointDesc pulley = joint(JointType::Pulley, "heavy", "light");
+        pulley.groundA = {-1.0, 0.0};
+        pulley.groundB = {1.0, 0.0};
+        s.joints = {pulley};
+        auto world = buildWorld(s).world;
+        double worstError = 0.0;
+        while (world->time() < 3.0) {
+            QVERIFY(world->step());
+            worstError = std::max(worstError, world->jointErrors().position);
+        }
+        const double stop = 0.01 * 2.0;  // 1% of the rope's 2 m
+        const double a = kG * (heavy - light) / (heavy + light);
+        const double arrival = 0.5 * (heavy + light) * 2.0 * a * (1.0 - stop);
+        const EnergyLedger& e = world->energy();
+        const Vec& q = world->positions();
+        const double gap = std::hypot(q[2] - 1.0, q[3]);  // light to its pulley
+        qInfo(
+            "%s: light %.6f m from its pulley (stop %.3f m), speeds %.1e, work_nc %.4g J, "
+            "drift %.3g J, correction %.3g J; arrival kinetic energy %.4g J; rope error %.1e m",
+            QTest::currentDataTag(), gap, stop, world->velocities().lpNorm<Eigen::Infinity>(),
+            e.workNc, e.drift, e.correction, arrival, worstError);
+        QVERIFY(std::abs(gap - stop) < 1e-6);
+        QVERIFY(world->velocities().lpNorm<Eigen::Infinity>() < 1e-6);
+        QVERIFY(worstError < 1e-3);
+        QVERIFY(std::abs(e.workNc + e.drift + arrival) < 0.01 * arrival);
+        const double own = (1.0 / 60.0) / std::sqrt(2.0 * (1.0 - stop) / a) * arrival;
+        QVERIFY(std::abs(e.drift + own) < 0.1 * own);
+        QVERIFY(std::abs(e.correction) < 0.01 * arrival);
+    }
+
     // A double pendulum (two 1 kg bobs on 1 m rods, released horizontal) is chaotic, but its
     // energy is not: K + P within 1e-3 J over 10 s under RK4 at dt 1/600, rods within 0.1 mm.
     void doublePendulumKeepsItsEnergy() {
