@@ -104,6 +104,7 @@ void JointSolver::bind(const Bodies& bodies) {
     }
     forces_.assign(m, 0.0);
     forcesKnown_ = false;
+    ropeShaken_.assign(m, 0);
     forceOn_.assign(m, {Vec2::Zero(), Vec2::Zero()});
     motorImpulse_.assign(m, 0.0);
 
@@ -440,6 +441,7 @@ JointSolver::Vec3 JointSolver::violationOf(int k, const Vec& q) const {
 
 void JointSolver::evaluateRows(Mode mode, const Vec& q, const Vec& u) {
     rowsQ_ = q;  // same size after the first: no allocation
+    rowsMode_ = mode;
     cacheRotations(q);
     for (int k = 0; k < jointCount(); ++k) rowsOf(k, mode, q, u, rows_[k], true);
 }
@@ -620,7 +622,6 @@ void JointSolver::dropInequalities() {
     for (int k = 0; k < jointCount(); ++k) {
         Rows& r = rows_[k];
         const Joint::Type type = joints_[k].type;
-        if (type == Joint::Type::Rope) r.count = 0;
         if (type == Joint::Type::Hinge) r.count = std::min(r.count, 2);
         if (type == Joint::Type::Pulley) r.count = std::min(r.count, 1);
         for (int i = r.count; i < 3; ++i) {
@@ -650,12 +651,18 @@ void JointSolver::solveFor(const Vec& invMass, Vec& x, double scale, bool fromVi
 
 bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invMass) {
     // The equality rows in their directions at the step's start, factored once: each
-    // iteration only evaluates C at q.
-    // Rows of any mode at q0 have the same equalities: a step's single derivative evaluation
+    // iteration only evaluates C at q. With them the ropes that were taut and pulling at the
+    // start: they pulled through the step as the derivative's equalities, and SHAKE keeps
+    // them as it keeps a rod, so that a rope pendulum swings like a rod one. (Where the step
+    // ends does not tell: symplectic Euler ends a swinging rope's step inside its length.)
+    // Rows of the derivative's mode at q0 are these: a step's single derivative evaluation
     // (symplectic Euler's) has left them.
     stepLength_ = h;
-    if (rowsQ_.size() != q0.size() || rowsQ_ != q0) evaluateRows(Mode::Position, q0, q0);
+    if (rowsQ_.size() != q0.size() || rowsQ_ != q0 || rowsMode_ != Mode::Dynamics)
+        evaluateRows(Mode::Dynamics, q0, q0);  // (the velocities only enter J̇·u, unused here)
     dropInequalities();
+    for (int k = 0; k < jointCount(); ++k)
+        ropeShaken_[k] = joints_[k].type == Joint::Type::Rope && rows_[k].count > 0;
     bool factored = false;
     double previous = std::numeric_limits<double>::infinity();
     for (int it = 0; it < kProjectionIterations; ++it) {
@@ -766,7 +773,9 @@ bool JointSolver::projectVelocities(const Vec& q, Vec& u, const Vec& invMass, bo
     bool inequality = false;
     for (int k = 0; k < jointCount(); ++k) {
         const Joint::Type type = joints_[k].type;
-        inequality = inequality || (type == Joint::Type::Rope && rows_[k].count > 0) ||
+        // A rope SHAKE held through the step is the method's equality, not a catch.
+        inequality = inequality ||
+                     (type == Joint::Type::Rope && rows_[k].count > 0 && !ropeShaken_[k]) ||
                      (type == Joint::Type::Hinge && rows_[k].count > 2) ||
                      (type == Joint::Type::Pulley && rows_[k].count > 1);
     }

@@ -57,9 +57,9 @@ public:
     void constrainForces(const Vec& q, const Vec& u, const Vec& invMass, Vec& force, Vec& scratch);
 
     // After a step of h, in this order (the world books each phase's energy):
-    // 1. shake: the equality joints' positions back onto C = 0 along their directions at the
-    //    step's start q0, the same impulse moving the velocities (Δu = Δq/h); the iterations
-    //    are Anderson-mixed (accelerate()). This is SHAKE,
+    // 1. shake: the equality joints' positions (and those of the ropes pulling at q0) back onto
+    //    C = 0 along their directions at the step's start q0, the same impulse moving the
+    //    velocities (Δu = Δq/h); the iterations are Anderson-mixed (accelerate()). This is SHAKE,
     //    the discrete constraint force of the method: with it symplectic Euler stays
     //    symplectic on the constraint manifold and a pendulum keeps its period, and its energy
     //    is the method's own (drift). False when it did not converge (a step long against the
@@ -167,7 +167,8 @@ private:
     // λ of the equality rows for the unconstrained acceleration accel (a rope that would
     // push goes slack); keeps forces_.
     void solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, const Vec& accel);
-    // Leaves only the equality rows (a rope's, a hinge limit's go).
+    // Leaves only the equality rows and the ropes pulling at the step's start (a hinge limit's
+    // and a pulley stop's rows go).
     void dropInequalities();
     double worstViolation() const;
     // Factors, solves J·W·Jᵀ·λ = −C (fromViolation) or −J·u, and adds scale·W·Jᵀ·λ to x.
@@ -198,7 +199,9 @@ private:
 
     // Per evaluation (sized in bind).
     std::vector<Rows> rows_;
-    Vec rowsQ_;  // the q of the last evaluateRows()
+    Vec rowsQ_;                       // the q of the last evaluateRows()
+    Mode rowsMode_ = Mode::Position;  // and its mode
+    std::vector<char> ropeShaken_;    // per joint: a rope the last shake() held
     std::vector<Vec3> rhs_, lambda_;
     // SHAKE's Anderson mixing: the last plain step f and the last move, and a ring of the last
     // kAndersonDepth differences of f and of λ.
