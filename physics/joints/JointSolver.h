@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace phasebox {
@@ -87,6 +88,12 @@ public:
     int substepsFor(double h, const Vec& q, const Vec& u) const;
     static constexpr double kMaxTurnPerStep = 0.1;  // rad
     static constexpr int kMaxSubsteps = 64;
+    // A wanted count of sub-steps (rounded up already) as one from 1 to kMaxSubsteps; a
+    // non-finite rate (the guard reports it) asks for 1.
+    static int substepCount(double wanted) {
+        if (std::isnan(wanted) || wanted < 1.0) return 1;
+        return wanted >= kMaxSubsteps ? kMaxSubsteps : static_cast<int>(wanted);
+    }
     // The highest frequency the joints' forces give the bodies they hold (rad/s): a joint
     // under a force F turns the lever arm r it holds a body by with a stiffness F·r (and a
     // distance joint of length d moves its ends sideways with F/d), so a chain pulled hard, as

@@ -16,16 +16,6 @@ namespace phasebox {
 namespace {
 using Clock = ProfileClock;
 
-// Rounds of contact relax and joint projection after a step that has both (solveJoints).
-constexpr int kJointContactRounds = 32;
-// Seconds a joint sub-step count is held after the need for it has passed (step()).
-constexpr double kJointSubstepHold = 2.0;
-// The share of an explicit method's stability bound on ω·h that the joints' fastest mode may
-// use (jointSubstepsForFrame()).
-constexpr double kJointStabilityShare = 0.5;
-// A round that changes no velocity by more than this (m/s, rad/s) ends them.
-constexpr double kRoundTolerance = 1e-9;
-
 // Times consecutive stages into a profile: each call to start() ends the stage before it.
 class StageTimer {
 public:
@@ -586,125 +576,9 @@ bool World::step() {
     return good;
 }
 
-int World::jointSubstepsForFrame() {
-    // The joints take sub-steps of their own, chosen from the frame's start (the user's dt
-    // stays what it is), for two needs, and the larger count wins.
-    const double h = settings_.dt / settings_.substeps;
-    const Vec& q = q_[current_];
-    const Vec& u = u_[current_];
-
-    // 1. Joints that turn fast (a chain's whip): SHAKE's directions of the step's start must
-    // not turn far. A count goes up at once; down at once only to less than half of it (a whip
-    // calming down), otherwise after kJointSubstepHold seconds without need: a swing that needs
-    // two near the bottom and one elsewhere would change its step twice a swing, and a
-    // symplectic method with a changing step loses its energy (a 0.385 m pendulum at 90° under
-    // symplectic Euler kept 70% of it after 30 s and swung 5% short).
-    const int turning = joints_->substepsFor(h, q, u);
-    // Contacts already make the step non-smooth: there the count follows the need.
-    const bool smooth = !contacts_ || !contacts_->touching();
-    if (!smooth || turning >= jointSubsteps_ || 2 * turning < jointSubsteps_ ||
-        (jointSubstepsSince_ += settings_.dt) > kJointSubstepHold) {
-        jointSubsteps_ = turning;
-        jointSubstepsSince_ = 0.0;
-    }
-
-    // 2. Joints pulled hard (a heavy weight on a light chain, a whip's root): an explicit method
-    // is stable only while ω·h stays below its bound, for ω the fastest mode the joints' forces
-    // make (JointSolver::geometricFrequency). kJointStabilityShare of the bound leaves room for
-    // the force to grow within the frame; a method that gains energy at any step (bound 0) gets
-    // ω·h ≤ kJointStabilityShare. The implicit methods' Newton iterations see the forces'
-    // Jacobians but not this stiffness, which they meet explicitly, as symplectic Euler does
-    // (bound 2: without it a 1000 kg weight on 20 links broke implicit Euler within 1.3 s);
-    // the adaptive methods choose their own steps (bound ∞) and need none. This count
-    // goes up at once and down only to the most the last kJointSubstepHold seconds needed: a
-    // tension that swings with a pendulum would otherwise change the step every swing.
-    const IntegratorInfo& info = integrator_->info();
-    const double bound = info.implicit && !info.adaptive ? 2.0 : info.stabilityBound;
-    int pulled = 1;
-    if (std::isfinite(bound)) {
-        if (!joints_->forcesKnown()) {
-            // The first frame: the joints' forces at the start, from one evaluation (not
-            // counted as one of the method's).
-            double power = 0.0;
-            if (!addAccelerations(clock_.time, q, u, jointScratch_, fieldEffects_, power))
-                jointScratch_.setZero();
-            joints_->constrainAccelerations(q, u, invMass_, jointScratch_);
-        }
-        const double limit = kJointStabilityShare * (bound > 0.0 ? bound : 1.0);
-        const double n = std::ceil(h * joints_->geometricFrequency(q, invMass_) / limit);
-        pulled = n >= JointSolver::kMaxSubsteps ? JointSolver::kMaxSubsteps
-                                                : std::max(1, static_cast<int>(n));
-    }
-    if (pulled >= pulledSubsteps_) {
-        pulledSubsteps_ = pulled;
-        pulledSince_ = 0.0;
-        pulledPeak_ = 1;
-    } else {
-        pulledPeak_ = std::max(pulledPeak_, pulled);
-        if ((pulledSince_ += settings_.dt) > kJointSubstepHold) {
-            pulledSubsteps_ = pulledPeak_;
-            pulledSince_ = 0.0;
-            pulledPeak_ = 1;
-        }
-    }
-    return std::max(jointSubsteps_, pulledSubsteps_);
-}
-
 bool World::integrate(double t, double h, int next, StateSummary* summary) {
     return integrator_->step(*this, t, h, q_[current_], u_[current_], q_[next], u_[next],
                              ledger_.workNc, summary);
-}
-
-void World::solveJoints(double h, int next) {
-    // Straight after the integrator. The booking (CONTRACT §6): SHAKE and the velocities'
-    // projection onto the tangent are the discrete constraint forces of the method, so what
-    // they change is the method's own (it stays in drift); moving positions further (what
-    // SHAKE could not reach, inequalities past their bounds) is error correction; an inequality
-    // catching a body takes energy out like an inelastic contact (work_nc) and never puts it in
-    // (correction); a motor's push is work.
-    Vec& q = q_[next];
-    Vec& u = u_[next];
-    const bool shaken = joints_->shake(h, q_[current_], q, u, invMass_);
-    const double beforeCorrection = mechanicalEnergy(q, u);
-    double afterCorrection = beforeCorrection;
-    // A converged SHAKE has left the equalities on C = 0: only inequalities can remain.
-    if (!shaken || joints_->hasInequalities()) {
-        joints_->correctPositions(q, u, invMass_);
-        afterCorrection = mechanicalEnergy(q, u);
-    }
-    const bool caught = joints_->projectVelocities(q, u, invMass_);
-    const double projected = caught ? mechanicalEnergy(q, u) : afterCorrection;
-    const double motorWork = joints_->driveMotors(h, q, u, mass_, invMass_);
-    if (!std::isfinite(projected) || !std::isfinite(motorWork)) return;  // the guard reports it
-    ledger_.correction += afterCorrection - beforeCorrection;
-    const double catchEnergy = projected - afterCorrection;
-    ledger_.workNc += std::min(catchEnergy, 0.0) + motorWork;
-    ledger_.correction += std::max(catchEnergy, 0.0);
-}
-
-void World::rejoin(int next) {
-    // After the contacts: the joints back onto what the contacts moved (positions, then
-    // velocities), then block Gauss-Seidel between the two solvers, each exact or converged on
-    // its own, so that neither undoes the other (a wheel on the ground is held up by the
-    // contact and to the car by the hinge). step() books the net of contacts and joints.
-    Vec& q = q_[next];
-    Vec& u = u_[next];
-    joints_->correctPositions(q, u, invMass_);
-    joints_->projectVelocities(q, u, invMass_);
-    if (!contacts_->touching()) return;
-    // Until a round changes no velocity by more than kRoundTolerance: a chain whose links only
-    // lie near each other settles in a round or two, a car on its wheels takes more.
-    for (int round = 0; round < kJointContactRounds; ++round) {
-        roundStart_ = u;
-        contacts_->relaxVelocities(u, 2);
-        joints_->projectVelocities(q, u, invMass_, true);
-        if ((u - roundStart_).lpNorm<Eigen::Infinity>() <= kRoundTolerance) break;
-    }
-    contacts_->keepImpulses();
-}
-
-JointErrors World::jointErrors() const {
-    return joints_ && !layoutDirty_ ? joints_->errors(q_[current_]) : JointErrors{};
 }
 
 StateSummary World::closeLedger(const StateSummary* summed) {
