@@ -390,7 +390,8 @@ void JointSolver::solveFor(const Vec& invMass, Vec& x, double scale, bool fromVi
     addJTranspose(invMass, scale, x);
 }
 
-bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invMass) {
+bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
+                        const Vec& invMass) {
     // The equality rows in their directions at the step's start, factored once: each
     // iteration only evaluates C at q. With them the ropes that were taut and pulling at the
     // start: they pulled through the step as the derivative's equalities, and SHAKE keeps
@@ -404,6 +405,7 @@ bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invM
     dropInequalities();
     for (int k = 0; k < jointCount(); ++k)
         ropeShaken_[k] = joints_[k].type == Joint::Type::Rope && rows_[k].count > 0;
+    const Vec& weights = stiffen(h, u0, q, u, invMass);
     bool factored = false;
     double previous = std::numeric_limits<double>::infinity();
     for (int it = 0; it < kProjectionIterations; ++it) {
@@ -422,16 +424,17 @@ bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invM
         }
         if (worst <= kProjectionTolerance) return true;
         // Past the asymptotic regime (the step moved a joint a good part of its size) or not
-        // contracting: an impulse that large would pump energy in; positions only, then.
+        // contracting: the directions of the start are too far from the end's, and an impulse
+        // along them would pump energy in. On along the end's directions instead.
         if (worst > (it == 0 ? shakeReach_ : 0.5 * previous)) {
             if (it > 0) {  // the last iteration did not help: back to the state before it
                 q -= impulse_;
                 u -= impulse_ / h;
             }
-            return false;
+            return shakeAlongEnd(h, q, u, weights);
         }
         previous = worst;
-        if (!factored) factor(invMass);
+        if (!factored) factor(weights);
         factored = true;
         solve();
         accelerate(it > 0);
@@ -439,7 +442,66 @@ bool JointSolver::shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invM
         // body once, then applied to both.
         impulse_.setZero(invMass.size());
         forEachJTranspose(invMass, [&](int dof, double, double f) { impulse_[dof] += f; });
-        impulse_.array() *= invMass.array();
+        impulse_.array() *= weights.array();
+        q += impulse_;
+        u += impulse_ / h;
+    }
+    return false;
+}
+
+const Vec& JointSolver::stiffen(double h, const Vec& u0, Vec& q, Vec& u, const Vec& invMass) {
+    if (!(implicitLimit_ > 0.0) || !forcesKnown_) return invMass;
+    // k = Σ arm·F over the body's hinges and welds, at the step's start (the rotations are
+    // q0's: shake() has just evaluated the rows there, or the derivative did), from the
+    // forces of the last derivative evaluation.
+    stiffness_.assign(turningDofs_.size(), 0.0);  // no larger than before: no allocation
+    for (int k = 0; k < jointCount(); ++k) {
+        const Joint::Type type = joints_[k].type;
+        if (type != Joint::Type::Hinge && type != Joint::Type::Weld) continue;
+        for (int side = 0; side < 2; ++side) {
+            const End& e = side == 0 ? endA_[k] : endB_[k];
+            if (e.turns)
+                stiffness_[e.slot] += (rotations_[e.slot] * e.local).dot(forceOn_[k][side]);
+        }
+    }
+    bool stiff = false;
+    for (std::size_t s = 0; s < turningDofs_.size(); ++s) {
+        const int d = turningDofs_[s] + 2;
+        const double w = h * h * stiffness_[s] * invMass[d];
+        if (!(w > implicitLimit_)) continue;  // (a NaN force leaves the body alone)
+        if (!stiff) stiffInvMass_ = invMass;  // same size: no allocation
+        stiff = true;
+        // The body turns as if its inertia were I·w/limit: its zig-zag then meets w = limit.
+        const double inertia = w / implicitLimit_;
+        const double omega = u0[d] + (u[d] - u0[d]) / inertia;
+        q[d] -= h * (u[d] - omega);  // the step's own x' = x + h·v'
+        u[d] = omega;
+        stiffInvMass_[d] = invMass[d] / inertia;
+    }
+    return stiff ? stiffInvMass_ : invMass;
+}
+
+bool JointSolver::shakeAlongEnd(double h, Vec& q, Vec& u, const Vec& weights) {
+    // Newton's projection in the mass metric, the rows evaluated at each iterate (converging
+    // quadratically wherever it starts near enough), the velocities moved with the positions
+    // as SHAKE moves them. Ropes past their length are held with the equalities.
+    double previous = std::numeric_limits<double>::infinity();
+    for (int it = 0; it < kProjectionIterations; ++it) {
+        evaluateRows(Mode::Position, q, u);
+        dropInequalities();
+        const double worst = worstViolation();
+        if (worst <= kProjectionTolerance) return true;
+        if (!(worst < previous)) return false;  // diverging (or NaN): the world's projection
+        previous = worst;
+        factor(weights);
+        for (int k = 0; k < jointCount(); ++k) {
+            rhs_[k] = -rows_[k].c;
+            for (int i = rows_[k].count; i < 3; ++i) rhs_[k][i] = 0.0;
+        }
+        solve();
+        impulse_.setZero(weights.size());
+        forEachJTranspose(weights, [&](int dof, double, double f) { impulse_[dof] += f; });
+        impulse_.array() *= weights.array();
         q += impulse_;
         u += impulse_ / h;
     }
@@ -598,6 +660,8 @@ double JointSolver::geometricFrequency(const Vec& q, const Vec& invMass) {
         const double f = forces_[k];
         if (!(f > 0.0)) continue;
         const Joint& j = joints_[k];
+        if (implicitLimit_ > 0.0 && (j.type == Joint::Type::Hinge || j.type == Joint::Type::Weld))
+            continue;         // shake() takes their stiffness implicitly
         double length = 0.0;  // a distance row's current length; 0: no distance row
         switch (j.type) {
             case Joint::Type::Rod:

@@ -63,9 +63,28 @@ public:
     //    velocities (Δu = Δq/h); the iterations are Anderson-mixed (accelerate()). This is SHAKE,
     //    the discrete constraint force of the method: with it symplectic Euler stays
     //    symplectic on the constraint manifold and a pendulum keeps its period, and its energy
-    //    is the method's own (drift). False when it did not converge (a step long against the
-    //    joints: a whip's tip moving a link's length in one step).
-    bool shake(double h, const Vec& q0, Vec& q, Vec& u, const Vec& invMass);
+    //    is the method's own (drift). Where the directions of the start do not converge (a
+    //    link turning far in the step: a whip's tip), the iterations go on along the
+    //    directions at the iterate (Newton's projection), still moving the velocities with the
+    //    positions: a constraint force along the end's directions, the method's too. False
+    //    when neither converged. With setImplicitStiffness(limit), the hinges and welds
+    //    stiffer than the limit are first taken implicitly (see there).
+    bool shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u, const Vec& invMass);
+    // For the methods whose step ends x' = x + h·v' (symplectic and implicit Euler): a joint
+    // under a force F holds a body's point at a lever arm r with a stiffness k = F·r on the
+    // body's angle (geometricFrequency()), which those methods meet explicitly, stable only
+    // while w = h²·k/I stays below 4: a chain's links zig-zag apart under a heavy weight or in
+    // a whip. For a hinge or a weld k is the body's own (the point is linear in the body's
+    // translation, curved only in its angle), so shake() can give a body with w > limit the
+    // inertia I·w/limit for the step (the step's change of its rate shrinks by that factor, and
+    // the constraint impulses act on the larger inertia), and its zig-zag then meets w = limit:
+    // stable at any force, without sub-steps. This is selective mass scaling, as explicit
+    // finite element codes use it: nothing is damped, and since the added inertia is h²·k/limit
+    // and k is what makes the whole chain swing back, a slow mode of frequency ω changes its
+    // period by about ½·(ω·h)²/limit (a 10 m pendulum on light links, at dt 1/60: 1.4e-4). What it
+    // changes is the method's own error (drift). Bodies with w ≤ limit (a pendulum, a chain
+    // below the tension that needs it) are untouched. 0: off.
+    void setImplicitStiffness(double limit) { implicitLimit_ = limit; }
     // 2. Newton steps in positions only for what remains: inequalities past their bounds (a
     //    rope snapping taut, a hinge past a limit) and whatever shake left. Error correction:
     //    its energy is `correction`.
@@ -102,6 +121,7 @@ public:
     // Gershgorin's on W·K with K the joints' geometric stiffness (the Hessian of λᵀ·C): no mode
     // of the free bodies is faster, and holding them by the joints only slows the modes down.
     // From the forces of the last derivative evaluation (forcesKnown()).
+    // The hinges and welds are left out where setImplicitStiffness() takes them implicitly.
     double geometricFrequency(const Vec& q, const Vec& invMass);
     // False from bind() until a derivative evaluation has found the joints' forces.
     bool forcesKnown() const { return forcesKnown_; }
@@ -192,6 +212,11 @@ private:
     // SHAKE's iterations: turns the plain step in lambda_ into the Anderson-mixed one, from the
     // last iteration's (withPrevious) or, at the first, keeps it.
     void accelerate(bool withPrevious);
+    // shake()'s implicit stiffness: the velocities and positions of the bodies it damps, and
+    // the inverse masses their impulses take (invMass itself when no body needs it).
+    const Vec& stiffen(double h, const Vec& u0, Vec& q, Vec& u, const Vec& invMass);
+    // shake()'s continuation along the directions at the iterate; true once converged.
+    bool shakeAlongEnd(double h, Vec& q, Vec& u, const Vec& weights);
     void solve();
 
     std::vector<Joint> joints_;
@@ -201,8 +226,10 @@ private:
     std::vector<End> endA_, endB_;
     bool hasMotors_ = false, hasInequalities_ = false;
     double lastMotorWork_ = 0.0;
-    double shakeReach_ = 0.01;  // m: the largest violation SHAKE answers with an impulse
-    double stepLength_ = 0.0;   // s: the last shake()'s h, for the pulleys' stops
+    double shakeReach_ = 0.01;    // m: the largest violation SHAKE answers with an impulse
+    double stepLength_ = 0.0;     // s: the last shake()'s h, for the pulleys' stops
+    double implicitLimit_ = 0.0;  // setImplicitStiffness()
+    Vec stiffInvMass_;            // stiffen(): invMass with the damped bodies' larger inertia
 
     // Per evaluation (sized in bind).
     std::vector<Rows> rows_;

@@ -58,6 +58,11 @@ int World::jointSubstepsForFrame() {
     // tension that swings with a pendulum would otherwise change the step every swing.
     const IntegratorInfo& info = integrator_->info();
     const double bound = info.implicit && !info.adaptive ? 2.0 : info.stabilityBound;
+    // A method whose step ends x' = x + h·v' takes the hinges' and welds' share implicitly
+    // instead (JointSolver::setImplicitStiffness): w = (ω·h)² up to the same share of its bound.
+    const double share = kJointStabilityShare * bound;
+    joints_->setImplicitStiffness(info.positionWeight == 1.0 && std::isfinite(bound) ? share * share
+                                                                                     : 0.0);
     int pulled = 1;
     if (std::isfinite(bound)) {
         if (!joints_->forcesKnown()) {
@@ -88,15 +93,17 @@ int World::jointSubstepsForFrame() {
 }
 
 void World::solveJoints(double h, int next) {
-    // Straight after the integrator. The booking (CONTRACT §6): SHAKE and the velocities'
-    // projection onto the tangent are the discrete constraint forces of the method, so what
-    // they change is the method's own (it stays in drift); moving positions further (what
+    // Straight after the integrator. The booking (CONTRACT §6): SHAKE (along the directions of
+    // the step's start, or of its end where those do not converge, velocities moved with the
+    // positions, on the scaled inertia of setImplicitStiffness) and the velocities' projection
+    // onto the tangent are the discrete constraint forces of the method, so what they change
+    // is the method's own (it stays in drift); moving positions further (what
     // SHAKE could not reach, inequalities past their bounds) is error correction; an inequality
     // catching a body takes energy out like an inelastic contact (work_nc) and never puts it in
     // (correction); a motor's push is work.
     Vec& q = q_[next];
     Vec& u = u_[next];
-    const bool shaken = joints_->shake(h, q_[current_], q, u, invMass_);
+    const bool shaken = joints_->shake(h, q_[current_], u_[current_], q, u, invMass_);
     const double beforeCorrection = mechanicalEnergy(q, u);
     double afterCorrection = beforeCorrection;
     // A converged SHAKE has left the equalities on C = 0: only inequalities can remain.
