@@ -35,8 +35,9 @@ int World::jointSubstepsForFrame() {
     // not turn far. A count goes up at once; down at once only to less than half of it (a whip
     // calming down), otherwise after kJointSubstepHold seconds without need: a swing that needs
     // two near the bottom and one elsewhere would change its step twice a swing, and a
-    // symplectic method with a changing step loses its energy (a 0.385 m pendulum at 90° under
-    // symplectic Euler kept 70% of it after 30 s and swung 5% short).
+    // symplectic method with a changing step loses its energy (a pendulum at 90° that needs
+    // two at its bottom, under symplectic Euler, kept 70% of it after 30 s and swung 5% short;
+    // tst_joints jointSubstepsDoNotDrainAShortPendulum).
     const int turning = joints_->substepsFor(h, q, u);
     // Contacts already make the step non-smooth: there the count follows the need.
     const bool smooth = !contacts_ || !contacts_->touching();

@@ -669,30 +669,40 @@ private slots:
     }
 
     void jointSubstepsDoNotDrainAShortPendulum() {
-        // A 0.385 m rod pendulum released level with its pivot under symplectic Euler at 1/60:
-        // near the bottom it turns more than 0.1 rad a step, so its rod takes two sub-steps
-        // there and one elsewhere. Changing the step twice a swing made the method lose energy
-        // (30% of m·g·L after 30 s, the period 5% short); the count is now held while the need
-        // recurs, and the energy stays within SE's own wobble (a few percent of m·g·L, as at a
-        // fixed step) and the period within 0.5% of 4·√(L/g)·K(sin 45°).
-        const double length = 0.385;
-        SceneDesc s = scene("symplectic_euler", 1.0 / 60.0);
-        s.particles.push_back(particle("bob", {length, 0.0}));
-        JointDesc rod = joint(JointType::Rod, "bob");
-        rod.anchor = Point2{0.0, 0.0};
-        s.joints.push_back(rod);
-        auto world = buildWorld(s).world;
-        const double expected = exactPeriod(length, kPi / 2.0);
-        double worst = 0.0;
-        const double period = swingPeriod(*world, 0, 30.0, &worst);
-        QVERIFY(period > 0.0);
+        // A short rod pendulum swinging to 90° under symplectic Euler at 1/60, its length
+        // chosen so that at the bottom it turns 1.19 times JointSolver::kMaxTurnPerStep a step
+        // (there ω = √(2·g/L): 0.043 m), launched from the bottom at that rate: its rod takes
+        // two sub-steps near the bottom and would take one elsewhere. Changing the step twice a
+        // swing made the method lose energy (30% of m·g·L after 30 s, the period 5% short); the
+        // count is now held while the need recurs, so the run must swing as the same pendulum
+        // does at a fixed step of 1/120 (two sub-steps of the user's): the same period within
+        // 1e-6, and the energy within SE's own wobble at that step.
+        const double h = 1.0 / 60.0;
+        const double omega = 1.19 * JointSolver::kMaxTurnPerStep / h;
+        const double length = 2.0 * kG / (omega * omega);
+        const auto run = [&](int substeps, double* worst) {
+            SceneDesc s = scene("symplectic_euler", h);
+            s.simulation.substeps = substeps;
+            ParticleDesc bob = particle("bob", {0.0, -length});
+            bob.velocity = {omega * length, 0.0};
+            s.particles.push_back(bob);
+            JointDesc rod = joint(JointType::Rod, "bob");
+            rod.anchor = Point2{0.0, 0.0};
+            s.joints.push_back(rod);
+            auto world = buildWorld(s).world;
+            return swingPeriod(*world, 0, 30.0, worst);
+        };
+        double worst = 0.0, worstFixed = 0.0;
+        const double period = run(1, &worst), fixed = run(2, &worstFixed);
+        QVERIFY(period > 0.0 && fixed > 0.0);
         const double mgl = kG * length;
         qInfo(
-            "0.385 m at 90 deg, SE 1/60: T %.5f s, exact %.5f s (%.2e); largest |drift| %.3f J "
-            "of m g L = %.3f J",
-            period, expected, period / expected - 1.0, worst, mgl);
-        QVERIFY(std::abs(period / expected - 1.0) < 5e-3);
-        QVERIFY(worst < 0.05 * mgl);
+            "%.4f m at 90 deg, SE 1/60: T %.5f s, at a fixed 1/120 %.5f s (%.2e), exact %.5f s; "
+            "largest |drift| %.2f%% of m g L (%.2f%% at 1/120)",
+            length, period, fixed, period / fixed - 1.0, exactPeriod(length, kPi / 2.0),
+            100.0 * worst / mgl, 100.0 * worstFixed / mgl);
+        QVERIFY(std::abs(period / fixed - 1.0) < 1e-6);
+        QVERIFY(worst <= 1.01 * worstFixed);
     }
 
     // A heavy weight on a light chain at a new scene's defaults (dt 1/60, one sub-step): 1000
