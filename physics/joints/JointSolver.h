@@ -104,13 +104,13 @@ public:
     // kMaxTurnPerStep in one (a rod's direction, a hinge's lever arm). Beyond that the step
     // is poor where it turns: SHAKE's directions of the start are far from the end's (it goes
     // on along the end's, shake()), and the velocity projection keeps about cos(φ/2) of the
-    // speed of a link that turned by φ. 0.3 rad (98.9% of the speed kept): a 1 m pendulum at 90°
-    // needs 1 up to dt 1/15, a 4 cm one 2 at dt 1/60, a chain's whip a few to a dozen. It was
-    // 0.1 rad while SHAKE gave up where the start's directions did not converge; at 0.3 the
-    // 100-link whip takes 1.06 G instructions for its 600 steps instead of 1.51 G, and its
-    // largest |drift| is 318 J of the 30.7 kJ it releases (205 J at 0.1 rad).
+    // speed of a link that turned by φ. A 1 m pendulum at 90° needs 1 up to dt 1/45; a chain's
+    // whip needs a few to a dozen. At 0.3 rad the 100-link whip would take 1.06 G instructions
+    // for its 600 steps instead of 1.51 G, but the ragdoll example's fall down its stairs then
+    // booked 163 J of correction in 5 s instead of 4 J (0.2 rad: 139 J): its contacts and
+    // joints trade energy over the longer steps (docs/architecture.md, Joints).
     int substepsFor(double h, const Vec& q, const Vec& u) const;
-    static constexpr double kMaxTurnPerStep = 0.3;  // rad
+    static constexpr double kMaxTurnPerStep = 0.1;  // rad
     static constexpr int kMaxSubsteps = 64;
     // A wanted count of sub-steps (rounded up already) as one from 1 to kMaxSubsteps; a
     // non-finite rate (the guard reports it) asks for 1.

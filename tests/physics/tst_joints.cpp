@@ -671,7 +671,7 @@ private slots:
     void jointSubstepsDoNotDrainAShortPendulum() {
         // A short rod pendulum swinging to 90° under symplectic Euler at 1/60, its length
         // chosen so that at the bottom it turns 1.19 times JointSolver::kMaxTurnPerStep a step
-        // (there ω = √(2·g/L): 0.043 m), launched from the bottom at that rate: its rod takes
+        // (there ω = √(2·g/L): 0.385 m), launched from the bottom at that rate: its rod takes
         // two sub-steps near the bottom and would take one elsewhere. Changing the step twice a
         // swing made the method lose energy (30% of m·g·L after 30 s, the period 5% short); the
         // count is now held while the need recurs, so the run must swing as the same pendulum
