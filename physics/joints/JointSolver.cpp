@@ -450,6 +450,7 @@ bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
 }
 
 const Vec& JointSolver::stiffen(double h, const Vec& u0, Vec& q, Vec& u, const Vec& invMass) {
+    stiffened_ = false;
     if (!(implicitLimit_ > 0.0) || !forcesKnown_) return invMass;
     // k = Σ arm·F over the body's hinges and welds, at the step's start (the rotations are
     // q0's: shake() has just evaluated the rows there, or the derivative did), from the
@@ -478,6 +479,7 @@ const Vec& JointSolver::stiffen(double h, const Vec& u0, Vec& q, Vec& u, const V
         u[d] = omega;
         stiffInvMass_[d] = invMass[d] / inertia;
     }
+    stiffened_ = stiff;
     return stiff ? stiffInvMass_ : invMass;
 }
 

@@ -85,6 +85,14 @@ public:
     // changes is the method's own error (drift). Bodies with w ≤ limit (a pendulum, a chain
     // below the tension that needs it) are untouched. 0: off.
     void setImplicitStiffness(double limit) { implicitLimit_ = limit; }
+    // The inverse masses the last shake() moved the bodies with (invMass, or with the scaled
+    // inertia of setImplicitStiffness): the velocity projection that completes the step takes
+    // the same, so that the step is symplectic Euler on one mass matrix. Projected with the
+    // true inertia instead, the light links took the projection's whole correction, and 2000 kg
+    // on 20 hinged boxes pushed at 5 m/s diverged within 0.8 s (5000 kg within 2.4 s).
+    const Vec& shakeWeights(const Vec& invMass) const {
+        return stiffened_ ? stiffInvMass_ : invMass;
+    }
     // 2. Newton steps in positions only for what remains: inequalities past their bounds (a
     //    rope snapping taut, a hinge past a limit) and whatever shake left. Error correction:
     //    its energy is `correction`.
@@ -234,7 +242,8 @@ private:
     double shakeReach_ = 0.01;    // m: the largest violation SHAKE answers with an impulse
     double stepLength_ = 0.0;     // s: the last shake()'s h, for the pulleys' stops
     double implicitLimit_ = 0.0;  // setImplicitStiffness()
-    Vec stiffInvMass_;            // stiffen(): invMass with the damped bodies' larger inertia
+    Vec stiffInvMass_;            // stiffen(): invMass with the stiff bodies' larger inertia
+    bool stiffened_ = false;      // the last stiffen() scaled a body: stiffInvMass_ holds
 
     // Per evaluation (sized in bind).
     std::vector<Rows> rows_;

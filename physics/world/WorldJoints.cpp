@@ -112,7 +112,7 @@ void World::solveJoints(double h, int next) {
         joints_->correctPositions(q, u, invMass_);
         afterCorrection = mechanicalEnergy(q, u);
     }
-    const bool caught = joints_->projectVelocities(q, u, invMass_);
+    const bool caught = joints_->projectVelocities(q, u, joints_->shakeWeights(invMass_));
     const double projected = caught ? mechanicalEnergy(q, u) : afterCorrection;
     const double motorWork = joints_->driveMotors(h, q, u, mass_, invMass_);
     if (!std::isfinite(projected) || !std::isfinite(motorWork)) return;  // the guard reports it
