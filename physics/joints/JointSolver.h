@@ -225,7 +225,7 @@ private:
     // SHAKE's iterations: turns the plain step in lambda_ into the Anderson-mixed one, from the
     // last iteration's (withPrevious) or, at the first, keeps it.
     void accelerate(bool withPrevious);
-    // shake()'s implicit stiffness: the velocities and positions of the bodies it damps, and
+    // shake()'s implicit stiffness: the velocities and positions of the bodies it scales, and
     // the inverse masses their impulses take (invMass itself when no body needs it).
     const Vec& stiffen(double h, const Vec& u0, Vec& q, Vec& u, const Vec& invMass);
     // shake()'s continuation along the directions at the iterate; true once converged.
