@@ -188,11 +188,13 @@ void JointSolver::bind(const Bodies& bodies) {
             for (const auto& [k2, s2] : list)
                 if (position[k1] > position[k2])
                     couplings_.push_back({blockIndex(position[k2], position[k1]), k1, s1, k2, s2});
-    diag_.assign(m, Mat3::Identity());
-    dinv_.assign(m, Mat3::Identity());
-    off_.assign(upper_.size(), Mat3::Zero());
-    l_.assign(upper_.size(), Mat3::Zero());
-    y_.assign(m, Vec3::Zero());
+    // A weld holds the angle too, and a hinge at a limit: those have three rows.
+    blockRows_ = 2;
+    for (const Joint& j : joints_)
+        if (j.type == Joint::Type::Weld || (j.type == Joint::Type::Hinge && j.hasLimits))
+            blockRows_ = 3;
+    factors2_.resize(blockRows_ == 2 ? m : 0, blockRows_ == 2 ? upper_.size() : 0);
+    factors3_.resize(blockRows_ == 3 ? m : 0, blockRows_ == 3 ? upper_.size() : 0);
     factoredRows_.assign(m, Rows{});
     factoredValid_ = false;
     rowsQ_.resize(0);
@@ -231,6 +233,15 @@ void JointSolver::factor(const Vec& invMass) {
     factoredRows_ = rows_;  // same size: no allocation
     factoredMass_ = &invMass;
     factoredValid_ = true;
+    if (blockRows_ == 2)
+        factorBlocks(factors2_, invMass);
+    else
+        factorBlocks(factors3_, invMass);
+}
+
+template <int B>
+void JointSolver::factorBlocks(Factors<B>& f, const Vec& invMass) {
+    using MatB = Eigen::Matrix<double, B, B>;
     const auto weights = [&](const End& e) {
         Vec3 w = Vec3::Zero();
         if (e.dof < 0) return w;
@@ -239,14 +250,22 @@ void JointSolver::factor(const Vec& invMass) {
         if (e.turns) w[2] = invMass[e.dof + 2];
         return w;
     };
+    // J_i·W·J_kᵀ of B rows each.
+    const auto product = [](const Mat3& ji, const Vec3& w, const Mat3& jk) {
+        MatB out;
+        for (int i = 0; i < B; ++i)
+            for (int j = 0; j < B; ++j)
+                out(i, j) = ji(i, 0) * w[0] * jk(j, 0) + ji(i, 1) * w[1] * jk(j, 1) +
+                            ji(i, 2) * w[2] * jk(j, 2);
+        return out;
+    };
     const int m = jointCount();
     for (int p = 0; p < m; ++p) {
         const int k = order_[p];
         const Rows& r = rows_[k];
-        Mat3& d = diag_[p];
-        d = r.ja * weights(endA_[k]).asDiagonal() * r.ja.transpose() +
-            r.jb * weights(endB_[k]).asDiagonal() * r.jb.transpose();
-        for (int i = 0; i < 3; ++i) {
+        MatB& d = f.diag[p];
+        d = product(r.ja, weights(endA_[k]), r.ja) + product(r.jb, weights(endB_[k]), r.jb);
+        for (int i = 0; i < B; ++i) {
             if (i >= r.count) {  // an unused row: the identity keeps the block invertible
                 d.row(i).setZero();
                 d.col(i).setZero();
@@ -258,38 +277,51 @@ void JointSolver::factor(const Vec& invMass) {
             }
         }
     }
-    for (Mat3& o : off_) o.setZero();
+    for (MatB& o : f.off) o.setZero();
     for (const Coupling& c : couplings_) {
         const Rows& ri = rows_[c.i];
         const Rows& rk = rows_[c.k];
         const Mat3& ji = c.sideI == 0 ? ri.ja : ri.jb;
         const Mat3& jk = c.sideK == 0 ? rk.ja : rk.jb;
         const End& body = c.sideK == 0 ? endA_[c.k] : endB_[c.k];
-        off_[c.block] += ji * weights(body).asDiagonal() * jk.transpose();
+        f.off[c.block] += product(ji, weights(body), jk);
     }
     for (int p = 0; p < m; ++p) {
-        dinv_[p] = diag_[p].inverse();
-        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) l_[t] = off_[t] * dinv_[p];
+        f.dinv[p] = f.diag[p].inverse();
+        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) f.l[t] = f.off[t] * f.dinv[p];
         for (int s = updateStart_[p]; s < updateStart_[p + 1]; ++s) {
             const Update& up = updates_[s];
             if (up.target < 0)
-                diag_[upper_[up.t1]] -= l_[up.t1] * off_[up.t1].transpose();
+                f.diag[upper_[up.t1]] -= f.l[up.t1] * f.off[up.t1].transpose();
             else
-                off_[up.target] -= l_[up.t1] * off_[up.t2].transpose();
+                f.off[up.target] -= f.l[up.t1] * f.off[up.t2].transpose();
         }
     }
 }
 
 void JointSolver::solve() {
+    if (blockRows_ == 2)
+        solveBlocks(factors2_);
+    else
+        solveBlocks(factors3_);
+}
+
+template <int B>
+void JointSolver::solveBlocks(Factors<B>& f) {
     const int m = jointCount();
-    for (int p = 0; p < m; ++p) y_[p] = rhs_[order_[p]];
+    auto& y = f.y;
+    for (int p = 0; p < m; ++p) y[p] = rhs_[order_[p]].template head<B>();
     for (int p = 0; p < m; ++p)
-        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) y_[upper_[t]] -= l_[t] * y_[p];
-    for (int p = 0; p < m; ++p) y_[p] = dinv_[p] * y_[p];
+        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) y[upper_[t]] -= f.l[t] * y[p];
+    for (int p = 0; p < m; ++p) y[p] = f.dinv[p] * y[p];
     for (int p = m - 1; p >= 0; --p)
         for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t)
-            y_[p] -= l_[t].transpose() * y_[upper_[t]];
-    for (int p = 0; p < m; ++p) lambda_[order_[p]] = y_[p];
+            y[p] -= f.l[t].transpose() * y[upper_[t]];
+    for (int p = 0; p < m; ++p) {
+        Vec3& lambda = lambda_[order_[p]];
+        lambda.template head<B>() = y[p];
+        if constexpr (B == 2) lambda[2] = 0.0;
+    }
 }
 
 // ---- constrained dynamics --------------------------------------------------------------------
@@ -406,47 +438,55 @@ bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
     for (int k = 0; k < jointCount(); ++k)
         ropeShaken_[k] = joints_[k].type == Joint::Type::Rope && rows_[k].count > 0;
     const Vec& weights = stiffen(h, u0, q, u, invMass);
-    bool factored = false;
-    double previous = std::numeric_limits<double>::infinity();
+    cacheRotations(q);
+    double worst = shakeViolation(q);
+    if (worst <= kProjectionTolerance) return true;
+    // Past the asymptotic regime (the step moved a joint a good part of its size): the
+    // directions of the start are too far from the end's, and an impulse along them would pump
+    // energy in. On along the end's directions instead.
+    if (worst > shakeReach_) return shakeAlongEnd(h, q, u, weights);
+    factor(weights);
+    double previous = worst;
     for (int it = 0; it < kProjectionIterations; ++it) {
-        double worst = 0.0;
-        if (it == 0)
-            cacheRotations(q);
-        else
-            turnRotations(impulse_);
-        for (int k = 0; k < jointCount(); ++k) {
-            const Vec3 c = violationOf(k, q);
-            rhs_[k].setZero();
-            for (int i = 0; i < rows_[k].count; ++i) {
-                rhs_[k][i] = -c[i];
-                worst = std::max(worst, std::abs(c[i]));
-            }
-        }
+        solve();
+        accelerate(it > 0);
+        applyShakeImpulse(h, weights, q, u);
+        turnRotations(impulse_);
+        worst = shakeViolation(q);
         if (worst <= kProjectionTolerance) return true;
-        // Past the asymptotic regime (the step moved a joint a good part of its size) or not
-        // contracting: the directions of the start are too far from the end's, and an impulse
-        // along them would pump energy in. On along the end's directions instead.
-        if (worst > (it == 0 ? shakeReach_ : 0.5 * previous)) {
-            if (it > 0) {  // the last iteration did not help: back to the state before it
-                q -= impulse_;
-                u -= impulse_ / h;
-            }
+        // Not contracting: the directions of the start are too far from the end's. Back to
+        // the state before this iteration, and on along the end's directions.
+        if (worst > 0.5 * previous) {
+            q -= impulse_;
+            u -= impulse_ / h;
             return shakeAlongEnd(h, q, u, weights);
         }
         previous = worst;
-        if (!factored) factor(weights);
-        factored = true;
-        solve();
-        accelerate(it > 0);
-        // The same impulse moves the positions and the velocities: summed over the joints per
-        // body once, then applied to both.
-        impulse_.setZero(invMass.size());
-        forEachJTranspose(invMass, [&](int dof, double, double f) { impulse_[dof] += f; });
-        impulse_.array() *= weights.array();
-        q += impulse_;
-        u += impulse_ / h;
     }
     return false;
+}
+
+double JointSolver::shakeViolation(const Vec& q) {
+    double worst = 0.0;
+    for (int k = 0; k < jointCount(); ++k) {
+        const Vec3 c = violationOf(k, q);
+        rhs_[k].setZero();
+        for (int i = 0; i < rows_[k].count; ++i) {
+            rhs_[k][i] = -c[i];
+            worst = std::max(worst, std::abs(c[i]));
+        }
+    }
+    return worst;
+}
+
+void JointSolver::applyShakeImpulse(double h, const Vec& weights, Vec& q, Vec& u) {
+    // The same impulse moves the positions and the velocities: summed over the joints per body
+    // once, then applied to both.
+    impulse_.setZero(weights.size());
+    forEachJTranspose(weights, [&](int dof, double, double f) { impulse_[dof] += f; });
+    impulse_.array() *= weights.array();
+    q += impulse_;
+    u += impulse_ / h;
 }
 
 const Vec& JointSolver::stiffen(double h, const Vec& u0, Vec& q, Vec& u, const Vec& invMass) {
@@ -501,11 +541,7 @@ bool JointSolver::shakeAlongEnd(double h, Vec& q, Vec& u, const Vec& weights) {
             for (int i = rows_[k].count; i < 3; ++i) rhs_[k][i] = 0.0;
         }
         solve();
-        impulse_.setZero(weights.size());
-        forEachJTranspose(weights, [&](int dof, double, double f) { impulse_[dof] += f; });
-        impulse_.array() *= weights.array();
-        q += impulse_;
-        u += impulse_ / h;
+        applyShakeImpulse(h, weights, q, u);
     }
     return false;
 }

@@ -14,7 +14,8 @@
 // (its work is physical, work_nc). A rope is an equality while it is taut and pulling.
 //
 // The system J·M⁻¹·Jᵀ couples joints that share a body. It is factored as a block LDLᵀ over
-// the joint graph (blocks of up to 3×3, one per joint), eliminated in minimum-fill order.
+// the joint graph (one block per joint: 2×2 unless a weld or a hinge limit needs a third row,
+// then 3×3), eliminated in minimum-fill order.
 // For a chain or a tree of bodies this order makes no fill (tst_joints counts the blocks), so
 // a solve is O(n) (the result
 // Baraff 1996 gets by factoring the body–joint graph); loops add the fill they need. The
@@ -230,6 +231,11 @@ private:
     const Vec& stiffen(double h, const Vec& u0, Vec& q, Vec& u, const Vec& invMass);
     // shake()'s continuation along the directions at the iterate; true once converged.
     bool shakeAlongEnd(double h, Vec& q, Vec& u, const Vec& weights);
+    // SHAKE's violation at q (the rotations cached) into rhs_ as −C; returns the largest.
+    double shakeViolation(const Vec& q);
+    // q += W·Jᵀ·λ and u += W·Jᵀ·λ/h, W the given weights; the move stays in impulse_.
+    void applyShakeImpulse(double h, const Vec& weights, Vec& q, Vec& u);
+
     void solve();
 
     std::vector<Joint> joints_;
@@ -267,8 +273,29 @@ private:
     // joints block (i, k) couples, after fill.
     std::vector<int> order_;  // position → joint
     std::vector<int> upperStart_, upper_;
-    std::vector<Mat3> diag_, dinv_, off_, l_;
-    std::vector<Vec3> y_;  // the solve's right-hand side by elimination position
+    // The factors' blocks, B×B: B = 2 when no joint can have a third row (no weld, no hinge
+    // with limits), so that the common scenes (hinges, rods, ropes, pulleys, tracks) factor
+    // and solve 2×2 blocks instead of 3×3 ones padded with the identity: a hinged chain's
+    // factorization and solves take about half the instructions.
+    template <int B>
+    struct Factors {
+        std::vector<Eigen::Matrix<double, B, B>> diag, dinv, off, l;
+        std::vector<Eigen::Matrix<double, B, 1>> y;  // the solve's right-hand side by position
+        void resize(int joints, std::size_t blocks) {
+            diag.assign(joints, Eigen::Matrix<double, B, B>::Identity());
+            dinv.assign(joints, Eigen::Matrix<double, B, B>::Identity());
+            off.assign(blocks, Eigen::Matrix<double, B, B>::Zero());
+            l.assign(blocks, Eigen::Matrix<double, B, B>::Zero());
+            y.assign(joints, Eigen::Matrix<double, B, 1>::Zero());
+        }
+    };
+    Factors<2> factors2_;
+    Factors<3> factors3_;
+    int blockRows_ = 3;  // B: the most rows any joint can have
+    template <int B>
+    void factorBlocks(Factors<B>& f, const Vec& invMass);
+    template <int B>
+    void solveBlocks(Factors<B>& f);
     // The rows the factors are of, to skip factoring the same matrix again.
     std::vector<Rows> factoredRows_;
     const Vec* factoredMass_ = nullptr;
