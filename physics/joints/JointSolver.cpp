@@ -202,15 +202,18 @@ void JointSolver::bind(const Bodies& bodies) {
 
 template <class Add>
 void JointSolver::forEachJTranspose(const Vec& invMass, Add&& add) const {
+    const auto endOf = [&](const End& e, const Mat3& jac, const Vec3& lambda) {
+        if (e.dof < 0) return;
+        const Vec3 f = jac.transpose() * lambda;
+        add(e.dof, invMass[e.dof], f[0]);
+        add(e.dof + 1, invMass[e.dof + 1], f[1]);
+        if (e.turns) add(e.dof + 2, invMass[e.dof + 2], f[2]);
+    };
     for (int k = 0; k < jointCount(); ++k) {
         const Rows& r = rows_[k];
         if (r.count == 0) continue;
-        for (const auto& [end, jac] : {std::pair{&endA_[k], &r.ja}, std::pair{&endB_[k], &r.jb}}) {
-            if (end->dof < 0) continue;
-            const Vec3 f = jac->transpose() * lambda_[k];
-            const int dofs = end->turns ? 3 : 2;
-            for (int i = 0; i < dofs; ++i) add(end->dof + i, invMass[end->dof + i], f[i]);
-        }
+        endOf(endA_[k], r.ja, lambda_[k]);
+        endOf(endB_[k], r.jb, lambda_[k]);
     }
 }
 
@@ -510,7 +513,11 @@ const Vec& JointSolver::stiffen(double h, const Vec& u0, Vec& q, Vec& u, const V
         const int d = turningDofs_[s] + 2;
         const double w = h * h * stiffness_[s] * invMass[d];
         if (!(w > implicitLimit_)) continue;  // (a NaN force leaves the body alone)
-        if (!stiff) stiffInvMass_ = invMass;  // same size: no allocation
+        if (!stiff) {
+            stiffInvMass_ = invMass;  // same size: no allocation
+            // Factors of stiffInvMass_'s last contents must not pass for this step's.
+            if (factoredMass_ == &stiffInvMass_) factoredValid_ = false;
+        }
         stiff = true;
         // The body turns as if its inertia were I·w/limit: its zig-zag then meets w = limit.
         const double inertia = w / implicitLimit_;
@@ -559,8 +566,9 @@ void JointSolver::accelerate(bool withPrevious) {
         return;
     }
     // This iteration's differences into the ring: Δf = f − f_prev, Δλ = the last move.
-    std::vector<Vec3>& df = andersonDf_[andersonNext_];
-    std::vector<Vec3>& dl = andersonDl_[andersonNext_];
+    const int slot = andersonNext_;
+    std::vector<Vec3>& df = andersonDf_[slot];
+    std::vector<Vec3>& dl = andersonDl_[slot];
     for (int k = 0; k < m; ++k) {
         df[k] = lambda_[k] - previousStep_[k];
         dl[k] = lastDelta_[k];
@@ -569,18 +577,21 @@ void JointSolver::accelerate(bool withPrevious) {
     andersonNext_ = (andersonNext_ + 1) % kAndersonDepth;
     andersonCount_ = std::min(andersonCount_ + 1, kAndersonDepth);
     const int n = andersonCount_;
+    // The Gram matrix of the Δf keeps its entries between iterations: only the new difference's
+    // products are new, and with λ's they take one pass.
+    std::array<double, kAndersonDepth> gram{}, fit{};
+    for (int k = 0; k < m; ++k)
+        for (int i = 0; i < n; ++i) {
+            gram[i] += andersonDf_[i][k].dot(df[k]);
+            fit[i] += andersonDf_[i][k].dot(lambda_[k]);
+        }
+    for (int i = 0; i < n; ++i) andersonGram_(i, slot) = andersonGram_(slot, i) = gram[i];
     Eigen::Matrix<double, kAndersonDepth, kAndersonDepth> g =
         Eigen::Matrix<double, kAndersonDepth, kAndersonDepth>::Identity();
     Eigen::Matrix<double, kAndersonDepth, 1> rhs = Eigen::Matrix<double, kAndersonDepth, 1>::Zero();
     for (int i = 0; i < n; ++i) {
-        for (int j = 0; j <= i; ++j) {
-            double dot = 0.0;
-            for (int k = 0; k < m; ++k) dot += andersonDf_[i][k].dot(andersonDf_[j][k]);
-            g(i, j) = g(j, i) = dot;
-        }
-        double dot = 0.0;
-        for (int k = 0; k < m; ++k) dot += andersonDf_[i][k].dot(lambda_[k]);
-        rhs[i] = dot;
+        for (int j = 0; j < n; ++j) g(i, j) = andersonGram_(i, j);
+        rhs[i] = fit[i];
     }
     // A relative 1e-10 on the diagonal keeps the fit defined where two differences align.
     double scale = 0.0;

@@ -263,6 +263,8 @@ private:
     std::vector<Vec3> previousStep_, lastDelta_;
     std::array<std::vector<Vec3>, kAndersonDepth> andersonDf_, andersonDl_;
     int andersonCount_ = 0, andersonNext_ = 0;
+    // The Δf's products with each other, by ring slot (those of the filled slots hold).
+    Eigen::Matrix<double, kAndersonDepth, kAndersonDepth> andersonGram_;
     std::vector<double> forces_;
     bool forcesKnown_ = false;
     std::vector<double> stiffness_;  // per state index: geometric stiffness (geometricFrequency)
