@@ -620,8 +620,10 @@ void JointSolver::correctPositions(Vec& q, const Vec& u, const Vec& invMass) {
 }
 
 bool JointSolver::projectVelocities(const Vec& q, Vec& u, const Vec& invMass, bool sameQ) {
-    // Without inequalities the rows depend on q alone: at the same q they stand.
-    if (!sameQ || hasInequalities_) evaluateRows(Mode::Velocity, q, u);
+    // Without inequalities the rows' J depends on q alone, whatever mode evaluated them (a
+    // position projection that has just ended at q): at the same q they stand.
+    const bool rowsOfQ = sameQ || (rowsQ_.size() == q.size() && rowsQ_ == q);
+    if (!rowsOfQ || hasInequalities_) evaluateRows(Mode::Velocity, q, u);
     bool inequality = false;
     for (int k = 0; k < jointCount(); ++k) {
         const Joint::Type type = joints_[k].type;
