@@ -29,6 +29,7 @@ void JointSolver::cacheRotations(const Vec& q) {
 }
 
 void JointSolver::turnRotations(const Vec& delta) {
+    rotationsOfRowsQ_ = false;
     for (std::size_t s = 0; s < turningDofs_.size(); ++s) {
         const double d = delta[turningDofs_[s] + 2];
         if (d == 0.0) continue;
@@ -217,13 +218,13 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
     if (!eb.turns) r.jb.col(2).setZero();
 }
 
-Vec2 JointSolver::pointOf(const End& e, const Vec& q) const {
+inline Vec2 JointSolver::pointOf(const End& e, const Vec& q) const {
     if (e.dof < 0) return e.fixed;
     if (!e.turns) return q.segment<2>(e.dof);
     return q.segment<2>(e.dof) + rotations_[e.slot] * e.local;
 }
 
-JointSolver::Vec3 JointSolver::violationOf(int k, const Vec& q) const {
+inline JointSolver::Vec3 JointSolver::violationOf(int k, const Vec& q) const {
     const Joint& j = joints_[k];
     const End& ea = endA_[k];
     const End& eb = endB_[k];
@@ -233,7 +234,8 @@ JointSolver::Vec3 JointSolver::violationOf(int k, const Vec& q) const {
         case Joint::Type::Hinge:
         case Joint::Type::Weld: {
             c.head<2>() = pa - pointOf(eb, q) - j.offset;
-            // The angle row, where it is one of the equalities (a weld's).
+            // The angle row, where it is one of the equalities (a weld's; a hinge's limit is not).
+            if (j.type == Joint::Type::Hinge) break;
             const double angleA = ea.dof < 0 ? ea.angle0 : ea.turns ? q[ea.dof + 2] : 0.0;
             const double angleB = eb.dof < 0 ? eb.angle0 : eb.turns ? q[eb.dof + 2] : 0.0;
             c[2] = angleB - angleA - j.referenceAngle;
@@ -255,10 +257,27 @@ JointSolver::Vec3 JointSolver::violationOf(int k, const Vec& q) const {
     return c;
 }
 
+double JointSolver::shakeViolation(const Vec& q) {
+    double worst = 0.0;
+    for (int k = 0; k < jointCount(); ++k) {
+        const Vec3 c = violationOf(k, q);
+        rhs_[k].setZero();
+        for (int i = 0; i < rows_[k].count; ++i) {
+            rhs_[k][i] = -c[i];
+            worst = std::max(worst, std::abs(c[i]));
+        }
+    }
+    return worst;
+}
+
 void JointSolver::evaluateRows(Mode mode, const Vec& q, const Vec& u) {
+    // The rotations stand where the last rows were of this very q and nothing turned them
+    // since (a step's end is the next step's start).
+    const bool sameQ = rotationsOfRowsQ_ && rowsQ_.size() == q.size() && rowsQ_ == q;
     rowsQ_ = q;  // same size after the first: no allocation
     rowsMode_ = mode;
-    cacheRotations(q);
+    if (!sameQ) cacheRotations(q);
+    rotationsOfRowsQ_ = true;
     for (int k = 0; k < jointCount(); ++k) rowsOf(k, mode, q, u, rows_[k], true);
 }
 

@@ -198,6 +198,7 @@ void JointSolver::bind(const Bodies& bodies) {
     factoredRows_.assign(m, Rows{});
     factoredValid_ = false;
     rowsQ_.resize(0);
+    rotationsOfRowsQ_ = false;
 }
 
 template <class Add>
@@ -441,7 +442,8 @@ bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
     for (int k = 0; k < jointCount(); ++k)
         ropeShaken_[k] = joints_[k].type == Joint::Type::Rope && rows_[k].count > 0;
     const Vec& weights = stiffen(h, u0, q, u, invMass);
-    cacheRotations(q);
+    cacheRotations(q);  // of q, not of rowsQ_ (q0)
+    rotationsOfRowsQ_ = false;
     double worst = shakeViolation(q);
     if (worst <= kProjectionTolerance) return true;
     // Past the asymptotic regime (the step moved a joint a good part of its size): the
@@ -467,19 +469,6 @@ bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
         previous = worst;
     }
     return false;
-}
-
-double JointSolver::shakeViolation(const Vec& q) {
-    double worst = 0.0;
-    for (int k = 0; k < jointCount(); ++k) {
-        const Vec3 c = violationOf(k, q);
-        rhs_[k].setZero();
-        for (int i = 0; i < rows_[k].count; ++i) {
-            rhs_[k][i] = -c[i];
-            worst = std::max(worst, std::abs(c[i]));
-        }
-    }
-    return worst;
 }
 
 void JointSolver::applyShakeImpulse(double h, const Vec& weights, Vec& q, Vec& u) {

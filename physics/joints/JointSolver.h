@@ -239,9 +239,10 @@ private:
     void solve();
 
     std::vector<Joint> joints_;
-    std::vector<int> turningDofs_;  // per slot: the turning body's first state index
-    std::vector<Mat2> rotations_;   // per slot: R(θ) at the last cacheRotations()
-    Vec impulse_;                   // SHAKE: Jᵀ·λ per state index
+    std::vector<int> turningDofs_;   // per slot: the turning body's first state index
+    std::vector<Mat2> rotations_;    // per slot: R(θ) at the last cacheRotations()
+    bool rotationsOfRowsQ_ = false;  // rotations_ are rowsQ_'s (evaluateRows() may keep them)
+    Vec impulse_;                    // SHAKE: Jᵀ·λ per state index
     std::vector<End> endA_, endB_;
     bool hasMotors_ = false, hasInequalities_ = false;
     double lastMotorWork_ = 0.0;
