@@ -203,9 +203,11 @@ void JointSolver::bind(const Bodies& bodies) {
 
 template <class Add>
 void JointSolver::forEachJTranspose(const Vec& invMass, Add&& add) const {
+    const bool twoRows = blockRows_ == 2;  // the third row is zero
     const auto endOf = [&](const End& e, const Mat3& jac, const Vec3& lambda) {
         if (e.dof < 0) return;
-        const Vec3 f = jac.transpose() * lambda;
+        const Vec3 f = twoRows ? Vec3(jac.topRows<2>().transpose() * lambda.head<2>())
+                               : Vec3(jac.transpose() * lambda);
         add(e.dof, invMass[e.dof], f[0]);
         add(e.dof + 1, invMass[e.dof + 1], f[1]);
         if (e.turns) add(e.dof + 2, invMass[e.dof + 2], f[2]);
