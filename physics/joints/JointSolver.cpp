@@ -398,6 +398,7 @@ void JointSolver::constrainForces(const Vec& q, const Vec& u, const Vec& invMass
 // ---- after the step --------------------------------------------------------------------------
 
 void JointSolver::dropInequalities() {
+    if (!hasInequalities_) return;  // the rows are all equalities, those past count zero
     for (int k = 0; k < jointCount(); ++k) {
         Rows& r = rows_[k];
         const Joint::Type type = joints_[k].type;
@@ -666,9 +667,12 @@ int JointSolver::substepsFor(double h, const Vec& q, const Vec& u) const {
         const double len = d.norm();
         return len > 0.0 ? std::abs(cross(d, v)) / (len * len) : 0.0;
     };
+    // The rotations of the last rows where those were of this q (the frame's start is the last
+    // step's end).
+    const bool cached = rotationsOfRowsQ_ && rowsQ_.size() == q.size() && rowsQ_ == q;
     for (int k = 0; k < jointCount(); ++k) {
         const Joint& j = joints_[k];
-        const EndState a = evaluate(endA_[k], q, u), b = evaluate(endB_[k], q, u);
+        const EndState a = evaluate(endA_[k], q, u, cached), b = evaluate(endB_[k], q, u, cached);
         for (const EndState* s : {&a, &b})
             if (s->arm.squaredNorm() > 0.0) rate = std::max(rate, std::abs(s->omega));
         switch (j.type) {
