@@ -149,6 +149,15 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
     sortPairs(pairs, count);
 }
 
+void BroadPhase::reserve(std::size_t boxes, std::size_t pairs) {
+    order_.reserve(boxes);
+    pairCount_.reserve(boxes);
+    nearCount_.reserve(boxes);
+    otherAt_.reserve(boxes);
+    firstOf_.reserve(boxes + 1);
+    sorted_.reserve(pairs);
+}
+
 void BroadPhase::sortPairs(std::vector<std::pair<int, int>>& pairs, int count) {
     // By (i, j): a counting sort by i, then each box's few partners by j (a comparison sort
     // of the whole list was a fifth of the broad phase's time in a dense pile).

@@ -42,6 +42,9 @@ struct PairCap {
 
 class BroadPhase {
 public:
+    // Room for boxes and pairs up front, so that a scene's first steps do not grow the buffers
+    // one doubling at a time (ContactStage::bind).
+    void reserve(std::size_t boxes, std::size_t pairs);
     // Fills pairs with every (i, j), i < j, whose boxes overlap, sorted by (i, j) so that the
     // result does not depend on the sweep's internal order. With a cap, a pair of two limited
     // boxes is left out when either box has already reached its cap in the sweep's order (which

@@ -133,6 +133,29 @@ double ContactSolver::smoothNormalChange(const Row& c, const RowPoint& p) const 
     return Vec2(c.nx, c.ny).dot(at(c.b, p.rBx, p.rBy) - at(c.a, p.rAx, p.rAy));
 }
 
+void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
+    bodies_.reserve(bodies);
+    constraints_.reserve(constraints);
+    state_.reserve(bodies + 1);
+    motion_.reserve(bodies + 1);
+    deepShift_.reserve(bodies + 1);
+    changedAt_.reserve(bodies + 1);
+    depth_.reserve(bodies + 1);
+    rows_.reserve(constraints);
+    setup_.reserve(constraints);
+    slot_.reserve(constraints);
+    overflow_.reserve(constraints);
+    bouncing_.reserve(constraints);
+    supports_.reserve(constraints);
+    for (auto* perPoint : {&shifted_, &bounces_}) perPoint->reserve(2 * constraints);
+    separation_.reserve(2 * constraints);
+    // Each colour's last wide row may be partly empty.
+    wide_.reserve(constraints / 4 + kColours);
+    order_.reserve(constraints + 4 * kColours);
+    colourBits_.reserve(kColours * ((bodies + 63) / 64));
+    colourCount_.reserve(kColours + 1);
+}
+
 void ContactSolver::buildRows(double hertz, double zeta, double h, double warmScale) {
     // What does not change within the step, once: the rows' masses, the block's K and its
     // conditioning, the softness (each contact's stiffness multiplier: see prepare()).

@@ -107,6 +107,9 @@ struct ContactConstraint {
 
 class ContactSolver {
 public:
+    // Room for bodies and contact constraints up front, so that a scene's first steps do not
+    // grow the buffers one doubling at a time (ContactStage::bind).
+    void reserve(std::size_t bodies, std::size_t constraints);
     std::vector<SolverBody>& bodies() { return bodies_; }
     const std::vector<SolverBody>& bodies() const { return bodies_; }
     std::vector<ContactConstraint>& constraints() { return constraints_; }

@@ -8,6 +8,13 @@
 
 namespace phasebox {
 
+namespace {
+// Contacts reserved a collider at bind(), up to kMostReservedContacts in all (a larger scene
+// grows its buffers in its first steps, a few doublings among thousands of contacts).
+constexpr std::size_t kReservedContacts = 4;
+constexpr std::size_t kMostReservedContacts = 4096;
+}  // namespace
+
 bool ContactStage::needed(const Bodies& bodies, bool particleCollisions) {
     int dynamicBodies = 0, disks = 0, boxes = static_cast<int>(bodies.boxes.size());
     for (const Particle& p : bodies.particles) {
@@ -77,6 +84,15 @@ void ContactStage::bind(const Bodies& bodies) {
     polygons_.assign(colliders_.size(), OrientedPolygon{});
     bounds_.resize(colliders_.size());
     bodyOfCollider_.assign(colliders_.size(), -1);
+    // Contacts for kReservedContacts a collider (a stack, a chain folding on itself, a pile's
+    // inside) before any buffer grows in the step.
+    const std::size_t contacts =
+        std::min(kReservedContacts * colliders_.size(), kMostReservedContacts);
+    broadPhase_.reserve(colliders_.size(), contacts);
+    solver_.reserve(colliders_.size(), contacts);
+    pairs_.reserve(contacts);
+    previous_.reserve(contacts);
+    touching_.reserve(contacts);
     // Pairs between dynamic bodies are capped per body (a static one meets only dynamic ones,
     // a linear number); pairs of disks are left out entirely when particles do not collide.
     pairLimited_.assign(colliders_.size(), PairCap::kFree);
