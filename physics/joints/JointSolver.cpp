@@ -317,13 +317,15 @@ void JointSolver::solveBlocks(Factors<B>& f) {
     const int m = jointCount();
     auto& y = f.y;
     for (int p = 0; p < m; ++p) y[p] = rhs_[order_[p]].template head<B>();
-    for (int p = 0; p < m; ++p)
+    // Forward (y[p] is complete once the earlier positions are done), then the diagonal.
+    for (int p = 0; p < m; ++p) {
         for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) y[upper_[t]] -= f.l[t] * y[p];
-    for (int p = 0; p < m; ++p) y[p] = f.dinv[p] * y[p];
-    for (int p = m - 1; p >= 0; --p)
+        y[p] = f.dinv[p] * y[p];
+    }
+    // Backward (y[p] is final once the later positions are done).
+    for (int p = m - 1; p >= 0; --p) {
         for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t)
             y[p] -= f.l[t].transpose() * y[upper_[t]];
-    for (int p = 0; p < m; ++p) {
         Vec3& lambda = lambda_[order_[p]];
         lambda.template head<B>() = y[p];
         if constexpr (B == 2) lambda[2] = 0.0;
