@@ -24,6 +24,7 @@ Eigen::RowVector3d pointRow(const Vec2& n, const Vec2& arm, double scale) {
 // ---- rows ------------------------------------------------------------------------------------
 
 void JointSolver::cacheRotations(const Vec& q) {
+    rotationsOfRowsQ_ = false;  // evaluateRows() says when they are
     for (std::size_t s = 0; s < turningDofs_.size(); ++s)
         rotations_[s] = rotation(q[turningDofs_[s] + 2]);
 }
@@ -273,7 +274,7 @@ double JointSolver::shakeViolation(const Vec& q) {
 void JointSolver::evaluateRows(Mode mode, const Vec& q, const Vec& u) {
     // The rotations stand where the last rows were of this very q and nothing turned them
     // since (a step's end is the next step's start).
-    const bool sameQ = rotationsOfRowsQ_ && rowsQ_.size() == q.size() && rowsQ_ == q;
+    const bool sameQ = rotationsOfRowsQ_ && rowsAreAt(q);
     rowsQ_ = q;  // same size after the first: no allocation
     rowsMode_ = mode;
     if (!sameQ) cacheRotations(q);

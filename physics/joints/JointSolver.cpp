@@ -441,14 +441,13 @@ bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
     // Rows of the derivative's mode at q0 are these: a step's single derivative evaluation
     // (symplectic Euler's) has left them.
     stepLength_ = h;
-    if (rowsQ_.size() != q0.size() || rowsQ_ != q0 || rowsMode_ != Mode::Dynamics)
+    if (!rowsAreAt(q0) || rowsMode_ != Mode::Dynamics)
         evaluateRows(Mode::Dynamics, q0, q0);  // (the velocities only enter J̇·u, unused here)
     dropInequalities();
     for (int k = 0; k < jointCount(); ++k)
         ropeShaken_[k] = joints_[k].type == Joint::Type::Rope && rows_[k].count > 0;
     const Vec& weights = stiffen(h, u0, q, u, invMass);
     cacheRotations(q);  // of q, not of rowsQ_ (q0)
-    rotationsOfRowsQ_ = false;
     double worst = shakeViolation(q);
     if (worst <= kProjectionTolerance) return true;
     // Past the asymptotic regime (the step moved a joint a good part of its size): the
@@ -616,7 +615,7 @@ void JointSolver::correctPositions(Vec& q, const Vec& u, const Vec& invMass) {
 bool JointSolver::projectVelocities(const Vec& q, Vec& u, const Vec& invMass, bool sameQ) {
     // Without inequalities the rows' J depends on q alone, whatever mode evaluated them (a
     // position projection that has just ended at q): at the same q they stand.
-    const bool rowsOfQ = sameQ || (rowsQ_.size() == q.size() && rowsQ_ == q);
+    const bool rowsOfQ = sameQ || rowsAreAt(q);
     if (!rowsOfQ || hasInequalities_) evaluateRows(Mode::Velocity, q, u);
     bool inequality = false;
     for (int k = 0; k < jointCount(); ++k) {
@@ -671,7 +670,7 @@ int JointSolver::substepsFor(double h, const Vec& q, const Vec& u) const {
     };
     // The rotations of the last rows where those were of this q (the frame's start is the last
     // step's end).
-    const bool cached = rotationsOfRowsQ_ && rowsQ_.size() == q.size() && rowsQ_ == q;
+    const bool cached = rotationsOfRowsQ_ && rowsAreAt(q);
     for (int k = 0; k < jointCount(); ++k) {
         const Joint& j = joints_[k];
         const EndState a = evaluate(endA_[k], q, u, cached), b = evaluate(endB_[k], q, u, cached);

@@ -114,8 +114,9 @@ public:
     // is poor where it turns: SHAKE's directions of the start are far from the end's (it goes
     // on along the end's, shake()), and the velocity projection keeps about cos(φ/2) of the
     // speed of a link that turned by φ. A 1 m pendulum at 90° needs 1 up to dt 1/45; a chain's
-    // whip needs a few to a dozen. At 0.3 rad the 100-link whip would take 1.06 G instructions
-    // for its 600 steps instead of 1.51 G, but the ragdoll example's fall down its stairs then
+    // whip needs a few to a dozen. At 0.3 rad the 100-link whip took 1.06 G instructions for
+    // its 600 steps instead of 1.51 G (as the passes cost then), but the ragdoll example's fall
+    // down its stairs then
     // booked 163 J of correction in 5 s instead of 4 J (0.2 rad: 139 J): its contacts and
     // joints trade energy over the longer steps (docs/architecture.md, Joints).
     int substepsFor(double h, const Vec& q, const Vec& u) const;
@@ -194,6 +195,8 @@ private:
     EndState evaluate(const End& e, const Vec& q, const Vec& u, bool cached = false) const;
     // Each turning body's rotation at q, once, for the rows of every joint that holds it.
     void cacheRotations(const Vec& q);
+    // The last evaluateRows() was at this very q.
+    bool rowsAreAt(const Vec& q) const { return rowsQ_.size() == q.size() && rowsQ_ == q; }
     // The cached rotations of bodies turned further by delta's angles (a SHAKE iteration's).
     void turnRotations(const Vec& delta);
     // The active rows of joint k at (q, u) in the given mode.
