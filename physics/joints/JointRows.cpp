@@ -279,6 +279,9 @@ void JointSolver::evaluateRows(Mode mode, const Vec& q, const Vec& u) {
     rowsMode_ = mode;
     if (!sameQ) cacheRotations(q);
     rotationsOfRowsQ_ = true;
+    // Equalities' Jacobians depend on q alone, whatever the mode: at the same q they stand
+    // (only J̇·u changes with the velocities).
+    if (!sameQ || hasInequalities_) rowsChanged();
     for (int k = 0; k < jointCount(); ++k) rowsOf(k, mode, q, u, rows_[k], true);
 }
 

@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace phasebox {
@@ -195,7 +196,7 @@ void JointSolver::bind(const Bodies& bodies) {
             blockRows_ = 3;
     factors2_.resize(blockRows_ == 2 ? m : 0, blockRows_ == 2 ? upper_.size() : 0);
     factors3_.resize(blockRows_ == 3 ? m : 0, blockRows_ == 3 ? upper_.size() : 0);
-    factoredRows_.assign(m, Rows{});
+    rowsChanged();
     factoredValid_ = false;
     rowsQ_.resize(0);
     rotationsOfRowsQ_ = false;
@@ -227,16 +228,9 @@ void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x) const 
 // ---- the block LDLᵀ --------------------------------------------------------------------------
 
 void JointSolver::factor(const Vec& invMass) {
-    // The same rows as the last factorization (a step's end is the next step's start: the
-    // velocity projection, the next derivative evaluation and SHAKE all ask for J(q1)): the
-    // factors stand.
-    if (factoredValid_ && &invMass == factoredMass_ &&
-        std::equal(rows_.begin(), rows_.end(), factoredRows_.begin(),
-                   [](const Rows& a, const Rows& b) {
-                       return a.count == b.count && a.ja == b.ja && a.jb == b.jb;
-                   }))
-        return;
-    factoredRows_ = rows_;  // same size: no allocation
+    // The same rows as the last factorization: the factors stand.
+    if (factoredValid_ && &invMass == factoredMass_ && factoredVersion_ == rowsVersion_) return;
+    factoredVersion_ = rowsVersion_;
     factoredMass_ = &invMass;
     factoredValid_ = true;
     if (blockRows_ == 2)
@@ -353,12 +347,14 @@ void JointSolver::solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, 
                 rows_[k].count = 0;
                 rows_[k].ja.setZero();
                 rows_[k].jb.setZero();
+                rowsChanged();
                 slackened = true;
             } else if (joints_[k].type == Joint::Type::Pulley && rows_[k].count > 1 &&
                        lambda_[k][1] < 0.0) {
                 rows_[k].count = 1;
                 rows_[k].ja.row(1).setZero();
                 rows_[k].jb.row(1).setZero();
+                rowsChanged();
                 slackened = true;
             }
         if (!slackened) break;
@@ -401,6 +397,7 @@ void JointSolver::constrainForces(const Vec& q, const Vec& u, const Vec& invMass
 
 void JointSolver::dropInequalities() {
     if (!hasInequalities_) return;  // the rows are all equalities, those past count zero
+    rowsChanged();
     for (int k = 0; k < jointCount(); ++k) {
         Rows& r = rows_[k];
         const Joint::Type type = joints_[k].type;
@@ -572,12 +569,23 @@ void JointSolver::accelerate(bool withPrevious) {
     const int n = andersonCount_;
     // The Gram matrix of the Δf keeps its entries between iterations: only the new difference's
     // products are new, and with λ's they take one pass.
+    // Over the B rows a joint can have (a third row is zero where B = 2).
+    const auto overRows = [&](auto&& pass) {
+        if (blockRows_ == 2)
+            pass(std::integral_constant<int, 2>{});
+        else
+            pass(std::integral_constant<int, 3>{});
+    };
     std::array<double, kAndersonDepth> gram{}, fit{};
-    for (int k = 0; k < m; ++k)
-        for (int i = 0; i < n; ++i) {
-            gram[i] += andersonDf_[i][k].dot(df[k]);
-            fit[i] += andersonDf_[i][k].dot(lambda_[k]);
-        }
+    overRows([&](auto rows) {
+        constexpr int B = decltype(rows)::value;
+        for (int k = 0; k < m; ++k)
+            for (int i = 0; i < n; ++i) {
+                const auto dfi = andersonDf_[i][k].template head<B>();
+                gram[i] += dfi.dot(df[k].template head<B>());
+                fit[i] += dfi.dot(lambda_[k].template head<B>());
+            }
+    });
     for (int i = 0; i < n; ++i) andersonGram_(i, slot) = andersonGram_(slot, i) = gram[i];
     Eigen::Matrix<double, kAndersonDepth, kAndersonDepth> g =
         Eigen::Matrix<double, kAndersonDepth, kAndersonDepth>::Identity();
@@ -595,11 +603,16 @@ void JointSolver::accelerate(bool withPrevious) {
     }
     for (int i = 0; i < n; ++i) g(i, i) += 1e-10 * scale;
     const Eigen::Matrix<double, kAndersonDepth, 1> gamma = g.ldlt().solve(rhs);
-    for (int k = 0; k < m; ++k) {
-        Vec3 step = lambda_[k];
-        for (int i = 0; i < n; ++i) step -= gamma[i] * (andersonDl_[i][k] + andersonDf_[i][k]);
-        lambda_[k] = step;
-    }
+    overRows([&](auto rows) {
+        constexpr int B = decltype(rows)::value;
+        for (int k = 0; k < m; ++k) {
+            Eigen::Matrix<double, B, 1> step = lambda_[k].template head<B>();
+            for (int i = 0; i < n; ++i)
+                step -= gamma[i] * (andersonDl_[i][k].template head<B>() +
+                                    andersonDf_[i][k].template head<B>());
+            lambda_[k].template head<B>() = step;
+        }
+    });
     lastDelta_ = lambda_;
 }
 

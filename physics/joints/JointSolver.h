@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace phasebox {
@@ -302,8 +303,11 @@ private:
     void factorBlocks(Factors<B>& f, const Vec& invMass);
     template <int B>
     void solveBlocks(Factors<B>& f);
-    // The rows the factors are of, to skip factoring the same matrix again.
-    std::vector<Rows> factoredRows_;
+    // The rows' Jacobians change only where rowsChanged() says so: the factors of the same
+    // version and inverse masses stand (a step's end is the next step's start: the velocity
+    // projection, the next derivative evaluation and SHAKE all ask for J(q1)).
+    void rowsChanged() { ++rowsVersion_; }
+    std::uint64_t rowsVersion_ = 0, factoredVersion_ = 0;
     const Vec* factoredMass_ = nullptr;
     bool factoredValid_ = false;
     // Couplings of the assembly: off-diagonal block t gets J_i,side·W·J_k,sideᵀ over a shared
