@@ -318,10 +318,22 @@ void JointSolver::solveBlocks(Factors<B>& f) {
     }
     // Backward (y[p] is final once the later positions are done).
     for (int p = m - 1; p >= 0; --p) {
-        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t)
-            y[p] -= f.l[t].transpose() * y[upper_[t]];
+        // In scalars throughout: Eigen's Lᵀ·y went through memory in halves, and a block
+        // written in halves and read back whole stalls the store forwarding (a fifth of the
+        // whip's time went to those two stalls).
+        std::array<double, B> yp;
+        for (int i = 0; i < B; ++i) yp[i] = y[p][i];
+        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) {
+            const auto& l = f.l[t];
+            const auto& later = y[upper_[t]];
+            for (int i = 0; i < B; ++i) {
+                double dot = l(0, i) * later[0];
+                for (int j = 1; j < B; ++j) dot += l(j, i) * later[j];
+                yp[i] -= dot;
+            }
+        }
         Vec3& lambda = lambda_[order_[p]];
-        lambda.template head<B>() = y[p];
+        for (int i = 0; i < B; ++i) y[p][i] = lambda[i] = yp[i];
         if constexpr (B == 2) lambda[2] = 0.0;
     }
 }
