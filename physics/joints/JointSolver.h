@@ -117,9 +117,9 @@ public:
     // speed of a link that turned by φ. A 1 m pendulum at 90° needs 1 up to dt 1/45; a chain's
     // whip needs a few to a dozen. At 0.3 rad the 100-link whip took 1.06 G instructions for
     // its 600 steps instead of 1.51 G (as the passes cost then), but the ragdoll example's fall
-    // down its stairs then
-    // booked 163 J of correction in 5 s instead of 4 J (0.2 rad: 139 J): its contacts and
-    // joints trade energy over the longer steps (docs/architecture.md, Joints).
+    // down its stairs then booked 163 J of correction in 5 s instead of 4 J (0.2 rad: 139 J):
+    // its contacts and joints trade energy over the longer steps (docs/architecture.md,
+    // Joints).
     int substepsFor(double h, const Vec& q, const Vec& u) const;
     static constexpr double kMaxTurnPerStep = 0.1;  // rad
     static constexpr int kMaxSubsteps = 64;
@@ -246,7 +246,7 @@ private:
     std::vector<int> turningDofs_;   // per slot: the turning body's first state index
     std::vector<Mat2> rotations_;    // per slot: R(θ) at the last cacheRotations()
     bool rotationsOfRowsQ_ = false;  // rotations_ are rowsQ_'s (evaluateRows() may keep them)
-    Vec impulse_;                    // SHAKE: Jᵀ·λ per state index
+    Vec impulse_;                    // SHAKE: the last move W·Jᵀ·λ per state index
     std::vector<End> endA_, endB_;
     bool hasMotors_ = false, hasInequalities_ = false;
     double lastMotorWork_ = 0.0;
