@@ -19,6 +19,9 @@ constexpr double kProjectionTolerance = 1e-12;
 constexpr int kMotorIterations = 4;
 // SHAKE acts while the step's violation is below this fraction of the smallest joint size.
 constexpr double kShakeReach = 0.1;
+// s: the time constant over which a body's scaled inertia lets go of a stiffness it no longer
+// meets (stiffen()).
+constexpr double kStiffnessHold = 2.0;
 }  // namespace
 
 // ---- binding: ends and the elimination order ------------------------------------------------
@@ -87,6 +90,7 @@ void JointSolver::bind(const Bodies& bodies) {
             if (length > 0.0) smallest = std::min(smallest, length);
     shakeReach_ = kShakeReach * (std::isfinite(smallest) ? smallest : 1.0);
     rotations_.assign(turningDofs_.size(), Mat2::Identity());
+    heldStiffness_.assign(turningDofs_.size(), 0.0);
     rows_.assign(m, Rows{});
     rhs_.assign(m, Vec3::Zero());
     lambda_.assign(m, Vec3::Zero());
@@ -512,10 +516,15 @@ const Vec& JointSolver::stiffen(double h, const Vec& u0, Vec& q, Vec& u, const V
         }
     }
     bool stiff = false;
+    const double decay = std::exp(-h / kStiffnessHold);
     for (std::size_t s = 0; s < turningDofs_.size(); ++s) {
         const int d = turningDofs_[s] + 2;
-        const double w = h * h * stiffness_[s] * invMass[d];
-        if (!(w > implicitLimit_)) continue;  // (a NaN force leaves the body alone)
+        // The stiffness held: the most of this step's and the last held one decayed (a NaN
+        // force leaves the hold as it was).
+        const double decayed = heldStiffness_[s] * decay;
+        heldStiffness_[s] = stiffness_[s] > decayed ? stiffness_[s] : decayed;
+        const double w = h * h * heldStiffness_[s] * invMass[d];
+        if (!(w > implicitLimit_)) continue;
         if (!stiff) {
             stiffInvMass_ = invMass;  // same size: no allocation
             // Factors of stiffInvMass_'s last contents must not pass for this step's.
