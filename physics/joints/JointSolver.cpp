@@ -12,9 +12,12 @@
 namespace phasebox {
 
 namespace {
-// Newton steps of the position projection, and the error below which it stops (m, rad).
+// Newton steps of the position projection, and the error below which it stops (m, rad). A
+// tenth of a nanometre: what is left stays in the positions, but the next step's projection
+// aims at C = 0 again, so it does not add up; at 1e-12 the whip took 6% more instructions
+// for the same trajectory to the digits printed.
 constexpr int kProjectionIterations = 12;
-constexpr double kProjectionTolerance = 1e-12;
+constexpr double kProjectionTolerance = 1e-10;
 // Motor impulses and the velocity projection alternate this many times.
 constexpr int kMotorIterations = 4;
 // SHAKE acts while the step's violation is below this fraction of the smallest joint size.
