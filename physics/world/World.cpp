@@ -674,9 +674,12 @@ double World::estimateLocalError() {
     // The estimate is not part of the run: its force evaluations and time are not booked.
     const long long evaluations = forceEvaluations_;
     const std::vector<double> seconds = effectSeconds_;
-    const double error =
-        errorEstimator_.estimate(*this, *integrator_, clock_.time,
-                                 settings_.dt / settings_.substeps, q_[current_], u_[current_]);
+    // Of the sub-step the run takes: with the joints' own sub-steps of the last frame (a step
+    // of the user's dt alone can be beyond the method's stability on a chain that needs them).
+    const int jointSubsteps = joints_ ? std::max(jointSubsteps_, pulledSubsteps_) : 1;
+    const double error = errorEstimator_.estimate(
+        *this, *integrator_, clock_.time, settings_.dt / (settings_.substeps * jointSubsteps),
+        q_[current_], u_[current_]);
     forceEvaluations_ = evaluations;
     effectSeconds_ = seconds;
     return error;
