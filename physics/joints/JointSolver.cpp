@@ -504,7 +504,13 @@ void JointSolver::applyShakeImpulse(double h, const Vec& weights, Vec& q, Vec& u
 
 const Vec& JointSolver::stiffen(double h, const Vec& u0, Vec& q, Vec& u, const Vec& invMass) {
     stiffened_ = false;
-    if (!(implicitLimit_ > 0.0) || !forcesKnown_) return invMass;
+    if (!(implicitLimit_ > 0.0)) {
+        // A method that meets no stiffness implicitly holds none: switched back to one that
+        // does, the bodies start afresh.
+        std::fill(heldStiffness_.begin(), heldStiffness_.end(), 0.0);
+        return invMass;
+    }
+    if (!forcesKnown_) return invMass;
     // k = Σ arm·F over the body's hinges and welds, at the step's start (the rotations are
     // q0's: shake() has just evaluated the rows there, or the derivative did), from the
     // forces of the last derivative evaluation.
