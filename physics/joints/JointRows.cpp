@@ -24,13 +24,13 @@ Eigen::RowVector3d pointRow(const Vec2& n, const Vec2& arm, double scale) {
 // ---- rows ------------------------------------------------------------------------------------
 
 void JointSolver::cacheRotations(const Vec& q) {
-    rotationsOfRowsQ_ = false;  // evaluateRows() says when they are
     for (std::size_t s = 0; s < turningDofs_.size(); ++s)
         rotations_[s] = rotation(q[turningDofs_[s] + 2]);
+    rotationsNowAt(q);
 }
 
 void JointSolver::turnRotations(const Vec& delta) {
-    rotationsOfRowsQ_ = false;
+    rotationsKnown_ = false;  // shake() says where they end
     for (std::size_t s = 0; s < turningDofs_.size(); ++s) {
         const double d = delta[turningDofs_[s] + 2];
         if (d == 0.0) continue;
@@ -272,13 +272,12 @@ double JointSolver::shakeViolation(const Vec& q) {
 }
 
 void JointSolver::evaluateRows(Mode mode, const Vec& q, const Vec& u) {
-    // The rotations stand where the last rows were of this very q and nothing turned them
-    // since (a step's end is the next step's start).
-    const bool sameQ = rotationsOfRowsQ_ && rowsAreAt(q);
+    // The rotations stand where they are of this very q (a step's end is the next step's
+    // start, and SHAKE's turned rotations are of where it ended).
+    const bool sameQ = rowsAreAt(q);
     rowsQ_ = q;  // same size after the first: no allocation
     rowsMode_ = mode;
-    if (!sameQ) cacheRotations(q);
-    rotationsOfRowsQ_ = true;
+    if (!rotationsAreAt(q)) cacheRotations(q);
     // Equalities' Jacobians depend on q alone, whatever the mode: at the same q they stand
     // (only J̇·u changes with the velocities).
     if (!sameQ || hasInequalities_) rowsChanged();

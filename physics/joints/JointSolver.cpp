@@ -121,11 +121,15 @@ void JointSolver::bind(const Bodies& bodies) {
             for (const auto& [k2, s2] : list)
                 if (k1 != k2) graph[k1].insert(k2);
 
-    // Minimum-fill elimination (ties: the smaller degree): each eliminated joint's remaining
-    // neighbours become a clique (the fill), and they are the later joints its column of L
-    // couples. The joint graph of a chain or tree of bodies is chordal, so a joint whose
-    // neighbours already form a clique (fill 0) always exists and the order makes no fill at
-    // all; minimum degree alone can miss it in a tree.
+    // Minimum-fill elimination (ties: the smaller degree, then the joint that has waited
+    // longest): each eliminated joint's remaining neighbours become a clique (the fill), and
+    // they are the later joints its column of L couples. The joint graph of a chain or tree of
+    // bodies is chordal, so a joint whose neighbours already form a clique (fill 0) always
+    // exists and the order makes no fill at all; minimum degree alone can miss it in a tree.
+    // The longest wait first takes a chain from both its ends in turn (a tree from all its
+    // leaves), so the factorization's and the solves' recurrences run as independent chains
+    // that the processor overlaps: by the smaller index, a 100-hinge chain was one recurrence
+    // from its root, and the solves were a fifth of the whip's time.
     std::vector<std::vector<int>> later(m);
     const auto fillOf = [&](int k) {
         int fill = 0;
@@ -133,17 +137,17 @@ void JointSolver::bind(const Bodies& bodies) {
             for (auto y = std::next(x); y != graph[k].end(); ++y) fill += !graph[*x].count(*y);
         return fill;
     };
-    using Key = std::tuple<int, int, int>;  // fill, degree, joint
+    using Key = std::tuple<int, int, int, int>;  // fill, degree, since, joint
     std::set<Key> queue;
     std::vector<Key> key(m);
     for (int k = 0; k < m; ++k) {
-        key[k] = {fillOf(k), static_cast<int>(graph[k].size()), k};
+        key[k] = {fillOf(k), static_cast<int>(graph[k].size()), 0, k};
         queue.insert(key[k]);
     }
     order_.clear();
     std::vector<int> position(m, -1);
     while (!queue.empty()) {
-        const int k = std::get<2>(*queue.begin());
+        const int k = std::get<3>(*queue.begin());
         queue.erase(queue.begin());
         position[k] = static_cast<int>(order_.size());
         order_.push_back(k);
@@ -157,9 +161,12 @@ void JointSolver::bind(const Bodies& bodies) {
         // The fill of the neighbours and of their neighbours may have changed.
         std::set<int> touched(neighbours.begin(), neighbours.end());
         for (int x : neighbours) touched.insert(graph[x].begin(), graph[x].end());
+        const int now = static_cast<int>(order_.size());
         for (int x : touched) {
+            const int fill = fillOf(x), degree = static_cast<int>(graph[x].size());
+            if (fill == std::get<0>(key[x]) && degree == std::get<1>(key[x])) continue;
             queue.erase(key[x]);
-            key[x] = {fillOf(x), static_cast<int>(graph[x].size()), x};
+            key[x] = {fill, degree, now, x};
             queue.insert(key[x]);
         }
     }
@@ -206,7 +213,7 @@ void JointSolver::bind(const Bodies& bodies) {
     rowsChanged();
     factoredValid_ = false;
     rowsQ_.resize(0);
-    rotationsOfRowsQ_ = false;
+    rotationsKnown_ = false;
 }
 
 template <class Add>
@@ -479,7 +486,11 @@ bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
         applyShakeImpulse(h, weights, q, u);
         turnRotations(impulse_);
         worst = shakeViolation(q);
-        if (worst <= kProjectionTolerance) return true;
+        if (worst <= kProjectionTolerance) {
+            // R(θ)·R(δ1)·R(δ2)·… are q's rotations to rounding: the rows at q take them.
+            rotationsNowAt(q);
+            return true;
+        }
         // Not contracting: the directions of the start are too far from the end's. Back to
         // the state before this iteration, and on along the end's directions.
         if (worst > 0.5 * previous) {
@@ -714,7 +725,7 @@ int JointSolver::substepsFor(double h, const Vec& q, const Vec& u) const {
     };
     // The rotations of the last rows where those were of this q (the frame's start is the last
     // step's end).
-    const bool cached = rotationsOfRowsQ_ && rowsAreAt(q);
+    const bool cached = rotationsAreAt(q);
     for (int k = 0; k < jointCount(); ++k) {
         const Joint& j = joints_[k];
         const EndState a = evaluate(endA_[k], q, u, cached), b = evaluate(endB_[k], q, u, cached);

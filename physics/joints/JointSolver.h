@@ -202,6 +202,14 @@ private:
     EndState evaluate(const End& e, const Vec& q, const Vec& u, bool cached = false) const;
     // Each turning body's rotation at q, once, for the rows of every joint that holds it.
     void cacheRotations(const Vec& q);
+    // rotations_ are those of q: cacheRotations(q), or SHAKE's turned ones where it ended at q.
+    bool rotationsAreAt(const Vec& q) const {
+        return rotationsKnown_ && rotationsQ_.size() == q.size() && rotationsQ_ == q;
+    }
+    void rotationsNowAt(const Vec& q) {
+        rotationsQ_ = q;  // same size after the first: no allocation
+        rotationsKnown_ = true;
+    }
     // The last evaluateRows() was at this very q.
     bool rowsAreAt(const Vec& q) const { return rowsQ_.size() == q.size() && rowsQ_ == q; }
     // The cached rotations of bodies turned further by delta's angles (a SHAKE iteration's).
@@ -249,10 +257,11 @@ private:
     void solve();
 
     std::vector<Joint> joints_;
-    std::vector<int> turningDofs_;   // per slot: the turning body's first state index
-    std::vector<Mat2> rotations_;    // per slot: R(θ) at the last cacheRotations()
-    bool rotationsOfRowsQ_ = false;  // rotations_ are rowsQ_'s (evaluateRows() may keep them)
-    Vec impulse_;                    // SHAKE: the last move W·Jᵀ·λ per state index
+    std::vector<int> turningDofs_;  // per slot: the turning body's first state index
+    std::vector<Mat2> rotations_;   // per slot: R(θ) at rotationsQ_
+    Vec rotationsQ_;                // the q of rotations_, where rotationsKnown_
+    bool rotationsKnown_ = false;
+    Vec impulse_;  // SHAKE: the last move W·Jᵀ·λ per state index
     std::vector<End> endA_, endB_;
     bool hasMotors_ = false, hasInequalities_ = false;
     double lastMotorWork_ = 0.0;
