@@ -70,14 +70,17 @@ JointSolver::EndState JointSolver::evaluate(const End& e, const Vec& q, const Ve
     return s;
 }
 
-void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, bool cached) const {
+void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, bool cached,
+                         bool jacobian) const {
     const Joint& j = joints_[k];
     const End& ea = endA_[k];
     const End& eb = endB_[k];
     const EndState a = evaluate(ea, q, u, cached), b = evaluate(eb, q, u, cached);
     r.count = 0;
-    r.ja.setZero();
-    r.jb.setZero();
+    if (jacobian) {
+        r.ja.setZero();
+        r.jb.setZero();
+    }
     r.c.setZero();
     r.bias.setZero();
     r.target.setZero();
@@ -90,8 +93,10 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
         const double len = d.norm();
         const Vec2 n = len > 0.0 ? Vec2(d / len) : Vec2(1.0, 0.0);
         const Vec2 dv = a.v - vb;
-        r.ja.row(0) = pointRow(n, a.arm, 1.0);
-        r.jb.row(0) = pointRow(n, armB, -1.0);
+        if (jacobian) {
+            r.ja.row(0) = pointRow(n, a.arm, 1.0);
+            r.jb.row(0) = pointRow(n, armB, -1.0);
+        }
         r.c[0] = len - length;
         const double along = n.dot(dv);
         r.bias[0] = n.dot(centripetalA - centripetal) +
@@ -104,9 +109,11 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
         case Joint::Type::Weld: {
             const Vec2 c = a.p - b.p - j.offset;
             for (int i = 0; i < 2; ++i) {
-                const Vec2 axis = i == 0 ? Vec2(1.0, 0.0) : Vec2(0.0, 1.0);
-                r.ja.row(i) = pointRow(axis, a.arm, 1.0);
-                r.jb.row(i) = pointRow(axis, b.arm, -1.0);
+                if (jacobian) {
+                    const Vec2 axis = i == 0 ? Vec2(1.0, 0.0) : Vec2(0.0, 1.0);
+                    r.ja.row(i) = pointRow(axis, a.arm, 1.0);
+                    r.jb.row(i) = pointRow(axis, b.arm, -1.0);
+                }
                 r.c[i] = c[i];
                 r.bias[i] = (centripetalA - centripetalB)[i];
             }
@@ -128,8 +135,8 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
                 }
             }
             if (!active) break;
-            if (ea.turns) r.ja(2, 2) = -1.0;
-            if (eb.turns) r.jb(2, 2) = 1.0;
+            if (jacobian && ea.turns) r.ja(2, 2) = -1.0;
+            if (jacobian && eb.turns) r.jb(2, 2) = 1.0;
             r.c[2] = angle - target;
             r.count = 3;
             break;
@@ -156,7 +163,7 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
                 const Vec2 d = s.p - ground;
                 const double len = d.norm();
                 const Vec2 n = len > 0.0 ? Vec2(d / len) : Vec2(0.0, -1.0);
-                jac.row(0) = pointRow(n, s.arm, scale);
+                if (jacobian) jac.row(0) = pointRow(n, s.arm, scale);
                 const double along = n.dot(s.v);
                 // The side's length's J̇·u: the point's centripetal part and its turning.
                 curvatures[which] = n.dot(centripetal) +
@@ -185,7 +192,8 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
                         : rates[which] < 0.0 && left + stepLength_ * rates[which] < 1e-9;
                 if (!active) continue;
                 const EndState& s = which == 0 ? a : b;
-                (which == 0 ? r.ja : r.jb).row(1) = pointRow(directions[which], s.arm, 1.0);
+                if (jacobian)
+                    (which == 0 ? r.ja : r.jb).row(1) = pointRow(directions[which], s.arm, 1.0);
                 r.c[1] = left;
                 r.bias[1] = curvatures[which];
                 if (mode == Mode::Velocity && stepLength_ > 0.0)
@@ -199,13 +207,14 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
             if (j.circle) {
                 distanceRow(j.center, Vec2::Zero(), Vec2::Zero(), Vec2::Zero(), j.radius);
             } else {
-                r.ja.row(0) = pointRow(j.lineNormal, a.arm, 1.0);
+                if (jacobian) r.ja.row(0) = pointRow(j.lineNormal, a.arm, 1.0);
                 r.c[0] = j.lineNormal.dot(a.p - j.linePoint);
                 r.bias[0] = j.lineNormal.dot(centripetalA);
                 r.count = 1;
             }
             break;
     }
+    if (!jacobian) return;
     // A row that is not active (a slack rope, a hinge inside its limits) must not couple
     // through the factors either: its Jacobian is zero.
     for (int i = r.count; i < 3; ++i) {
@@ -278,10 +287,11 @@ void JointSolver::evaluateRows(Mode mode, const Vec& q, const Vec& u) {
     rowsQ_ = q;  // same size after the first: no allocation
     rowsMode_ = mode;
     if (!rotationsAreAt(q)) cacheRotations(q);
-    // Equalities' Jacobians depend on q alone, whatever the mode: at the same q they stand
-    // (only J̇·u changes with the velocities).
-    if (!sameQ || hasInequalities_) rowsChanged();
-    for (int k = 0; k < jointCount(); ++k) rowsOf(k, mode, q, u, rows_[k], true);
+    // Equalities' Jacobians depend on q alone, whatever the mode: at the same q they stand,
+    // and only J̇·u changes with the velocities.
+    const bool sameRows = sameQ && !hasInequalities_;
+    if (!sameRows) rowsChanged();
+    for (int k = 0; k < jointCount(); ++k) rowsOf(k, mode, q, u, rows_[k], true, !sameRows);
 }
 
 JointSolver::Vec3 JointSolver::jTimes(int k, const Vec& x) const {

@@ -218,21 +218,31 @@ void JointSolver::bind(const Bodies& bodies) {
 
 template <class Add>
 void JointSolver::forEachJTranspose(const Vec& invMass, Add&& add) const {
-    const bool twoRows = blockRows_ == 2;  // the third row is zero
-    const auto endOf = [&](const End& e, const Mat3& jac, const Vec3& lambda) {
-        if (e.dof < 0) return;
-        const Vec3 f = twoRows ? Vec3(jac.topRows<2>().transpose() * lambda.head<2>())
-                               : Vec3(jac.transpose() * lambda);
-        add(e.dof, invMass[e.dof], f[0]);
-        add(e.dof + 1, invMass[e.dof + 1], f[1]);
-        if (e.turns) add(e.dof + 2, invMass[e.dof + 2], f[2]);
+    // Over the B rows a joint can have (where B = 2 the third row is zero).
+    const auto over = [&](auto rows) {
+        constexpr int B = decltype(rows)::value;
+        const auto endOf = [&](const End& e, const Mat3& jac, const Vec3& lambda) {
+            if (e.dof < 0) return;
+            double f[3];
+            for (int c = 0; c < 3; ++c) {
+                f[c] = jac(0, c) * lambda[0];
+                for (int i = 1; i < B; ++i) f[c] += jac(i, c) * lambda[i];
+            }
+            add(e.dof, invMass[e.dof], f[0]);
+            add(e.dof + 1, invMass[e.dof + 1], f[1]);
+            if (e.turns) add(e.dof + 2, invMass[e.dof + 2], f[2]);
+        };
+        for (int k = 0; k < jointCount(); ++k) {
+            const Rows& r = rows_[k];
+            if (r.count == 0) continue;
+            endOf(endA_[k], r.ja, lambda_[k]);
+            endOf(endB_[k], r.jb, lambda_[k]);
+        }
     };
-    for (int k = 0; k < jointCount(); ++k) {
-        const Rows& r = rows_[k];
-        if (r.count == 0) continue;
-        endOf(endA_[k], r.ja, lambda_[k]);
-        endOf(endB_[k], r.jb, lambda_[k]);
-    }
+    if (blockRows_ == 2)
+        over(std::integral_constant<int, 2>{});
+    else
+        over(std::integral_constant<int, 3>{});
 }
 
 void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x) const {

@@ -214,9 +214,10 @@ private:
     bool rowsAreAt(const Vec& q) const { return rowsQ_.size() == q.size() && rowsQ_ == q; }
     // The cached rotations of bodies turned further by delta's angles (a SHAKE iteration's).
     void turnRotations(const Vec& delta);
-    // The active rows of joint k at (q, u) in the given mode.
-    void rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& rows,
-                bool cached = false) const;
+    // The active rows of joint k at (q, u) in the given mode; without jacobian, all but J (the
+    // rows' J of this q stand).
+    void rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& rows, bool cached = false,
+                bool jacobian = true) const;
     // The equality rows' C of joint k at q (as rowsOf in Position mode computes it, without
     // the Jacobian), the rotations cached: what each SHAKE iteration needs.
     Vec3 violationOf(int k, const Vec& q) const;
