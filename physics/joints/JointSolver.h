@@ -30,6 +30,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace phasebox {
@@ -203,15 +204,21 @@ private:
     // Each turning body's rotation at q, once, for the rows of every joint that holds it.
     void cacheRotations(const Vec& q);
     // rotations_ are those of q: cacheRotations(q), or SHAKE's turned ones where it ended at q.
-    bool rotationsAreAt(const Vec& q) const {
-        return rotationsKnown_ && rotationsQ_.size() == q.size() && rotationsQ_ == q;
-    }
+    bool rotationsAreAt(const Vec& q) const { return rotationsKnown_ && sameState(rotationsQ_, q); }
     void rotationsNowAt(const Vec& q) {
         rotationsQ_ = q;  // same size after the first: no allocation
         rotationsKnown_ = true;
     }
     // The last evaluateRows() was at this very q.
-    bool rowsAreAt(const Vec& q) const { return rowsQ_.size() == q.size() && rowsQ_ == q; }
+    bool rowsAreAt(const Vec& q) const { return sameState(rowsQ_, q); }
+    // The very same numbers, bit for bit (a −0 that was +0 only costs an evaluation): one
+    // memcmp where Eigen's == compares element by element.
+    static bool sameState(const Vec& a, const Vec& b) {
+        return a.size() == b.size() &&
+               (a.size() == 0 ||
+                std::memcmp(a.data(), b.data(),
+                            static_cast<std::size_t>(a.size()) * sizeof(double)) == 0);
+    }
     // The cached rotations of bodies turned further by delta's angles (a SHAKE iteration's).
     void turnRotations(const Vec& delta);
     // The active rows of joint k at (q, u) in the given mode; without jacobian, all but J (the
