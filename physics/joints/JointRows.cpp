@@ -49,27 +49,6 @@ void JointSolver::turnRotations(const Vec& delta) {
     }
 }
 
-JointSolver::EndState JointSolver::evaluate(const End& e, const Vec& q, const Vec& u,
-                                            bool cached) const {
-    EndState s;
-    if (e.dof < 0) {
-        s.p = e.fixed;
-        s.angle = e.angle0;
-        return s;
-    }
-    if (!e.turns) {
-        s.p = q.segment<2>(e.dof);
-        s.v = u.segment<2>(e.dof);
-        return s;
-    }
-    s.angle = q[e.dof + 2];
-    s.omega = u[e.dof + 2];
-    s.arm = (cached ? rotations_[e.slot] : rotation(s.angle)) * e.local;
-    s.p = q.segment<2>(e.dof) + s.arm;
-    s.v = u.segment<2>(e.dof) + s.omega * perp(s.arm);
-    return s;
-}
-
 void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, bool cached,
                          bool jacobian) const {
     const Joint& j = joints_[k];
@@ -292,17 +271,6 @@ void JointSolver::evaluateRows(Mode mode, const Vec& q, const Vec& u) {
     const bool sameRows = sameQ && !hasInequalities_;
     if (!sameRows) rowsChanged();
     for (int k = 0; k < jointCount(); ++k) rowsOf(k, mode, q, u, rows_[k], true, !sameRows);
-}
-
-JointSolver::Vec3 JointSolver::jTimes(int k, const Vec& x) const {
-    const Rows& r = rows_[k];
-    Vec3 out = Vec3::Zero();
-    for (const auto& [end, jac] : {std::pair{&endA_[k], &r.ja}, std::pair{&endB_[k], &r.jb}}) {
-        if (end->dof < 0) continue;
-        out += jac->col(0) * x[end->dof] + jac->col(1) * x[end->dof + 1];
-        if (end->turns) out += jac->col(2) * x[end->dof + 2];
-    }
-    return out;
 }
 
 JointErrors JointSolver::errors(const Vec& q) const {
