@@ -12,9 +12,6 @@
 namespace phasebox {
 
 namespace {
-// A rope counts as taut within this fraction of its length.
-constexpr double kTautFraction = 1e-9;
-
 // A row of J for a point's motion along n: [n, arm × n], scaled.
 Eigen::RowVector3d pointRow(const Vec2& n, const Vec2& arm, double scale) {
     return Eigen::RowVector3d(scale * n.x(), scale * n.y(), scale * cross(arm, n));
@@ -125,7 +122,7 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
             break;
         case Joint::Type::Rope: {
             const double along = distanceRow(b.p, b.v, b.arm, centripetalB, j.length);
-            const double taut = kTautFraction * std::max(j.length, 1e-3);
+            const double taut = tautBand(j.length);
             const bool active = mode == Mode::Dynamics   ? r.c[0] > -taut
                                 : mode == Mode::Position ? r.c[0] > 0.0
                                                          : r.c[0] > -taut && along > 0.0;

@@ -157,6 +157,10 @@ public:
     // lets a side close in by at most what it has left in the next step, so that a fast body
     // cannot pass it within one. A body caught there is an inelastic catch (work_nc).
     static double pulleyStop(const Joint& j) { return std::max(0.01 * j.length, 1e-3); }
+    // A rope counts as taut within this fraction of its length (a pulley's side at its stop
+    // likewise), and within tautBand(length) of it.
+    static constexpr double kTautFraction = 1e-9;
+    static double tautBand(double length) { return kTautFraction * std::max(length, 1e-3); }
     // The joints' violation at q (every joint, inequalities by how far they are past).
     JointErrors errors(const Vec& q) const;
     // The magnitude of joint i's constraint force at the last evaluation (N; a weld's or a
@@ -274,11 +278,13 @@ private:
     std::vector<End> endA_, endB_;
     bool hasMotors_ = false, hasInequalities_ = false;
     double lastMotorWork_ = 0.0;
-    double shakeReach_ = 0.01;           // m: the largest violation SHAKE answers with an impulse
-    double stepLength_ = 0.0;            // s: the last shake()'s h, for the pulleys' stops
-    double implicitLimit_ = 0.0;         // setImplicitStiffness()
-    Vec stiffInvMass_;                   // stiffen(): invMass with the stiff bodies' larger inertia
-    bool stiffened_ = false;             // the last stiffen() scaled a body: stiffInvMass_ holds
+    double shakeReach_ = 0.01;     // m: the largest violation SHAKE answers with an impulse
+    double shakeCeiling_ = 0.0;    // m: the most SHAKE leaves (kShakeCeiling, below ropes' band)
+    double shakeTolerance_ = 0.0;  // m: where the last shake() stopped (correctPositions() too)
+    double stepLength_ = 0.0;      // s: the last shake()'s h, for the pulleys' stops
+    double implicitLimit_ = 0.0;   // setImplicitStiffness()
+    Vec stiffInvMass_;             // stiffen(): invMass with the stiff bodies' larger inertia
+    bool stiffened_ = false;       // the last stiffen() scaled a body: stiffInvMass_ holds
     std::vector<double> heldStiffness_;  // stiffen(): per turning body, the stiffness it holds
 
     // Per evaluation (sized in bind).
