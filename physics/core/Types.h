@@ -4,6 +4,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "physics/core/Trig.h"
+
 namespace phasebox {
 
 using Vec = Eigen::VectorXd;
@@ -19,9 +21,9 @@ inline double cross(const Vec2& a, const Vec2& b) {
     return a.x() * b.y() - a.y() * b.x();
 }
 inline Mat2 rotation(double angle) {
-    const double c = std::cos(angle), s = std::sin(angle);
+    const CosSin t = cosSin(angle);
     Mat2 r;
-    r << c, -s, s, c;
+    r << t.c, -t.s, t.s, t.c;
     return r;
 }
 
