@@ -30,7 +30,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -216,14 +215,8 @@ private:
     }
     // The last evaluateRows() was at this very q.
     bool rowsAreAt(const Vec& q) const { return sameState(rowsQ_, q); }
-    // The very same numbers, bit for bit (a −0 that was +0 only costs an evaluation): one
-    // memcmp where Eigen's == compares element by element.
-    static bool sameState(const Vec& a, const Vec& b) {
-        return a.size() == b.size() &&
-               (a.size() == 0 ||
-                std::memcmp(a.data(), b.data(),
-                            static_cast<std::size_t>(a.size()) * sizeof(double)) == 0);
-    }
+    // (sameBits: a −0 that was +0 only costs an evaluation.)
+    static bool sameState(const Vec& a, const Vec& b) { return sameBits(a, b); }
     // The cached rotations of bodies turned further by delta's angles (a SHAKE iteration's).
     void turnRotations(const Vec& delta);
     // The active rows of joint k at (q, u) in the given mode; without jacobian, all but J (the

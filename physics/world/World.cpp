@@ -542,6 +542,10 @@ bool World::step() {
             ok && contacts_ && !penalty_ && joints_ && (kinematic || contacts_->touching());
         const EnergyLedger booked = ledger_;
         const double before = both ? mechanicalEnergy(q_[next], u_[next]) : 0.0;
+        if (both) {
+            beforeContactsQ_ = q_[next];  // same sizes after the first: no allocation
+            beforeContactsU_ = u_[next];
+        }
         if (ok && contacts_ && !penalty_) {
             timer.start(StepStage::SolveContacts);
             if (kinematic)
@@ -551,7 +555,11 @@ bool World::step() {
         }
         if (both) {
             timer.start(StepStage::SolveJoints);
-            rejoin(next);
+            // Where the contacts moved nothing (every point speculative or already separating),
+            // the joints' state stands as solveJoints() left it: nothing to answer (the rounds
+            // would change nothing either: a relax without bias pushes no less than the solve).
+            if (!sameBits(beforeContactsQ_, q_[next]) || !sameBits(beforeContactsU_, u_[next]))
+                rejoin(next);
             const double after = mechanicalEnergy(q_[next], u_[next]);
             if (std::isfinite(after)) {
                 const double net = after - before;

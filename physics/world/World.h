@@ -241,7 +241,8 @@ private:
     bool penaltyPairsStale_ = true;
     std::unique_ptr<JointSolver> joints_;
     Vec jointScratch_;
-    Vec roundStart_;  // the velocities before a contact-joint round (rejoin)
+    Vec roundStart_;                         // the velocities before a contact-joint round (rejoin)
+    Vec beforeContactsQ_, beforeContactsU_;  // the state the contacts start from (step)
     // The joints' sub-steps per frame (jointSubstepsForFrame()): for turning, held since when,
     // and for the pull of their forces, held since when, and the most needed since then.
     int jointSubsteps_ = 1;

@@ -20,7 +20,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 using namespace phasebox;
 
@@ -46,12 +45,6 @@ SceneDesc oscillator(const std::string& integrator, double k, double dt) {
     spring.restLength = 0.5;
     s.springs = {spring};
     return s;
-}
-
-bool sameBits(const Vec& a, const Vec& b) {
-    return a.size() == b.size() &&
-           std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) ==
-               0;
 }
 
 // Two particles on springs under gravity: something that moves.
