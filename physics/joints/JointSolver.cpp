@@ -522,7 +522,7 @@ bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
         // the state before this iteration, and on along the end's directions.
         if (worst > 0.5 * previous) {
             q -= impulse_;
-            u -= impulse_ / h;
+            u -= impulse_ * (1.0 / h);
             return shakeAlongEnd(h, q, u, weights);
         }
         previous = worst;
@@ -537,7 +537,7 @@ void JointSolver::applyShakeImpulse(double h, const Vec& weights, Vec& q, Vec& u
     forEachJTranspose(weights, [&](int dof, double, double f) { impulse_[dof] += f; });
     impulse_.array() *= weights.array();
     q += impulse_;
-    u += impulse_ / h;
+    u += impulse_ * (1.0 / h);  // a product: the vector division cost 1% of the whip's step
 }
 
 const Vec& JointSolver::stiffen(double h, const Vec& u0, Vec& q, Vec& u, const Vec& invMass) {
