@@ -164,6 +164,10 @@ void World::commit() {
         if (!joints_) joints_ = std::make_unique<JointSolver>();
         joints_->bind(bodies_);
         jointScratch_.setZero(n);
+        if (contacts_) {  // step(): the state the contacts start from, where both act
+            beforeContactsQ_.setZero(n);
+            beforeContactsU_.setZero(n);
+        }
     } else {
         joints_.reset();
     }
