@@ -561,7 +561,8 @@ bool World::step() {
             timer.start(StepStage::SolveJoints);
             // Where the contacts moved nothing (every point speculative or already separating),
             // the joints' state stands as solveJoints() left it: nothing to answer (the rounds
-            // would change nothing either: a relax without bias pushes no less than the solve).
+            // would change nothing either: a relax asks no more of a contact than the solve,
+            // no push-out velocity and no speculative point).
             if (!sameBits(beforeContactsQ_, q_[next]) || !sameBits(beforeContactsU_, u_[next]))
                 rejoin(next);
             const double after = mechanicalEnergy(q_[next], u_[next]);
