@@ -688,13 +688,13 @@ void JointSolver::accelerate(bool withPrevious) {
 }
 
 void JointSolver::correctPositions(Vec& q, const Vec& u, const Vec& invMass) {
-    // What the last SHAKE left is the method's (its equalities are within shakeTolerance_).
-    const double tolerance = std::max(kProjectionTolerance, shakeTolerance_);
+    // What the last SHAKE left is the method's: its equalities are within shakeTolerance_ (at
+    // least kProjectionTolerance).
     for (int it = 0; it < kProjectionIterations; ++it) {
         // Equalities' C depend on q alone, whatever mode evaluated them: at the same q (the
         // velocity projection's, where the contacts moved nothing) they stand.
         if (it > 0 || hasInequalities_ || !rowsAreAt(q)) evaluateRows(Mode::Position, q, u);
-        if (worstViolation() <= tolerance) return;
+        if (worstViolation() <= shakeTolerance_) return;
         Vec& target = q;
         solveFor(invMass, target, 1.0, true, u);
     }

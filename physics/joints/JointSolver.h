@@ -208,15 +208,14 @@ private:
     // Each turning body's rotation at q, once, for the rows of every joint that holds it.
     void cacheRotations(const Vec& q);
     // rotations_ are those of q: cacheRotations(q), or SHAKE's turned ones where it ended at q.
-    bool rotationsAreAt(const Vec& q) const { return rotationsKnown_ && sameState(rotationsQ_, q); }
+    bool rotationsAreAt(const Vec& q) const { return rotationsKnown_ && sameBits(rotationsQ_, q); }
     void rotationsNowAt(const Vec& q) {
         rotationsQ_ = q;  // same size after the first: no allocation
         rotationsKnown_ = true;
     }
-    // The last evaluateRows() was at this very q.
-    bool rowsAreAt(const Vec& q) const { return sameState(rowsQ_, q); }
-    // (sameBits: a −0 that was +0 only costs an evaluation.)
-    static bool sameState(const Vec& a, const Vec& b) { return sameBits(a, b); }
+    // The last evaluateRows() was at this very q (bit for bit: a −0 that was +0 only costs an
+    // evaluation).
+    bool rowsAreAt(const Vec& q) const { return sameBits(rowsQ_, q); }
     // The cached rotations of bodies turned further by delta's angles (a SHAKE iteration's).
     void turnRotations(const Vec& delta);
     // The active rows of joint k at (q, u) in the given mode; without jacobian, all but J (the
@@ -271,13 +270,13 @@ private:
     std::vector<End> endA_, endB_;
     bool hasMotors_ = false, hasInequalities_ = false;
     double lastMotorWork_ = 0.0;
-    double shakeReach_ = 0.01;     // m: the largest violation SHAKE answers with an impulse
-    double shakeCeiling_ = 0.0;    // m: the most SHAKE leaves (kShakeCeiling, below ropes' band)
-    double shakeTolerance_ = 0.0;  // m: where the last shake() stopped (correctPositions() too)
-    double stepLength_ = 0.0;      // s: the last shake()'s h, for the pulleys' stops
-    double implicitLimit_ = 0.0;   // setImplicitStiffness()
-    Vec stiffInvMass_;             // stiffen(): invMass with the stiff bodies' larger inertia
-    bool stiffened_ = false;       // the last stiffen() scaled a body: stiffInvMass_ holds
+    double shakeReach_ = 0.01;       // m: the largest violation SHAKE answers with an impulse
+    double shakeCeiling_ = 0.0;      // m: the most SHAKE leaves (kShakeCeiling, below ropes' band)
+    double shakeTolerance_ = 1e-10;  // m: where the last shake() stopped (correctPositions() too)
+    double stepLength_ = 0.0;        // s: the last shake()'s h, for the pulleys' stops
+    double implicitLimit_ = 0.0;     // setImplicitStiffness()
+    Vec stiffInvMass_;               // stiffen(): invMass with the stiff bodies' larger inertia
+    bool stiffened_ = false;         // the last stiffen() scaled a body: stiffInvMass_ holds
     std::vector<double> heldStiffness_;  // stiffen(): per turning body, the stiffness it holds
 
     // Per evaluation (sized in bind).
