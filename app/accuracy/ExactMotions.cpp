@@ -4,6 +4,7 @@
 #include "app/accuracy/ExactReference.h"
 
 #include "app/accuracy/ExactReferenceDetail.h"
+#include "physics/core/Elliptic.h"
 
 #include <algorithm>
 #include <cmath>
@@ -141,24 +142,6 @@ Vec2 KeplerMotion::at(double t) const {
         if (std::abs(dH) <= 1e-15 * std::max(1.0, std::abs(H))) break;
     }
     return centre + a * (e - std::cosh(H)) * periapsis + b * std::sinh(H) * normal;
-}
-
-double jacobiSn(double u, double k) {
-    if (k == 0.0) return std::sin(u);
-    double a[16], c[16];
-    a[0] = 1.0;
-    double b = std::sqrt(1.0 - k * k);
-    c[0] = k;
-    int n = 0;
-    while (n < 15 && std::abs(c[n]) > 1e-16) {
-        a[n + 1] = 0.5 * (a[n] + b);
-        c[n + 1] = 0.5 * (a[n] - b);
-        b = std::sqrt(a[n] * b);
-        ++n;
-    }
-    double phi = std::ldexp(a[n] * u, n);
-    for (int i = n; i > 0; --i) phi = 0.5 * (phi + std::asin(c[i] / a[i] * std::sin(phi)));
-    return std::sin(phi);
 }
 
 std::optional<PendulumMotion> PendulumMotion::fromState(const Vec2& centre, double length,

@@ -93,9 +93,6 @@ struct PenaltyBounceMotion {
     double height(double t) const;
 };
 
-// Jacobi's sn(u, k), 0 ≤ k < 1, by the arithmetic–geometric mean (Abramowitz & Stegun 16.4).
-double jacobiSn(double u, double k);
-
 class ExactReference {
 public:
     // What the reference is, for people: "harmonic oscillator", "Kepler orbit", ….

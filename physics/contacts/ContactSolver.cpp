@@ -123,12 +123,13 @@ void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
 }
 
 double ContactSolver::smoothNormalChange(const Row& c, const RowPoint& p) const {
-    // The smooth step's change of the relative normal velocity at the point, over the whole step.
+    // The smooth step's change of the relative normal velocity at the point, over the whole step,
+    // less what the held contact forces gave (they hold; they do not approach).
     const int world = static_cast<int>(bodies_.size());
     auto at = [&](int body, double rx, double ry) -> Vec2 {
         if (body == world) return Vec2::Zero();
         const SolverBody& b = bodies_[body];
-        return b.smoothDv + b.smoothDw * Vec2(-ry, rx);
+        return (b.smoothDv - b.heldDv) + (b.smoothDw - b.heldDw) * Vec2(-ry, rx);
     };
     return Vec2(c.nx, c.ny).dot(at(c.b, p.rBx, p.rBy) - at(c.a, p.rAx, p.rAy));
 }
@@ -149,6 +150,7 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     supports_.reserve(constraints);
     for (auto* perPoint : {&shifted_, &bounces_}) perPoint->reserve(2 * constraints);
     separation_.reserve(2 * constraints);
+    lastForce_.reserve(2 * constraints);
     // Each colour's last wide row may be partly empty.
     wide_.reserve(constraints / 4 + kColours);
     order_.reserve(constraints + 4 * kColours);
@@ -189,6 +191,7 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
             if (k >= c.pointCount) {
                 r = RowPoint{};
                 setup.normalMass[k] = setup.compliance[k] = 0.0;
+                setup.heldNormal[k] = setup.heldTangent[k] = 0.0;
                 separation_[2 * i + k] = 0.0;
                 continue;
             }
@@ -204,6 +207,9 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
             setup.compliance[k] = soft.impulseScale / (soft.massScale * p.normalMass);
             r.normalImpulse = warmScale * p.normalImpulse;
             r.tangentImpulse = warmScale * p.tangentImpulse;
+            const Vec2 held = holding_ ? Vec2(h * heldForceOf(c, p)) : Vec2::Zero();
+            setup.heldNormal[k] = held.x();
+            setup.heldTangent[k] = held.y();
         }
         setup.blockable = false;
         row.k11 = row.k12 = row.k22 = 0.0;
@@ -464,15 +470,21 @@ void ContactSolver::updateSeparations() {
 }
 
 void ContactSolver::warmStart() {
+    // The accumulated impulses, less what the held forces already gave in this inner sub-step
+    // (the smooth step's share): Box2D's warm start, of which the method's step took its part.
     BodyState* state = state_.data();
-    for (const Row& c : rows_) {
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        const Row& c = rows_[i];
+        const RowSetup& setup = setup_[i];
         BodyState& a = state[c.a];
         BodyState& b = state[c.b];
         const double tx = c.ny, ty = -c.nx;
         for (int k = 0; k < c.pointCount; ++k) {
             const RowPoint& p = c.p[k];
-            const double px = p.normalImpulse * c.nx + p.tangentImpulse * tx;
-            const double py = p.normalImpulse * c.ny + p.tangentImpulse * ty;
+            const double n = p.normalImpulse - setup.heldNormal[k];
+            const double t = p.tangentImpulse - setup.heldTangent[k];
+            const double px = n * c.nx + t * tx;
+            const double py = n * c.ny + t * ty;
             removeImpulse(a, p.rAx, p.rAy, px, py);
             applyImpulse(b, p.rBx, p.rBy, px, py);
         }
@@ -583,8 +595,8 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
     if (lastInnerH_ <= 0.0) return base;
     // A soft contact of frequency ω carries a force F by sinking F/(m·ω²); a body sinks by what
     // its supports sink plus its own contact's share. Which body rests on which: the smooth
-    // forces of the step press the upper one into the lower one. The warm-start impulses are
-    // per inner sub-step of the last step, so F = λ/h_last.
+    // forces of the step (less the held contact forces) press the upper one into the lower one. The
+    // warm-start impulses are per inner sub-step of the last step, so F = λ/h_last.
     const double baseHertz = std::min(settings.hertz, 0.25 * base / h);
     const double omega = 2.0 * std::numbers::pi * baseHertz;
     const int world = static_cast<int>(bodies_.size());
@@ -603,9 +615,9 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
         const int a = c.bodyA >= 0 ? c.bodyA : world;
         const int b = c.bodyB >= 0 ? c.bodyB : world;
         // The normal points from A to B: B rests on A when its smooth push is against n.
-        if (b < world && c.normal.dot(bodies_[b].smoothDv) < 0.0)
+        if (b < world && c.normal.dot(bodies_[b].smoothDv - bodies_[b].heldDv) < 0.0)
             supports_.push_back({b, a, sink});
-        else if (a < world && c.normal.dot(bodies_[a].smoothDv) > 0.0)
+        else if (a < world && c.normal.dot(bodies_[a].smoothDv - bodies_[a].heldDv) > 0.0)
             supports_.push_back({a, b, sink});
     }
     // Down the support chains: a few passes (the contacts come roughly in the broad phase's
@@ -650,22 +662,35 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
 }
 
 void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-                              const ContactSettings& settings, double positionWeight) {
+                              const ContactSettings& settings, double positionWeight,
+                              bool holding) {
     if (constraints_.empty()) return;
     // The smooth step's velocity change is spread evenly over the inner sub-steps (the
     // smooth forces held constant over the step); its position change is the integrator's, and
     // the solver adds to it only what the contact impulses change.
+    const bool lengthsKnown = lastInnerH_ > 0.0 && lastStepH_ > 0.0;
+    holding_ = holding && lengthsKnown;
+    // The force each point's last impulses stood for, the next step's `last` (kept at the end,
+    // since the held forces of this step read the present one).
+    lastForce_.resize(2 * constraints_.size());
+    for (std::size_t i = 0; i < constraints_.size(); ++i)
+        for (int k = 0; k < 2; ++k)
+            lastForce_[2 * i + k] = lengthsKnown && k < constraints_[i].pointCount
+                                        ? forceOf(constraints_[i].points[k])
+                                        : Vec2::Zero();
     loadBodies(q0, u0, u);
+    holdBodies(h);
     const int base = innerSubsteps(h, settings);
     const int n = stackSubsteps(h, base, settings);
     const double hi = h / n;
     // The warm-start impulses are per inner sub-step: rescaled when its length changes, they
     // stand for the same forces.
     const double warmScale = lastInnerH_ > 0.0 ? hi / lastInnerH_ : 1.0;
+    // Sub-steps beyond the base buy stiffness: the frequency rises with the rate. (The held
+    // forces are of the last step's lengths, which are replaced after.)
+    buildRows(std::min(settings.hertz * n / base, 0.25 / hi), settings.dampingRatio, hi, warmScale);
     lastInnerH_ = hi;
     lastSubsteps_ = n;
-    // Sub-steps beyond the base buy stiffness: the frequency rises with the rate.
-    buildRows(std::min(settings.hertz * n / base, 0.25 / hi), settings.dampingRatio, hi, warmScale);
     const std::size_t count = bodies_.size();
     // Gauss-Seidel converges more slowly where a contact joins very unequal masses (a heavy
     // box on a light one): there the solve iterates twice as often.
@@ -732,6 +757,15 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
 
     deepPushOut(h, settings);
     keepImpulses();  // the accumulated impulses, for the next step's warm start
+    lastStepH_ = h;
+    for (std::size_t i = 0; i < constraints_.size(); ++i)
+        for (int k = 0; k < constraints_[i].pointCount; ++k) {
+            ContactPoint& p = constraints_[i].points[k];
+            p.solvedNormal = p.normalImpulse;
+            p.solvedTangent = p.tangentImpulse;
+            p.lastNormal = lastForce_[2 * i + k].x();
+            p.lastTangent = lastForce_[2 * i + k].y();
+        }
 
     // A force held over the step moves a body by positionWeight·h·Δv under the user's method;
     // inner sub-stepping moved it by (n + 1)/(2n)·h·Δv. Moving it by the difference keeps a
@@ -744,18 +778,23 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         const BodyState& s = state_[k];
         const Vec2 v(s.vx, s.vy);
         const Vec2 dv = v - (b.v0 + b.smoothDv + b.bounceDv);
-        // Every velocity change here beyond the smooth step's is a contact impulse's.
-        if (b.invMass > 0.0) b.stepImpulse += (v - (b.v0 + b.smoothDv)) / b.invMass;
+        const Vec2 press = b.smoothDv - b.heldDv;
+        // Every velocity change here beyond the smooth step's is a contact impulse's, and so is
+        // the held forces' share of that step.
+        if (b.invMass > 0.0) b.stepImpulse += (v - (b.v0 + press)) / b.invMass;
         // Only a force held over the step moves a body by the method's weight: what the
         // contacts change beyond cancelling the smooth forces is an impact, which acts at once
         // (an inelastic stop at 200 m/s would otherwise be moved ±0.1·h·Δv: through a thin wall
-        // under RK4, a metre short of it under symplectic Euler).
-        const double held = std::min(1.0, b.smoothDv.norm() / std::max(dv.norm(), 1e-300));
-        q.segment<2>(b.dof) += b.shift + (held * excess * h) * dv + b.timeShift;
+        // under RK4, a metre short of it under symplectic Euler). The held forces moved it by
+        // the method's weight already; where the contacts turn out to have been an impact, that
+        // share is taken back to the impact's.
+        const double held = std::min(1.0, press.norm() / std::max((dv + b.heldDv).norm(), 1e-300));
+        const double weight = held * excess * h, heldBack = (held - 1.0) * excess * h;
+        q.segment<2>(b.dof) += b.shift + weight * dv + heldBack * b.heldDv + b.timeShift;
         u.segment<2>(b.dof) = v;
         if (b.rotates) {
             const double dw = s.w - (b.w0 + b.smoothDw + b.bounceDw);
-            q[b.dof + 2] += b.angleShift + (held * excess * h) * dw + b.angleTimeShift;
+            q[b.dof + 2] += b.angleShift + weight * dw + heldBack * b.heldDw + b.angleTimeShift;
             u[b.dof + 2] = s.w;
         }
     }
@@ -827,6 +866,90 @@ void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
     for (int k = 0; k < world; ++k) {
         bodies_[k].shift += deepShift_[k];
         bodies_[k].pushOut += deepShift_[k];
+    }
+}
+
+Vec2 ContactSolver::forceOf(const ContactPoint& p) const {
+    // The solve's impulses act once per inner sub-step; what relaxVelocities() added after it
+    // (the joints' rounds) once per step.
+    const double fn =
+        p.solvedNormal / lastInnerH_ + (p.normalImpulse - p.solvedNormal) / lastStepH_;
+    const double ft =
+        p.solvedTangent / lastInnerH_ + (p.tangentImpulse - p.solvedTangent) / lastStepH_;
+    return {fn, ft};
+}
+
+Vec2 ContactSolver::heldForceOf(const ContactConstraint& c, const ContactPoint& p) const {
+    // A resting contact's force is the same step after step; an impact's is there in one step
+    // only (a body caught in the last inner sub-step). Held over the next step as the lesser of
+    // the last two, an impact is never held: the solver meets it as before, from the smooth
+    // step alone, and the force held is what the contact has shown it keeps up. Nor is an
+    // overlap deeper than a resting stack's (bodies started inside each other): its force is
+    // the push-out's, which acts on positions only. Nor, where two bodies that joints hold
+    // touch (a chain folding onto itself), is it the contact's alone: the joints answer it
+    // within the step, so it is left to the solve after it, as an impact is.
+    if (p.baseSeparation < -c.deepOverlap) return Vec2::Zero();
+    if (c.bodyA >= 0 && c.bodyB >= 0 && bodies_[c.bodyA].jointed && bodies_[c.bodyB].jointed)
+        return Vec2::Zero();
+    const Vec2 now = forceOf(p);
+    const double normal = std::clamp(now.x(), 0.0, std::max(p.lastNormal, 0.0));
+    const double tangent =
+        now.y() * p.lastTangent > 0.0
+            ? std::copysign(std::min(std::abs(now.y()), std::abs(p.lastTangent)), now.y())
+            : 0.0;
+    return {normal, tangent};
+}
+
+bool ContactSolver::addHeldForces(Vec& force) const {
+    if (constraints_.empty() || !(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) return false;
+    bool any = false;
+    for (const ContactConstraint& c : constraints_) {
+        const Vec2 t = tangentOf(c.normal);
+        for (int k = 0; k < c.pointCount; ++k) {
+            const ContactPoint& p = c.points[k];
+            if (p.normalImpulse == 0.0 && p.tangentImpulse == 0.0) continue;
+            any = true;
+            const Vec2 held = heldForceOf(c, p);
+            const Vec2 f = held.x() * c.normal + held.y() * t;
+            if (c.bodyA >= 0) {
+                const SolverBody& a = bodies_[c.bodyA];
+                force.segment<2>(a.dof) -= f;
+                if (a.rotates) force[a.dof + 2] -= cross(p.anchorA, f);
+            }
+            if (c.bodyB >= 0) {
+                const SolverBody& b = bodies_[c.bodyB];
+                force.segment<2>(b.dof) += f;
+                if (b.rotates) force[b.dof + 2] += cross(p.anchorB, f);
+            }
+        }
+    }
+    return any;
+}
+
+void ContactSolver::holdBodies(double h) {
+    for (SolverBody& b : bodies_) {
+        b.heldDv = Vec2::Zero();
+        b.heldDw = 0.0;
+    }
+    if (!holding_) return;
+    for (const ContactConstraint& c : constraints_) {
+        const Vec2 t = tangentOf(c.normal);
+        for (int k = 0; k < c.pointCount; ++k) {
+            const ContactPoint& p = c.points[k];
+            if (p.normalImpulse == 0.0 && p.tangentImpulse == 0.0) continue;
+            const Vec2 held = heldForceOf(c, p);
+            const Vec2 f = h * (held.x() * c.normal + held.y() * t);
+            if (c.bodyA >= 0) {
+                SolverBody& a = bodies_[c.bodyA];
+                a.heldDv -= a.invMass * f;
+                a.heldDw -= a.invInertia * cross(p.anchorA, f);
+            }
+            if (c.bodyB >= 0) {
+                SolverBody& b = bodies_[c.bodyB];
+                b.heldDv += b.invMass * f;
+                b.heldDw += b.invInertia * cross(p.anchorB, f);
+            }
+        }
     }
 }
 

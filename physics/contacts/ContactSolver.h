@@ -52,6 +52,7 @@ struct ContactSettings {
 struct SolverBody {
     int dof = -1;  // first state index
     bool rotates = false;
+    bool jointed = false;  // a joint holds it (heldForceOf())
     double invMass = 0.0;
     double invInertia = 0.0;
     Vec2 collidePosition = Vec2::Zero();  // where the contacts were found
@@ -60,6 +61,10 @@ struct SolverBody {
     // offset from where the contacts were found.
     Vec2 v0 = Vec2::Zero(), smoothDv = Vec2::Zero(), startOffset = Vec2::Zero();
     double w0 = 0.0, smoothDw = 0.0, startAngle = 0.0;
+    // Of the smooth step's change, the held contact forces' share (solveStep's holding): the
+    // rest presses the body into its contacts (which body rests on which, restitution).
+    Vec2 heldDv = Vec2::Zero();
+    double heldDw = 0.0;
     // The solver's own path through the inner sub-steps (Σ h·v), where separations are measured.
     Vec2 path = Vec2::Zero();
     double anglePath = 0.0;
@@ -88,6 +93,12 @@ struct ContactPoint {
     double tangentMass = 0.0;
     double normalImpulse = 0.0;  // accumulated (warm-started)
     double tangentImpulse = 0.0;
+    // Of those, what the last inner sub-step's solve and relax gave (per inner sub-step); the
+    // rest came from relaxVelocities() after the step, once for the whole step.
+    double solvedNormal = 0.0, solvedTangent = 0.0;
+    // The force the step before the last stood for (heldForceOf()): a contact's force is held
+    // over a step only as far as it held in both (an impact's lasts one).
+    double lastNormal = 0.0, lastTangent = 0.0;
     std::uint32_t id = 0;
 };
 
@@ -123,8 +134,11 @@ public:
     // (innerSubsteps()): per inner sub-step the smooth velocity change, warm start, soft solve,
     // positions, relax.
     // positionWeight: the integrator's IntegratorInfo::positionWeight.
+    // holding: the smooth step held the constraints' forces (addHeldForces() of these very
+    // constraints): that share of the warm start has already acted in every inner sub-step, so
+    // only the rest is applied, and the accumulated impulses start from the whole.
     void solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-                   const ContactSettings& settings, double positionWeight);
+                   const ContactSettings& settings, double positionWeight, bool holding);
     // After solveStep, more relax iterations (no bias) of its last sub-step's rows, from and to
     // the world's velocities u, the accumulated impulses carrying on. The joint solver
     // interleaves them with its velocity projections, so that a body both touching and jointed
@@ -135,6 +149,11 @@ public:
     // (solveStep does; call after the last relaxVelocities).
     void keepImpulses();
     bool empty() const { return constraints_.empty(); }
+    // The contact forces the kept impulses stand for, held over the next step (Box2D's warm
+    // start, taken into the method's step as a force): per state index, each point's impulse
+    // over the inner sub-step it acted in, with its torque about the body's centre. Adds them
+    // to force; false when no point carries an impulse.
+    bool addHeldForces(Vec& force) const;
     // Adds scale times the last step's position correction (push-out) to q.
     void addPushOut(Vec& q, double scale) const;
 
@@ -216,6 +235,7 @@ private:
     // What the phases are built from, per row (cold: read once per phase).
     struct RowSetup {
         double biasRate, massScale, impulseScale;
+        double heldNormal[2], heldTangent[2];  // per inner sub-step: what the held force gave
         double normalMass[2], compliance[2];
         double deepOverlap;
         double pushOutShare;
@@ -223,6 +243,7 @@ private:
     };
 
     void loadBodies(const Vec& q0, const Vec& u0, const Vec& u);
+    bool holding_ = false;  // this solveStep's holding
     // Sub-steps for this step: `base`, or more when the stack the warm-start impulses carry
     // would sag further than kSagTarget at the base stiffness (after loadBodies).
     int stackSubsteps(double h, int base, const ContactSettings& settings);
@@ -255,6 +276,7 @@ private:
     std::vector<Row> rows_;           // per constraint, in constraints_'s order
     std::vector<RowSetup> setup_;     // likewise
     std::vector<double> separation_;  // per row point (2 per row), where the path is now
+    std::vector<Vec2> lastForce_;     // per row point: solveStep's forceOf() at its start
     std::vector<WideRow> wide_;       // the coloured rows, colour by colour
     std::vector<int> slot_;           // per row: 4·wide row + lane, or −1 (solved alone)
     std::vector<int> order_;          // per wide slot: its row, or −1 (the sweep order)
@@ -284,7 +306,14 @@ private:
     };
     std::vector<Support> supports_;
     std::vector<Vec2> deepShift_;  // per body (+ the static world): deepPushOut's displacement
-    double lastInnerH_ = 0.0;      // the last step's inner sub-step (its impulses are per one)
+    // The force a point's impulses of the last step stood for, along its normal and tangent;
+    // and the force held over the next step: the lesser of that and the step's before.
+    Vec2 forceOf(const ContactPoint& p) const;
+    Vec2 heldForceOf(const ContactConstraint& c, const ContactPoint& p) const;
+    // Per body, the held forces' share of the smooth step's change (after loadBodies).
+    void holdBodies(double h);
+    double lastInnerH_ = 0.0;  // the last step's inner sub-step (its impulses are per one)
+    double lastStepH_ = 0.0;   // and the step itself (relaxVelocities()' impulses are per one)
     int lastSubsteps_ = 0;
     int stepsWantingFewer_ = 0;
     int stepsWantingMore_ = 0;

@@ -65,6 +65,8 @@ void ContactStage::bind(const Bodies& bodies) {
         };
         for (const Joint& j : bodies.joints) {
             const int a = colliderOf(j.a), b = colliderOf(j.b);
+            if (a >= 0) colliders_[a].jointed = true;
+            if (b >= 0) colliders_[b].jointed = true;
             if (a < 0 || b < 0) continue;
             jointedPairs_.push_back((static_cast<std::uint64_t>(std::min(a, b)) << 32) |
                                     static_cast<std::uint64_t>(std::max(a, b)));
@@ -130,6 +132,7 @@ int ContactStage::solverBodyFor(int collider, const Vec& q) {
     SolverBody b;
     b.dof = c.dof;
     b.rotates = c.rigid;
+    b.jointed = c.jointed;
     b.collidePosition = q.segment<2>(c.dof);
     if (b.rotates) b.collideAngle = q[c.dof + 2];
     bodies.push_back(b);
@@ -372,6 +375,10 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
                 if (c.points[k].id == old->points[l].id) {
                     c.points[k].normalImpulse = old->points[l].normalImpulse;
                     c.points[k].tangentImpulse = old->points[l].tangentImpulse;
+                    c.points[k].solvedNormal = old->points[l].solvedNormal;
+                    c.points[k].solvedTangent = old->points[l].solvedTangent;
+                    c.points[k].lastNormal = old->points[l].lastNormal;
+                    c.points[k].lastTangent = old->points[l].lastTangent;
                 }
     }
     // Bodies' masses, now that the solver body list is complete.

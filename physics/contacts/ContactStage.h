@@ -59,8 +59,8 @@ public:
 
     // One step of h after the smooth step (ContactSolver::solveStep).
     void solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-                   const ContactSettings& settings, double positionWeight) {
-        solver_.solveStep(h, q0, u0, q, u, settings, positionWeight);
+                   const ContactSettings& settings, double positionWeight, bool holding) {
+        solver_.solveStep(h, q0, u0, q, u, settings, positionWeight, holding);
     }
     // More relax iterations after the step (ContactSolver::relaxVelocities).
     void relaxVelocities(Vec& u, int iterations) { solver_.relaxVelocities(u, iterations); }
@@ -100,7 +100,8 @@ private:
         int dof;     // −1 static
         double friction;
         double restitution;
-        bool rigid = false;  // object indexes the rigid bodies (boxes, rigid disks): it turns
+        bool rigid = false;    // object indexes the rigid bodies (boxes, rigid disks): it turns
+        bool jointed = false;  // a joint holds it
     };
 
     // A pair's narrow phase: a = the constraint's body A (a collider, or −1 − k for plane k),

@@ -21,6 +21,7 @@ const IntegratorInfo kAdaptiveEulerInfo{
     0.25,
     kInfinity,
     nullptr,
+    false,
     false};
 
 namespace {

@@ -23,6 +23,7 @@ const IntegratorInfo kDormandPrinceInfo{
     0.5,
     kInfinity,
     nullptr,
+    false,
     false};
 
 namespace {

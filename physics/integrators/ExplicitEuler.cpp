@@ -17,6 +17,7 @@ const IntegratorInfo kExplicitEulerInfo{
     0.0,
     0.0,
     [](double wh) { return 1.0 + wh * wh; },
+    false,
     false};
 
 namespace {

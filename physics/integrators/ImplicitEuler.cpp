@@ -22,6 +22,7 @@ const IntegratorInfo kImplicitEulerInfo{
     1.0,
     kInfinity,
     nullptr,
+    true,
     true};
 
 namespace {

@@ -20,6 +20,7 @@ const IntegratorInfo kImplicitMidpointInfo{
     0.5,
     kInfinity,
     nullptr,
+    false,
     false};
 
 namespace {

@@ -34,6 +34,12 @@ struct IntegratorInfo {
     double (*energyGrowth)(double omegaH);
     // The step takes newton_iterations Newton iterations (the setting matters to it).
     bool usesNewtonIterations;
+    // Where the method's step takes the joints' constraint force: false at the step's start
+    // (SHAKE's directions, as symplectic Euler and the explicit methods step their forces),
+    // true at its end (backward Euler: the positions are projected onto C = 0 along J at the
+    // end point, the velocities onto its tangent, so a rod pendulum is damped as backward Euler
+    // damps the pendulum in its angle).
+    bool constraintsAtEnd;
 };
 
 struct IntegratorSettings {

@@ -17,6 +17,7 @@ const IntegratorInfo kMidpointInfo{
     0.5,
     0.0,
     [](double wh) { return 1.0 + wh * wh * wh * wh / 4.0; },
+    false,
     false};
 
 namespace {

@@ -12,7 +12,8 @@ const IntegratorInfo kRungeKutta4Info{
     false,   false,
     "4",     "Classic fourth-order Runge–Kutta: four slopes weighted 1/6, 1/3, 1/3, 1/6.",
     0.5,     2.0 * std::numbers::sqrt2,
-    nullptr, false};
+    nullptr, false,
+    false};
 
 namespace {
 class RungeKutta4 final : public Integrator {

@@ -19,6 +19,7 @@ const IntegratorInfo kSymplecticEulerInfo{
     1.0,
     2.0,
     nullptr,
+    false,
     false};
 
 namespace {

@@ -19,6 +19,7 @@ const IntegratorInfo kVelocityVerletInfo{
     0.5,
     2.0,
     nullptr,
+    false,
     false};
 
 namespace {

@@ -12,21 +12,20 @@
 namespace phasebox {
 
 namespace {
-// Newton steps of the position projection, and the error below which it stops (m, rad). A
-// tenth of a nanometre: what is left stays in the positions, but the next step's projection
-// aims at C = 0 again, so it does not add up; at 1e-12 the whip took 6% more instructions
-// for the same trajectory to the digits printed.
+// Newton steps of the position projection, and the error below which it stops (m, rad), per
+// metre of the largest coordinate (projectionFloor_): about 45 units in the last place, so that
+// what a fourth-order method leaves of a joint's length (h^5 a step, added up over a run)
+// neither drifts to a floor nor changes a pendulum's period there (RK4 on a 10° rod pendulum at
+// 1/960 keeps its order 4 only below 1e-12 m, tst_constrained_methods), and it is still
+// reachable in double precision far from the origin.
 constexpr int kProjectionIterations = 12;
-constexpr double kProjectionTolerance = 1e-10;
+constexpr double kProjectionTolerance = 1e-14;  // per metre
 // SHAKE stops once the violation is below this fraction of the one it started from (or below
-// kProjectionTolerance), and never leaves more than kShakeCeiling (m, rad). What it starts from
-// is the step's own error (symplectic Euler's ½·r·(ω·h)² where a link turns, a method of order p
-// its h^(p+1) term), so what it leaves is a ten-thousandth of the method's own error at any step
-// and shrinks with it: the Accuracy Lab's curves are not floored (RK4 and rk45 still stop at
-// kProjectionTolerance on every jointed example). The whip's steps start it 1 to 10 mm off and
-// end within 1e-7 m in about 3.2 iterations (4.75 when it went on to 1e-10 m). The examples'
-// drift, correction and work_nc over 20 s under every method moved by at most a unit in their
-// fifth digit, the chaotic ragdoll aside (docs/architecture.md, Joints).
+// projectionFloor_), and never leaves more than kShakeCeiling (m, rad). What it starts from is
+// the step's own error (symplectic Euler's ½·r·(ω·h)² where a link turns, a method of order p its
+// h^(p+1) term), so what it leaves is a ten-thousandth of the method's own error at any step and
+// shrinks with it: the Accuracy Lab's curves are not floored. A fixed floor instead made every
+// step of a whip iterate to it (docs/architecture.md, Joints).
 constexpr double kShakeFraction = 1e-4;
 constexpr double kShakeCeiling = 1e-7;
 // Motor impulses and the velocity projection alternate this many times.
@@ -110,6 +109,7 @@ void JointSolver::bind(const Bodies& bodies) {
         if (j.type == Joint::Type::Rope)
             shakeCeiling_ = std::min(shakeCeiling_, 0.5 * tautBand(j.length));
     shakeTolerance_ = kProjectionTolerance;
+    projectionFloor_ = kProjectionTolerance;
     rotations_.assign(turningDofs_.size(), Mat2::Identity());
     heldStiffness_.assign(turningDofs_.size(), 0.0);
     rows_.assign(m, Rows{});
@@ -483,8 +483,8 @@ void JointSolver::solveFor(const Vec& invMass, Vec& x, double scale, bool fromVi
     addJTranspose(invMass, scale, x);
 }
 
-bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
-                        const Vec& invMass) {
+bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u, const Vec& invMass,
+                        bool alongEnd) {
     // The equality rows in their directions at the step's start, factored once: each
     // iteration only evaluates C at q. With them the ropes that were taut and pulling at the
     // start: they pulled through the step as the derivative's equalities, and SHAKE keeps
@@ -493,6 +493,7 @@ bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
     // Rows of the derivative's mode at q0 are these: a step's single derivative evaluation
     // (symplectic Euler's) has left them.
     stepLength_ = h;
+    projectionFloor_ = kProjectionTolerance * std::max(1.0, q.lpNorm<Eigen::Infinity>());
     if (!rowsAreAt(q0) || rowsMode_ != Mode::Dynamics)
         evaluateRows(Mode::Dynamics, q0, q0);  // (the velocities only enter J̇·u, unused here)
     dropInequalities();
@@ -501,12 +502,12 @@ bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
     const Vec& weights = stiffen(h, u0, q, u, invMass);
     cacheRotations(q);  // of q, not of rowsQ_ (q0)
     double worst = shakeViolation(q);
-    shakeTolerance_ = std::clamp(kShakeFraction * worst, kProjectionTolerance, shakeCeiling_);
+    shakeTolerance_ = std::clamp(kShakeFraction * worst, projectionFloor_, shakeCeiling_);
     if (worst <= shakeTolerance_) return true;
     // Past the asymptotic regime (the step moved a joint a good part of its size): the
     // directions of the start are too far from the end's, and an impulse along them would pump
     // energy in. On along the end's directions instead.
-    if (worst > shakeReach_) return shakeAlongEnd(h, q, u, weights);
+    if (alongEnd || worst > shakeReach_) return shakeAlongEnd(h, q, u, weights);
     factor(weights);
     double previous = worst;
     for (int it = 0; it < kProjectionIterations; ++it) {
@@ -600,7 +601,7 @@ bool JointSolver::shakeAlongEnd(double h, Vec& q, Vec& u, const Vec& weights) {
         evaluateRows(Mode::Position, q, u);
         dropInequalities();
         const double worst = worstViolation();
-        if (worst <= kProjectionTolerance) return true;
+        if (worst <= projectionFloor_) return true;
         if (!(worst < previous)) return false;  // diverging (or NaN): the world's projection
         previous = worst;
         factor(weights);
@@ -689,7 +690,7 @@ void JointSolver::accelerate(bool withPrevious) {
 
 void JointSolver::correctPositions(Vec& q, const Vec& u, const Vec& invMass) {
     // What the last SHAKE left is the method's: its equalities are within shakeTolerance_ (at
-    // least kProjectionTolerance).
+    // least projectionFloor_).
     for (int it = 0; it < kProjectionIterations; ++it) {
         // Equalities' C depend on q alone, whatever mode evaluated them: at the same q (the
         // velocity projection's, where the contacts moved nothing) they stand.

@@ -72,7 +72,10 @@ public:
     //    positions: a constraint force along the end's directions, the method's too. False
     //    when neither converged. With setImplicitStiffness(limit), the hinges and welds
     //    stiffer than the limit are first taken implicitly (see there).
-    bool shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u, const Vec& invMass);
+    // alongEnd: the constraint force of a method that takes it at the step's end (backward
+    //    Euler, IntegratorInfo::constraintsAtEnd): straight to the directions at the iterate.
+    bool shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u, const Vec& invMass,
+               bool alongEnd = false);
     // For the methods whose step ends x' = x + h·v' (symplectic and implicit Euler): a joint
     // under a force F holds a body's point at a lever arm r with a stiffness k = F·r on the
     // body's angle (geometricFrequency()), which those methods meet explicitly, stable only
@@ -270,13 +273,14 @@ private:
     std::vector<End> endA_, endB_;
     bool hasMotors_ = false, hasInequalities_ = false;
     double lastMotorWork_ = 0.0;
-    double shakeReach_ = 0.01;       // m: the largest violation SHAKE answers with an impulse
-    double shakeCeiling_ = 0.0;      // m: the most SHAKE leaves (kShakeCeiling, below ropes' band)
-    double shakeTolerance_ = 1e-10;  // m: where the last shake() stopped (correctPositions() too)
-    double stepLength_ = 0.0;        // s: the last shake()'s h, for the pulleys' stops
-    double implicitLimit_ = 0.0;     // setImplicitStiffness()
-    Vec stiffInvMass_;               // stiffen(): invMass with the stiff bodies' larger inertia
-    bool stiffened_ = false;         // the last stiffen() scaled a body: stiffInvMass_ holds
+    double shakeReach_ = 0.01;        // m: the largest violation SHAKE answers with an impulse
+    double shakeCeiling_ = 0.0;       // m: the most SHAKE leaves (kShakeCeiling, below ropes' band)
+    double shakeTolerance_ = 1e-10;   // m: where the last shake() stopped (correctPositions() too)
+    double projectionFloor_ = 1e-14;  // m: the least error a projection aims at (shake())
+    double stepLength_ = 0.0;         // s: the last shake()'s h, for the pulleys' stops
+    double implicitLimit_ = 0.0;      // setImplicitStiffness()
+    Vec stiffInvMass_;                // stiffen(): invMass with the stiff bodies' larger inertia
+    bool stiffened_ = false;          // the last stiffen() scaled a body: stiffInvMass_ holds
     std::vector<double> heldStiffness_;  // stiffen(): per turning body, the stiffness it holds
 
     // Per evaluation (sized in bind).

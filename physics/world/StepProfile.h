@@ -48,4 +48,30 @@ struct StepProfile {
     void reset() { *this = StepProfile{}; }
 };
 
+// Times consecutive stages into a profile: each call to start() ends the stage before it.
+class StageTimer {
+public:
+    explicit StageTimer(StepProfile& profile) : profile_(profile) {}
+    ~StageTimer() { stop(); }
+    StageTimer(const StageTimer&) = delete;
+    StageTimer& operator=(const StageTimer&) = delete;
+    void start(StepStage stage) {
+        const auto now = ProfileClock::now();
+        if (running_) profile_[stage_] += std::chrono::duration<double>(now - since_).count();
+        stage_ = stage;
+        since_ = now;
+        running_ = true;
+    }
+    void stop() {
+        if (running_) profile_[stage_] += secondsSince(since_);
+        running_ = false;
+    }
+
+private:
+    StepProfile& profile_;
+    StepStage stage_ = StepStage::Integrate;
+    ProfileClock::time_point since_;
+    bool running_ = false;
+};
+
 }  // namespace phasebox

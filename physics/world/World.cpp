@@ -15,30 +15,6 @@ namespace phasebox {
 
 namespace {
 using Clock = ProfileClock;
-
-// Times consecutive stages into a profile: each call to start() ends the stage before it.
-class StageTimer {
-public:
-    explicit StageTimer(StepProfile& profile) : profile_(profile) {}
-    ~StageTimer() { stop(); }
-    void start(StepStage stage) {
-        const auto now = Clock::now();
-        if (running_) profile_[stage_] += std::chrono::duration<double>(now - since_).count();
-        stage_ = stage;
-        since_ = now;
-        running_ = true;
-    }
-    void stop() {
-        if (running_) profile_[stage_] += secondsSince(since_);
-        running_ = false;
-    }
-
-private:
-    StepProfile& profile_;
-    StepStage stage_ = StepStage::Integrate;
-    Clock::time_point since_;
-    bool running_ = false;
-};
 }  // namespace
 
 World::World() {
@@ -127,6 +103,8 @@ void World::commit() {
     mass_.setZero(n);
     invMass_.setZero(n);
     force_.setZero(n);
+    heldForce_.setZero(n);
+    heldValid_ = false;  // the contact solver's bodies are of the old layout until a collide
     Vec& q = q_[0];
     Vec& u = u_[0];
     for (Particle& p : bodies_.particles) p.dof = -1;
@@ -383,7 +361,7 @@ double World::acceleration(double t, const Vec& q, const Vec& u, Vec& accel) {
     ++forceEvaluations_;
     double power = 0.0;
     if (!addAccelerations(t, q, u, accel, fieldEffects_, power)) accel.setZero();
-    if (joints_) joints_->constrainAccelerations(q, u, invMass_, accel);
+    if (joints_) constrainJoints(q, u, accel, true);
     return power;
 }
 
@@ -410,8 +388,12 @@ OdeSystem::SplitAcceleration World::accelerationSplit(double t, const Vec& q, co
 bool World::addAccelerations(double t, const Vec& q, const Vec& u, Vec& accel,
                              const std::vector<int>& fields, double& power) {
     bool written = false;
-    if (!forceEffects_.empty() || penalty_) {
-        force_.setZero();
+    if (!forceEffects_.empty() || penalty_ || holding_) {
+        if (holding_) {
+            force_ = heldForce_;
+        } else {
+            force_.setZero();
+        }
         for (int i : forceEffects_) {
             const auto start = Clock::now();
             power += effects_[i]->addForces(t, q, u, force_);
@@ -441,6 +423,10 @@ double World::nonConservativePower(double t, const Vec& q, const Vec& u) {
     return power;
 }
 
+void World::addHeldForces(Vec& force) const {
+    if (holding_) force += heldForce_;
+}
+
 double World::forces(double t, const Vec& q, const Vec& u, Vec& force) {
     ++forceEvaluations_;
     force.setZero();
@@ -455,7 +441,8 @@ double World::forces(double t, const Vec& q, const Vec& u, Vec& force) {
         power += penalty_->addForces(t, q, u, force);
         effectSeconds_.back() += secondsSince(start);
     }
-    if (joints_) joints_->constrainForces(q, u, invMass_, force, jointScratch_);
+    addHeldForces(force);
+    if (joints_) constrainJoints(q, u, force, false);
     return power;
 }
 
@@ -474,8 +461,25 @@ double World::forcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& forc
         power += penalty_->addForcesAndJacobians(t, q, u, force, jacobians);
         effectSeconds_.back() += secondsSince(start);
     }
-    if (joints_) joints_->constrainForces(q, u, invMass_, force, jointScratch_);
+    addHeldForces(force);  // constant over the step: no Jacobian
+    if (joints_) constrainJoints(q, u, force, false);
     return power;
+}
+
+void World::constrainJoints(const Vec& q, const Vec& u, Vec& x, bool accelerations) {
+    // A method that takes the joints' force at the step's end (backward Euler) meets it only in
+    // its end projection (shake()): in its evaluations the joints are solved for their forces
+    // (the probes, the sub-step count) and nothing is added. Taken at the start of the Newton
+    // solve instead, the force was explicit and the step symplectic Euler's.
+    Vec* target = &x;
+    if (integrator_->info().constraintsAtEnd) {
+        unappliedJointForce_ = x;  // same size after the first: no allocation
+        target = &unappliedJointForce_;
+    }
+    if (accelerations)
+        joints_->constrainAccelerations(q, u, invMass_, *target);
+    else
+        joints_->constrainForces(q, u, invMass_, *target, jointScratch_);
 }
 
 void World::setState(const Vec& q, const Vec& u) {
@@ -495,17 +499,19 @@ std::string World::objectAtDof(int dof) const {
 // ---- stepping -----------------------------------------------------------------------------
 
 // One frame of dt, as a script of named stages (each timed into profile_, CONTRACT.md §7):
-//   integrate       the smooth step: the integrator with every effect, per sub-step
-//   collide         find contacts once per frame, after the first smooth sub-step (broad
-//                   phase over how far each body can move, narrow phase, warm start)
-//   solve contacts  impulses on velocities and bounded position correction, per sub-step
+//   integrate       the method's step with every effect and the constraint forces inside it:
+//                   the joints' in every evaluation, the contacts' as the forces of their last
+//                   solve held over the step (holdContactForces())
+//   solve joints    SHAKE and the velocity projection complete the method's step for joints
+//   collide         find contacts once per frame, after the first sub-step (broad phase over
+//                   how far each body can move, narrow phase, warm start)
+//   solve contacts  what the held forces missed: impacts, friction, the overlap pushed out
 //   ledger          the energy ledger of the end state
 //   guard           divergence: a non-finite value or runaway energy restores a good frame
 bool World::step() {
     ensureLayout();
     divergence_.reset();
-    const int jointSubsteps = joints_ ? jointSubstepsForFrame() : 1;
-    const int substeps = settings_.substeps * jointSubsteps;
+    const int substeps = settings_.substeps * (joints_ ? jointSubstepsForFrame() : 1);
     const double h = settings_.dt / substeps;
     // With one sub-step the other state buffer keeps the frame start for free.
     guard_.beginFrame(clock_, ledger_, q_[current_], u_[current_], substeps > 1);
@@ -516,70 +522,23 @@ bool World::step() {
     for (int s = 0; s < substeps; ++s) {
         const double t = guard_.frameStart().clock.time + s * h;
         const int next = 1 - current_;
-        // Without contacts to move it afterwards, the last sub-step's end state is the frame's:
-        // the integrator sums it for the ledger in its last pass.
+        // Where no constraint stage moves the bodies after it, the method's last pass sums the
+        // frame's end state for the ledger.
         const bool sumHere = s + 1 == substeps && (!contacts_ || penalty_) && !joints_;
-        if (penalty_ && s == 0) {
-            // The penalty force acts inside the integrator: its pairs are found before it.
+        if (penalty_ && s == 0) {  // the penalty force acts inside the method: pairs first
             timer.start(StepStage::Collide);
             findPenaltyPairs();
         }
         timer.start(StepStage::Integrate);
+        holdContactForces();
         const bool ok = integrate(t, h, next, sumHere ? &summary : nullptr);
-        if (ok && joints_) {
-            // The joints complete the integrator's step before anything else moves the bodies
-            // (SHAKE, the velocities onto the tangent, the motors): what they change is booked
-            // as the joints' own, and SHAKE answers only the integrator's drift.
-            timer.start(StepStage::SolveJoints);
-            solveJoints(h, next);
-        }
-        if (ok && contacts_ && !penalty_ && s == 0) {
-            // Once per frame, after the first smooth step shows where the bodies are heading.
-            timer.start(StepStage::Collide);
-            collide(next, substeps);
-        }
-        // Contacts move jointed bodies apart, and the joints answer (rejoin()): the two trade
-        // energy back and forth (each stage books what it moves), and what counts is their net
-        // change, booked once after both: taken out, work_nc; put in, correction.
-        const bool kinematic = settings_.contactModel == ContactModel::Kinematic;
-        const bool both =
-            ok && contacts_ && !penalty_ && joints_ && (kinematic || contacts_->touching());
-        const EnergyLedger booked = ledger_;
-        const double before = both ? mechanicalEnergy(q_[next], u_[next]) : 0.0;
-        if (both) {
-            beforeContactsQ_ = q_[next];  // same sizes after the first: no allocation
-            beforeContactsU_ = u_[next];
-        }
-        if (ok && contacts_ && !penalty_) {
-            timer.start(StepStage::SolveContacts);
-            if (kinematic)
-                solveKinematic(next);
-            else
-                solveContacts(h, next);
-        }
-        if (both) {
-            timer.start(StepStage::SolveJoints);
-            // Where the contacts moved nothing (every point speculative or already separating),
-            // the joints' state stands as solveJoints() left it: nothing to answer (the rounds
-            // would change nothing either: a relax asks no more of a contact than the solve,
-            // no push-out velocity and no speculative point).
-            if (!sameBits(beforeContactsQ_, q_[next]) || !sameBits(beforeContactsU_, u_[next]))
-                rejoin(next);
-            const double after = mechanicalEnergy(q_[next], u_[next]);
-            if (std::isfinite(after)) {
-                const double net = after - before;
-                ledger_.workNc = booked.workNc + std::min(net, 0.0);
-                ledger_.correction = booked.correction + std::max(net, 0.0);
-            }
-        }
+        if (ok) solveConstraints(h, s == 0 ? substeps : 0, next, timer);
         if (!ok || (substeps > 1 && !(q_[next].allFinite() && u_[next].allFinite())))
             return failSubstep(t + h, !ok, next);
         current_ = next;
         summed = sumHere;
     }
-    ++clock_.stepsSinceTimeBase;
-    clock_.time = clock_.timeBase + static_cast<double>(clock_.stepsSinceTimeBase) * settings_.dt;
-    ++clock_.stepCount;
+    advanceClock();
     timer.start(StepStage::Ledger);
     summary = closeLedger(summed ? &summary : nullptr);
     checkInvariants(StepStage::Ledger);
@@ -587,6 +546,12 @@ bool World::step() {
     const bool good = guard(summary);
     checkInvariants(StepStage::Guard);
     return good;
+}
+
+void World::advanceClock() {
+    ++clock_.stepsSinceTimeBase;
+    clock_.time = clock_.timeBase + static_cast<double>(clock_.stepsSinceTimeBase) * settings_.dt;
+    ++clock_.stepCount;
 }
 
 bool World::integrate(double t, double h, int next, StateSummary* summary) {
@@ -641,6 +606,7 @@ bool World::failSubstep(double t, bool integratorFailed, int next) {
                                    " could not meet its tolerance within its budget of internal "
                                    "steps: the scene is too stiff for it"
                              : std::string(info.name) + " failed";
+    holding_ = false;
     current_ = next;  // restore() reads the frame start from the right place
     if (guard_.onNonFinite() == DivergenceGuard::Verdict::RestoreRunawayStart)
         restore(guard_.runawayStart(), false);

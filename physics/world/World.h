@@ -197,15 +197,29 @@ private:
     bool addAccelerations(double t, const Vec& q, const Vec& u, Vec& accel,
                           const std::vector<int>& fields, double& power);
     void bindEffects();
+    // The joints' constraint forces (accelerations: M⁻¹ of them) into x, as the method takes
+    // them (IntegratorInfo::constraintsAtEnd).
+    void constrainJoints(const Vec& q, const Vec& u, Vec& x, bool accelerations);
+    // The held contact forces into force while holding_ (their work: bookHeldWork()).
+    void addHeldForces(Vec& force) const;
 
     // The stages of step(), in the order they run.
+    void holdContactForces();
+    bool integrate(double t, double h, int next, StateSummary* summary);
+    // After the method's step of h into buffer next: the joints, the contacts (found when
+    // collideSubsteps > 0, the frame's first sub-step of that many), their booking.
+    void solveConstraints(double h, int collideSubsteps, int next, StageTimer& timer);
+    void bookHeldWork(double h, int next);
+    void releaseHeldForces(double h, int next);
+    void advanceClock();
     void collide(int next, int substeps);
     void findPenaltyPairs();
     void configureContactModel();
     double contactPotential(const Vec& q) const;
     void solveKinematic(int next);
-    bool integrate(double t, double h, int next, StateSummary* summary);
-    void solveContacts(double h, int next);
+    // before: the energy at the method's end, which the contacts' booking starts from; held:
+    // the method's step held the contacts' forces (releaseHeldForces()).
+    void solveContacts(double h, int next, double before, bool held);
     // How many sub-steps the joints need this frame.
     int jointSubstepsForFrame();
     void solveJoints(double h, int next);
@@ -238,10 +252,18 @@ private:
     std::unique_ptr<PenaltyContacts> penalty_;  // only under the penalty model
     Vec penaltyVelocity_;                       // u at the last pair search, for its sweep
     Vec kinematicImpulse_;  // per dof: the kinematic response's impulses in the last step
+    // The impulse model's contact forces of the last solve, held over the method's step
+    // (holdContactForces()): a force like any effect's while holding_, per state index.
+    // heldValid_: the solver's bodies are of this layout (a collide since the last commit).
+    Vec heldForce_;
+    double heldWork_ = 0.0;  // their work in this sub-step's method (bookHeldWork())
+    bool holding_ = false;
+    bool heldValid_ = false;
     bool penaltyPairsStale_ = true;
     std::unique_ptr<JointSolver> joints_;
     Vec jointScratch_;
-    Vec roundStart_;                         // the velocities before a contact-joint round (rejoin)
+    Vec unappliedJointForce_;  // constrainJoints() under a method that takes them at the end
+    Vec roundStart_;           // the velocities before a contact-joint round (rejoin)
     Vec beforeContactsQ_, beforeContactsU_;  // the state the contacts start from (step)
     // The joints' sub-steps per frame (jointSubstepsForFrame()): for turning, held since when,
     // and for the pull of their forces, held since when, and the most needed since then.

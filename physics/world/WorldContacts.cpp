@@ -108,9 +108,11 @@ void World::collide(int next, int substeps) {
         contacts_->findPairs(bodies_, q_[current_], u_[current_], u_[next], 1.0 / substeps,
                              settings_.dt, settings_.contacts);
         kinematicImpulse_.setZero(layout_.dimension());  // summed over the frame's sub-steps
-    } else
+    } else {
         contacts_->collide(bodies_, invMass_, q_[current_], u_[current_], u_[next], 1.0 / substeps,
                            settings_.dt, settings_.contacts);
+        heldValid_ = true;  // the solver's bodies are of this layout from now on
+    }
     effectSeconds_.back() += secondsSince(start);
 }
 
@@ -139,26 +141,135 @@ void World::solveKinematic(int next) {
     effectSeconds_.back() += secondsSince(start);
 }
 
-void World::solveContacts(double h, int next) {
-    // Contacts act after the smooth step as impulses and a bounded position correction. What
-    // the impulses change (with the motion they cause) is physical work only where it takes
-    // energy out (friction, restitution losses, an inelastic normal impulse): a contact cannot
-    // do positive work. Energy the stage puts in is the solver's own, booked in correction with
-    // the push-out that removes overlap (CONTRACT §6): a pile solved short of convergence, or a
-    // resting body given back what symplectic Euler's step took, is never work_nc.
+void World::holdContactForces() {
+    // The impulse model's contact forces belong to the method's step (CONTRACT §3): the forces
+    // of the last solve (its accumulated impulses per inner sub-step, as Box2D warm-starts them)
+    // act in every evaluation as a force held over the step, so a body at rest on its support
+    // stays at rest in the method itself, whatever the method, and the method's books show no
+    // error for it. A constant force has no Jacobian and its work (friction on a sliding body)
+    // is integrated like any effect's.
+    holding_ = false;
+    if (!heldValid_ || !contacts_ || settings_.contactModel != ContactModel::Impulse) return;
+    heldForce_.setZero();
+    holding_ = contacts_->solver().addHeldForces(heldForce_);
+}
+
+void World::bookHeldWork(double h, int next) {
+    // A force held over the step changes every method's velocities by h·W·F, and so the kinetic
+    // energy by exactly F·h·(u0 + u1)/2: that is its work on the method's path, whatever the
+    // method. It is the contacts' work, booked with what the solver changes after it
+    // (solveContacts()): a held force the solver takes back again (a body that left its
+    // support) nets to nothing; a body at rest books nothing.
+    heldWork_ = 0.0;
+    if (!holding_) return;
+    const Vec& u0 = u_[current_];
+    const Vec& u1 = u_[next];
+    double work = 0.0;
+    for (int i = 0; i < static_cast<int>(heldForce_.size()); ++i)
+        if (heldForce_[i] != 0.0) work += heldForce_[i] * (u0[i] + u1[i]);
+    heldWork_ = 0.5 * h * work;
+}
+
+void World::releaseHeldForces(double h, int next) {
+    // The solver takes the held forces of the contacts it has (found again at the frame's start,
+    // their impulses carried over) as the part of its warm start the method's step has applied
+    // already. A force held for a contact that is gone (a body lifted off) is taken back here:
+    // its share of the step, h·W·F on the velocities and positionWeight·h² on the positions
+    // (the method's response to a constant force). A joint's answer to the held force stays: a
+    // cart rests on its wheels in the method's step too.
+    if (!holding_) return;
+    Vec& q = q_[next];
+    Vec& u = u_[next];
+    heldForce_ *= -1.0;  // what the solver's contacts do not account for: held − accounted
+    contacts_->solver().addHeldForces(heldForce_);
+    const double weight = integrator_->info().positionWeight * h;
+    for (int i = 0; i < static_cast<int>(heldForce_.size()); ++i) {
+        if (heldForce_[i] == 0.0) continue;
+        const double dv = -h * invMass_[i] * heldForce_[i];
+        u[i] -= dv;
+        q[i] -= weight * dv;
+    }
+}
+
+void World::solveConstraints(double h, int collideSubsteps, int next, StageTimer& timer) {
+    // The held forces' share of the method's kinetic energy, read where the method's velocities
+    // are its own: straight after it, or after the joints' projection for a method that takes
+    // their force at the step's end (there it is the method's constraint force).
+    const bool constraintsAtEnd = integrator_->info().constraintsAtEnd;
+    if (!constraintsAtEnd) bookHeldWork(h, next);
+    if (joints_) {
+        // The joints complete the method's step before anything else moves the bodies (SHAKE,
+        // the velocities onto the tangent, the motors): what they change is booked as the
+        // joints' own, and SHAKE answers only the method's drift.
+        timer.start(StepStage::SolveJoints);
+        solveJoints(h, next);
+    }
+    if (constraintsAtEnd) bookHeldWork(h, next);
+    if (!contacts_ || penalty_) {
+        holding_ = false;
+        return;
+    }
+    // The contacts' booking starts from the method's end: a held force that holds a body
+    // where it is books nothing.
+    const double before = mechanicalEnergy(q_[next], u_[next]);
+    if (collideSubsteps > 0) {
+        // Once per frame, after the first sub-step shows where the bodies are heading.
+        timer.start(StepStage::Collide);
+        collide(next, collideSubsteps);
+    }
+    timer.start(StepStage::SolveContacts);
+    const bool held = holding_;
+    releaseHeldForces(h, next);
+    holding_ = false;
+    // Contacts move jointed bodies apart, and the joints answer (rejoin()): the two trade
+    // energy back and forth, and what counts is their net change, booked once after both:
+    // taken out, work_nc; put in, correction.
+    const bool kinematic = settings_.contactModel == ContactModel::Kinematic;
+    const bool both = joints_ && (kinematic || contacts_->touching());
+    const EnergyLedger booked = ledger_;
+    if (both) {
+        beforeContactsQ_ = q_[next];  // same sizes after the first: no allocation
+        beforeContactsU_ = u_[next];
+    }
+    if (kinematic)
+        solveKinematic(next);
+    else
+        solveContacts(h, next, before, held);
+    if (!both) return;
+    timer.start(StepStage::SolveJoints);
+    // Where the contacts moved nothing (every point speculative or already separating), the
+    // joints' state stands as solveJoints() left it: a relax asks no more of a contact than
+    // the solve did, so the rounds would change nothing either.
+    if (!sameBits(beforeContactsQ_, q_[next]) || !sameBits(beforeContactsU_, u_[next]))
+        rejoin(next);
+    const double after = mechanicalEnergy(q_[next], u_[next]);
+    if (std::isfinite(after)) {
+        const double net = after - before + heldWork_;
+        ledger_.workNc = booked.workNc + std::min(net, 0.0);
+        ledger_.correction = booked.correction + std::max(net, 0.0);
+    }
+}
+
+void World::solveContacts(double h, int next, double before, bool held) {
+    // The impulses and a bounded position correction answer what the held forces did not. What
+    // they change (with the motion they cause), and the held forces' work in the method's step,
+    // is physical work only where it takes energy out
+    // (friction, restitution losses, an inelastic normal impulse): a contact cannot do positive
+    // work. Energy the stage puts in is the solver's own, booked in correction with the
+    // push-out that removes overlap (CONTRACT §6): a pile solved short of convergence is never
+    // work_nc.
     const auto start = ProfileClock::now();
     Vec& q = q_[next];
     Vec& u = u_[next];
-    const double before = mechanicalEnergy(q, u);
     contacts_->solveStep(h, q_[current_], u_[current_], q, u, settings_.contacts,
-                         integrator_->info().positionWeight);
+                         integrator_->info().positionWeight, held);
     const double after = mechanicalEnergy(q, u);
     withoutPushOut_ = q;
     contacts_->addPushOut(withoutPushOut_, -1.0);
     const double unpushed = mechanicalEnergy(withoutPushOut_, u);
     effectSeconds_.back() += secondsSince(start);
     if (!std::isfinite(after)) return;  // the guard reports it
-    const double impulses = unpushed - before;
+    const double impulses = unpushed - before + heldWork_;
     ledger_.workNc += std::min(impulses, 0.0);
     ledger_.correction += (after - unpushed) + std::max(impulses, 0.0);
 }

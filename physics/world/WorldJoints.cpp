@@ -111,7 +111,8 @@ void World::solveJoints(double h, int next) {
     // (correction); a motor's push is work.
     Vec& q = q_[next];
     Vec& u = u_[next];
-    const bool shaken = joints_->shake(h, q_[current_], u_[current_], q, u, invMass_);
+    const bool shaken = joints_->shake(h, q_[current_], u_[current_], q, u, invMass_,
+                                       integrator_->info().constraintsAtEnd);
     const double beforeCorrection = mechanicalEnergy(q, u);
     double afterCorrection = beforeCorrection;
     // A converged SHAKE has left the equalities on C = 0: only inequalities can remain.
