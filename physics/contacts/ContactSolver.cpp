@@ -150,7 +150,6 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     supports_.reserve(constraints);
     for (auto* perPoint : {&shifted_, &bounces_}) perPoint->reserve(2 * constraints);
     separation_.reserve(2 * constraints);
-    lastForce_.reserve(2 * constraints);
     // Each colour's last wide row may be partly empty.
     wide_.reserve(constraints / 4 + kColours);
     order_.reserve(constraints + 4 * kColours);
@@ -207,7 +206,7 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
             setup.compliance[k] = soft.impulseScale / (soft.massScale * p.normalMass);
             r.normalImpulse = warmScale * p.normalImpulse;
             r.tangentImpulse = warmScale * p.tangentImpulse;
-            const Vec2 held = holding_ ? Vec2(h * heldForceOf(c, p)) : Vec2::Zero();
+            const Vec2 held = holding_ ? Vec2(h * heldForceOf(p)) : Vec2::Zero();
             setup.heldNormal[k] = held.x();
             setup.heldTangent[k] = held.y();
         }
@@ -670,14 +669,17 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     // the solver adds to it only what the contact impulses change.
     const bool lengthsKnown = lastInnerH_ > 0.0 && lastStepH_ > 0.0;
     holding_ = holding && lengthsKnown;
-    // The force each point's last impulses stood for, the next step's `last` (kept at the end,
-    // since the held forces of this step read the present one).
-    lastForce_.resize(2 * constraints_.size());
-    for (std::size_t i = 0; i < constraints_.size(); ++i)
-        for (int k = 0; k < 2; ++k)
-            lastForce_[2 * i + k] = lengthsKnown && k < constraints_[i].pointCount
-                                        ? forceOf(constraints_[i].points[k])
-                                        : Vec2::Zero();
+    // The force the last step's impulses stood for becomes the bound of the next held force
+    // (its own held force, read below, is already set).
+    const double perSubstep = lengthsKnown ? 1.0 / lastInnerH_ : 0.0;
+    const double perStep = lengthsKnown ? 1.0 / lastStepH_ : 0.0;
+    for (ContactConstraint& c : constraints_)
+        for (int k = 0; k < c.pointCount; ++k) {
+            ContactPoint& p = c.points[k];
+            const Vec2 force = forceOf(p, perSubstep, perStep);
+            p.lastNormal = static_cast<float>(force.x());
+            p.lastTangent = static_cast<float>(force.y());
+        }
     loadBodies(q0, u0, u);
     holdBodies(h);
     const int base = innerSubsteps(h, settings);
@@ -756,16 +758,15 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     }
 
     deepPushOut(h, settings);
-    keepImpulses();  // the accumulated impulses, for the next step's warm start
+    storeImpulses();  // the accumulated impulses, for the next step's warm start
     lastStepH_ = h;
-    for (std::size_t i = 0; i < constraints_.size(); ++i)
-        for (int k = 0; k < constraints_[i].pointCount; ++k) {
-            ContactPoint& p = constraints_[i].points[k];
+    for (ContactConstraint& c : constraints_)
+        for (int k = 0; k < c.pointCount; ++k) {
+            ContactPoint& p = c.points[k];
             p.solvedNormal = p.normalImpulse;
             p.solvedTangent = p.tangentImpulse;
-            p.lastNormal = lastForce_[2 * i + k].x();
-            p.lastTangent = lastForce_[2 * i + k].y();
         }
+    refreshHeld();
 
     // A force held over the step moves a body by positionWeight·h·Δv under the user's method;
     // inner sub-stepping moved it by (n + 1)/(2n)·h·Δv. Moving it by the difference keeps a
@@ -822,7 +823,7 @@ void ContactSolver::relaxVelocities(Vec& u, int iterations) {
     }
 }
 
-void ContactSolver::keepImpulses() {
+void ContactSolver::storeImpulses() {
     for (std::size_t i = 0; i < constraints_.size(); ++i) {
         ContactConstraint& c = constraints_[i];
         for (int k = 0; k < c.pointCount; ++k) {
@@ -869,17 +870,14 @@ void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
     }
 }
 
-Vec2 ContactSolver::forceOf(const ContactPoint& p) const {
-    // The solve's impulses act once per inner sub-step; what relaxVelocities() added after it
+Vec2 ContactSolver::forceOf(const ContactPoint& p, double perSubstep, double perStep) {
+    // The solve's impulses act once per inner sub-step, what relaxVelocities() added after it
     // (the joints' rounds) once per step.
-    const double fn =
-        p.solvedNormal / lastInnerH_ + (p.normalImpulse - p.solvedNormal) / lastStepH_;
-    const double ft =
-        p.solvedTangent / lastInnerH_ + (p.tangentImpulse - p.solvedTangent) / lastStepH_;
-    return {fn, ft};
+    return {perSubstep * p.solvedNormal + perStep * (p.normalImpulse - p.solvedNormal),
+            perSubstep * p.solvedTangent + perStep * (p.tangentImpulse - p.solvedTangent)};
 }
 
-Vec2 ContactSolver::heldForceOf(const ContactConstraint& c, const ContactPoint& p) const {
+void ContactSolver::refreshHeld() {
     // A resting contact's force is the same step after step; an impact's is there in one step
     // only (a body caught in the last inner sub-step). Held over the next step as the lesser of
     // the last two, an impact is never held: the solver meets it as before, from the smooth
@@ -888,28 +886,35 @@ Vec2 ContactSolver::heldForceOf(const ContactConstraint& c, const ContactPoint& 
     // the push-out's, which acts on positions only. Nor, where two bodies that joints hold
     // touch (a chain folding onto itself), is it the contact's alone: the joints answer it
     // within the step, so it is left to the solve after it, as an impact is.
-    if (p.baseSeparation < -c.deepOverlap) return Vec2::Zero();
-    if (c.bodyA >= 0 && c.bodyB >= 0 && bodies_[c.bodyA].jointed && bodies_[c.bodyB].jointed)
-        return Vec2::Zero();
-    const Vec2 now = forceOf(p);
-    const double normal = std::clamp(now.x(), 0.0, std::max(p.lastNormal, 0.0));
-    const double tangent =
-        now.y() * p.lastTangent > 0.0
-            ? std::copysign(std::min(std::abs(now.y()), std::abs(p.lastTangent)), now.y())
-            : 0.0;
-    return {normal, tangent};
+    if (!(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) return;
+    const double perSubstep = 1.0 / lastInnerH_, perStep = 1.0 / lastStepH_;
+    for (std::size_t i = 0; i < constraints_.size(); ++i) {
+        ContactConstraint& c = constraints_[i];
+        const bool held =
+            !(c.bodyA >= 0 && c.bodyB >= 0 && bodies_[c.bodyA].jointed && bodies_[c.bodyB].jointed);
+        for (int k = 0; k < c.pointCount; ++k) {
+            ContactPoint& p = c.points[k];
+            p.heldNormal = p.heldTangent = 0.0;
+            // Where the solver's path has left it (separation_ is of these rows).
+            if (!held || separation_[2 * i + k] < -c.deepOverlap) continue;
+            const Vec2 force = forceOf(p, perSubstep, perStep);
+            p.heldNormal = std::clamp(force.x(), 0.0, std::max(double(p.lastNormal), 0.0));
+            if (force.y() * p.lastTangent > 0.0)
+                p.heldTangent = std::copysign(
+                    std::min(std::abs(force.y()), std::abs(double(p.lastTangent))), force.y());
+        }
+    }
 }
 
 bool ContactSolver::addHeldForces(Vec& force) const {
-    if (constraints_.empty() || !(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) return false;
     bool any = false;
     for (const ContactConstraint& c : constraints_) {
         const Vec2 t = tangentOf(c.normal);
         for (int k = 0; k < c.pointCount; ++k) {
             const ContactPoint& p = c.points[k];
-            if (p.normalImpulse == 0.0 && p.tangentImpulse == 0.0) continue;
+            if (p.heldNormal == 0.0 && p.heldTangent == 0.0) continue;
             any = true;
-            const Vec2 held = heldForceOf(c, p);
+            const Vec2 held = heldForceOf(p);
             const Vec2 f = held.x() * c.normal + held.y() * t;
             if (c.bodyA >= 0) {
                 const SolverBody& a = bodies_[c.bodyA];
@@ -936,8 +941,8 @@ void ContactSolver::holdBodies(double h) {
         const Vec2 t = tangentOf(c.normal);
         for (int k = 0; k < c.pointCount; ++k) {
             const ContactPoint& p = c.points[k];
-            if (p.normalImpulse == 0.0 && p.tangentImpulse == 0.0) continue;
-            const Vec2 held = heldForceOf(c, p);
+            if (p.heldNormal == 0.0 && p.heldTangent == 0.0) continue;
+            const Vec2 held = heldForceOf(p);
             const Vec2 f = h * (held.x() * c.normal + held.y() * t);
             if (c.bodyA >= 0) {
                 SolverBody& a = bodies_[c.bodyA];

@@ -96,9 +96,11 @@ struct ContactPoint {
     // Of those, what the last inner sub-step's solve and relax gave (per inner sub-step); the
     // rest came from relaxVelocities() after the step, once for the whole step.
     double solvedNormal = 0.0, solvedTangent = 0.0;
-    // The force the step before the last stood for (heldForceOf()): a contact's force is held
-    // over a step only as far as it held in both (an impact's lasts one).
-    double lastNormal = 0.0, lastTangent = 0.0;
+    // The force the impulses of the step before the last stood for (a bound for the held force:
+    // single precision is enough), and the force held over the next step (refreshHeld()), each
+    // along the normal and the tangent.
+    float lastNormal = 0.0f, lastTangent = 0.0f;
+    double heldNormal = 0.0, heldTangent = 0.0;
     std::uint32_t id = 0;
 };
 
@@ -146,8 +148,11 @@ public:
     // last.
     void relaxVelocities(Vec& u, int iterations);
     // Keeps the rows' accumulated impulses in the constraints, for the next step's warm start
-    // (solveStep does; call after the last relaxVelocities).
-    void keepImpulses();
+    // and held forces (solveStep does; call after the last relaxVelocities).
+    void keepImpulses() {
+        storeImpulses();
+        refreshHeld();
+    }
     bool empty() const { return constraints_.empty(); }
     // The contact forces the kept impulses stand for, held over the next step (Box2D's warm
     // start, taken into the method's step as a force): per state index, each point's impulse
@@ -276,7 +281,6 @@ private:
     std::vector<Row> rows_;           // per constraint, in constraints_'s order
     std::vector<RowSetup> setup_;     // likewise
     std::vector<double> separation_;  // per row point (2 per row), where the path is now
-    std::vector<Vec2> lastForce_;     // per row point: solveStep's forceOf() at its start
     std::vector<WideRow> wide_;       // the coloured rows, colour by colour
     std::vector<int> slot_;           // per row: 4·wide row + lane, or −1 (solved alone)
     std::vector<int> order_;          // per wide slot: its row, or −1 (the sweep order)
@@ -306,10 +310,15 @@ private:
     };
     std::vector<Support> supports_;
     std::vector<Vec2> deepShift_;  // per body (+ the static world): deepPushOut's displacement
-    // The force a point's impulses of the last step stood for, along its normal and tangent;
-    // and the force held over the next step: the lesser of that and the step's before.
-    Vec2 forceOf(const ContactPoint& p) const;
-    Vec2 heldForceOf(const ContactConstraint& c, const ContactPoint& p) const;
+    // The force a point's kept impulses stand for, along its normal and tangent.
+    // (perSubstep and perStep: 1 over the last step's inner sub-step and step).
+    static Vec2 forceOf(const ContactPoint& p, double perSubstep, double perStep);
+    // Each point's force held over the next step (ContactPoint), from the kept impulses: at the
+    // end of solveStep and after relaxVelocities (keepImpulses()).
+    void refreshHeld();
+    // The accumulated impulses into the constraints.
+    void storeImpulses();
+    static Vec2 heldForceOf(const ContactPoint& p) { return {p.heldNormal, p.heldTangent}; }
     // Per body, the held forces' share of the smooth step's change (after loadBodies).
     void holdBodies(double h);
     double lastInnerH_ = 0.0;  // the last step's inner sub-step (its impulses are per one)

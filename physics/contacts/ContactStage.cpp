@@ -324,6 +324,19 @@ bool ContactStage::narrowPhasePlane(int k, int i, double margin, Manifold& m,
                                                : collidePlaneBox(plane, boxes_[i], margin, m);
 }
 
+void ContactStage::sortByKey(std::vector<ContactConstraint>& constraints) {
+    // By their keys alone, then each constraint moved once: a constraint is a few hundred bytes,
+    // which the sort itself would move a dozen times each.
+    keyOrder_.clear();
+    for (std::size_t i = 0; i < constraints.size(); ++i)
+        keyOrder_.emplace_back(constraints[i].key, static_cast<int>(i));
+    if (std::is_sorted(keyOrder_.begin(), keyOrder_.end())) return;
+    std::sort(keyOrder_.begin(), keyOrder_.end());
+    sorted_.clear();
+    for (const auto& entry : keyOrder_) sorted_.push_back(constraints[entry.second]);
+    std::swap(constraints, sorted_);
+}
+
 void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u,
                            const Vec& uNext, double frameFraction, double dt,
                            const ContactSettings& settings) {
@@ -364,7 +377,7 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
 
     // Warm start: carry the impulses of persisting contacts (same shapes, same features).
     std::vector<ContactConstraint>& now = solver_.constraints();
-    std::sort(now.begin(), now.end(), [](const auto& x, const auto& y) { return x.key < y.key; });
+    sortByKey(now);
     auto old = previous_.begin();
     for (ContactConstraint& c : now) {
         while (old != previous_.end() && old->key < c.key) ++old;
@@ -379,6 +392,8 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
                     c.points[k].solvedTangent = old->points[l].solvedTangent;
                     c.points[k].lastNormal = old->points[l].lastNormal;
                     c.points[k].lastTangent = old->points[l].lastTangent;
+                    c.points[k].heldNormal = old->points[l].heldNormal;
+                    c.points[k].heldTangent = old->points[l].heldTangent;
                 }
     }
     // Bodies' masses, now that the solver body list is complete.

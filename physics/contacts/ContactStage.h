@@ -141,6 +141,10 @@ private:
     std::vector<double> planeFriction_, planeRestitution_;
     std::vector<int> bodyOfCollider_;  // solver body index in this step, −1 none yet
     std::vector<ContactConstraint> previous_;
+    // Sorts constraints by key (the pair), for matching them with previous_.
+    void sortByKey(std::vector<ContactConstraint>& constraints);
+    std::vector<std::pair<std::uint64_t, int>> keyOrder_;
+    std::vector<ContactConstraint> sorted_;
     std::vector<TouchingManifold> touching_;
     // Collider pairs (lower index first, as one key) held by a joint: they never collide.
     std::vector<std::uint64_t> jointedPairs_;
