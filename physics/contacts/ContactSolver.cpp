@@ -877,6 +877,24 @@ Vec2 ContactSolver::forceOf(const ContactPoint& p, double perSubstep, double per
             perSubstep * p.solvedTangent + perStep * (p.tangentImpulse - p.solvedTangent)};
 }
 
+void ContactSolver::primeHeld() {
+    // Only where a body was placed touching (within a hundredth of the deep overlap): a force
+    // that pushes bodies started inside each other apart is the push-out's, not a support's.
+    if (!(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) return;
+    const double perSubstep = 1.0 / lastInnerH_, perStep = 1.0 / lastStepH_;
+    for (ContactConstraint& c : constraints_)
+        for (int k = 0; k < c.pointCount; ++k) {
+            ContactPoint& p = c.points[k];
+            const bool placed = p.baseSeparation >= -0.01 * c.deepOverlap;
+            const Vec2 force = placed ? forceOf(p, perSubstep, perStep) : Vec2::Zero();
+            if (!placed)  // nor does the trial warm-start them: the step meets them afresh
+                p.normalImpulse = p.tangentImpulse = p.solvedNormal = p.solvedTangent = 0.0;
+            p.lastNormal = static_cast<float>(force.x());
+            p.lastTangent = static_cast<float>(force.y());
+        }
+    refreshHeld();
+}
+
 void ContactSolver::refreshHeld() {
     // A resting contact's force is the same step after step; an impact's is there in one step
     // only (a body caught in the last inner sub-step). Held over the next step as the lesser of

@@ -316,6 +316,13 @@ private:
     // Each point's force held over the next step (ContactPoint), from the kept impulses: at the
     // end of solveStep and after relaxVelocities (keepImpulses()).
     void refreshHeld();
+
+public:
+    // After a trial solve of a first step (World::primeContactForces): each point's force is
+    // held over the next step as it is, with no step before it to bound it.
+    void primeHeld();
+
+private:
     // The accumulated impulses into the constraints.
     void storeImpulses();
     static Vec2 heldForceOf(const ContactPoint& p) { return {p.heldNormal, p.heldTangent}; }

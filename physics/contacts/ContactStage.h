@@ -65,6 +65,15 @@ public:
     // More relax iterations after the step (ContactSolver::relaxVelocities).
     void relaxVelocities(Vec& u, int iterations) { solver_.relaxVelocities(u, iterations); }
     void keepImpulses() { solver_.keepImpulses(); }
+    void primeHeld() { solver_.primeHeld(); }
+    // Whether some contact overlaps deeper than its deepOverlap (bodies started inside each
+    // other).
+    bool anyDeepOverlap() const {
+        for (const ContactConstraint& c : solver_.constraints())
+            for (int k = 0; k < c.pointCount; ++k)
+                if (c.points[k].baseSeparation < -c.deepOverlap) return true;
+        return false;
+    }
     // Drops the impulse solver's constraints and warm start (another contact model runs).
     void forgetSolver() {
         solver_.constraints().clear();

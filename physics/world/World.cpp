@@ -517,6 +517,7 @@ bool World::step() {
     guard_.beginFrame(clock_, ledger_, q_[current_], u_[current_], substeps > 1);
     StageTimer timer(profile_);
     ++profile_.steps;
+    primeContactForces(timer);
     StateSummary summary;
     bool summed = false;
     for (int s = 0; s < substeps; ++s) {

@@ -204,6 +204,7 @@ private:
     void addHeldForces(Vec& force) const;
 
     // The stages of step(), in the order they run.
+    void primeContactForces(StageTimer& timer);
     void holdContactForces();
     bool integrate(double t, double h, int next, StateSummary* summary);
     // After the method's step of h into buffer next: the joints, the contacts (found when

@@ -141,6 +141,37 @@ void World::solveKinematic(int next) {
     effectSeconds_.back() += secondsSince(start);
 }
 
+void World::primeContactForces(StageTimer& timer) {
+    // The first step after a load or an edit knows no contact force to hold: a body placed on
+    // the floor would fall into it in the method's step and be pushed back by the solve, and the
+    // books would show both. So the forces are found first by a trial of the frame's first
+    // sub-step from its start (the method, the contacts found and solved), which leaves the
+    // state, the clock, the ledger and the counters as they were; the step then holds them.
+    if (!contacts_ || heldValid_ || settings_.contactModel != ContactModel::Impulse) return;
+    timer.start(StepStage::SolveContacts);
+    const int next = 1 - current_;
+    const int substeps = settings_.substeps;
+    const double h = settings_.dt / substeps;
+    const EnergyLedger ledger = ledger_;
+    const long long evaluations = forceEvaluations_;
+    const std::vector<double> seconds = effectSeconds_;
+    holding_ = false;
+    // Bodies started inside each other (a pile at one point) have no support to find: the trial
+    // stops at the contacts, and the step meets them as it would have.
+    if (integrate(clock_.time, h, next, nullptr)) {
+        collide(next, substeps);
+        if (!contacts_->anyDeepOverlap()) {
+            contacts_->solveStep(h, q_[current_], u_[current_], q_[next], u_[next],
+                                 settings_.contacts, integrator_->info().positionWeight, false);
+            contacts_->primeHeld();
+        }
+    }
+    ledger_ = ledger;
+    forceEvaluations_ = evaluations;
+    effectSeconds_ = seconds;
+    integrator_->reset(layout_.dimension());  // an adaptive method's step history: not the trial's
+}
+
 void World::holdContactForces() {
     // The impulse model's contact forces belong to the method's step (CONTRACT §3): the forces
     // of the last solve (its accumulated impulses per inner sub-step, as Box2D warm-starts them)
