@@ -1,0 +1,123 @@
+// The contact forces held over the method's step (CONTRACT §3: contacts act inside it): each
+// point's force from the last solve, the bound that keeps impacts out, the forces as the world
+// adds them to every evaluation, and their share of the smooth step as the solver takes it.
+#include "physics/contacts/ContactSolver.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace phasebox {
+
+namespace {
+Vec2 tangentOf(const Vec2& n) {
+    return {n.y(), -n.x()};
+}
+}  // namespace
+
+Vec2 ContactSolver::forceOf(const ContactPoint& p, double perSubstep, double perStep) {
+    // The solve's impulses act once per inner sub-step, what relaxVelocities() added after it
+    // (the joints' rounds) once per step.
+    return {perSubstep * p.solvedNormal + perStep * (p.normalImpulse - p.solvedNormal),
+            perSubstep * p.solvedTangent + perStep * (p.tangentImpulse - p.solvedTangent)};
+}
+
+void ContactSolver::primeHeld() {
+    // Only where a body was placed touching (within a hundredth of the deep overlap): a force
+    // that pushes bodies started inside each other apart is the push-out's, not a support's.
+    if (!(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) return;
+    const double perSubstep = 1.0 / lastInnerH_, perStep = 1.0 / lastStepH_;
+    for (ContactConstraint& c : constraints_)
+        for (int k = 0; k < c.pointCount; ++k) {
+            ContactPoint& p = c.points[k];
+            const bool placed = p.baseSeparation >= -0.01 * c.deepOverlap;
+            const Vec2 force = placed ? forceOf(p, perSubstep, perStep) : Vec2::Zero();
+            if (!placed)  // nor does the trial warm-start them: the step meets them afresh
+                p.normalImpulse = p.tangentImpulse = p.solvedNormal = p.solvedTangent = 0.0;
+            p.lastNormal = static_cast<float>(force.x());
+            p.lastTangent = static_cast<float>(force.y());
+        }
+    refreshHeld();
+}
+
+void ContactSolver::refreshHeld() {
+    // A resting contact's force is the same step after step; an impact's is there in one step
+    // only (a body caught in the last inner sub-step). Held over the next step as the lesser of
+    // the last two, an impact is never held: the solver meets it as before, from the smooth
+    // step alone, and the force held is what the contact has shown it keeps up. Nor is an
+    // overlap deeper than a resting stack's (bodies started inside each other): its force is
+    // the push-out's, which acts on positions only. Nor, where two bodies that joints hold
+    // touch (a chain folding onto itself), is it the contact's alone: the joints answer it
+    // within the step, so it is left to the solve after it, as an impact is.
+    if (!(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) return;
+    const double perSubstep = 1.0 / lastInnerH_, perStep = 1.0 / lastStepH_;
+    for (std::size_t i = 0; i < constraints_.size(); ++i) {
+        ContactConstraint& c = constraints_[i];
+        const bool held =
+            !(c.bodyA >= 0 && c.bodyB >= 0 && bodies_[c.bodyA].jointed && bodies_[c.bodyB].jointed);
+        for (int k = 0; k < c.pointCount; ++k) {
+            ContactPoint& p = c.points[k];
+            p.heldNormal = p.heldTangent = 0.0;
+            // Where the solver's path has left it (separation_ is of these rows).
+            if (!held || separation_[2 * i + k] < -c.deepOverlap) continue;
+            const Vec2 force = forceOf(p, perSubstep, perStep);
+            p.heldNormal = std::clamp(force.x(), 0.0, std::max(double(p.lastNormal), 0.0));
+            if (force.y() * p.lastTangent > 0.0)
+                p.heldTangent = std::copysign(
+                    std::min(std::abs(force.y()), std::abs(double(p.lastTangent))), force.y());
+        }
+    }
+}
+
+bool ContactSolver::addHeldForces(Vec& force) const {
+    bool any = false;
+    for (const ContactConstraint& c : constraints_) {
+        const Vec2 t = tangentOf(c.normal);
+        for (int k = 0; k < c.pointCount; ++k) {
+            const ContactPoint& p = c.points[k];
+            if (p.heldNormal == 0.0 && p.heldTangent == 0.0) continue;
+            any = true;
+            const Vec2 held = heldForceOf(p);
+            const Vec2 f = held.x() * c.normal + held.y() * t;
+            if (c.bodyA >= 0) {
+                const SolverBody& a = bodies_[c.bodyA];
+                force.segment<2>(a.dof) -= f;
+                if (a.rotates) force[a.dof + 2] -= cross(p.anchorA, f);
+            }
+            if (c.bodyB >= 0) {
+                const SolverBody& b = bodies_[c.bodyB];
+                force.segment<2>(b.dof) += f;
+                if (b.rotates) force[b.dof + 2] += cross(p.anchorB, f);
+            }
+        }
+    }
+    return any;
+}
+
+void ContactSolver::holdBodies(double h) {
+    for (SolverBody& b : bodies_) {
+        b.heldDv = Vec2::Zero();
+        b.heldDw = 0.0;
+    }
+    if (!holding_) return;
+    for (const ContactConstraint& c : constraints_) {
+        const Vec2 t = tangentOf(c.normal);
+        for (int k = 0; k < c.pointCount; ++k) {
+            const ContactPoint& p = c.points[k];
+            if (p.heldNormal == 0.0 && p.heldTangent == 0.0) continue;
+            const Vec2 held = heldForceOf(p);
+            const Vec2 f = h * (held.x() * c.normal + held.y() * t);
+            if (c.bodyA >= 0) {
+                SolverBody& a = bodies_[c.bodyA];
+                a.heldDv -= a.invMass * f;
+                a.heldDw -= a.invInertia * cross(p.anchorA, f);
+            }
+            if (c.bodyB >= 0) {
+                SolverBody& b = bodies_[c.bodyB];
+                b.heldDv += b.invMass * f;
+                b.heldDw += b.invInertia * cross(p.anchorB, f);
+            }
+        }
+    }
+}
+
+}  // namespace phasebox
