@@ -177,8 +177,8 @@ void World::holdContactForces() {
     // of the last solve (its accumulated impulses per inner sub-step, as Box2D warm-starts them)
     // act in every evaluation as a force held over the step, so a body at rest on its support
     // stays at rest in the method itself, whatever the method, and the method's books show no
-    // error for it. A constant force has no Jacobian and its work (friction on a sliding body)
-    // is integrated like any effect's.
+    // error for it. A constant force has no Jacobian; its work (friction on a sliding body) is
+    // the contacts' (bookHeldWork()).
     holding_ = false;
     if (!heldValid_ || !contacts_ || settings_.contactModel != ContactModel::Impulse) return;
     heldForce_.setZero();
