@@ -68,29 +68,35 @@ void ContactSolver::refreshHeld() {
     }
 }
 
-bool ContactSolver::addHeldForces(Vec& force) const {
+namespace {
+// Calls apply(body, sign, f, arm) for each side of each contact point that holds a force: the
+// solver body's index, −1 for body A and +1 for body B, the point's held force f (on B) and the
+// body's lever arm to the point. Returns whether any point holds one.
+template <class Apply>
+bool forEachHeldForce(const std::vector<ContactConstraint>& constraints, Apply&& apply) {
     bool any = false;
-    for (const ContactConstraint& c : constraints_) {
+    for (const ContactConstraint& c : constraints) {
         const Vec2 t = tangentOf(c.normal);
         for (int k = 0; k < c.pointCount; ++k) {
             const ContactPoint& p = c.points[k];
             if (p.heldNormal == 0.0 && p.heldTangent == 0.0) continue;
             any = true;
-            const Vec2 held = heldForceOf(p);
-            const Vec2 f = held.x() * c.normal + held.y() * t;
-            if (c.bodyA >= 0) {
-                const SolverBody& a = bodies_[c.bodyA];
-                force.segment<2>(a.dof) -= f;
-                if (a.rotates) force[a.dof + 2] -= cross(p.anchorA, f);
-            }
-            if (c.bodyB >= 0) {
-                const SolverBody& b = bodies_[c.bodyB];
-                force.segment<2>(b.dof) += f;
-                if (b.rotates) force[b.dof + 2] += cross(p.anchorB, f);
-            }
+            const Vec2 f = p.heldNormal * c.normal + p.heldTangent * t;
+            if (c.bodyA >= 0) apply(c.bodyA, -1.0, f, p.anchorA);
+            if (c.bodyB >= 0) apply(c.bodyB, 1.0, f, p.anchorB);
         }
     }
     return any;
+}
+}  // namespace
+
+bool ContactSolver::addHeldForces(Vec& force) const {
+    return forEachHeldForce(constraints_,
+                            [&](int body, double sign, const Vec2& f, const Vec2& arm) {
+                                const SolverBody& b = bodies_[body];
+                                force.segment<2>(b.dof) += sign * f;
+                                if (b.rotates) force[b.dof + 2] += sign * cross(arm, f);
+                            });
 }
 
 void ContactSolver::holdBodies(double h) {
@@ -99,25 +105,12 @@ void ContactSolver::holdBodies(double h) {
         b.heldDw = 0.0;
     }
     if (!holding_) return;
-    for (const ContactConstraint& c : constraints_) {
-        const Vec2 t = tangentOf(c.normal);
-        for (int k = 0; k < c.pointCount; ++k) {
-            const ContactPoint& p = c.points[k];
-            if (p.heldNormal == 0.0 && p.heldTangent == 0.0) continue;
-            const Vec2 held = heldForceOf(p);
-            const Vec2 f = h * (held.x() * c.normal + held.y() * t);
-            if (c.bodyA >= 0) {
-                SolverBody& a = bodies_[c.bodyA];
-                a.heldDv -= a.invMass * f;
-                a.heldDw -= a.invInertia * cross(p.anchorA, f);
-            }
-            if (c.bodyB >= 0) {
-                SolverBody& b = bodies_[c.bodyB];
-                b.heldDv += b.invMass * f;
-                b.heldDw += b.invInertia * cross(p.anchorB, f);
-            }
-        }
-    }
+    forEachHeldForce(constraints_, [&](int body, double sign, const Vec2& f, const Vec2& arm) {
+        SolverBody& b = bodies_[body];
+        const Vec2 impulse = h * f;
+        b.heldDv += sign * (b.invMass * impulse);
+        b.heldDw += sign * (b.invInertia * cross(arm, impulse));
+    });
 }
 
 }  // namespace phasebox

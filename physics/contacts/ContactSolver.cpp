@@ -206,7 +206,7 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
             setup.compliance[k] = soft.impulseScale / (soft.massScale * p.normalMass);
             r.normalImpulse = warmScale * p.normalImpulse;
             r.tangentImpulse = warmScale * p.tangentImpulse;
-            const Vec2 held = holding_ ? Vec2(h * heldForceOf(p)) : Vec2::Zero();
+            const Vec2 held = holding_ ? Vec2(h * Vec2(p.heldNormal, p.heldTangent)) : Vec2::Zero();
             setup.heldNormal[k] = held.x();
             setup.heldTangent[k] = held.y();
         }

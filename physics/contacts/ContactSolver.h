@@ -52,7 +52,7 @@ struct ContactSettings {
 struct SolverBody {
     int dof = -1;  // first state index
     bool rotates = false;
-    bool jointed = false;  // a joint holds it (heldForceOf())
+    bool jointed = false;  // a joint holds it (refreshHeld())
     double invMass = 0.0;
     double invInertia = 0.0;
     Vec2 collidePosition = Vec2::Zero();  // where the contacts were found
@@ -155,10 +155,13 @@ public:
     }
     bool empty() const { return constraints_.empty(); }
     // The contact forces the kept impulses stand for, held over the next step (Box2D's warm
-    // start, taken into the method's step as a force): per state index, each point's impulse
-    // over the inner sub-step it acted in, with its torque about the body's centre. Adds them
-    // to force; false when no point carries an impulse.
+    // start, taken into the method's step as a force): per state index, each point's held force
+    // (refreshHeld()) with its torque about the body's centre. Adds them to force; false when
+    // no point holds one.
     bool addHeldForces(Vec& force) const;
+    // After a trial solve of a first step (World::primeContactForces): each point's force is
+    // held over the next step as it is, with no step before it to bound it.
+    void primeHeld();
     // Adds scale times the last step's position correction (push-out) to q.
     void addPushOut(Vec& q, double scale) const;
 
@@ -317,15 +320,8 @@ private:
     // end of solveStep and after relaxVelocities (keepImpulses()).
     void refreshHeld();
 
-public:
-    // After a trial solve of a first step (World::primeContactForces): each point's force is
-    // held over the next step as it is, with no step before it to bound it.
-    void primeHeld();
-
-private:
     // The accumulated impulses into the constraints.
     void storeImpulses();
-    static Vec2 heldForceOf(const ContactPoint& p) { return {p.heldNormal, p.heldTangent}; }
     // Per body, the held forces' share of the smooth step's change (after loadBodies).
     void holdBodies(double h);
     double lastInnerH_ = 0.0;  // the last step's inner sub-step (its impulses are per one)
