@@ -15,7 +15,7 @@ Vec2 tangentOf(const Vec2& n) {
 }  // namespace
 
 Vec2 ContactSolver::forceOf(const ContactPoint& p, double perSubstep, double perStep) {
-    // The solve's impulses act once per inner sub-step, what relaxVelocities() added after it
+    // The solve's impulses act once per inner sub-step, what relaxJoined() added after it
     // (the joints' rounds) once per step.
     return {perSubstep * p.solvedNormal + perStep * (p.normalImpulse - p.solvedNormal),
             perSubstep * p.solvedTangent + perStep * (p.tangentImpulse - p.solvedTangent)};

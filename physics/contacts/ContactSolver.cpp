@@ -801,28 +801,6 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     }
 }
 
-void ContactSolver::relaxVelocities(Vec& u, int iterations) {
-    if (constraints_.empty()) return;
-    const std::size_t count = bodies_.size();
-    for (std::size_t k = 0; k < count; ++k) {
-        const SolverBody& b = bodies_[k];
-        BodyState& s = state_[k];
-        s.vx = u[b.dof];
-        s.vy = u[b.dof + 1];
-        if (b.rotates) s.w = u[b.dof + 2];
-    }
-    for (int it = 0; it < iterations; ++it) solve();
-    unpackImpulses();
-    for (std::size_t k = 0; k < count; ++k) {
-        SolverBody& b = bodies_[k];
-        const BodyState& s = state_[k];
-        if (b.invMass > 0.0) b.stepImpulse += (Vec2(s.vx, s.vy) - u.segment<2>(b.dof)) / b.invMass;
-        u[b.dof] = s.vx;
-        u[b.dof + 1] = s.vy;
-        if (b.rotates) u[b.dof + 2] = s.w;
-    }
-}
-
 void ContactSolver::storeImpulses() {
     for (std::size_t i = 0; i < constraints_.size(); ++i) {
         ContactConstraint& c = constraints_[i];

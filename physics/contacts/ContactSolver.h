@@ -94,7 +94,7 @@ struct ContactPoint {
     double normalImpulse = 0.0;  // accumulated (warm-started)
     double tangentImpulse = 0.0;
     // Of those, what the last inner sub-step's solve and relax gave (per inner sub-step); the
-    // rest came from relaxVelocities() after the step, once for the whole step.
+    // rest came from relaxJoined() after the step, once for the whole step.
     double solvedNormal = 0.0, solvedTangent = 0.0;
     // The force the impulses of the step before the last stood for (a bound for the held force:
     // single precision is enough), and the force held over the next step (refreshHeld()), each
@@ -116,6 +116,16 @@ struct ContactConstraint {
     double deepOverlap = std::numeric_limits<double>::infinity();
     int pointCount = 0;
     ContactPoint points[2];
+};
+
+// The joints as relaxJoined() sees them: x ← x − W·Jᵀ·(J·W·Jᵀ)⁻¹·J·x, a velocity change
+// projected onto their tangent in the mass metric (JointSolver::projectChange).
+class TangentProjection {
+public:
+    virtual void project(Vec& x) const = 0;
+
+protected:
+    ~TangentProjection() = default;
 };
 
 class ContactSolver {
@@ -141,14 +151,17 @@ public:
     // only the rest is applied, and the accumulated impulses start from the whole.
     void solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
                    const ContactSettings& settings, double positionWeight, bool holding);
-    // After solveStep, more relax iterations (no bias) of its last sub-step's rows, from and to
-    // the world's velocities u, the accumulated impulses carrying on. The joint solver
-    // interleaves them with its velocity projections, so that a body both touching and jointed
-    // (a car's wheel, a ragdoll's foot) is held by both at once rather than by whichever acts
-    // last.
-    void relaxVelocities(Vec& u, int iterations);
+    // After solveStep, where contacts touch jointed bodies: the last sub-step's bias-free rows
+    // solved once more, from and to the world's velocities u, in the joints' tangent space, so
+    // that a body both touching and jointed (a car's wheel, a ragdoll's foot) is held by both at
+    // once. Each contact row's impulse moves the bodies by W'·gᵀ, W' = W − W·Jᵀ(J·W·Jᵀ)⁻¹·J·W
+    // the inverse mass with the joints held (the Schur complement of the joint rows): one
+    // projected Gauss-Seidel over the contact rows in which the joints hold exactly at every
+    // update, instead of the two solvers taking turns. u must satisfy the joints on entry (it
+    // does on return, to round-off). The accumulated impulses carry on from the step.
+    void relaxJoined(Vec& u, const TangentProjection& joints);
     // Keeps the rows' accumulated impulses in the constraints, for the next step's warm start
-    // and held forces (solveStep does; call after the last relaxVelocities).
+    // and held forces (solveStep does; call after relaxJoined).
     void keepImpulses() {
         storeImpulses();
         refreshHeld();
@@ -317,15 +330,60 @@ private:
     // (perSubstep and perStep: 1 over the last step's inner sub-step and step).
     static Vec2 forceOf(const ContactPoint& p, double perSubstep, double perStep);
     // Each point's force held over the next step (ContactPoint), from the kept impulses: at the
-    // end of solveStep and after relaxVelocities (keepImpulses()).
+    // end of solveStep and after relaxJoined (keepImpulses()).
     void refreshHeld();
+
+    // relaxJoined(): one scalar row of a contact point (its normal or its tangent), g·u its
+    // bodies' relative velocity along dir at the point. column: its W'·gᵀ over the whole state
+    // in joinedColumns_ (from the first non-zero entry `from` to `to`), −1 where it is W·gᵀ
+    // (neither body jointed: the joints do not reach it) or is projected at each update (past
+    // kJoinedCacheEntries).
+    struct JoinedRow {
+        int row, point;
+        bool normal;
+        int dofA, dofB;  // −1: static
+        bool turnsA, turnsB;
+        double ga[3], gb[3];
+        double wa[3], wb[3];  // each body's inverse masses (x, y, θ)
+        double inverseMass;   // g·W'·gᵀ
+        int column;
+        int from, to;
+        bool jointed;
+        double applied;  // the impulse this solve added
+    };
+    // The largest W'·gᵀ cache, in state entries (64 MiB).
+    static constexpr std::size_t kJoinedCacheEntries = std::size_t{1} << 23;
+    static constexpr int kJoinedSweeps = 64;
+    // A row whose inverse mass with the joints held is below this share of its free one.
+    static constexpr double kJoinedRankFloor = 1e-8;
+    static constexpr double kJoinedTolerance = 1e-9;
+    // The rows' compliance, as a share of their inverse mass: supports that the joints make
+    // redundant (a welded table's four leg corners, a car's wheels on a flat floor) share their
+    // load in the least-norm way instead of the solve handing it from corner to corner between
+    // steps, which the held forces cannot follow (a welded table rocked and slid 0.9 mm in 18 s,
+    // its books 19 mJ each way; at 1% it moves 0.25 mm and books 4 mJ, at 0.1% 11 mJ). A resting
+    // body is left approaching its support at 1% of the relax's answer, which the next step's
+    // soft solve takes up.
+    static constexpr double kJoinedCompliance = 0.01;  // m/s: a sweep that changes no less ends it
+    void buildJoinedRows(const Vec& u, const TangentProjection& joints);
+    double joinedVelocity(const JoinedRow& r, const Vec& u) const;
+    // u += dp·W'·gᵀ of row r.
+    void applyJoined(const JoinedRow& r, double dp, Vec& u, const TangentProjection& joints);
+    // g_r·W'·g_sᵀ.
+    double joinedCoupling(const JoinedRow& r, const JoinedRow& s, const TangentProjection& joints);
+    // W·gᵀ of row r, scaled, into x (x zero there before).
+    void addFreeResponse(const JoinedRow& r, double scale, Vec& x) const;
+    std::vector<JoinedRow> joined_;
+    std::vector<int> joinedStart_;       // per contact row: its first joined row (rows_.size() + 1)
+    std::vector<double> blockCoupling_;  // per contact row: its two normal rows' g₁·W'·g₂ᵀ
+    Vec joinedColumns_, joinedScratch_;
 
     // The accumulated impulses into the constraints.
     void storeImpulses();
     // Per body, the held forces' share of the smooth step's change (after loadBodies).
     void holdBodies(double h);
     double lastInnerH_ = 0.0;  // the last step's inner sub-step (its impulses are per one)
-    double lastStepH_ = 0.0;   // and the step itself (relaxVelocities()' impulses are per one)
+    double lastStepH_ = 0.0;   // and the step itself (relaxJoined()'s impulses are per one)
     int lastSubsteps_ = 0;
     int stepsWantingFewer_ = 0;
     int stepsWantingMore_ = 0;

@@ -62,8 +62,8 @@ public:
                    const ContactSettings& settings, double positionWeight, bool holding) {
         solver_.solveStep(h, q0, u0, q, u, settings, positionWeight, holding);
     }
-    // More relax iterations after the step (ContactSolver::relaxVelocities).
-    void relaxVelocities(Vec& u, int iterations) { solver_.relaxVelocities(u, iterations); }
+    // The relax where contacts meet joints (ContactSolver::relaxJoined).
+    void relaxJoined(Vec& u, const TangentProjection& joints) { solver_.relaxJoined(u, joints); }
     void keepImpulses() { solver_.keepImpulses(); }
     void primeHeld() { solver_.primeHeld(); }
     // Whether some contact overlaps deeper than its deepOverlap (bodies started inside each

@@ -472,11 +472,12 @@ double JointSolver::worstViolation() const {
     return worst;
 }
 
-void JointSolver::solveFor(const Vec& invMass, Vec& x, double scale, bool fromViolation,
-                           const Vec& u) {
+void JointSolver::solveFor(const Vec& invMass, Vec& x, double scale, Target target, const Vec& u) {
     factor(invMass);
     for (int k = 0; k < jointCount(); ++k) {
-        rhs_[k] = fromViolation ? Vec3(-rows_[k].c) : Vec3(rows_[k].target - jTimes(k, u));
+        rhs_[k] = target == Target::Violation ? Vec3(-rows_[k].c)
+                  : target == Target::Rate    ? Vec3(rows_[k].target - jTimes(k, u))
+                                              : Vec3(-jTimes(k, u));
         for (int i = rows_[k].count; i < 3; ++i) rhs_[k][i] = 0.0;
     }
     solve();
@@ -697,7 +698,7 @@ void JointSolver::correctPositions(Vec& q, const Vec& u, const Vec& invMass) {
         if (it > 0 || hasInequalities_ || !rowsAreAt(q)) evaluateRows(Mode::Position, q, u);
         if (worstViolation() <= shakeTolerance_) return;
         Vec& target = q;
-        solveFor(invMass, target, 1.0, true, u);
+        solveFor(invMass, target, 1.0, Target::Violation, u);
     }
 }
 
@@ -716,8 +717,13 @@ bool JointSolver::projectVelocities(const Vec& q, Vec& u, const Vec& invMass, bo
                      (type == Joint::Type::Pulley && rows_[k].count > 1);
     }
     const Vec& v = u;
-    solveFor(invMass, u, 1.0, false, v);
+    solveFor(invMass, u, 1.0, Target::Rate, v);
     return inequality;
+}
+
+void JointSolver::projectChange(Vec& x, const Vec& invMass) {
+    const Vec& v = x;
+    solveFor(invMass, x, 1.0, Target::Zero, v);
 }
 
 double JointSolver::driveMotors(double h, const Vec& q, Vec& u, const Vec& mass,

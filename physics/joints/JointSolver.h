@@ -114,6 +114,9 @@ public:
     // sameQ: q has not changed since the last call (the rows are reused when no inequality can
     // switch with the velocities).
     bool projectVelocities(const Vec& q, Vec& u, const Vec& invMass, bool sameQ = false);
+    // A velocity change x onto the tangent of the rows the last projectVelocities() held:
+    // x ← x − W·Jᵀ·(J·W·Jᵀ)⁻¹·J·x (the contacts' joined relax, ContactSolver::relaxJoined).
+    void projectChange(Vec& x, const Vec& invMass);
     // 4. Motors: a clamped impulse on the hinge's rate (|τ| ≤ max_torque), alternating with
     //    step 3 (Box2D's motor with the joints re-projected). Returns the kinetic energy this
     //    adds or takes: the motors' work.
@@ -238,8 +241,10 @@ private:
     // and a pulley stop's rows go).
     void dropInequalities();
     double worstViolation() const;
-    // Factors, solves J·W·Jᵀ·λ = −C (fromViolation) or −J·u, and adds scale·W·Jᵀ·λ to x.
-    void solveFor(const Vec& invMass, Vec& x, double scale, bool fromViolation, const Vec& u);
+    // Factors, solves J·W·Jᵀ·λ = −C (Target::Violation), target − J·u (Target::Rate) or −J·u
+    // (Target::Zero), and adds scale·W·Jᵀ·λ to x.
+    enum class Target { Violation, Rate, Zero };
+    void solveFor(const Vec& invMass, Vec& x, double scale, Target target, const Vec& u);
     // J·x for joint k's rows (x a state-sized vector).
     Vec3 jTimes(int k, const Vec& x) const;
     // add(dof, W[dof], (Jᵀ·λ)[dof]) over every joint's dynamic ends (W = M⁻¹).

@@ -264,7 +264,6 @@ private:
     std::unique_ptr<JointSolver> joints_;
     Vec jointScratch_;
     Vec unappliedJointForce_;  // constrainJoints() under a method that takes them at the end
-    Vec roundStart_;           // the velocities before a contact-joint round (rejoin)
     Vec beforeContactsQ_, beforeContactsU_;  // the state the contacts start from (step)
     // The joints' sub-steps per frame (jointSubstepsForFrame()): for turning, held since when,
     // and for the pull of their forces, held since when, and the most needed since then.

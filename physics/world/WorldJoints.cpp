@@ -12,8 +12,6 @@
 namespace phasebox {
 
 namespace {
-// Rounds of contact relax and joint projection after a step that has both (rejoin()).
-constexpr int kJointContactRounds = 32;
 // Seconds a joint sub-step count is held after the need for it has passed
 // (jointSubstepsForFrame()).
 constexpr double kJointSubstepHold = 2.0;
@@ -27,8 +25,16 @@ constexpr double kJointStabilityShare = 0.5;
 // midpoint in its fourth step; at a quarter, both weights held over 30 s under velocity
 // Verlet, RK4 and implicit midpoint, their drift within 9 J (jointSubstepsForFrame()).
 constexpr double kPulledStabilityShare = 0.25;
-// A round that changes no velocity by more than this (m/s, rad/s) ends them.
-constexpr double kRoundTolerance = 1e-9;
+// The joints as the contacts' joined relax sees them (rejoin()).
+class JointTangent final : public TangentProjection {
+public:
+    JointTangent(JointSolver& joints, const Vec& invMass) : joints_(joints), invMass_(invMass) {}
+    void project(Vec& x) const override { joints_.projectChange(x, invMass_); }
+
+private:
+    JointSolver& joints_;
+    const Vec& invMass_;
+};
 }  // namespace
 
 int World::jointSubstepsForFrame() {
@@ -132,22 +138,15 @@ void World::solveJoints(double h, int next) {
 
 void World::rejoin(int next) {
     // After the contacts: the joints back onto what the contacts moved (positions, then
-    // velocities), then block Gauss-Seidel between the two solvers, each exact or converged on
-    // its own, so that neither undoes the other (a wheel on the ground is held up by the
-    // contact and to the car by the hinge). step() books the net of contacts and joints.
+    // velocities), then one solve of both: the contacts' relax rows with the joint rows
+    // eliminated (ContactSolver::relaxJoined), so that a wheel on the ground is held up by the
+    // contact and to the car by the hinge at once. step() books the net of contacts and joints.
     Vec& q = q_[next];
     Vec& u = u_[next];
     joints_->correctPositions(q, u, invMass_);
     joints_->projectVelocities(q, u, invMass_);
     if (!contacts_->touching()) return;
-    // Until a round changes no velocity by more than kRoundTolerance: a chain whose links only
-    // lie near each other settles in a round or two, a car on its wheels takes more.
-    for (int round = 0; round < kJointContactRounds; ++round) {
-        roundStart_ = u;
-        contacts_->relaxVelocities(u, 2);
-        joints_->projectVelocities(q, u, invMass_, true);
-        if ((u - roundStart_).lpNorm<Eigen::Infinity>() <= kRoundTolerance) break;
-    }
+    contacts_->relaxJoined(u, JointTangent(*joints_, invMass_));
     contacts_->keepImpulses();
 }
 
