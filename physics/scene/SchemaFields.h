@@ -1,7 +1,8 @@
 #pragma once
-// What the schema's table files share (SceneSchema.cpp, JointSchema.cpp): the property
-// editor's ranges, the ranges of the format, the fields every kind spells the same way, and
-// the macro that defines a kind's tableOf(). Private to physics/scene.
+// What the schema's table files share (SceneSchema.cpp, EffectSchema.cpp, ObjectSchema.cpp,
+// JointSchema.cpp): the property editor's ranges, the ranges of the format, the fields every
+// kind spells the same way, and the macro that defines a kind's tableOf(). Private to
+// physics/scene.
 
 #include "physics/scene/SceneSchema.h"
 
