@@ -42,6 +42,10 @@ WideLoop chooseWideLoop() {
 const WideLoop wideLoop = chooseWideLoop();
 }  // namespace
 
+bool ContactSolver::sweepsWide() {
+    return wideLoop != nullptr;
+}
+
 namespace {
 Vec2 tangentOf(const Vec2& n) {
     return {n.y(), -n.x()};
@@ -243,126 +247,6 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
     bounces_.resize(2 * rows_.size());
     changedAt_.resize(bodies_.size() + 1);
     colourRows();
-}
-
-void ContactSolver::colourRows() {
-    // Box2D v3's graph colouring: each row takes the first colour none of whose rows shares a
-    // dynamic body with it (the static world is shared freely); rows no colour can take are
-    // solved alone after the coloured ones. Colour by colour, in the constraints' order: the
-    // sweep order is fixed, so the results are the same run to run.
-    const std::size_t bodyCount = bodies_.size();
-    const int world = static_cast<int>(bodyCount);
-    const std::size_t words = (bodyCount + 63) / 64;
-    colourBits_.assign(kColours * words, 0);
-    colourCount_.assign(kColours + 1, 0);
-    slot_.resize(rows_.size());
-    overflow_.clear();
-    auto taken = [&](int colour, int body) {
-        return body != world && (colourBits_[colour * words + body / 64] >> (body % 64) & 1u) != 0;
-    };
-    auto take = [&](int colour, int body) {
-        if (body != world)
-            colourBits_[colour * words + body / 64] |= std::uint64_t{1} << (body % 64);
-    };
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        const Row& c = rows_[i];
-        int colour = 0;
-        while (colour < kColours && (taken(colour, c.a) || taken(colour, c.b))) ++colour;
-        if (colour == kColours) {
-            slot_[i] = -1;
-            overflow_.push_back(static_cast<int>(i));
-            continue;
-        }
-        take(colour, c.a);
-        take(colour, c.b);
-        slot_[i] = colour;  // the colour for now, the lane below
-        ++colourCount_[colour];
-    }
-    // Each colour starts a new wide row; colourCount_ becomes each colour's next slot.
-    int wideRows = 0;
-    for (int colour = 0; colour < kColours; ++colour) {
-        const int n = colourCount_[colour];
-        colourCount_[colour] = 4 * wideRows;
-        wideRows += (n + 3) / 4;
-    }
-    wide_.resize(wideRows);
-    order_.assign(4 * wideRows, -1);
-    for (WideRow& w : wide_) {
-        w = WideRow{};
-        for (int l = 0; l < 4; ++l) w.a[l] = w.b[l] = world;
-    }
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        if (slot_[i] < 0) continue;
-        const int at = colourCount_[slot_[i]]++;
-        slot_[i] = at;
-        order_[at] = static_cast<int>(i);
-        WideRow& w = wide_[at / 4];
-        const int l = at % 4;
-        const Row& c = rows_[i];
-        const BodyState& a = state_[c.a];
-        const BodyState& b = state_[c.b];
-        w.a[l] = c.a;
-        w.b[l] = c.b;
-        w.nx[l] = c.nx;
-        w.ny[l] = c.ny;
-        w.friction[l] = c.friction;
-        w.mA[l] = a.invMass;
-        w.iA[l] = a.invInertia;
-        w.mB[l] = b.invMass;
-        w.iB[l] = b.invInertia;
-        w.k11[l] = c.k11;
-        w.k12[l] = c.k12;
-        w.k22[l] = c.k22;
-        for (int k = 0; k < 2; ++k) {
-            const RowPoint& p = c.p[k];
-            WideRow::Point& q = w.p[k];
-            q.rAx[l] = p.rAx;
-            q.rAy[l] = p.rAy;
-            q.rBx[l] = p.rBx;
-            q.rBy[l] = p.rBy;
-            q.tangentMass[l] = p.tangentMass;
-        }
-    }
-}
-
-void ContactSolver::packPhase(std::size_t i) {
-    const int at = slot_[i];
-    if (at < 0 || !wideLoop) return;
-    const Row& c = rows_[i];
-    WideRow& w = wide_[at / 4];
-    const int l = at % 4;
-    w.block[l] = c.block ? 1.0 : 0.0;
-    w.a12[l] = c.block ? c.a12 : 0.0;
-    w.i11[l] = c.block ? c.i11 : 0.0;
-    w.i12[l] = c.block ? c.i12 : 0.0;
-    w.i22[l] = c.block ? c.i22 : 0.0;
-    w.invA11[l] = c.block ? c.invA11 : 0.0;
-    w.invA22[l] = c.block ? c.invA22 : 0.0;
-    for (int k = 0; k < 2; ++k) {
-        const RowPoint& p = c.p[k];
-        WideRow::Point& q = w.p[k];
-        const bool used = k < c.pointCount;
-        q.bias[l] = used ? p.bias : 0.0;
-        q.effectiveMass[l] = used ? p.effectiveMass : 0.0;
-        q.impulseScale[l] = used ? p.impulseScale : 0.0;
-        q.normalImpulse[l] = used ? p.normalImpulse : 0.0;
-        q.tangentImpulse[l] = used ? p.tangentImpulse : 0.0;
-    }
-}
-
-void ContactSolver::unpackImpulses() {
-    if (!wideLoop) return;
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        const int at = slot_[i];
-        if (at < 0) continue;
-        Row& c = rows_[i];
-        const WideRow& w = wide_[at / 4];
-        const int l = at % 4;
-        for (int k = 0; k < c.pointCount; ++k) {
-            c.p[k].normalImpulse = w.p[k].normalImpulse[l];
-            c.p[k].tangentImpulse = w.p[k].tangentImpulse[l];
-        }
-    }
 }
 
 void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& settings) {
@@ -578,86 +462,6 @@ void ContactSolver::solveRow(Row& c) {
             applyImpulse(b, p.rBx, p.rBy, impulse * tx, impulse * ty);
         }
     }
-}
-
-int ContactSolver::innerSubsteps(double h, const ContactSettings& settings) {
-    if (settings.substeps > 0) return settings.substeps;
-    // At least kInnerRate sub-steps per second whatever the frame: a soft contact's stiffness
-    // is bounded by a quarter of the sub-step rate, and a stack sags by load/(m·ω²), so the
-    // rate is what holds a tower. The world's own sub-steps count towards it.
-    const int n = static_cast<int>(std::ceil(h * kInnerRate - 1e-9));
-    return std::clamp(n, 1, kMaxInnerSubsteps);
-}
-
-int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& settings) {
-    predictedSag_ = 0.0;
-    if (lastInnerH_ <= 0.0) return base;
-    // A soft contact of frequency ω carries a force F by sinking F/(m·ω²); a body sinks by what
-    // its supports sink plus its own contact's share. Which body rests on which: the smooth
-    // forces of the step (less the held contact forces) press the upper one into the lower one. The
-    // warm-start impulses are per inner sub-step of the last step, so F = λ/h_last.
-    const double baseHertz = std::min(settings.hertz, 0.25 * base / h);
-    const double omega = 2.0 * std::numbers::pi * baseHertz;
-    const int world = static_cast<int>(bodies_.size());
-    // Each contact once: which body rests on which, and by how much the upper one sinks.
-    supports_.clear();
-    supports_.reserve(constraints_.size());  // grown with the contacts, not mid-run
-    for (const ContactConstraint& c : constraints_) {
-        const double w = omega * c.stiffness;
-        double sink = 0.0;
-        for (int k = 0; k < c.pointCount; ++k) {
-            const ContactPoint& p = c.points[k];
-            if (p.normalMass > 0.0) sink += p.normalImpulse / (p.normalMass * w * w);
-        }
-        if (c.pointCount == 0 || !(sink > 0.0)) continue;
-        sink /= c.pointCount * lastInnerH_;
-        const int a = c.bodyA >= 0 ? c.bodyA : world;
-        const int b = c.bodyB >= 0 ? c.bodyB : world;
-        // The normal points from A to B: B rests on A when its smooth push is against n.
-        if (b < world && c.normal.dot(bodies_[b].smoothDv - bodies_[b].heldDv) < 0.0)
-            supports_.push_back({b, a, sink});
-        else if (a < world && c.normal.dot(bodies_[a].smoothDv - bodies_[a].heldDv) > 0.0)
-            supports_.push_back({a, b, sink});
-    }
-    // Down the support chains: a few passes (the contacts come roughly in the broad phase's
-    // order along the stack) until nothing deepens.
-    depth_.assign(bodies_.size() + 1, 0.0);
-    bool changed = true;
-    for (int pass = 0; changed && pass < kMaxSagPasses; ++pass) {
-        changed = false;
-        for (const Support& s : supports_) {
-            const double d = depth_[s.lower] + s.sink;
-            if (d > depth_[s.upper]) {
-                depth_[s.upper] = d;
-                changed = true;
-            }
-        }
-    }
-    for (double d : depth_) predictedSag_ = std::max(predictedSag_, d);
-    if (settings.substeps > 0) return base;
-    // A change of stiffness moves a resting stack to a new rest, so the count follows the
-    // load, not an impact: it rises when the sag has been predicted too deep for a while (by
-    // the least of those predictions) and falls when fewer have sufficed for longer.
-    const int held = std::clamp(lastSubsteps_, base, kMaxInnerSubsteps);
-    const auto needed = [&](double sag) {
-        if (!(sag > kSagTarget)) return base;
-        // The sag falls with the square of the rate (the stiffness rises with it).
-        const double factor = std::sqrt(sag / kSagTarget);
-        return std::min(kMaxInnerSubsteps, static_cast<int>(std::ceil(base * factor)));
-    };
-    const int wanted = needed(predictedSag_);
-    if (wanted > held) {
-        stepsWantingFewer_ = 0;
-        leastDeepSag_ =
-            stepsWantingMore_ == 0 ? predictedSag_ : std::min(leastDeepSag_, predictedSag_);
-        if (++stepsWantingMore_ < kStepsBeforeMore) return held;
-        stepsWantingMore_ = 0;
-        return std::max(held, needed(leastDeepSag_));
-    }
-    stepsWantingMore_ = 0;
-    if (wanted == held || ++stepsWantingFewer_ < kStepsBeforeFewer) return held;
-    stepsWantingFewer_ = 0;
-    return wanted;
 }
 
 void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,

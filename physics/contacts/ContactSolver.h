@@ -278,8 +278,11 @@ private:
     void preparePhase(double h, bool useBias, const ContactSettings& settings);
     void solve();
     void solveRow(Row& c);
-    // Graph colours and the wide rows' step constants (after buildRows).
+    // Graph colours and the wide rows' step constants (after buildRows; ContactColours.cpp).
     void colourRows();
+    // The coloured rows are swept four at a time (AVX2 is there): their impulses live in wide_
+    // during a phase.
+    static bool sweepsWide();
     // The phase's terms of row i into its wide lane.
     void packPhase(std::size_t i);
     // The wide rows' accumulated impulses back into rows_ (after a phase).

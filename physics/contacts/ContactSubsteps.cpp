@@ -1,0 +1,92 @@
+// How many inner sub-steps the contact solver takes in a step: at least kInnerRate a second,
+// and more for a deep stack, whose sag under its load (each contact sinks by its force over its
+// stiffness, summed down the support chains) would otherwise pass kSagTarget.
+#include "physics/contacts/ContactSolver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace phasebox {
+
+int ContactSolver::innerSubsteps(double h, const ContactSettings& settings) {
+    if (settings.substeps > 0) return settings.substeps;
+    // At least kInnerRate sub-steps per second whatever the frame: a soft contact's stiffness
+    // is bounded by a quarter of the sub-step rate, and a stack sags by load/(m·ω²), so the
+    // rate is what holds a tower. The world's own sub-steps count towards it.
+    const int n = static_cast<int>(std::ceil(h * kInnerRate - 1e-9));
+    return std::clamp(n, 1, kMaxInnerSubsteps);
+}
+
+int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& settings) {
+    predictedSag_ = 0.0;
+    if (lastInnerH_ <= 0.0) return base;
+    // A soft contact of frequency ω carries a force F by sinking F/(m·ω²); a body sinks by what
+    // its supports sink plus its own contact's share. Which body rests on which: the smooth
+    // forces of the step (less the held contact forces) press the upper one into the lower one. The
+    // warm-start impulses are per inner sub-step of the last step, so F = λ/h_last.
+    const double baseHertz = std::min(settings.hertz, 0.25 * base / h);
+    const double omega = 2.0 * std::numbers::pi * baseHertz;
+    const int world = static_cast<int>(bodies_.size());
+    // Each contact once: which body rests on which, and by how much the upper one sinks.
+    supports_.clear();
+    supports_.reserve(constraints_.size());  // grown with the contacts, not mid-run
+    for (const ContactConstraint& c : constraints_) {
+        const double w = omega * c.stiffness;
+        double sink = 0.0;
+        for (int k = 0; k < c.pointCount; ++k) {
+            const ContactPoint& p = c.points[k];
+            if (p.normalMass > 0.0) sink += p.normalImpulse / (p.normalMass * w * w);
+        }
+        if (c.pointCount == 0 || !(sink > 0.0)) continue;
+        sink /= c.pointCount * lastInnerH_;
+        const int a = c.bodyA >= 0 ? c.bodyA : world;
+        const int b = c.bodyB >= 0 ? c.bodyB : world;
+        // The normal points from A to B: B rests on A when its smooth push is against n.
+        if (b < world && c.normal.dot(bodies_[b].smoothDv - bodies_[b].heldDv) < 0.0)
+            supports_.push_back({b, a, sink});
+        else if (a < world && c.normal.dot(bodies_[a].smoothDv - bodies_[a].heldDv) > 0.0)
+            supports_.push_back({a, b, sink});
+    }
+    // Down the support chains: a few passes (the contacts come roughly in the broad phase's
+    // order along the stack) until nothing deepens.
+    depth_.assign(bodies_.size() + 1, 0.0);
+    bool changed = true;
+    for (int pass = 0; changed && pass < kMaxSagPasses; ++pass) {
+        changed = false;
+        for (const Support& s : supports_) {
+            const double d = depth_[s.lower] + s.sink;
+            if (d > depth_[s.upper]) {
+                depth_[s.upper] = d;
+                changed = true;
+            }
+        }
+    }
+    for (double d : depth_) predictedSag_ = std::max(predictedSag_, d);
+    if (settings.substeps > 0) return base;
+    // A change of stiffness moves a resting stack to a new rest, so the count follows the
+    // load, not an impact: it rises when the sag has been predicted too deep for a while (by
+    // the least of those predictions) and falls when fewer have sufficed for longer.
+    const int held = std::clamp(lastSubsteps_, base, kMaxInnerSubsteps);
+    const auto needed = [&](double sag) {
+        if (!(sag > kSagTarget)) return base;
+        // The sag falls with the square of the rate (the stiffness rises with it).
+        const double factor = std::sqrt(sag / kSagTarget);
+        return std::min(kMaxInnerSubsteps, static_cast<int>(std::ceil(base * factor)));
+    };
+    const int wanted = needed(predictedSag_);
+    if (wanted > held) {
+        stepsWantingFewer_ = 0;
+        leastDeepSag_ =
+            stepsWantingMore_ == 0 ? predictedSag_ : std::min(leastDeepSag_, predictedSag_);
+        if (++stepsWantingMore_ < kStepsBeforeMore) return held;
+        stepsWantingMore_ = 0;
+        return std::max(held, needed(leastDeepSag_));
+    }
+    stepsWantingMore_ = 0;
+    if (wanted == held || ++stepsWantingFewer_ < kStepsBeforeFewer) return held;
+    stepsWantingFewer_ = 0;
+    return wanted;
+}
+
+}  // namespace phasebox
