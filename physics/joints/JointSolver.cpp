@@ -5,7 +5,6 @@
 #include <limits>
 #include <map>
 #include <set>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -37,7 +36,7 @@ constexpr double kShakeReach = 0.1;
 constexpr double kStiffnessHold = 2.0;
 }  // namespace
 
-// ---- binding: ends and the elimination order ------------------------------------------------
+// ---- binding: ends and the joint graph ----------------------------------------------------
 
 void JointSolver::bind(const Bodies& bodies) {
     joints_ = bodies.joints;
@@ -138,96 +137,23 @@ void JointSolver::bind(const Bodies& bodies) {
         for (const auto& [k1, s1] : list)
             for (const auto& [k2, s2] : list)
                 if (k1 != k2) graph[k1].insert(k2);
-
-    // Minimum-fill elimination (ties: the smaller degree, then the joint that has waited
-    // longest): each eliminated joint's remaining neighbours become a clique (the fill), and
-    // they are the later joints its column of L couples. The joint graph of a chain or tree of
-    // bodies is chordal, so a joint whose neighbours already form a clique (fill 0) always
-    // exists and the order makes no fill at all; minimum degree alone can miss it in a tree.
-    // The longest wait first takes a chain from both its ends in turn (a tree from all its
-    // leaves), so the factorization's and the solves' recurrences run as independent chains
-    // that the processor overlaps: by the smaller index, a 100-hinge chain was one recurrence
-    // from its root, and the solves were a fifth of the whip's time.
-    std::vector<std::vector<int>> later(m);
-    const auto fillOf = [&](int k) {
-        int fill = 0;
-        for (auto x = graph[k].begin(); x != graph[k].end(); ++x)
-            for (auto y = std::next(x); y != graph[k].end(); ++y) fill += !graph[*x].count(*y);
-        return fill;
-    };
-    using Key = std::tuple<int, int, int, int>;  // fill, degree, since, joint
-    std::set<Key> queue;
-    std::vector<Key> key(m);
-    for (int k = 0; k < m; ++k) {
-        key[k] = {fillOf(k), static_cast<int>(graph[k].size()), 0, k};
-        queue.insert(key[k]);
-    }
-    order_.clear();
-    std::vector<int> position(m, -1);
-    while (!queue.empty()) {
-        const int k = std::get<3>(*queue.begin());
-        queue.erase(queue.begin());
-        position[k] = static_cast<int>(order_.size());
-        order_.push_back(k);
-        const std::vector<int> neighbours(graph[k].begin(), graph[k].end());
-        later[k] = neighbours;
-        for (int x : neighbours) graph[x].erase(k);
-        for (std::size_t s = 0; s < neighbours.size(); ++s)
-            for (std::size_t t = s + 1; t < neighbours.size(); ++t)
-                if (graph[neighbours[s]].insert(neighbours[t]).second)
-                    graph[neighbours[t]].insert(neighbours[s]);
-        // The fill of the neighbours and of their neighbours may have changed.
-        std::set<int> touched(neighbours.begin(), neighbours.end());
-        for (int x : neighbours) touched.insert(graph[x].begin(), graph[x].end());
-        const int now = static_cast<int>(order_.size());
-        for (int x : touched) {
-            const int fill = fillOf(x), degree = static_cast<int>(graph[x].size());
-            if (fill == std::get<0>(key[x]) && degree == std::get<1>(key[x])) continue;
-            queue.erase(key[x]);
-            key[x] = {fill, degree, now, x};
-            queue.insert(key[x]);
-        }
-    }
-    upperStart_.assign(m + 1, 0);
-    upper_.clear();
-    for (int p = 0; p < m; ++p) {
-        std::vector<int> list;
-        for (int x : later[order_[p]]) list.push_back(position[x]);
-        std::sort(list.begin(), list.end());
-        upper_.insert(upper_.end(), list.begin(), list.end());
-        upperStart_[p + 1] = static_cast<int>(upper_.size());
-    }
-    const auto blockIndex = [&](int p, int i) {  // block (i, p), i later than p
-        const auto begin = upper_.begin() + upperStart_[p],
-                   end = upper_.begin() + upperStart_[p + 1];
-        return static_cast<int>(std::lower_bound(begin, end, i) - upper_.begin());
-    };
-    updateStart_.assign(m + 1, 0);
-    updates_.clear();
-    for (int p = 0; p < m; ++p) {
-        for (int t1 = upperStart_[p]; t1 < upperStart_[p + 1]; ++t1)
-            for (int t2 = upperStart_[p]; t2 < upperStart_[p + 1]; ++t2) {
-                const int i = upper_[t1], j = upper_[t2];
-                if (i == j)
-                    updates_.push_back({t1, t2, -1});
-                else if (j < i)
-                    updates_.push_back({t1, t2, blockIndex(j, i)});
-            }
-        updateStart_[p + 1] = static_cast<int>(updates_.size());
-    }
+    pattern_.analyse(std::move(graph));
     couplings_.clear();
     for (const auto& [dof, list] : byBody)
         for (const auto& [k1, s1] : list)
             for (const auto& [k2, s2] : list)
-                if (position[k1] > position[k2])
-                    couplings_.push_back({blockIndex(position[k2], position[k1]), k1, s1, k2, s2});
+                if (pattern_.position(k1) > pattern_.position(k2))
+                    couplings_.push_back(
+                        {pattern_.blockIndex(pattern_.position(k2), pattern_.position(k1)), k1, s1,
+                         k2, s2});
     // A weld holds the angle too, and a hinge at a limit: those have three rows.
     blockRows_ = 2;
     for (const Joint& j : joints_)
         if (j.type == Joint::Type::Weld || (j.type == Joint::Type::Hinge && j.hasLimits))
             blockRows_ = 3;
-    factors2_.resize(blockRows_ == 2 ? m : 0, blockRows_ == 2 ? upper_.size() : 0);
-    factors3_.resize(blockRows_ == 3 ? m : 0, blockRows_ == 3 ? upper_.size() : 0);
+    const std::size_t blocks = static_cast<std::size_t>(pattern_.blockCount());
+    factors2_.resize(blockRows_ == 2 ? m : 0, blockRows_ == 2 ? blocks : 0);
+    factors3_.resize(blockRows_ == 3 ? m : 0, blockRows_ == 3 ? blocks : 0);
     rowsChanged();
     factoredValid_ = false;
     rowsQ_.resize(0);
@@ -267,7 +193,7 @@ void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x) const 
     forEachJTranspose(invMass, [&](int dof, double w, double f) { x[dof] += scale * w * f; });
 }
 
-// ---- the block LDLᵀ --------------------------------------------------------------------------
+// ---- J·W·Jᵀ and its block LDLᵀ ------------------------------------------------------------------
 
 void JointSolver::factor(const Vec& invMass) {
     // The same rows as the last factorization: the factors stand.
@@ -282,7 +208,7 @@ void JointSolver::factor(const Vec& invMass) {
 }
 
 template <int B>
-void JointSolver::factorBlocks(Factors<B>& f, const Vec& invMass) {
+void JointSolver::factorBlocks(BlockLdlt<B>& f, const Vec& invMass) {
     using MatB = Eigen::Matrix<double, B, B>;
     const auto weights = [&](const End& e) {
         Vec3 w = Vec3::Zero();
@@ -303,9 +229,9 @@ void JointSolver::factorBlocks(Factors<B>& f, const Vec& invMass) {
     };
     const int m = jointCount();
     for (int p = 0; p < m; ++p) {
-        const int k = order_[p];
+        const int k = pattern_.node(p);
         const Rows& r = rows_[k];
-        MatB& d = f.diag[p];
+        MatB& d = f.diag(p);
         d = product(r.ja, weights(endA_[k]), r.ja) + product(r.jb, weights(endB_[k]), r.jb);
         for (int i = 0; i < B; ++i) {
             if (i >= r.count) {  // an unused row: the identity keeps the block invertible
@@ -319,26 +245,16 @@ void JointSolver::factorBlocks(Factors<B>& f, const Vec& invMass) {
             }
         }
     }
-    for (MatB& o : f.off) o.setZero();
+    f.clearOff();
     for (const Coupling& c : couplings_) {
         const Rows& ri = rows_[c.i];
         const Rows& rk = rows_[c.k];
         const Mat3& ji = c.sideI == 0 ? ri.ja : ri.jb;
         const Mat3& jk = c.sideK == 0 ? rk.ja : rk.jb;
         const End& body = c.sideK == 0 ? endA_[c.k] : endB_[c.k];
-        f.off[c.block] += product(ji, weights(body), jk);
+        f.off(c.block) += product(ji, weights(body), jk);
     }
-    for (int p = 0; p < m; ++p) {
-        f.dinv[p] = f.diag[p].inverse();
-        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) f.l[t] = f.off[t] * f.dinv[p];
-        for (int s = updateStart_[p]; s < updateStart_[p + 1]; ++s) {
-            const Update& up = updates_[s];
-            if (up.target < 0)
-                f.diag[upper_[up.t1]] -= f.l[up.t1] * f.off[up.t1].transpose();
-            else
-                f.off[up.target] -= f.l[up.t1] * f.off[up.t2].transpose();
-        }
-    }
+    f.factor(pattern_);
 }
 
 void JointSolver::solve() {
@@ -349,36 +265,14 @@ void JointSolver::solve() {
 }
 
 template <int B>
-void JointSolver::solveBlocks(Factors<B>& f) {
-    const int m = jointCount();
-    auto& y = f.y;
-    for (int p = 0; p < m; ++p) y[p] = rhs_[order_[p]].template head<B>();
-    // Forward (y[p] is complete once the earlier positions are done), then the diagonal.
-    for (int p = 0; p < m; ++p) {
-        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) y[upper_[t]] -= f.l[t] * y[p];
-        y[p] = f.dinv[p] * y[p];
-    }
-    // Backward (y[p] is final once the later positions are done).
-    for (int p = m - 1; p >= 0; --p) {
-        // In scalars throughout: Eigen's Lᵀ·y went through memory in halves, and a block
-        // written in halves and read back whole stalls the store forwarding (with those two
-        // stalls a joint the solves took a fifth of the whip's time at a tenth of its
-        // instructions).
-        std::array<double, B> yp;
-        for (int i = 0; i < B; ++i) yp[i] = y[p][i];
-        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) {
-            const auto& l = f.l[t];
-            const auto& later = y[upper_[t]];
-            for (int i = 0; i < B; ++i) {
-                double dot = l(0, i) * later[0];
-                for (int j = 1; j < B; ++j) dot += l(j, i) * later[j];
-                yp[i] -= dot;
-            }
-        }
-        Vec3& lambda = lambda_[order_[p]];
-        for (int i = 0; i < B; ++i) y[p][i] = lambda[i] = yp[i];
-        if constexpr (B == 2) lambda[2] = 0.0;
-    }
+void JointSolver::solveBlocks(BlockLdlt<B>& f) {
+    f.solve(
+        pattern_, [&](int p) { return rhs_[pattern_.node(p)].template head<B>(); },
+        [&](int p, const std::array<double, B>& x) {
+            Vec3& lambda = lambda_[pattern_.node(p)];
+            for (int i = 0; i < B; ++i) lambda[i] = x[i];
+            if constexpr (B == 2) lambda[2] = 0.0;
+        });
 }
 
 // ---- constrained dynamics --------------------------------------------------------------------
