@@ -23,6 +23,7 @@
 
 #include "physics/core/Bodies.h"
 #include "physics/core/Types.h"
+#include "physics/joints/JointRows.h"
 #include "physics/linear/BlockLdlt.h"
 
 #include <Eigen/Dense>
@@ -181,31 +182,11 @@ private:
     using Mat3 = Eigen::Matrix3d;
     using Vec3 = Eigen::Vector3d;
 
-    // One end of a joint as the solver sees it.
-    struct End {
-        int dof = -1;         // first state index of a dynamic body; −1 when fixed
-        int slot = -1;        // a turning body's index in rotations_
-        bool turns = false;   // a dynamic rigid body: its third DOF is the angle
-        bool rigid = false;   // a rigid body (dynamic or static): it has an angle
-        Vec2 local{0, 0};     // the point in the body's frame (dynamic rigid body)
-        Vec2 fixed{0, 0};     // the point in the world (a fixed end)
-        double angle0 = 0.0;  // a fixed end's angle
-    };
-    // An end's point and motion at (q, u).
-    struct EndState {
-        Vec2 p{0, 0}, v{0, 0}, arm{0, 0};
-        double angle = 0.0, omega = 0.0;
-    };
-    // The rows of one joint at a state: C, J (for each end: x, y, θ), and J̇·u.
-    struct Rows {
-        int count = 0;
-        Mat3 ja = Mat3::Zero(), jb = Mat3::Zero();
-        Vec3 c = Vec3::Zero(), bias = Vec3::Zero();
-        // Velocity mode: the rate J·u the projection sets each row to (0 but for a pulley's
-        // stop, which lets a side close in at most what it has left to its stop in a step).
-        Vec3 target = Vec3::Zero();
-    };
-    enum class Mode { Dynamics, Position, Velocity };
+    // A joint's ends, their state and its rows (JointRows.h).
+    using End = joints::End;
+    using EndState = joints::EndState;
+    using Rows = joints::Rows;
+    using Mode = joints::Mode;
 
     // cached: take the rotation from cacheRotations() (of this q) instead of cos and sin.
     EndState evaluate(const End& e, const Vec& q, const Vec& u, bool cached = false) const;
@@ -229,8 +210,6 @@ private:
     // The equality rows' C of joint k at q (as rowsOf in Position mode computes it, without
     // the Jacobian), the rotations cached: what each SHAKE iteration needs.
     Vec3 violationOf(int k, const Vec& q) const;
-    // An end's point at q, the rotation cached.
-    Vec2 pointOf(const End& e, const Vec& q) const;
     void evaluateRows(Mode mode, const Vec& q, const Vec& u);
     // λ of the equality rows for the unconstrained acceleration accel (a rope that would
     // push goes slack); keeps forces_.
