@@ -1,11 +1,17 @@
 // The rows of each joint at a state (JointSolver.h): its constraints C, their Jacobian J and
 // J̇·u in each mode, the violations SHAKE iterates on, and what the world reads from them
 // (errors, points). Each type's rows are in its own file (JointRows.h); here the dispatch on
-// the type and what all types share. The solver's factorization and its stages are in
-// JointSolver.cpp.
+// the type. The solver's factorization and its stages are in JointSolver.cpp.
 
 #include "physics/joints/JointRows.h"
+
+#include "physics/joints/HingeJoint.h"
 #include "physics/joints/JointSolver.h"
+#include "physics/joints/PulleyJoint.h"
+#include "physics/joints/RodJoint.h"
+#include "physics/joints/RopeJoint.h"
+#include "physics/joints/TrackJoint.h"
+#include "physics/joints/WeldJoint.h"
 
 #include <algorithm>
 #include <cmath>

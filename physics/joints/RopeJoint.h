@@ -1,3 +1,4 @@
+#pragma once
 // A rope: a rod's row while it is taut and pulling, none while it is slack.
 
 #include "physics/joints/JointRows.h"
@@ -5,7 +6,7 @@
 
 namespace phasebox::joints {
 
-void ropeRows(const RowsInput& in, Rows& r) {
+inline void ropeRows(const RowsInput& in, Rows& r) {
     const double along =
         distanceRow(in, in.b.p, in.b.v, in.b.arm, in.centripetalB, in.joint.length, r);
     // Taut: in the derivative within the taut band (the rope pulls while solveDynamics() finds
@@ -18,7 +19,7 @@ void ropeRows(const RowsInput& in, Rows& r) {
     if (!active) r.count = 0;
 }
 
-Vec3 ropeViolation(const ViolationInput& in) {
+inline Vec3 ropeViolation(const ViolationInput& in) {
     return distanceViolation(in, in.joint.length);
 }
 

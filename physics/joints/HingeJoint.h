@@ -1,3 +1,4 @@
+#pragma once
 // A hinge: two rows hold its two points together (pinRows); with limits, a third row holds the
 // angle at the limit it is past, an inequality that acts after the step only.
 
@@ -5,7 +6,7 @@
 
 namespace phasebox::joints {
 
-void hingeRows(const RowsInput& in, Rows& r) {
+inline void hingeRows(const RowsInput& in, Rows& r) {
     pinRows(in, r);
     const Joint& j = in.joint;
     if (!angular(in) || !j.hasLimits || in.mode == Mode::Dynamics) return;
@@ -20,7 +21,7 @@ void hingeRows(const RowsInput& in, Rows& r) {
         angleRow(in, angle, j.upper, r);
 }
 
-Vec3 hingeViolation(const ViolationInput& in) {
+inline Vec3 hingeViolation(const ViolationInput& in) {
     // The point rows: a limit's is not one of the equalities.
     return pinViolation(in);
 }

@@ -1,14 +1,15 @@
+#pragma once
 // A rod: one row holds the distance between its two points at its length.
 
 #include "physics/joints/JointRows.h"
 
 namespace phasebox::joints {
 
-void rodRows(const RowsInput& in, Rows& r) {
+inline void rodRows(const RowsInput& in, Rows& r) {
     distanceRow(in, in.b.p, in.b.v, in.b.arm, in.centripetalB, in.joint.length, r);
 }
 
-Vec3 rodViolation(const ViolationInput& in) {
+inline Vec3 rodViolation(const ViolationInput& in) {
     return distanceViolation(in, in.joint.length);
 }
 

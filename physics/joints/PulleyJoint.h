@@ -1,3 +1,4 @@
+#pragma once
 // A pulley: one row holds the rope's length, side a's from its pulley plus ratio times side
 // b's; a second holds a side that has run up to its pulley at its stop (an inequality,
 // JointSolver::pulleyStop()).
@@ -10,7 +11,7 @@
 
 namespace phasebox::joints {
 
-void pulleyRows(const RowsInput& in, Rows& r) {
+inline void pulleyRows(const RowsInput& in, Rows& r) {
     const Joint& j = in.joint;
     const Mode mode = in.mode;
     double c = -j.length;
@@ -61,7 +62,7 @@ void pulleyRows(const RowsInput& in, Rows& r) {
     }
 }
 
-Vec3 pulleyViolation(const ViolationInput& in) {
+inline Vec3 pulleyViolation(const ViolationInput& in) {
     const Joint& j = in.joint;
     Vec3 c = Vec3::Zero();
     c[0] = -j.length + (in.pointOf(in.endA) - j.groundA).norm() +

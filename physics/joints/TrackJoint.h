@@ -1,3 +1,4 @@
+#pragma once
 // A track: one row holds end a's point on a line (along its normal) or on a circle (at the
 // circle's radius from its centre).
 
@@ -5,7 +6,7 @@
 
 namespace phasebox::joints {
 
-void trackRows(const RowsInput& in, Rows& r) {
+inline void trackRows(const RowsInput& in, Rows& r) {
     const Joint& j = in.joint;
     if (j.circle) {
         distanceRow(in, j.center, Vec2::Zero(), Vec2::Zero(), Vec2::Zero(), j.radius, r);
@@ -17,7 +18,7 @@ void trackRows(const RowsInput& in, Rows& r) {
     r.count = 1;
 }
 
-Vec3 trackViolation(const ViolationInput& in) {
+inline Vec3 trackViolation(const ViolationInput& in) {
     const Joint& j = in.joint;
     const Vec2 pa = in.pointOf(in.endA);
     Vec3 c = Vec3::Zero();

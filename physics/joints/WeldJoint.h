@@ -1,3 +1,4 @@
+#pragma once
 // A weld: a hinge's two point rows and a third that holds the bodies' relative angle, all
 // equalities (where one end is a particle, or both are fixed in angle, the point rows alone).
 
@@ -5,12 +6,12 @@
 
 namespace phasebox::joints {
 
-void weldRows(const RowsInput& in, Rows& r) {
+inline void weldRows(const RowsInput& in, Rows& r) {
     pinRows(in, r);
     if (angular(in)) angleRow(in, relativeAngle(in), 0.0, r);
 }
 
-Vec3 weldViolation(const ViolationInput& in) {
+inline Vec3 weldViolation(const ViolationInput& in) {
     Vec3 c = pinViolation(in);
     const End& ea = in.endA;
     const End& eb = in.endB;
