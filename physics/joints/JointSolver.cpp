@@ -1,43 +1,26 @@
+// The joint solver (JointSolver.h): binding, J·W·Jᵀ and its block LDLᵀ, the constrained
+// dynamics and the stages after the step; SHAKE is in JointShake.cpp, the joints' rows in
+// JointRows.cpp and a file per type.
+
 #include "physics/joints/JointSolver.h"
+#include "physics/joints/JointTuning.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <set>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
 namespace phasebox {
 
 namespace {
-// Newton steps of the position projection, and the error below which it stops (m, rad), per
-// metre of the largest coordinate (projectionFloor_): about 45 units in the last place, so that
-// what a fourth-order method leaves of a joint's length (h^5 a step, added up over a run)
-// neither drifts to a floor nor changes a pendulum's period there (RK4 on a 10° rod pendulum at
-// 1/960 keeps its order 4 only below 1e-12 m, tst_constrained_methods), and it is still
-// reachable in double precision far from the origin.
-constexpr int kProjectionIterations = 12;
-constexpr double kProjectionTolerance = 1e-14;  // per metre
-// SHAKE stops once the violation is below this fraction of the one it started from (or below
-// projectionFloor_), and never leaves more than kShakeCeiling (m, rad). What it starts from is
-// the step's own error (symplectic Euler's ½·r·(ω·h)² where a link turns, a method of order p its
-// h^(p+1) term), so what it leaves is a ten-thousandth of the method's own error at any step and
-// shrinks with it: the Accuracy Lab's curves are not floored. A fixed floor instead made every
-// step of a whip iterate to it (docs/architecture.md, Joints).
-constexpr double kShakeFraction = 1e-4;
-constexpr double kShakeCeiling = 1e-7;
 // Motor impulses and the velocity projection alternate this many times.
 constexpr int kMotorIterations = 4;
-// SHAKE acts while the step's violation is below this fraction of the smallest joint size.
-constexpr double kShakeReach = 0.1;
-// s: the time constant over which a body's scaled inertia lets go of a stiffness it no longer
-// meets (stiffen()).
-constexpr double kStiffnessHold = 2.0;
 }  // namespace
 
-// ---- binding: ends and the elimination order ------------------------------------------------
+// ---- binding: ends and the joint graph ----------------------------------------------------
 
 void JointSolver::bind(const Bodies& bodies) {
     joints_ = bodies.joints;
@@ -101,15 +84,15 @@ void JointSolver::bind(const Bodies& bodies) {
     for (const Joint& j : joints_)
         for (const double length : {j.length, j.radius, arm(j.a), arm(j.b)})
             if (length > 0.0) smallest = std::min(smallest, length);
-    shakeReach_ = kShakeReach * (std::isfinite(smallest) ? smallest : 1.0);
+    shakeReach_ = joints::kShakeReach * (std::isfinite(smallest) ? smallest : 1.0);
     // A rope counts as taut within kTautFraction of its length: SHAKE must leave less than
     // that, or a rope it held would read as slack in the next step.
-    shakeCeiling_ = kShakeCeiling;
+    shakeCeiling_ = joints::kShakeCeiling;
     for (const Joint& j : joints_)
         if (j.type == Joint::Type::Rope)
             shakeCeiling_ = std::min(shakeCeiling_, 0.5 * tautBand(j.length));
-    shakeTolerance_ = kProjectionTolerance;
-    projectionFloor_ = kProjectionTolerance;
+    shakeTolerance_ = joints::kProjectionTolerance;
+    projectionFloor_ = joints::kProjectionTolerance;
     rotations_.assign(turningDofs_.size(), Mat2::Identity());
     heldStiffness_.assign(turningDofs_.size(), 0.0);
     rows_.assign(m, Rows{});
@@ -138,96 +121,23 @@ void JointSolver::bind(const Bodies& bodies) {
         for (const auto& [k1, s1] : list)
             for (const auto& [k2, s2] : list)
                 if (k1 != k2) graph[k1].insert(k2);
-
-    // Minimum-fill elimination (ties: the smaller degree, then the joint that has waited
-    // longest): each eliminated joint's remaining neighbours become a clique (the fill), and
-    // they are the later joints its column of L couples. The joint graph of a chain or tree of
-    // bodies is chordal, so a joint whose neighbours already form a clique (fill 0) always
-    // exists and the order makes no fill at all; minimum degree alone can miss it in a tree.
-    // The longest wait first takes a chain from both its ends in turn (a tree from all its
-    // leaves), so the factorization's and the solves' recurrences run as independent chains
-    // that the processor overlaps: by the smaller index, a 100-hinge chain was one recurrence
-    // from its root, and the solves were a fifth of the whip's time.
-    std::vector<std::vector<int>> later(m);
-    const auto fillOf = [&](int k) {
-        int fill = 0;
-        for (auto x = graph[k].begin(); x != graph[k].end(); ++x)
-            for (auto y = std::next(x); y != graph[k].end(); ++y) fill += !graph[*x].count(*y);
-        return fill;
-    };
-    using Key = std::tuple<int, int, int, int>;  // fill, degree, since, joint
-    std::set<Key> queue;
-    std::vector<Key> key(m);
-    for (int k = 0; k < m; ++k) {
-        key[k] = {fillOf(k), static_cast<int>(graph[k].size()), 0, k};
-        queue.insert(key[k]);
-    }
-    order_.clear();
-    std::vector<int> position(m, -1);
-    while (!queue.empty()) {
-        const int k = std::get<3>(*queue.begin());
-        queue.erase(queue.begin());
-        position[k] = static_cast<int>(order_.size());
-        order_.push_back(k);
-        const std::vector<int> neighbours(graph[k].begin(), graph[k].end());
-        later[k] = neighbours;
-        for (int x : neighbours) graph[x].erase(k);
-        for (std::size_t s = 0; s < neighbours.size(); ++s)
-            for (std::size_t t = s + 1; t < neighbours.size(); ++t)
-                if (graph[neighbours[s]].insert(neighbours[t]).second)
-                    graph[neighbours[t]].insert(neighbours[s]);
-        // The fill of the neighbours and of their neighbours may have changed.
-        std::set<int> touched(neighbours.begin(), neighbours.end());
-        for (int x : neighbours) touched.insert(graph[x].begin(), graph[x].end());
-        const int now = static_cast<int>(order_.size());
-        for (int x : touched) {
-            const int fill = fillOf(x), degree = static_cast<int>(graph[x].size());
-            if (fill == std::get<0>(key[x]) && degree == std::get<1>(key[x])) continue;
-            queue.erase(key[x]);
-            key[x] = {fill, degree, now, x};
-            queue.insert(key[x]);
-        }
-    }
-    upperStart_.assign(m + 1, 0);
-    upper_.clear();
-    for (int p = 0; p < m; ++p) {
-        std::vector<int> list;
-        for (int x : later[order_[p]]) list.push_back(position[x]);
-        std::sort(list.begin(), list.end());
-        upper_.insert(upper_.end(), list.begin(), list.end());
-        upperStart_[p + 1] = static_cast<int>(upper_.size());
-    }
-    const auto blockIndex = [&](int p, int i) {  // block (i, p), i later than p
-        const auto begin = upper_.begin() + upperStart_[p],
-                   end = upper_.begin() + upperStart_[p + 1];
-        return static_cast<int>(std::lower_bound(begin, end, i) - upper_.begin());
-    };
-    updateStart_.assign(m + 1, 0);
-    updates_.clear();
-    for (int p = 0; p < m; ++p) {
-        for (int t1 = upperStart_[p]; t1 < upperStart_[p + 1]; ++t1)
-            for (int t2 = upperStart_[p]; t2 < upperStart_[p + 1]; ++t2) {
-                const int i = upper_[t1], j = upper_[t2];
-                if (i == j)
-                    updates_.push_back({t1, t2, -1});
-                else if (j < i)
-                    updates_.push_back({t1, t2, blockIndex(j, i)});
-            }
-        updateStart_[p + 1] = static_cast<int>(updates_.size());
-    }
+    pattern_.analyse(std::move(graph));
     couplings_.clear();
     for (const auto& [dof, list] : byBody)
         for (const auto& [k1, s1] : list)
             for (const auto& [k2, s2] : list)
-                if (position[k1] > position[k2])
-                    couplings_.push_back({blockIndex(position[k2], position[k1]), k1, s1, k2, s2});
+                if (pattern_.position(k1) > pattern_.position(k2))
+                    couplings_.push_back(
+                        {pattern_.blockIndex(pattern_.position(k2), pattern_.position(k1)), k1, s1,
+                         k2, s2});
     // A weld holds the angle too, and a hinge at a limit: those have three rows.
     blockRows_ = 2;
     for (const Joint& j : joints_)
         if (j.type == Joint::Type::Weld || (j.type == Joint::Type::Hinge && j.hasLimits))
             blockRows_ = 3;
-    factors2_.resize(blockRows_ == 2 ? m : 0, blockRows_ == 2 ? upper_.size() : 0);
-    factors3_.resize(blockRows_ == 3 ? m : 0, blockRows_ == 3 ? upper_.size() : 0);
+    const std::size_t blocks = static_cast<std::size_t>(pattern_.blockCount());
+    factors2_.resize(blockRows_ == 2 ? m : 0, blockRows_ == 2 ? blocks : 0);
+    factors3_.resize(blockRows_ == 3 ? m : 0, blockRows_ == 3 ? blocks : 0);
     rowsChanged();
     factoredValid_ = false;
     rowsQ_.resize(0);
@@ -267,7 +177,17 @@ void JointSolver::addJTranspose(const Vec& invMass, double scale, Vec& x) const 
     forEachJTranspose(invMass, [&](int dof, double w, double f) { x[dof] += scale * w * f; });
 }
 
-// ---- the block LDLᵀ --------------------------------------------------------------------------
+void JointSolver::applyShakeImpulse(double h, const Vec& weights, Vec& q, Vec& u) {
+    // The same impulse moves the positions and the velocities: summed over the joints per body
+    // once, then applied to both.
+    impulse_.setZero(weights.size());
+    forEachJTranspose(weights, [&](int dof, double, double f) { impulse_[dof] += f; });
+    impulse_.array() *= weights.array();
+    q += impulse_;
+    u += impulse_ * (1.0 / h);  // a product: the vector division cost 1% of the whip's step
+}
+
+// ---- J·W·Jᵀ and its block LDLᵀ ------------------------------------------------------------------
 
 void JointSolver::factor(const Vec& invMass) {
     // The same rows as the last factorization: the factors stand.
@@ -282,7 +202,7 @@ void JointSolver::factor(const Vec& invMass) {
 }
 
 template <int B>
-void JointSolver::factorBlocks(Factors<B>& f, const Vec& invMass) {
+void JointSolver::factorBlocks(BlockLdlt<B>& f, const Vec& invMass) {
     using MatB = Eigen::Matrix<double, B, B>;
     const auto weights = [&](const End& e) {
         Vec3 w = Vec3::Zero();
@@ -303,9 +223,9 @@ void JointSolver::factorBlocks(Factors<B>& f, const Vec& invMass) {
     };
     const int m = jointCount();
     for (int p = 0; p < m; ++p) {
-        const int k = order_[p];
+        const int k = pattern_.node(p);
         const Rows& r = rows_[k];
-        MatB& d = f.diag[p];
+        MatB& d = f.diag(p);
         d = product(r.ja, weights(endA_[k]), r.ja) + product(r.jb, weights(endB_[k]), r.jb);
         for (int i = 0; i < B; ++i) {
             if (i >= r.count) {  // an unused row: the identity keeps the block invertible
@@ -319,26 +239,16 @@ void JointSolver::factorBlocks(Factors<B>& f, const Vec& invMass) {
             }
         }
     }
-    for (MatB& o : f.off) o.setZero();
+    f.clearOff();
     for (const Coupling& c : couplings_) {
         const Rows& ri = rows_[c.i];
         const Rows& rk = rows_[c.k];
         const Mat3& ji = c.sideI == 0 ? ri.ja : ri.jb;
         const Mat3& jk = c.sideK == 0 ? rk.ja : rk.jb;
         const End& body = c.sideK == 0 ? endA_[c.k] : endB_[c.k];
-        f.off[c.block] += product(ji, weights(body), jk);
+        f.off(c.block) += product(ji, weights(body), jk);
     }
-    for (int p = 0; p < m; ++p) {
-        f.dinv[p] = f.diag[p].inverse();
-        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) f.l[t] = f.off[t] * f.dinv[p];
-        for (int s = updateStart_[p]; s < updateStart_[p + 1]; ++s) {
-            const Update& up = updates_[s];
-            if (up.target < 0)
-                f.diag[upper_[up.t1]] -= f.l[up.t1] * f.off[up.t1].transpose();
-            else
-                f.off[up.target] -= f.l[up.t1] * f.off[up.t2].transpose();
-        }
-    }
+    f.factor(pattern_);
 }
 
 void JointSolver::solve() {
@@ -349,36 +259,14 @@ void JointSolver::solve() {
 }
 
 template <int B>
-void JointSolver::solveBlocks(Factors<B>& f) {
-    const int m = jointCount();
-    auto& y = f.y;
-    for (int p = 0; p < m; ++p) y[p] = rhs_[order_[p]].template head<B>();
-    // Forward (y[p] is complete once the earlier positions are done), then the diagonal.
-    for (int p = 0; p < m; ++p) {
-        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) y[upper_[t]] -= f.l[t] * y[p];
-        y[p] = f.dinv[p] * y[p];
-    }
-    // Backward (y[p] is final once the later positions are done).
-    for (int p = m - 1; p >= 0; --p) {
-        // In scalars throughout: Eigen's Lᵀ·y went through memory in halves, and a block
-        // written in halves and read back whole stalls the store forwarding (with those two
-        // stalls a joint the solves took a fifth of the whip's time at a tenth of its
-        // instructions).
-        std::array<double, B> yp;
-        for (int i = 0; i < B; ++i) yp[i] = y[p][i];
-        for (int t = upperStart_[p]; t < upperStart_[p + 1]; ++t) {
-            const auto& l = f.l[t];
-            const auto& later = y[upper_[t]];
-            for (int i = 0; i < B; ++i) {
-                double dot = l(0, i) * later[0];
-                for (int j = 1; j < B; ++j) dot += l(j, i) * later[j];
-                yp[i] -= dot;
-            }
-        }
-        Vec3& lambda = lambda_[order_[p]];
-        for (int i = 0; i < B; ++i) y[p][i] = lambda[i] = yp[i];
-        if constexpr (B == 2) lambda[2] = 0.0;
-    }
+void JointSolver::solveBlocks(BlockLdlt<B>& f) {
+    f.solve(
+        pattern_, [&](int p) { return rhs_[pattern_.node(p)].template head<B>(); },
+        [&](int p, const std::array<double, B>& x) {
+            Vec3& lambda = lambda_[pattern_.node(p)];
+            for (int i = 0; i < B; ++i) lambda[i] = x[i];
+            if constexpr (B == 2) lambda[2] = 0.0;
+        });
 }
 
 // ---- constrained dynamics --------------------------------------------------------------------
@@ -484,215 +372,10 @@ void JointSolver::solveFor(const Vec& invMass, Vec& x, double scale, Target targ
     addJTranspose(invMass, scale, x);
 }
 
-bool JointSolver::shake(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u, const Vec& invMass,
-                        bool alongEnd) {
-    // The equality rows in their directions at the step's start, factored once: each
-    // iteration only evaluates C at q. With them the ropes that were taut and pulling at the
-    // start: they pulled through the step as the derivative's equalities, and SHAKE keeps
-    // them as it keeps a rod, so that a rope pendulum swings like a rod one. (Where the step
-    // ends does not tell: symplectic Euler ends a swinging rope's step inside its length.)
-    // Rows of the derivative's mode at q0 are these: a step's single derivative evaluation
-    // (symplectic Euler's) has left them.
-    stepLength_ = h;
-    projectionFloor_ = kProjectionTolerance * std::max(1.0, q.lpNorm<Eigen::Infinity>());
-    if (!rowsAreAt(q0) || rowsMode_ != Mode::Dynamics)
-        evaluateRows(Mode::Dynamics, q0, q0);  // (the velocities only enter J̇·u, unused here)
-    dropInequalities();
-    for (int k = 0; k < jointCount(); ++k)
-        ropeShaken_[k] = joints_[k].type == Joint::Type::Rope && rows_[k].count > 0;
-    const Vec& weights = stiffen(h, u0, q, u, invMass);
-    cacheRotations(q);  // of q, not of rowsQ_ (q0)
-    double worst = shakeViolation(q);
-    shakeTolerance_ = std::clamp(kShakeFraction * worst, projectionFloor_, shakeCeiling_);
-    if (worst <= shakeTolerance_) return true;
-    // Past the asymptotic regime (the step moved a joint a good part of its size): the
-    // directions of the start are too far from the end's, and an impulse along them would pump
-    // energy in. On along the end's directions instead.
-    if (alongEnd || worst > shakeReach_) return shakeAlongEnd(h, q, u, weights);
-    factor(weights);
-    double previous = worst;
-    for (int it = 0; it < kProjectionIterations; ++it) {
-        solve();
-        accelerate(it > 0);
-        applyShakeImpulse(h, weights, q, u);
-        turnRotations(impulse_);
-        worst = shakeViolation(q);
-        if (worst <= shakeTolerance_) {
-            // R(θ)·R(δ1)·R(δ2)·… are q's rotations to rounding: the rows at q take them.
-            rotationsNowAt(q);
-            return true;
-        }
-        // Not contracting: the directions of the start are too far from the end's. Back to
-        // the state before this iteration, and on along the end's directions.
-        if (worst > 0.5 * previous) {
-            q -= impulse_;
-            u -= impulse_ * (1.0 / h);
-            return shakeAlongEnd(h, q, u, weights);
-        }
-        previous = worst;
-    }
-    return false;
-}
-
-void JointSolver::applyShakeImpulse(double h, const Vec& weights, Vec& q, Vec& u) {
-    // The same impulse moves the positions and the velocities: summed over the joints per body
-    // once, then applied to both.
-    impulse_.setZero(weights.size());
-    forEachJTranspose(weights, [&](int dof, double, double f) { impulse_[dof] += f; });
-    impulse_.array() *= weights.array();
-    q += impulse_;
-    u += impulse_ * (1.0 / h);  // a product: the vector division cost 1% of the whip's step
-}
-
-const Vec& JointSolver::stiffen(double h, const Vec& u0, Vec& q, Vec& u, const Vec& invMass) {
-    stiffened_ = false;
-    if (!(implicitLimit_ > 0.0)) {
-        // A method that meets no stiffness implicitly holds none: switched back to one that
-        // does, the bodies start afresh.
-        std::fill(heldStiffness_.begin(), heldStiffness_.end(), 0.0);
-        return invMass;
-    }
-    if (!forcesKnown_) return invMass;
-    // k = Σ arm·F over the body's hinges and welds, at the step's start (the rotations are
-    // q0's: shake() has just evaluated the rows there, or the derivative did), from the
-    // forces of the last derivative evaluation.
-    stiffness_.assign(turningDofs_.size(), 0.0);  // no larger than before: no allocation
-    for (int k = 0; k < jointCount(); ++k) {
-        const Joint::Type type = joints_[k].type;
-        if (type != Joint::Type::Hinge && type != Joint::Type::Weld) continue;
-        for (int side = 0; side < 2; ++side) {
-            const End& e = side == 0 ? endA_[k] : endB_[k];
-            if (e.turns)
-                stiffness_[e.slot] += (rotations_[e.slot] * e.local).dot(forceOn_[k][side]);
-        }
-    }
-    bool stiff = false;
-    const double decay = std::exp(-h / kStiffnessHold);
-    for (std::size_t s = 0; s < turningDofs_.size(); ++s) {
-        const int d = turningDofs_[s] + 2;
-        // The stiffness held: the most of this step's and the last held one decayed (a NaN
-        // force leaves the hold as it was).
-        const double decayed = heldStiffness_[s] * decay;
-        heldStiffness_[s] = stiffness_[s] > decayed ? stiffness_[s] : decayed;
-        const double w = h * h * heldStiffness_[s] * invMass[d];
-        if (!(w > implicitLimit_)) continue;
-        if (!stiff) {
-            stiffInvMass_ = invMass;  // same size: no allocation
-            // Factors of stiffInvMass_'s last contents must not pass for this step's.
-            if (factoredMass_ == &stiffInvMass_) factoredValid_ = false;
-        }
-        stiff = true;
-        // The body turns as if its inertia were I·w/limit: its zig-zag then meets w = limit.
-        const double inertia = w / implicitLimit_;
-        const double omega = u0[d] + (u[d] - u0[d]) / inertia;
-        q[d] -= h * (u[d] - omega);  // the step's own x' = x + h·v'
-        u[d] = omega;
-        stiffInvMass_[d] = invMass[d] / inertia;
-    }
-    stiffened_ = stiff;
-    return stiff ? stiffInvMass_ : invMass;
-}
-
-bool JointSolver::shakeAlongEnd(double h, Vec& q, Vec& u, const Vec& weights) {
-    // Newton's projection in the mass metric, the rows evaluated at each iterate (converging
-    // quadratically wherever it starts near enough), the velocities moved with the positions
-    // as SHAKE moves them. Ropes past their length are held with the equalities.
-    double previous = std::numeric_limits<double>::infinity();
-    for (int it = 0; it < kProjectionIterations; ++it) {
-        evaluateRows(Mode::Position, q, u);
-        dropInequalities();
-        const double worst = worstViolation();
-        if (worst <= projectionFloor_) return true;
-        if (!(worst < previous)) return false;  // diverging (or NaN): the world's projection
-        previous = worst;
-        factor(weights);
-        for (int k = 0; k < jointCount(); ++k) {
-            rhs_[k] = -rows_[k].c;
-            for (int i = rows_[k].count; i < 3; ++i) rhs_[k][i] = 0.0;
-        }
-        solve();
-        applyShakeImpulse(h, weights, q, u);
-    }
-    return false;
-}
-
-void JointSolver::accelerate(bool withPrevious) {
-    // The iteration is a fixed point, λ ← λ + f(λ) with f = (J0·W·J0ᵀ)⁻¹·(−C), contracting
-    // linearly (by 3 to 10 an iteration on a whipping chain). Anderson mixing over the last
-    // kAndersonDepth iterations: the step f − Σ γ_j·(Δλ_j + Δf_j), with γ the least-squares
-    // fit of f by the Δf_j. Where a few modes contract by fixed ratios (the asymptotic regime)
-    // that removes them: with one mode, f_k = ρ·f_(k−1), it is the step to the limit, f/(1 − ρ).
-    const int m = jointCount();
-    if (!withPrevious) {
-        andersonCount_ = andersonNext_ = 0;
-        previousStep_ = lastDelta_ = lambda_;  // same sizes: no allocation
-        return;
-    }
-    // This iteration's differences into the ring: Δf = f − f_prev, Δλ = the last move.
-    const int slot = andersonNext_;
-    std::vector<Vec3>& df = andersonDf_[slot];
-    std::vector<Vec3>& dl = andersonDl_[slot];
-    for (int k = 0; k < m; ++k) {
-        df[k] = lambda_[k] - previousStep_[k];
-        dl[k] = lastDelta_[k];
-        previousStep_[k] = lambda_[k];
-    }
-    andersonNext_ = (andersonNext_ + 1) % kAndersonDepth;
-    andersonCount_ = std::min(andersonCount_ + 1, kAndersonDepth);
-    const int n = andersonCount_;
-    // Over the B rows a joint can have (a third row is zero where B = 2).
-    const auto overRows = [&](auto&& pass) {
-        if (blockRows_ == 2)
-            pass(std::integral_constant<int, 2>{});
-        else
-            pass(std::integral_constant<int, 3>{});
-    };
-    // The Gram matrix of the Δf keeps its entries between iterations: only the new difference's
-    // products are new, and with λ's they take one pass.
-    std::array<double, kAndersonDepth> gram{}, fit{};
-    overRows([&](auto rows) {
-        constexpr int B = decltype(rows)::value;
-        for (int k = 0; k < m; ++k)
-            for (int i = 0; i < n; ++i) {
-                const auto dfi = andersonDf_[i][k].template head<B>();
-                gram[i] += dfi.dot(df[k].template head<B>());
-                fit[i] += dfi.dot(lambda_[k].template head<B>());
-            }
-    });
-    for (int i = 0; i < n; ++i) andersonGram_(i, slot) = andersonGram_(slot, i) = gram[i];
-    Eigen::Matrix<double, kAndersonDepth, kAndersonDepth> g =
-        Eigen::Matrix<double, kAndersonDepth, kAndersonDepth>::Identity();
-    Eigen::Matrix<double, kAndersonDepth, 1> rhs = Eigen::Matrix<double, kAndersonDepth, 1>::Zero();
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) g(i, j) = andersonGram_(i, j);
-        rhs[i] = fit[i];
-    }
-    // A relative 1e-10 on the diagonal keeps the fit defined where two differences align.
-    double scale = 0.0;
-    for (int i = 0; i < n; ++i) scale = std::max(scale, g(i, i));
-    if (!(scale > 0.0)) {
-        lastDelta_ = lambda_;
-        return;
-    }
-    for (int i = 0; i < n; ++i) g(i, i) += 1e-10 * scale;
-    const Eigen::Matrix<double, kAndersonDepth, 1> gamma = g.ldlt().solve(rhs);
-    overRows([&](auto rows) {
-        constexpr int B = decltype(rows)::value;
-        for (int k = 0; k < m; ++k) {
-            Eigen::Matrix<double, B, 1> step = lambda_[k].template head<B>();
-            for (int i = 0; i < n; ++i)
-                step -= gamma[i] * (andersonDl_[i][k].template head<B>() +
-                                    andersonDf_[i][k].template head<B>());
-            lambda_[k].template head<B>() = step;
-        }
-    });
-    lastDelta_ = lambda_;
-}
-
 void JointSolver::correctPositions(Vec& q, const Vec& u, const Vec& invMass) {
     // What the last SHAKE left is the method's: its equalities are within shakeTolerance_ (at
     // least projectionFloor_).
-    for (int it = 0; it < kProjectionIterations; ++it) {
+    for (int it = 0; it < joints::kProjectionIterations; ++it) {
         // Equalities' C depend on q alone, whatever mode evaluated them: at the same q (the
         // velocity projection's, where the contacts moved nothing) they stand.
         if (it > 0 || hasInequalities_ || !rowsAreAt(q)) evaluateRows(Mode::Position, q, u);

@@ -15,7 +15,7 @@
 //
 // The system J·M⁻¹·Jᵀ couples joints that share a body. It is factored as a block LDLᵀ over
 // the joint graph (one block per joint: 2×2 unless a weld or a hinge limit needs a third row,
-// then 3×3), eliminated in minimum-fill order.
+// then 3×3), eliminated in minimum-fill order (physics/linear/BlockLdlt.h).
 // For a chain or a tree of bodies this order makes no fill (tst_joints counts the blocks), so
 // a solve is O(n) (the result
 // Baraff 1996 gets by factoring the body–joint graph); loops add the fill they need. The
@@ -23,6 +23,8 @@
 
 #include "physics/core/Bodies.h"
 #include "physics/core/Types.h"
+#include "physics/joints/JointRows.h"
+#include "physics/linear/BlockLdlt.h"
 
 #include <Eigen/Dense>
 
@@ -48,7 +50,7 @@ public:
     int jointCount() const { return static_cast<int>(joints_.size()); }
     // Off-diagonal blocks of the factor L (pairs of joints coupled after elimination): the
     // pairs that share a body plus the fill. For chains and trees there is no fill.
-    int factorBlocks() const { return static_cast<int>(upper_.size()); }
+    int factorBlocks() const { return pattern_.blockCount(); }
     bool hasMotors() const { return hasMotors_; }
     // Ropes or hinge limits: rows that switch on and off.
     bool hasInequalities() const { return hasInequalities_; }
@@ -183,31 +185,11 @@ private:
     using Mat3 = Eigen::Matrix3d;
     using Vec3 = Eigen::Vector3d;
 
-    // One end of a joint as the solver sees it.
-    struct End {
-        int dof = -1;         // first state index of a dynamic body; −1 when fixed
-        int slot = -1;        // a turning body's index in rotations_
-        bool turns = false;   // a dynamic rigid body: its third DOF is the angle
-        bool rigid = false;   // a rigid body (dynamic or static): it has an angle
-        Vec2 local{0, 0};     // the point in the body's frame (dynamic rigid body)
-        Vec2 fixed{0, 0};     // the point in the world (a fixed end)
-        double angle0 = 0.0;  // a fixed end's angle
-    };
-    // An end's point and motion at (q, u).
-    struct EndState {
-        Vec2 p{0, 0}, v{0, 0}, arm{0, 0};
-        double angle = 0.0, omega = 0.0;
-    };
-    // The rows of one joint at a state: C, J (for each end: x, y, θ), and J̇·u.
-    struct Rows {
-        int count = 0;
-        Mat3 ja = Mat3::Zero(), jb = Mat3::Zero();
-        Vec3 c = Vec3::Zero(), bias = Vec3::Zero();
-        // Velocity mode: the rate J·u the projection sets each row to (0 but for a pulley's
-        // stop, which lets a side close in at most what it has left to its stop in a step).
-        Vec3 target = Vec3::Zero();
-    };
-    enum class Mode { Dynamics, Position, Velocity };
+    // A joint's ends, their state and its rows (JointRows.h).
+    using End = joints::End;
+    using EndState = joints::EndState;
+    using Rows = joints::Rows;
+    using Mode = joints::Mode;
 
     // cached: take the rotation from cacheRotations() (of this q) instead of cos and sin.
     EndState evaluate(const End& e, const Vec& q, const Vec& u, bool cached = false) const;
@@ -231,8 +213,6 @@ private:
     // The equality rows' C of joint k at q (as rowsOf in Position mode computes it, without
     // the Jacobian), the rotations cached: what each SHAKE iteration needs.
     Vec3 violationOf(int k, const Vec& q) const;
-    // An end's point at q, the rotation cached.
-    Vec2 pointOf(const End& e, const Vec& q) const;
     void evaluateRows(Mode mode, const Vec& q, const Vec& u);
     // λ of the equality rows for the unconstrained acceleration accel (a rope that would
     // push goes slack); keeps forces_.
@@ -308,33 +288,18 @@ private:
     std::vector<std::array<Vec2, 2>> forceOn_;
     std::vector<double> motorImpulse_;
 
-    // The block LDLᵀ: joints by elimination position; upper_[upperStart_[k] ..] the later
-    // joints block (i, k) couples, after fill.
-    std::vector<int> order_;  // position → joint
-    std::vector<int> upperStart_, upper_;
-    // The factors' blocks, B×B: B = 2 when no joint can have a third row (no weld, no hinge
-    // with limits), so that the common scenes (hinges, rods, ropes, pulleys, tracks) factor
-    // and solve 2×2 blocks instead of 3×3 ones padded with the identity: a hinged chain's
-    // factorization and solves take about half the instructions.
-    template <int B>
-    struct Factors {
-        std::vector<Eigen::Matrix<double, B, B>> diag, dinv, off, l;
-        std::vector<Eigen::Matrix<double, B, 1>> y;  // the solve's right-hand side by position
-        void resize(int joints, std::size_t blocks) {
-            diag.assign(joints, Eigen::Matrix<double, B, B>::Identity());
-            dinv.assign(joints, Eigen::Matrix<double, B, B>::Identity());
-            off.assign(blocks, Eigen::Matrix<double, B, B>::Zero());
-            l.assign(blocks, Eigen::Matrix<double, B, B>::Zero());
-            y.assign(joints, Eigen::Matrix<double, B, 1>::Zero());
-        }
-    };
-    Factors<2> factors2_;
-    Factors<3> factors3_;
+    // The block LDLᵀ of J·W·Jᵀ (physics/linear/BlockLdlt.h): a node per joint, by elimination
+    // position. B = 2 when no joint can have a third row (no weld, no hinge with limits).
+    BlockLdltPattern pattern_;
+    BlockLdlt<2> factors2_;
+    BlockLdlt<3> factors3_;
     int blockRows_ = 3;  // B: the most rows any joint can have
+    // Assembles J·W·Jᵀ of rows_ into f's blocks and factors it.
     template <int B>
-    void factorBlocks(Factors<B>& f, const Vec& invMass);
+    void factorBlocks(BlockLdlt<B>& f, const Vec& invMass);
+    // lambda_ from rhs_ with f's factors.
     template <int B>
-    void solveBlocks(Factors<B>& f);
+    void solveBlocks(BlockLdlt<B>& f);
     // The rows' Jacobians change only where rowsChanged() says so: the factors of the same
     // version and inverse masses stand (a step's end is the next step's start: the velocity
     // projection, the next derivative evaluation and SHAKE all ask for J(q1)).
@@ -343,16 +308,11 @@ private:
     const Vec* factoredMass_ = nullptr;
     bool factoredValid_ = false;
     // Couplings of the assembly: off-diagonal block t gets J_i,side·W·J_k,sideᵀ over a shared
-    // body; and the fill updates of the factorization: (k's entries t1, t2) → target block.
+    // body.
     struct Coupling {
         int block, i, sideI, k, sideK;
     };
     std::vector<Coupling> couplings_;
-    struct Update {
-        int t1, t2, target;  // target −1: the diagonal of upper_[t1]
-    };
-    std::vector<int> updateStart_;
-    std::vector<Update> updates_;
 };
 
 // In the header: every row evaluation takes it twice, and as a call it was a tenth of their cost.

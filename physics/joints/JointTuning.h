@@ -1,0 +1,26 @@
+#pragma once
+// The tolerances and limits of JointSolver's projections, shared by its stages: JointSolver.cpp
+// (binding, the position projection) and JointShake.cpp (SHAKE). Internal to physics/joints.
+
+namespace phasebox::joints {
+
+// Newton steps of the position projection, and the error below which it stops (m, rad), per
+// metre of the largest coordinate (projectionFloor_): about 45 units in the last place, so that
+// what a fourth-order method leaves of a joint's length (h^5 a step, added up over a run)
+// neither drifts to a floor nor changes a pendulum's period there (RK4 on a 10° rod pendulum at
+// 1/960 keeps its order 4 only below 1e-12 m, tst_constrained_methods), and it is still
+// reachable in double precision far from the origin.
+inline constexpr int kProjectionIterations = 12;
+inline constexpr double kProjectionTolerance = 1e-14;  // per metre
+// SHAKE stops once the violation is below this fraction of the one it started from (or below
+// projectionFloor_), and never leaves more than kShakeCeiling (m, rad). What it starts from is
+// the step's own error (symplectic Euler's ½·r·(ω·h)² where a link turns, a method of order p its
+// h^(p+1) term), so what it leaves is a ten-thousandth of the method's own error at any step and
+// shrinks with it: the Accuracy Lab's curves are not floored. A fixed floor instead made every
+// step of a whip iterate to it (docs/architecture.md, Joints).
+inline constexpr double kShakeFraction = 1e-4;
+inline constexpr double kShakeCeiling = 1e-7;
+// SHAKE acts while the step's violation is below this fraction of the smallest joint size.
+inline constexpr double kShakeReach = 0.1;
+
+}  // namespace phasebox::joints
