@@ -1,6 +1,6 @@
 // The contact rows' graph colouring (Box2D v3's): the order the sweeps take, and the coloured rows
-// side by side four at a time for the wide sweep (ContactWideLoop.inc): each row's phase terms
-// packed into its lane, and the accumulated impulses read back out of it.
+// side by side four at a time for the wide sweep (ContactWideLoop.inc), with what is fixed for the
+// step in each lane (the phases' terms are packed by ContactSolver::packPhase).
 #include "physics/contacts/ContactSolver.h"
 
 #include <algorithm>
@@ -86,46 +86,6 @@ void ContactSolver::colourRows() {
             q.rBx[l] = p.rBx;
             q.rBy[l] = p.rBy;
             q.tangentMass[l] = p.tangentMass;
-        }
-    }
-}
-
-void ContactSolver::packPhase(std::size_t i) {
-    const int at = slot_[i];
-    if (at < 0 || !sweepsWide()) return;
-    const Row& c = rows_[i];
-    WideRow& w = wide_[at / 4];
-    const int l = at % 4;
-    w.block[l] = c.block ? 1.0 : 0.0;
-    w.a12[l] = c.block ? c.a12 : 0.0;
-    w.i11[l] = c.block ? c.i11 : 0.0;
-    w.i12[l] = c.block ? c.i12 : 0.0;
-    w.i22[l] = c.block ? c.i22 : 0.0;
-    w.invA11[l] = c.block ? c.invA11 : 0.0;
-    w.invA22[l] = c.block ? c.invA22 : 0.0;
-    for (int k = 0; k < 2; ++k) {
-        const RowPoint& p = c.p[k];
-        WideRow::Point& q = w.p[k];
-        const bool used = k < c.pointCount;
-        q.bias[l] = used ? p.bias : 0.0;
-        q.effectiveMass[l] = used ? p.effectiveMass : 0.0;
-        q.impulseScale[l] = used ? p.impulseScale : 0.0;
-        q.normalImpulse[l] = used ? p.normalImpulse : 0.0;
-        q.tangentImpulse[l] = used ? p.tangentImpulse : 0.0;
-    }
-}
-
-void ContactSolver::unpackImpulses() {
-    if (!sweepsWide()) return;
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        const int at = slot_[i];
-        if (at < 0) continue;
-        Row& c = rows_[i];
-        const WideRow& w = wide_[at / 4];
-        const int l = at % 4;
-        for (int k = 0; k < c.pointCount; ++k) {
-            c.p[k].normalImpulse = w.p[k].normalImpulse[l];
-            c.p[k].tangentImpulse = w.p[k].tangentImpulse[l];
         }
     }
 }

@@ -91,11 +91,16 @@ bool forEachHeldForce(const std::vector<ContactConstraint>& constraints, Apply&&
 }  // namespace
 
 bool ContactSolver::addHeldForces(Vec& force) const {
+    // In scalars: as Eigen's segments this walk (twice a step) took a tenth of a pyramid's
+    // contact solve beyond the solve itself.
+    double* out = force.data();
     return forEachHeldForce(constraints_,
                             [&](int body, double sign, const Vec2& f, const Vec2& arm) {
                                 const SolverBody& b = bodies_[body];
-                                force.segment<2>(b.dof) += sign * f;
-                                if (b.rotates) force[b.dof + 2] += sign * cross(arm, f);
+                                const double fx = sign * f.x(), fy = sign * f.y();
+                                out[b.dof] += fx;
+                                out[b.dof + 1] += fy;
+                                if (b.rotates) out[b.dof + 2] += arm.x() * fy - arm.y() * fx;
                             });
 }
 

@@ -42,10 +42,6 @@ WideLoop chooseWideLoop() {
 const WideLoop wideLoop = chooseWideLoop();
 }  // namespace
 
-bool ContactSolver::sweepsWide() {
-    return wideLoop != nullptr;
-}
-
 namespace {
 Vec2 tangentOf(const Vec2& n) {
     return {n.y(), -n.x()};
@@ -194,7 +190,6 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
             if (k >= c.pointCount) {
                 r = RowPoint{};
                 setup.normalMass[k] = setup.compliance[k] = 0.0;
-                setup.heldNormal[k] = setup.heldTangent[k] = 0.0;
                 separation_[2 * i + k] = 0.0;
                 continue;
             }
@@ -203,7 +198,7 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
             r.rAy = p.anchorA.y();
             r.rBx = p.anchorB.x();
             r.rBy = p.anchorB.y();
-            separation_[2 * i + k] = p.baseSeparation;
+            separation_[2 * i + k] = r.baseSeparation = p.baseSeparation;
             setup.normalMass[k] = p.normalMass;
             r.tangentMass = p.tangentMass;
             // Converged, the soft update −m·s·(v_n + b) − r·λ = 0 is v_n + b + (r/(s·m))·λ = 0.
@@ -211,8 +206,8 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
             r.normalImpulse = warmScale * p.normalImpulse;
             r.tangentImpulse = warmScale * p.tangentImpulse;
             const Vec2 held = holding_ ? Vec2(h * Vec2(p.heldNormal, p.heldTangent)) : Vec2::Zero();
-            setup.heldNormal[k] = held.x();
-            setup.heldTangent[k] = held.y();
+            r.heldNormal = held.x();
+            r.heldTangent = held.y();
         }
         setup.blockable = false;
         row.k11 = row.k12 = row.k22 = 0.0;
@@ -337,7 +332,6 @@ void ContactSolver::updateSeparations() {
     const BodyMotion* motion = motion_.data();
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         const Row& c = rows_[i];
-        const ContactConstraint& constraint = constraints_[i];
         const BodyMotion& a = motion[c.a];
         const BodyMotion& b = motion[c.b];
         for (int k = 0; k < c.pointCount; ++k) {
@@ -347,7 +341,7 @@ void ContactSolver::updateSeparations() {
             double dy = 0.0 - (a.dy + ((a.sin * p.rAx + a.cos * p.rAy) - p.rAy));
             dx += b.dx + ((b.cos * p.rBx - b.sin * p.rBy) - p.rBx);
             dy += b.dy + ((b.sin * p.rBx + b.cos * p.rBy) - p.rBy);
-            separation_[2 * i + k] = constraint.points[k].baseSeparation + (c.nx * dx + c.ny * dy);
+            separation_[2 * i + k] = p.baseSeparation + (c.nx * dx + c.ny * dy);
         }
     }
 }
@@ -358,14 +352,13 @@ void ContactSolver::warmStart() {
     BodyState* state = state_.data();
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         const Row& c = rows_[i];
-        const RowSetup& setup = setup_[i];
         BodyState& a = state[c.a];
         BodyState& b = state[c.b];
         const double tx = c.ny, ty = -c.nx;
         for (int k = 0; k < c.pointCount; ++k) {
             const RowPoint& p = c.p[k];
-            const double n = p.normalImpulse - setup.heldNormal[k];
-            const double t = p.tangentImpulse - setup.heldTangent[k];
+            const double n = p.normalImpulse - p.heldNormal;
+            const double t = p.tangentImpulse - p.heldTangent;
             const double px = n * c.nx + t * tx;
             const double py = n * c.ny + t * ty;
             removeImpulse(a, p.rAx, p.rAy, px, py);
@@ -615,47 +608,43 @@ void ContactSolver::storeImpulses() {
     }
 }
 
-void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
-    // Gauss-Seidel on positions, translation only (Box2D 2.4's position solver without its
-    // Baumgarte factor): each deep row moves its bodies apart in proportion to their inverse
-    // masses, by the overlap beyond deepOverlap but at most pushOut·h per pass. Separations
-    // are where the last inner sub-step left them, plus these moves.
-    const int world = static_cast<int>(bodies_.size());
-    bool any = false;
-    for (std::size_t i = 0; i < rows_.size() && !any; ++i)
-        for (int k = 0; k < rows_[i].pointCount; ++k)
-            any = any || separation_[2 * i + k] < -setup_[i].deepOverlap;
-    if (!any) return;
-    deepShift_.assign(bodies_.size() + 1, Vec2::Zero());
-    const double step = settings.pushOut * h;
-    for (int pass = 0; pass < kDeepPushOutPasses; ++pass) {
-        for (std::size_t i = 0; i < rows_.size(); ++i) {
-            const Row& c = rows_[i];
-            const Vec2 n(c.nx, c.ny);
-            const double moved = n.dot(deepShift_[c.b] - deepShift_[c.a]);
-            double deepest = 0.0;
-            for (int k = 0; k < c.pointCount; ++k)
-                deepest = std::min(deepest, separation_[2 * i + k] + moved);
-            const double excess = -(deepest + setup_[i].deepOverlap);
-            if (!(excess > 0.0)) continue;
-            const double wA = c.a < world ? state_[c.a].invMass : 0.0;
-            const double wB = c.b < world ? state_[c.b].invMass : 0.0;
-            if (!(wA + wB > 0.0)) continue;
-            const double push = std::min(excess, step) / (wA + wB);
-            deepShift_[c.a] -= push * wA * n;
-            deepShift_[c.b] += push * wB * n;
-        }
-    }
-    for (int k = 0; k < world; ++k) {
-        bodies_[k].shift += deepShift_[k];
-        bodies_[k].pushOut += deepShift_[k];
+void ContactSolver::packPhase(std::size_t i) {
+    const int at = slot_[i];
+    if (at < 0 || !wideLoop) return;
+    const Row& c = rows_[i];
+    WideRow& w = wide_[at / 4];
+    const int l = at % 4;
+    w.block[l] = c.block ? 1.0 : 0.0;
+    w.a12[l] = c.block ? c.a12 : 0.0;
+    w.i11[l] = c.block ? c.i11 : 0.0;
+    w.i12[l] = c.block ? c.i12 : 0.0;
+    w.i22[l] = c.block ? c.i22 : 0.0;
+    w.invA11[l] = c.block ? c.invA11 : 0.0;
+    w.invA22[l] = c.block ? c.invA22 : 0.0;
+    for (int k = 0; k < 2; ++k) {
+        const RowPoint& p = c.p[k];
+        WideRow::Point& q = w.p[k];
+        const bool used = k < c.pointCount;
+        q.bias[l] = used ? p.bias : 0.0;
+        q.effectiveMass[l] = used ? p.effectiveMass : 0.0;
+        q.impulseScale[l] = used ? p.impulseScale : 0.0;
+        q.normalImpulse[l] = used ? p.normalImpulse : 0.0;
+        q.tangentImpulse[l] = used ? p.tangentImpulse : 0.0;
     }
 }
 
-void ContactSolver::addPushOut(Vec& q, double scale) const {
-    for (const SolverBody& b : bodies_) {
-        q.segment<2>(b.dof) += scale * b.pushOut;
-        if (b.rotates) q[b.dof + 2] += scale * b.pushOutAngle;
+void ContactSolver::unpackImpulses() {
+    if (!wideLoop) return;
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        const int at = slot_[i];
+        if (at < 0) continue;
+        Row& c = rows_[i];
+        const WideRow& w = wide_[at / 4];
+        const int l = at % 4;
+        for (int k = 0; k < c.pointCount; ++k) {
+            c.p[k].normalImpulse = w.p[k].normalImpulse[l];
+            c.p[k].tangentImpulse = w.p[k].tangentImpulse[l];
+        }
     }
 }
 

@@ -238,6 +238,11 @@ private:
         double impulseScale;        // the phase's impulse scale
         double tangentMass;
         double normalImpulse, tangentImpulse;
+        // Fixed for the step, read by the per-phase passes (updateSeparations, warmStart) with the
+        // rest of the row, so that they do not walk the constraints: the separation when found,
+        // and what the held force gives in one inner sub-step.
+        double baseSeparation;
+        double heldNormal, heldTangent;
     };
     // A constraint as the iterations see it: built once per step from ContactConstraint with
     // everything that does not change within the step (masses, the block's K), and per phase
@@ -256,7 +261,6 @@ private:
     // What the phases are built from, per row (cold: read once per phase).
     struct RowSetup {
         double biasRate, massScale, impulseScale;
-        double heldNormal[2], heldTangent[2];  // per inner sub-step: what the held force gave
         double normalMass[2], compliance[2];
         double deepOverlap;
         double pushOutShare;
@@ -280,9 +284,6 @@ private:
     void solveRow(Row& c);
     // Graph colours and the wide rows' step constants (after buildRows; ContactColours.cpp).
     void colourRows();
-    // The coloured rows are swept four at a time (AVX2 is there): their impulses live in wide_
-    // during a phase.
-    static bool sweepsWide();
     // The phase's terms of row i into its wide lane.
     void packPhase(std::size_t i);
     // The wide rows' accumulated impulses back into rows_ (after a phase).
