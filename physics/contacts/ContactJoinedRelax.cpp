@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace phasebox {
 
@@ -73,9 +74,7 @@ void ContactSolver::buildJoinedRows(const Vec& u, const TangentProjection& joint
     joined_.clear();
     joinedStart_.assign(rows_.size() + 1, 0);
     joinedScratch_.setZero(n);
-    // Rows with a cached response, at most kJoinedCacheEntries / n of them.
-    const std::size_t cacheable = n > 0 ? kJoinedCacheEntries / static_cast<std::size_t>(n) : 0;
-    std::size_t cached = 0;
+    joinedCached_ = 0;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         const Row& c = rows_[i];
         joinedStart_[i] = static_cast<int>(joined_.size());
@@ -108,41 +107,8 @@ void ContactSolver::buildJoinedRows(const Vec& u, const TangentProjection& joint
             r.column = -1;
             r.from = 0;
             r.to = n;
-            if (jointed && cached < cacheable) {
-                r.column = static_cast<int>(cached++);
-                // Grows only (kept from step to step), by doubling: the columns before stay.
-                const Eigen::Index need = static_cast<Eigen::Index>(cached) * n;
-                if (joinedColumns_.size() < need)
-                    joinedColumns_.conservativeResize(std::max(need, 2 * joinedColumns_.size()));
-                joinedScratch_.setZero();
-                addFreeResponse(r, 1.0, joinedScratch_);
-                joints.project(joinedScratch_);
-                double* w = joinedColumns_.data() + static_cast<std::size_t>(r.column) * n;
-                r.from = n;
-                r.to = 0;
-                for (int d = 0; d < n; ++d) {
-                    w[d] = joinedScratch_[d];
-                    if (w[d] != 0.0) {
-                        r.from = std::min(r.from, d);
-                        r.to = d + 1;
-                    }
-                }
-                if (r.from > r.to) r.from = r.to = 0;
-            }
-            joinedScratch_.setZero();
-            addFreeResponse(r, 1.0, joinedScratch_);
-            const double free = joinedVelocity(r, joinedScratch_);
-            joinedScratch_.setZero();
-            applyJoined(r, 1.0, joinedScratch_, joints);
-            r.inverseMass = joinedVelocity(r, joinedScratch_);
-            // A row the joints hold still (between two welded bodies, on a body welded to the
-            // ground) takes no impulse: what is left of its inverse mass is round-off.
-            if (r.inverseMass > kJoinedRankFloor * free) {
-                joined_.push_back(r);
-            } else {
-                RowPoint& held = rows_[i].p[k];
-                (normal ? held.normalImpulse : held.tangentImpulse) = 0.0;
-            }
+            r.inverseMass = -1.0;  // not yet needed (readyJoined())
+            joined_.push_back(r);
         };
         for (int k = 0; k < c.pointCount; ++k)
             if (c.p[k].effectiveMass != 0.0) add(k, true);
@@ -152,19 +118,52 @@ void ContactSolver::buildJoinedRows(const Vec& u, const TangentProjection& joint
     joinedStart_[rows_.size()] = static_cast<int>(joined_.size());
 }
 
+bool ContactSolver::readyJoined(JoinedRow& r, const TangentProjection& joints) {
+    // A row's response is worked out the first time the row would act: most rows of a chain
+    // folding onto itself are speculative or separating and never do.
+    if (r.inverseMass >= 0.0) return r.inverseMass > 0.0;
+    const int n = static_cast<int>(joinedScratch_.size());
+    const std::size_t cacheable = n > 0 ? kJoinedCacheEntries / static_cast<std::size_t>(n) : 0;
+    if (r.jointed && joinedCached_ < cacheable) {
+        r.column = static_cast<int>(joinedCached_++);
+        // Grows only (kept from step to step), by doubling: the columns before stay.
+        const Eigen::Index need = static_cast<Eigen::Index>(joinedCached_) * n;
+        if (joinedColumns_.size() < need)
+            joinedColumns_.conservativeResize(std::max(need, 2 * joinedColumns_.size()));
+        joinedScratch_.setZero();
+        addFreeResponse(r, 1.0, joinedScratch_);
+        joints.project(joinedScratch_);
+        double* w = joinedColumns_.data() + static_cast<std::size_t>(r.column) * n;
+        r.from = n;
+        r.to = 0;
+        for (int d = 0; d < n; ++d) {
+            w[d] = joinedScratch_[d];
+            if (w[d] != 0.0) {
+                r.from = std::min(r.from, d);
+                r.to = d + 1;
+            }
+        }
+        if (r.from > r.to) r.from = r.to = 0;
+    }
+    joinedScratch_.setZero();
+    addFreeResponse(r, 1.0, joinedScratch_);
+    const double free = joinedVelocity(r, joinedScratch_);
+    joinedScratch_.setZero();
+    applyJoined(r, 1.0, joinedScratch_, joints);
+    r.inverseMass = joinedVelocity(r, joinedScratch_);
+    // A row the joints hold still (between two welded bodies, on a body welded to the ground)
+    // takes no impulse: what is left of its inverse mass is round-off.
+    if (r.inverseMass > kJoinedRankFloor * free) return true;
+    r.inverseMass = 0.0;
+    RowPoint& p = rows_[r.row].p[r.point];
+    (r.normal ? p.normalImpulse : p.tangentImpulse) = 0.0;
+    return false;
+}
+
 void ContactSolver::relaxJoined(Vec& u, const TangentProjection& joints) {
     if (rows_.empty()) return;
     unpackImpulses();
     buildJoinedRows(u, joints);
-    // The two normal rows of a manifold as a block (Box2D's block solver: the four cases of
-    // the 2×2 complementarity problem), which keeps a body resting on two points from rocking
-    // between them over the sweeps; their coupling through W'.
-    blockCoupling_.assign(rows_.size(), 0.0);
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        const int s = joinedStart_[i];
-        if (joinedStart_[i + 1] - s >= 2 && joined_[s].normal && joined_[s + 1].normal)
-            blockCoupling_[i] = joinedCoupling(joined_[s], joined_[s + 1], joints);
-    }
     // Each row's diagonal with its compliance (kJoinedCompliance).
     constexpr double kSoft = 1.0 + kJoinedCompliance;
     const auto impulseOf = [&](const JoinedRow& r) -> double& {
@@ -178,52 +177,62 @@ void ContactSolver::relaxJoined(Vec& u, const TangentProjection& joints) {
         applyJoined(r, dp, u, joints);
         return std::abs(dp) * r.inverseMass;
     };
+    // The two normal rows of a manifold as a block (Box2D's block solver: the four cases of
+    // the 2×2 complementarity problem), which keeps a body resting on two points from rocking
+    // between them over the sweeps; their coupling through W', once both are ready.
+    blockCoupling_.assign(rows_.size(), std::numeric_limits<double>::quiet_NaN());
+    const auto solveBlock = [&](std::size_t i, JoinedRow& r1, JoinedRow& r2) {
+        const double l1 = impulseOf(r1), l2 = impulseOf(r2);
+        const double v1 = joinedVelocity(r1, u), v2 = joinedVelocity(r2, u);
+        if (l1 == 0.0 && l2 == 0.0 && v1 >= 0.0 && v2 >= 0.0) return 0.0;  // neither acts
+        if (!readyJoined(r1, joints) || !readyJoined(r2, joints)) return -1.0;
+        if (std::isnan(blockCoupling_[i])) blockCoupling_[i] = joinedCoupling(r1, r2, joints);
+        const double a11 = kSoft * r1.inverseMass, a22 = kSoft * r2.inverseMass;
+        const double a12 = blockCoupling_[i];
+        // b = v − A·λ: the velocities with the accumulated impulses taken away.
+        const double b1 = v1 - (a11 * l1 + a12 * l2), b2 = v2 - (a12 * l1 + a22 * l2);
+        const double det = a11 * a22 - a12 * a12;
+        double x1 = -1.0, x2 = -1.0;
+        if (det > 1e-9 * a11 * a22) {
+            x1 = (-b1 * a22 + b2 * a12) / det;
+            x2 = (-b2 * a11 + b1 * a12) / det;
+        }
+        if (!(x1 >= 0.0 && x2 >= 0.0)) {
+            x1 = -b1 / a11;
+            x2 = 0.0;
+            if (!(x1 >= 0.0 && a12 * x1 + b2 >= 0.0)) {
+                x1 = 0.0;
+                x2 = -b2 / a22;
+                if (!(x2 >= 0.0 && a12 * x2 + b1 >= 0.0)) x1 = x2 = 0.0;
+            }
+        }
+        return std::max(update(r1, x1 - l1), update(r2, x2 - l2));
+    };
+    const auto solveScalar = [&](std::size_t i, JoinedRow& r) {
+        const double v = joinedVelocity(r, u);
+        const double old = impulseOf(r);
+        // A normal row with no impulse whose point separates, or a friction row with no normal
+        // impulse to bound it, does not act.
+        const double limit = r.normal ? 0.0 : rows_[i].friction * rows_[i].p[r.point].normalImpulse;
+        if (old == 0.0 && (r.normal ? v >= 0.0 : limit == 0.0)) return 0.0;
+        if (!readyJoined(r, joints)) return 0.0;
+        double next = old - v / (kSoft * r.inverseMass);
+        next = r.normal ? std::max(next, 0.0) : std::clamp(next, -limit, limit);
+        return update(r, next - old);
+    };
     for (int sweep = 0; sweep < kJoinedSweeps; ++sweep) {
         double change = 0.0;  // the largest change of a row's own velocity in the sweep
         for (std::size_t i = 0; i < rows_.size(); ++i) {
             const int start = joinedStart_[i], end = joinedStart_[i + 1];
             int t = start;
             if (end - start >= 2 && joined_[start].normal && joined_[start + 1].normal) {
-                JoinedRow& r1 = joined_[start];
-                JoinedRow& r2 = joined_[start + 1];
-                const double a11 = kSoft * r1.inverseMass, a22 = kSoft * r2.inverseMass;
-                const double a12 = blockCoupling_[i];
-                const double l1 = impulseOf(r1), l2 = impulseOf(r2);
-                // b = v − A·λ: the velocities with the accumulated impulses taken away.
-                const double v1 = joinedVelocity(r1, u), v2 = joinedVelocity(r2, u);
-                const double b1 = v1 - (a11 * l1 + a12 * l2), b2 = v2 - (a12 * l1 + a22 * l2);
-                const double det = a11 * a22 - a12 * a12;
-                double x1 = -1.0, x2 = -1.0;
-                if (det > 1e-9 * a11 * a22) {
-                    x1 = (-b1 * a22 + b2 * a12) / det;
-                    x2 = (-b2 * a11 + b1 * a12) / det;
+                const double block = solveBlock(i, joined_[start], joined_[start + 1]);
+                if (block >= 0.0) {
+                    change = std::max(change, block);
+                    t = start + 2;
                 }
-                if (!(x1 >= 0.0 && x2 >= 0.0)) {
-                    x1 = -b1 / a11;
-                    x2 = 0.0;
-                    if (!(x1 >= 0.0 && a12 * x1 + b2 >= 0.0)) {
-                        x1 = 0.0;
-                        x2 = -b2 / a22;
-                        if (!(x2 >= 0.0 && a12 * x2 + b1 >= 0.0)) x1 = x2 = 0.0;
-                    }
-                }
-                change = std::max(change, update(r1, x1 - l1));
-                change = std::max(change, update(r2, x2 - l2));
-                t = start + 2;
             }
-            for (; t < end; ++t) {
-                JoinedRow& r = joined_[t];
-                const double v = joinedVelocity(r, u);
-                const double old = impulseOf(r);
-                double next = old - v / (kSoft * r.inverseMass);
-                if (r.normal) {
-                    next = std::max(next, 0.0);
-                } else {
-                    const double limit = rows_[i].friction * rows_[i].p[r.point].normalImpulse;
-                    next = std::clamp(next, -limit, limit);
-                }
-                change = std::max(change, update(r, next - old));
-            }
+            for (; t < end; ++t) change = std::max(change, solveScalar(i, joined_[t]));
         }
         if (change <= kJoinedTolerance) break;
     }

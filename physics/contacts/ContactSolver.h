@@ -370,6 +370,9 @@ private:
     // soft solve takes up.
     static constexpr double kJoinedCompliance = 0.01;  // m/s: a sweep that changes no less ends it
     void buildJoinedRows(const Vec& u, const TangentProjection& joints);
+    // Works out row r's response and inverse mass the first time it is needed; false where the
+    // joints hold the row still (it takes no impulse).
+    bool readyJoined(JoinedRow& r, const TangentProjection& joints);
     double joinedVelocity(const JoinedRow& r, const Vec& u) const;
     // u += dp·W'·gᵀ of row r.
     void applyJoined(const JoinedRow& r, double dp, Vec& u, const TangentProjection& joints);
@@ -381,6 +384,7 @@ private:
     std::vector<int> joinedStart_;       // per contact row: its first joined row (rows_.size() + 1)
     std::vector<double> blockCoupling_;  // per contact row: its two normal rows' g₁·W'·g₂ᵀ
     Vec joinedColumns_, joinedScratch_;
+    std::size_t joinedCached_ = 0;  // columns in joinedColumns_ this step
 
     // The accumulated impulses into the constraints.
     void storeImpulses();
