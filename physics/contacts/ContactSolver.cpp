@@ -158,6 +158,7 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
 }
 
 void ContactSolver::buildRows(double hertz, double zeta, double h, double warmScale) {
+    impulsesToPack_ = true;  // the warm start's impulses, into the new lanes
     // What does not change within the step, once: the rows' masses, the block's K and its
     // conditioning, the softness (each contact's stiffness multiplier: see prepare()).
     const int world = static_cast<int>(bodies_.size());
@@ -522,8 +523,8 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         if (moved) updateSeparations();
         warmStart();
         preparePhase(hi, true, settings);
+        impulsesToPack_ = false;  // from here on the lanes hold the accumulated impulses
         for (int it = 0; it < iterations; ++it) solve();
-        unpackImpulses();
         for (std::size_t k = 0; k < count; ++k) {
             SolverBody& b = bodies_[k];
             const BodyState& s = state_[k];
@@ -555,14 +556,9 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     }
 
     deepPushOut(h, settings);
-    storeImpulses();  // the accumulated impulses, for the next step's warm start
+    // The accumulated impulses, for the next step's warm start, all of them the solve's.
+    storeImpulses(true);
     lastStepH_ = h;
-    for (ContactConstraint& c : constraints_)
-        for (int k = 0; k < c.pointCount; ++k) {
-            ContactPoint& p = c.points[k];
-            p.solvedNormal = p.normalImpulse;
-            p.solvedTangent = p.tangentImpulse;
-        }
     refreshHeld();
 
     // A force held over the step moves a body by positionWeight·h·Δv under the user's method;
@@ -598,12 +594,16 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     }
 }
 
-void ContactSolver::storeImpulses() {
+void ContactSolver::storeImpulses(bool solved) {
     for (std::size_t i = 0; i < constraints_.size(); ++i) {
         ContactConstraint& c = constraints_[i];
         for (int k = 0; k < c.pointCount; ++k) {
-            c.points[k].normalImpulse = rows_[i].p[k].normalImpulse;
-            c.points[k].tangentImpulse = rows_[i].p[k].tangentImpulse;
+            ContactPoint& p = c.points[k];
+            p.normalImpulse = rows_[i].p[k].normalImpulse;
+            p.tangentImpulse = rows_[i].p[k].tangentImpulse;
+            if (!solved) continue;
+            p.solvedNormal = p.normalImpulse;
+            p.solvedTangent = p.tangentImpulse;
         }
     }
 }
@@ -628,6 +628,7 @@ void ContactSolver::packPhase(std::size_t i) {
         q.bias[l] = used ? p.bias : 0.0;
         q.effectiveMass[l] = used ? p.effectiveMass : 0.0;
         q.impulseScale[l] = used ? p.impulseScale : 0.0;
+        if (!impulsesToPack_) continue;
         q.normalImpulse[l] = used ? p.normalImpulse : 0.0;
         q.tangentImpulse[l] = used ? p.tangentImpulse : 0.0;
     }

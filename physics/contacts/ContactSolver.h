@@ -284,8 +284,11 @@ private:
     void solveRow(Row& c);
     // Graph colours and the wide rows' step constants (after buildRows; ContactColours.cpp).
     void colourRows();
-    // The phase's terms of row i into its wide lane.
+    // The phase's terms of row i into its wide lane (and the accumulated impulses, the first
+    // time in a step: after that the lanes hold them through the phases, and rows_ has them only
+    // after unpackImpulses()).
     void packPhase(std::size_t i);
+    bool impulsesToPack_ = true;
     // The wide rows' accumulated impulses back into rows_ (after a phase).
     void unpackImpulses();
     // Separations with the bodies where the solver's path has taken them.
@@ -387,7 +390,8 @@ private:
     std::size_t joinedCached_ = 0;  // columns in joinedColumns_ this step
 
     // The accumulated impulses into the constraints.
-    void storeImpulses();
+    // solved: they are the solve's (ContactPoint::solvedNormal), not the joined relax's.
+    void storeImpulses(bool solved = false);
     // Per body, the held forces' share of the smooth step's change (after loadBodies).
     void holdBodies(double h);
     double lastInnerH_ = 0.0;  // the last step's inner sub-step (its impulses are per one)

@@ -119,6 +119,7 @@ void ContactStage::bind(const Bodies& bodies) {
         }
     }
     previous_.clear();
+    heldCarried_ = false;
     solver_.constraints().clear();
 }
 
@@ -378,6 +379,14 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
     // Warm start: carry the impulses of persisting contacts (same shapes, same features).
     std::vector<ContactConstraint>& now = solver_.constraints();
     sortByKey(now);
+    // Whether every point that held a force found its successor: then the contacts account
+    // for all the forces the method's step held (World::releaseHeldForces).
+    const auto holds = [](const ContactPoint& p) {
+        return p.heldNormal != 0.0 || p.heldTangent != 0.0;
+    };
+    std::size_t heldBefore = 0, heldCarried = 0;
+    for (const ContactConstraint& c : previous_)
+        for (int k = 0; k < c.pointCount; ++k) heldBefore += holds(c.points[k]);
     auto old = previous_.begin();
     for (ContactConstraint& c : now) {
         while (old != previous_.end() && old->key < c.key) ++old;
@@ -386,6 +395,7 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
         for (int k = 0; k < c.pointCount; ++k)
             for (int l = 0; l < old->pointCount; ++l)
                 if (c.points[k].id == old->points[l].id) {
+                    heldCarried += holds(old->points[l]);
                     c.points[k].normalImpulse = old->points[l].normalImpulse;
                     c.points[k].tangentImpulse = old->points[l].tangentImpulse;
                     c.points[k].solvedNormal = old->points[l].solvedNormal;
@@ -396,6 +406,7 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
                     c.points[k].heldTangent = old->points[l].heldTangent;
                 }
     }
+    heldCarried_ = heldCarried == heldBefore;
     // Bodies' masses, now that the solver body list is complete.
     const Vec& invMass = inverseMass;
     for (SolverBody& b : solver_.bodies()) {

@@ -79,7 +79,11 @@ public:
         solver_.constraints().clear();
         solver_.bodies().clear();
         previous_.clear();
+        heldCarried_ = false;
     }
+    // The last collide() carried every point that held a force over to a point it found: the
+    // solver's contacts hold what the method's step held.
+    bool heldCarried() const { return heldCarried_; }
     bool touching() const { return !solver_.empty(); }
     // Adds scale times the last step's position correction to q.
     void addPushOut(Vec& q, double scale) const { solver_.addPushOut(q, scale); }
@@ -150,6 +154,7 @@ private:
     std::vector<double> planeFriction_, planeRestitution_;
     std::vector<int> bodyOfCollider_;  // solver body index in this step, −1 none yet
     std::vector<ContactConstraint> previous_;
+    bool heldCarried_ = false;
     // Sorts constraints by key (the pair), for matching them with previous_.
     void sortByKey(std::vector<ContactConstraint>& constraints);
     std::vector<std::pair<std::uint64_t, int>> keyOrder_;

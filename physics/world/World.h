@@ -211,7 +211,8 @@ private:
     // collideSubsteps > 0, the frame's first sub-step of that many), their booking.
     void solveConstraints(double h, int collideSubsteps, int next, StageTimer& timer);
     void bookHeldWork(double h, int next);
-    void releaseHeldForces(double h, int next);
+    // collided: collide() ran in this step (ContactStage::heldCarried() is of it).
+    void releaseHeldForces(double h, int next, bool collided);
     void advanceClock();
     void collide(int next, int substeps);
     void findPenaltyPairs();

@@ -201,7 +201,7 @@ void World::bookHeldWork(double h, int next) {
     heldWork_ = 0.5 * h * work;
 }
 
-void World::releaseHeldForces(double h, int next) {
+void World::releaseHeldForces(double h, int next, bool collided) {
     // The solver takes the held forces of the contacts it has (found again at the frame's start,
     // their impulses carried over) as the part of its warm start the method's step has applied
     // already. A force held for a contact that is gone (a body lifted off) is taken back here:
@@ -209,6 +209,9 @@ void World::releaseHeldForces(double h, int next) {
     // (the method's response to a constant force). A joint's answer to the held force stays: a
     // cart rests on its wheels in the method's step too.
     if (!holding_) return;
+    // Every point that held a force was found again (a pile at rest, step after step): the
+    // contacts account for all of it, and nothing is taken back.
+    if (collided && contacts_->heldCarried()) return;
     Vec& q = q_[next];
     Vec& u = u_[next];
     heldForce_ *= -1.0;  // what the solver's contacts do not account for: held − accounted
@@ -250,7 +253,7 @@ void World::solveConstraints(double h, int collideSubsteps, int next, StageTimer
     }
     timer.start(StepStage::SolveContacts);
     const bool held = holding_;
-    releaseHeldForces(h, next);
+    releaseHeldForces(h, next, collideSubsteps > 0);
     holding_ = false;
     // Contacts move jointed bodies apart, and the joints answer (rejoin()): the two trade
     // energy back and forth, and what counts is their net change, booked once after both:
