@@ -106,7 +106,9 @@ void MainWindow::createActions() {
     make("revert", tr("Re&vert"), QKeySequence(), [this] {
         revert();
     })->setToolTip(tr("Reopen the scene's file as it was last saved, dropping the edits"));
-    make("saveAs", tr("Save &As…"), QKeySequence::SaveAs, [this] { files_->saveAs(); });
+    // Ctrl+Shift+S everywhere: QKeySequence::SaveAs is empty on platforms without a desktop theme.
+    make("saveAs", tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
+         [this] { files_->saveAs(); });
     make("quit", tr("&Quit"), QKeySequence::Quit, [this] { close(); });
     QUndoStack* stack = document_.undoStack();
     for (const auto& [a, name, key] :

@@ -183,13 +183,15 @@ bool Recorder::samplePhase(const World& world, ui::PhaseSample& sample) {
 }
 
 bool Recorder::writeEnergyCsv(const QString& path, QString* error) const {
-    return writeCsv(path, error, QStringLiteral("t,kinetic,potential,work_nc,drift,correction"),
+    // total: the mechanical energy the plot's top line shows (kinetic + potential).
+    return writeCsv(path, error,
+                    QStringLiteral("t,kinetic,potential,work_nc,drift,correction,total"),
                     [&](QTextStream& out) {
                         for (const ui::EnergySample& s : energy_)
                             out << formatNumber(s.t) << ',' << formatNumber(s.kinetic) << ','
                                 << formatNumber(s.potential) << ',' << formatNumber(s.workNc) << ','
-                                << formatNumber(s.drift) << ',' << formatNumber(s.correction)
-                                << '\n';
+                                << formatNumber(s.drift) << ',' << formatNumber(s.correction) << ','
+                                << formatNumber(s.kinetic + s.potential) << '\n';
                     });
 }
 

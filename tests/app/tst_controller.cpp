@@ -314,9 +314,16 @@ void TestController::recorderWritesTheContractsCsv() {
     QVERIFY2(recorder.writeEnergyCsv(path, &error), qPrintable(error));
     const QStringList lines = readLines(path);
     QCOMPARE(lines.size(), 31);
-    QCOMPARE(lines[0], QStringLiteral("t,kinetic,potential,work_nc,drift,correction"));
+    QCOMPARE(lines[0], QStringLiteral("t,kinetic,potential,work_nc,drift,correction,total"));
     const QStringList first = lines[1].split(QLatin1Char(','));
-    QCOMPARE(first.size(), 6);
+    QCOMPARE(first.size(), 7);
+    // total is kinetic + potential of the same row (as printed, to its rounding).
+    for (const QString& line : lines.mid(1)) {
+        const QStringList f = line.split(QLatin1Char(','));
+        const double total = f[1].toDouble() + f[2].toDouble();
+        QVERIFY2(std::abs(f[6].toDouble() - total) <= 1e-12 * std::max(1.0, std::abs(total)),
+                 qPrintable(line));
+    }
     QCOMPARE(first[0].toDouble(), 0.01);
     // work_nc is the damping's (negative) work, read back exactly.
     const QStringList last = lines.last().split(QLatin1Char(','));

@@ -161,8 +161,9 @@ void TestEnergyPlot::pushOutIsPlottedAsCorrection() {
     QVERIFY(csv.open(QIODevice::ReadOnly | QIODevice::Text));
     const QList<QByteArray> lines = csv.readAll().trimmed().split('\n');
     QVERIFY(lines.size() > 2);
-    QVERIFY(lines.front().endsWith(",drift,correction"));
-    QCOMPARE(lines.back().split(',').back().toDouble(), ledger.correction);
+    QVERIFY(lines.front().endsWith(",drift,correction,total"));
+    const QList<QByteArray> last = lines.back().split(',');
+    QCOMPARE(last[5].toDouble(), ledger.correction);
 }
 
 void TestEnergyPlot::correctionLineIsDashedAndColouredApart() {

@@ -394,13 +394,50 @@ private slots:
             const QList<QByteArray> lines = csv.readAll().split('\n');
             QVERIFY2(lines.size() > 55, qPrintable(base));
             if (plot == ui::PlotsPanel::Plot::Energy)
-                QCOMPARE(lines[0], QByteArray("t,kinetic,potential,work_nc,drift,correction"));
+                QCOMPARE(lines[0],
+                         QByteArray("t,kinetic,potential,work_nc,drift,correction,total"));
             else
                 QVERIFY(lines[0].startsWith("t,"));
             QCOMPARE(lines[1].count(','), lines[0].count(','));
         }
         QVERIFY2(w.exportCanvas(dir.filePath("canvas.png"), &error), qPrintable(error));
         QVERIFY(!QImage(dir.filePath("canvas.png")).isNull());
+    }
+
+    void helpAndVersionNeedNoDisplay() {
+        // No window system at all (QApplication would abort): --help and --version still answer.
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const char* name : {"QT_QPA_PLATFORM", "DISPLAY", "WAYLAND_DISPLAY"}) env.remove(name);
+        env.insert("QT_QPA_PLATFORM", "xcb");
+        env.insert("DISPLAY", ":9753");  // nobody listens there
+        for (const QStringList& args : {QStringList{"--help"}, QStringList{"--version"}}) {
+            QProcess app;
+            app.setProcessEnvironment(env);
+            app.start(QStringLiteral(PHASEBOX_DESKTOP), args);
+            QVERIFY(app.waitForFinished(30000));
+            QCOMPARE(app.exitStatus(), QProcess::NormalExit);
+            QCOMPARE(app.exitCode(), 0);
+            const QByteArray out = app.readAllStandardOutput();
+            QVERIFY2(out.contains(args[0] == "--help" ? "--screenshot" : PHASEBOX_VERSION),
+                     out.constData());
+        }
+        // An unknown option before --help is an error, still without a display.
+        QProcess app;
+        app.setProcessEnvironment(env);
+        app.start(QStringLiteral(PHASEBOX_DESKTOP), {"--no-such-option", "--help"});
+        QVERIFY(app.waitForFinished(30000));
+        QCOMPARE(app.exitCode(), 2);
+        QVERIFY(app.readAllStandardError().contains("phasebox: error:"));
+    }
+
+    void saveAsIsControlShiftS() {
+        MainWindow w;
+        const QAction* saveAs = w.findChild<QAction*>(QStringLiteral("saveAs"));
+        QVERIFY(saveAs);
+        QCOMPARE(saveAs->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
+        // No other action of the window takes it.
+        for (const QAction* a : w.findChildren<QAction*>())
+            if (a != saveAs) QVERIFY2(a->shortcut() != saveAs->shortcut(), qPrintable(a->text()));
     }
 
     void screenshotModeWritesAPicture() {
