@@ -28,8 +28,8 @@ SimulationController::SimulationController(Document& document, QObject* parent)
     timer_.setTimerType(Qt::PreciseTimer);
     timer_.setInterval(kTickMs);
     connect(&timer_, &QTimer::timeout, this, &SimulationController::tick);
-    // A new scene (load, new, reset) starts paused.
-    connect(&document_, &Document::sceneReset, this, &SimulationController::pause);
+    // A new scene (load, new, reset) starts paused, with none of the last scene's figures.
+    connect(&document_, &Document::sceneReset, this, &SimulationController::forgetScene);
     clock_.start();
 }
 
@@ -53,6 +53,14 @@ void SimulationController::pause() {
     recentTicks_.clear();
     realTimeFactor_ = 0.0;
     emit runningChanged(false);
+    emit statsChanged();
+}
+
+void SimulationController::forgetScene() {
+    pause();
+    lastError_ = std::numeric_limits<double>::quiet_NaN();
+    msPerStep_ = 0.0;
+    realTimeFactor_ = 0.0;
     emit statsChanged();
 }
 

@@ -66,6 +66,8 @@ public:
 public slots:
     void play();
     void pause();
+    // Paused, and the figures of the scene before (error estimate, cost of a step) gone.
+    void forgetScene();
     void togglePlay();
     // One world step, paused or not.
     void singleStep();

@@ -29,6 +29,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <cmath>
@@ -428,6 +429,45 @@ private slots:
         QVERIFY(app.waitForFinished(30000));
         QCOMPARE(app.exitCode(), 2);
         QVERIFY(app.readAllStandardError().contains("phasebox: error:"));
+    }
+
+    void statusBarForgetsTheSceneBefore() {
+        // Every label of the status bar after New from a run equals New in a fresh window.
+        const auto statusTexts = [](MainWindow& w) {
+            QStringList texts;
+            for (const QLabel* l : w.statusBar()->findChildren<QLabel*>())
+                texts << l->objectName() + QLatin1Char('=') + l->text();
+            return texts;
+        };
+        MainWindow fresh;
+        fresh.show();
+        fresh.findChild<QAction*>(QStringLiteral("new"))->trigger();
+        MainWindow w;
+        w.show();
+        QVERIFY(w.openFile(QStringLiteral(":/scenes/box-pyramid.phasebox.json"), true));
+        QVERIFY(w.controller().advance(1.0));
+        w.controller().play();  // running: the speed label and the error estimate show figures
+        QVERIFY(QTest::qWaitFor([&] { return w.controller().msPerStep() > 0.0; }, 5000));
+        const QStringList running = statusTexts(w);
+        QVERIFY(w.findChild<QLabel*>(QStringLiteral("statusMessage"))->text().contains("Opened"));
+        w.findChild<QAction*>(QStringLiteral("new"))->trigger();
+        QVERIFY(!w.controller().isRunning());
+        QCOMPARE(statusTexts(w), statusTexts(fresh));
+        QVERIFY(statusTexts(w) != running);
+    }
+
+    void statusMessagesExpire() {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.openFile(QStringLiteral(":/scenes/box-pyramid.phasebox.json"), true));
+        const QLabel* message = w.findChild<QLabel*>(QStringLiteral("statusMessage"));
+        QVERIFY(!message->text().isEmpty());
+        auto* expiry = w.findChild<QTimer*>(QStringLiteral("statusMessageExpiry"));
+        QVERIFY(expiry && expiry->isActive());
+        QCOMPARE(expiry->interval(), 10000);
+        expiry->setInterval(50);  // the same timer, sooner
+        expiry->start();
+        QVERIFY(QTest::qWaitFor([&] { return message->text().isEmpty(); }, 2000));
     }
 
     void saveAsIsControlShiftS() {

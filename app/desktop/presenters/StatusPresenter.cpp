@@ -6,6 +6,7 @@
 
 #include <QLabel>
 #include <QStatusBar>
+#include <QTimer>
 
 #include <cmath>
 
@@ -18,6 +19,11 @@ StatusPresenter::StatusPresenter(QStatusBar& bar, Document& document,
     message_->setObjectName(QStringLiteral("statusMessage"));
     message_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     bar.addWidget(message_, 1);
+    expiry_ = new QTimer(this);
+    expiry_->setObjectName(QStringLiteral("statusMessageExpiry"));
+    expiry_->setSingleShot(true);
+    expiry_->setInterval(kMessageMs);
+    connect(expiry_, &QTimer::timeout, message_, &QLabel::clear);
     error_ = new QLabel(&bar);
     error_->setToolTip(
         tr("Step doubling at the current state: the error one step of this "
@@ -27,7 +33,7 @@ StatusPresenter::StatusPresenter(QStatusBar& bar, Document& document,
     cost_ = new QLabel(&bar);
     for (QLabel* label : {error_, time_, speed_, cost_}) bar.addPermanentWidget(label);
 
-    connect(&document_, &Document::sceneReset, this, &StatusPresenter::reportUnsupportedEffects);
+    connect(&document_, &Document::sceneReset, this, &StatusPresenter::onSceneReset);
     connect(&document_, &Document::sceneEdited, this, &StatusPresenter::reportUnsupportedEffects);
     connect(&document_, &Document::simulationSettingsChanged, this, &StatusPresenter::refresh);
     connect(&controller_, &SimulationController::stepped, this, &StatusPresenter::refresh);
@@ -37,6 +43,15 @@ StatusPresenter::StatusPresenter(QStatusBar& bar, Document& document,
 
 void StatusPresenter::showMessage(const QString& text) {
     message_->setText(text);
+    if (text.isEmpty())
+        expiry_->stop();
+    else
+        expiry_->start();
+}
+
+void StatusPresenter::onSceneReset() {
+    showMessage(QString());
+    reportUnsupportedEffects();
 }
 
 void StatusPresenter::reportUnsupportedEffects() {

@@ -7,6 +7,7 @@
 QT_BEGIN_NAMESPACE
 class QLabel;
 class QStatusBar;
+class QTimer;
 QT_END_NAMESPACE
 
 namespace phasebox {
@@ -22,15 +23,20 @@ public:
                     QObject* parent = nullptr);
 
     void refresh() override;
-    // Shows a message until the next one (every presenter's message() comes here).
+    // Shows a message for kMessageMs, or until the next one or a new scene (every presenter's
+    // message() comes here): "Distance 1.001 m" must not outlive the ruler it measured.
     void showMessage(const QString& text);
+    static constexpr int kMessageMs = 10000;
 
 private:
     void reportUnsupportedEffects();
+    // A new scene (New, Open, Reset, Revert): no message of the scene before stays.
+    void onSceneReset();
 
     Document& document_;
     SimulationController& controller_;
     QLabel* message_ = nullptr;
+    QTimer* expiry_ = nullptr;  // clears message_
     QLabel* error_ = nullptr;
     QLabel* time_ = nullptr;
     QLabel* speed_ = nullptr;
