@@ -68,8 +68,7 @@ double ContactSolver::joinedCoupling(const JoinedRow& r, const JoinedRow& s,
     return joinedVelocity(r, joinedScratch_);
 }
 
-void ContactSolver::buildJoinedRows(const Vec& u, const TangentProjection& joints) {
-    const int n = static_cast<int>(u.size());
+void ContactSolver::buildJoinedRows(int n) {
     const int world = static_cast<int>(bodies_.size());
     joined_.clear();
     joinedStart_.assign(rows_.size() + 1, 0);
@@ -163,7 +162,7 @@ bool ContactSolver::readyJoined(JoinedRow& r, const TangentProjection& joints) {
 void ContactSolver::relaxJoined(Vec& u, const TangentProjection& joints) {
     if (rows_.empty()) return;
     unpackImpulses();
-    buildJoinedRows(u, joints);
+    buildJoinedRows(static_cast<int>(u.size()));
     // Each row's diagonal with its compliance (kJoinedCompliance).
     constexpr double kSoft = 1.0 + kJoinedCompliance;
     const auto impulseOf = [&](const JoinedRow& r) -> double& {

@@ -352,7 +352,7 @@ private:
         bool turnsA, turnsB;
         double ga[3], gb[3];
         double wa[3], wb[3];  // each body's inverse masses (x, y, θ)
-        double inverseMass;   // g·W'·gᵀ
+        double inverseMass;   // g·W'·gᵀ; 0: the joints hold it still; −1: not worked out yet
         int column;
         int from, to;
         bool jointed;
@@ -363,16 +363,17 @@ private:
     static constexpr int kJoinedSweeps = 64;
     // A row whose inverse mass with the joints held is below this share of its free one.
     static constexpr double kJoinedRankFloor = 1e-8;
-    static constexpr double kJoinedTolerance = 1e-9;
+    static constexpr double kJoinedTolerance = 1e-9;  // m/s: a sweep that changes no less ends it
     // The rows' compliance, as a share of their inverse mass: supports that the joints make
-    // redundant (a welded table's four leg corners, a car's wheels on a flat floor) share their
-    // load in the least-norm way instead of the solve handing it from corner to corner between
-    // steps, which the held forces cannot follow (a welded table rocked and slid 0.9 mm in 18 s,
+    // redundant (a welded table's four leg corners) share their load in the least-norm way
+    // instead of the solve handing it from corner to corner between steps, which the held forces
+    // cannot follow (a welded table rocked and slid 0.9 mm in 18 s,
     // its books 19 mJ each way; at 1% it moves 0.25 mm and books 4 mJ, at 0.1% 11 mJ). A resting
     // body is left approaching its support at 1% of the relax's answer, which the next step's
     // soft solve takes up.
-    static constexpr double kJoinedCompliance = 0.01;  // m/s: a sweep that changes no less ends it
-    void buildJoinedRows(const Vec& u, const TangentProjection& joints);
+    static constexpr double kJoinedCompliance = 0.01;
+    // The step's rows, their responses not yet worked out (readyJoined()); n: the state's size.
+    void buildJoinedRows(int n);
     // Works out row r's response and inverse mass the first time it is needed; false where the
     // joints hold the row still (it takes no impulse).
     bool readyJoined(JoinedRow& r, const TangentProjection& joints);
