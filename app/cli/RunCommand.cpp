@@ -475,7 +475,14 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     }
 
     // Probes (CONTRACT §7), refused before anything runs or is written. Each is sampled at every
-    // step for its statistics, whatever --every thins the CSV to.
+    // step for its statistics, whatever --every thins the CSV to. The lesson's saved instruments
+    // come first, as if given with --probe (one given again is not repeated).
+    QStringList savedProbes;
+    for (const std::string& text : scene.instruments.readProbes())
+        savedProbes << QString::fromStdString(text);
+    for (const QString& text : std::as_const(o.probes))
+        if (!savedProbes.contains(text)) savedProbes << text;
+    o.probes = savedProbes;
     std::vector<Probe> probes;
     for (const QString& text : o.probes) {
         ProbeParse parsed = parseProbe(world, text.toStdString());

@@ -76,6 +76,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), controller_(docum
     connect(&document_, &Document::filePathChanged, this, revertable);
     revertable();
     connect(&controller_, &SimulationController::diverged, this, &MainWindow::onDiverged);
+    connectLessonInstruments();
     readSettings();
     autosave_ = std::make_unique<Autosave>(document_);
     connect(autosave_.get(), &Autosave::autosaveFailed, this, [this](const QString& message) {

@@ -114,6 +114,11 @@ private:
     void writeSettings();
     bool maybeSave();
 
+    // A lesson's instruments (CONTRACT §7): the view and the plots here, the rest in the
+    // instruments' presenter and the measuring tools; collected for Save and the autosave.
+    void connectLessonInstruments();
+    InstrumentsDesc currentInstruments() const;
+
     void newScene();
     void openIfSaved(const QString& path);
     void updateTitle();

@@ -2,14 +2,18 @@
 
 #include "app/desktop/MainWindow.h"
 
+#include "app/desktop/MeasureTools.h"
 #include "app/desktop/SceneFiles.h"
 #include "app/desktop/presenters/CanvasPresenter.h"
+#include "app/desktop/presenters/InstrumentsPresenter.h"
 #include "app/desktop/presenters/ParametersPresenter.h"
 #include "app/desktop/presenters/PlotsPresenter.h"
 #include "app/document/Autosave.h"
+#include "ui/canvas/SceneView.h"
 
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileInfo>
@@ -53,6 +57,44 @@ bool MainWindow::exportPlot(ui::PlotsPanel::Plot plot, const QString& path, QStr
 
 bool MainWindow::exportCanvas(const QString& path, QString* error) {
     return canvasPresenter_->exportPicture(path, error);
+}
+
+void MainWindow::connectLessonInstruments() {
+    document_.setInstrumentsSource([this] { return currentInstruments(); });
+    // After the presenters have set theirs (they connected first).
+    connect(&document_, &Document::instrumentsLoaded, this, [this] {
+        const InstrumentsDesc& in = document_.loadedInstruments();
+        if (in.view) {
+            const ViewDesc& v = *in.view;
+            canvas_->showWidth(QPointF(v.center[0], v.center[1]), v.width);
+        }
+        if (in.plots.empty()) return;
+        QDockWidget* dock = findChild<QDockWidget*>(QStringLiteral("plotsDock"));
+        for (const std::string& name : in.plots) {
+            if (name == kPlotNames[0]) continue;
+            plots_->showLowerPlot(name == kPlotNames[2] ? ui::PlotsPanel::Plot::Error
+                                                        : ui::PlotsPanel::Plot::Phase);
+        }
+        if (dock) {
+            dock->show();
+            dock->raise();
+        }
+    });
+}
+
+InstrumentsDesc MainWindow::currentInstruments() const {
+    InstrumentsDesc in;
+    instrumentsPresenter_->collectInstruments(in);
+    measure_->collectInstruments(in);
+    // The view and the plots are written only when chosen, so that a scene without
+    // instruments saves as it was (version 1 stays version 1).
+    if (canvas_->isChosenView()) {
+        const ui::ViewTransform view = canvas_->view();
+        in.view = ViewDesc{{view.centre().x(), view.centre().y()}, canvas_->shownWidth()};
+    }
+    if (plots_->lowerPlot() == ui::PlotsPanel::Plot::Error)
+        in.plots = {std::string(kPlotNames[0]), std::string(kPlotNames[2])};
+    return in;
 }
 
 void MainWindow::newScene() {

@@ -76,6 +76,8 @@ MeasureTools::MeasureTools(Document& document, CanvasTools& tools, ui::SceneView
             refresh();
         });
     connect(&document_, &Document::selectionChanged, this, &MeasureTools::refresh);
+    connect(&document_, &Document::instrumentsLoaded, this,
+            [this] { applyInstruments(document_.loadedInstruments()); });
 }
 
 void MeasureTools::createActions(QWidget& window) {

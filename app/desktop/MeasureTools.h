@@ -28,6 +28,7 @@
 
 namespace phasebox {
 
+struct InstrumentsDesc;
 class CanvasTools;
 class Document;
 class SimulationController;
@@ -61,6 +62,12 @@ public:
     bool addRuler(const QString& ends, QString* error);
     bool addProtractor(const QString& ends, QString* error);
     void clear();
+    // A lesson's rulers, protractors and free body (CONTRACT §7, MeasureLesson.cpp): set from
+    // the opened file (replacing every instrument; New brings none), and what is set now.
+    void applyInstruments(const InstrumentsDesc& instruments);
+    void collectInstruments(InstrumentsDesc& instruments) const;
+    // An end as a lesson file writes it: the object's id, or "X:Y".
+    static QString endText(const End& end);
     // Removes the selected instrument; false when none is selected.
     bool removeSelected();
 

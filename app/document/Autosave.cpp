@@ -73,7 +73,7 @@ bool Autosave::autosaveNow() {
         return false;
     }
     QString error;
-    if (!SceneIO::save(document_.setup(), recoveryFile(), &error)) {
+    if (!SceneIO::save(document_.sceneToSave(), recoveryFile(), &error)) {
         lastError_ = error;
         emit autosaveFailed(lastError_);
         return false;

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <type_traits>
 #include <unordered_set>
+#include <utility>
 
 namespace phasebox {
 
@@ -111,6 +112,7 @@ bool Document::loadFromDesc(const SceneDesc& scene, const QString& path, QString
 void Document::replaceScene(SceneDesc scene, std::unique_ptr<World> world, QStringList unsupported,
                             const QString& path) {
     setup_ = std::move(scene);
+    loadedInstruments_ = std::exchange(setup_.instruments, {});
     world_ = std::move(world);
     mouseSpring_ = nullptr;
     grab_.reset();
@@ -123,12 +125,19 @@ void Document::replaceScene(SceneDesc scene, std::unique_ptr<World> world, QStri
     // The old commands edit the old setup: they go with it (clear() signals the clean state).
     undoStack_.clear();
     emit sceneReset();
+    emit instrumentsLoaded();
     emit selectionChanged();
     if (pathChanged) emit filePathChanged(filePath_);
 }
 
+SceneDesc Document::sceneToSave() const {
+    SceneDesc scene = setup_;
+    if (instrumentsSource_) scene.instruments = instrumentsSource_();
+    return scene;
+}
+
 bool Document::save(const QString& path, QString* error) {
-    if (!SceneIO::save(setup_, path, error)) return false;
+    if (!SceneIO::save(sceneToSave(), path, error)) return false;
     undoStack_.setClean();
     if (path != filePath_) {
         filePath_ = path;

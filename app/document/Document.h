@@ -66,9 +66,22 @@ public:
     // deleting an object never renames the ones after it). False (nothing changed) when the
     // scene does not validate.
     bool loadFromDesc(const SceneDesc& scene, const QString& path = {}, QString* error = nullptr);
-    // Writes the setup through SceneIO (QSaveFile: the old file survives a failure), then
+    // Writes sceneToSave() through SceneIO (QSaveFile: the old file survives a failure), then
     // marks the document clean and takes the path as its own.
     bool save(const QString& path, QString* error);
+    // The setup with the instruments the window measures with now (CONTRACT §7), as Save and
+    // the autosave write it.
+    SceneDesc sceneToSave() const;
+
+    // ---- instruments (CONTRACT §7) --------------------------------------------------------
+    // A lesson's instruments belong to the window's presenters once it is open: the document
+    // hands over those a file brought (instrumentsLoaded follows sceneReset on New and Open;
+    // New brings none) and asks the source for them when it saves. The setup itself holds none,
+    // so deleting an object a probe reads leaves an invalid probe, never an unbuildable setup.
+    const InstrumentsDesc& loadedInstruments() const { return loadedInstruments_; }
+    void setInstrumentsSource(std::function<InstrumentsDesc()> source) {
+        instrumentsSource_ = std::move(source);
+    }
     // Rebuilds the world from the setup: time 0, the setup's positions and velocities.
     void reset();
 
@@ -137,6 +150,9 @@ public:
 signals:
     // The world was rebuilt from scratch: new scene, load, reset.
     void sceneReset();
+    // After sceneReset on New and Open (not Reset): set the instruments from
+    // loadedInstruments().
+    void instrumentsLoaded();
     // A command changed the setup and the world was rebuilt (live state carried over).
     void sceneEdited();
     // The simulation settings changed; the world is the same object.
@@ -158,6 +174,9 @@ private:
                       const QString& path);
     void attachGrab();
     void pruneSelection();
+
+    InstrumentsDesc loadedInstruments_;
+    std::function<InstrumentsDesc()> instrumentsSource_;
 
     SceneDesc setup_;
     std::unique_ptr<World> world_;

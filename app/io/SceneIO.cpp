@@ -479,6 +479,145 @@ void readEffect(Fields& effects, std::string_view key, std::optional<Desc>& out)
     out = std::move(desc);
 }
 
+// ---- instruments (CONTRACT §7) ----
+// The app's own section: every key in it is known, so any other is refused (an instrument
+// misspelt would vanish from a lesson without a word).
+void refuseUnknownKeys(Reader& r, const QJsonObject& object, const QString& path, KeyList known) {
+    QStringList names;
+    for (std::string_view k : known) names << toQString(k);
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        if (names.contains(it.key())) continue;
+        const auto guess = misspeltKey(it.key(), known);
+        r.fail(join(path, it.key()),
+               guess ? QStringLiteral("unknown key; did you mean \"%1\"?").arg(toQString(*guess))
+                     : QStringLiteral("unknown key; known: ") + names.join(QStringLiteral(", ")));
+    }
+}
+
+// An array of non-empty strings (exactly count of them when count > 0).
+void readStrings(Reader& r, const QJsonValue& v, const QString& path, std::vector<std::string>& out,
+                 qsizetype count = 0) {
+    QJsonArray array;
+    if (!r.array(v, path, array)) return;
+    if (count > 0 && array.size() != count) {
+        r.fail(path, QStringLiteral("must be an array of %1 strings").arg(count));
+        return;
+    }
+    out.clear();
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        std::string s;
+        if (!r.string(array[i], index(path, i), s)) continue;
+        if (s.empty())
+            r.fail(index(path, i), QStringLiteral("must not be empty"));
+        else
+            out.push_back(std::move(s));
+    }
+}
+
+// Each element of an array of objects with the given keys, read by one(object, path).
+template <typename One>
+void readInstrumentList(Reader& r, const QJsonValue& v, const QString& path, KeyList known,
+                        One one) {
+    QJsonArray array;
+    if (!r.array(v, path, array)) return;
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        QJsonObject object;
+        if (!r.object(array[i], index(path, i), object)) continue;
+        refuseUnknownKeys(r, object, index(path, i), known);
+        one(object, index(path, i));
+    }
+}
+
+template <std::size_t N>
+void readEnds(Reader& r, const QJsonObject& object, const QString& path,
+              std::vector<std::array<std::string, N>>& out) {
+    const QJsonValue v = object.value(toQString(key::ends));
+    if (v.isUndefined()) {
+        r.fail(join(path, key::ends), QStringLiteral("is required"));
+        return;
+    }
+    std::vector<std::string> ends;
+    readStrings(r, v, join(path, key::ends), ends, N);
+    if (ends.size() != N) return;
+    std::array<std::string, N> e;
+    std::move(ends.begin(), ends.end(), e.begin());
+    out.push_back(std::move(e));
+}
+
+void readInstruments(Fields& top, InstrumentsDesc& in) {
+    const QJsonValue value = top.get(key::instruments);
+    QJsonObject o;
+    Reader& r = top.reader();
+    const QString path = top.at(key::instruments);
+    if (value.isUndefined() || !r.object(value, path, o)) return;
+    static constexpr std::string_view kKeys[] = {key::probes,    key::graphs, key::timers,
+                                                 key::stopwatch, key::rulers, key::protractors,
+                                                 key::freeBody,  key::view,   key::plots};
+    refuseUnknownKeys(r, o, path, kKeys);
+    auto at = [&](std::string_view k) { return join(path, k); };
+    auto has = [&](std::string_view k) { return o.contains(toQString(k)); };
+    auto get = [&](std::string_view k) { return o.value(toQString(k)); };
+
+    if (has(key::probes)) readStrings(r, get(key::probes), at(key::probes), in.probes);
+    if (has(key::timers)) readStrings(r, get(key::timers), at(key::timers), in.timers);
+    if (has(key::stopwatch)) r.boolean(get(key::stopwatch), at(key::stopwatch), in.stopwatch);
+    if (has(key::graphs)) {
+        static constexpr std::string_view kGraphKeys[] = {key::y, key::x};
+        readInstrumentList(r, get(key::graphs), at(key::graphs), kGraphKeys,
+                           [&](const QJsonObject& g, const QString& p) {
+                               GraphDesc graph;
+                               const QJsonValue y = g.value(toQString(key::y));
+                               if (y.isUndefined())
+                                   r.fail(join(p, key::y), QStringLiteral("is required"));
+                               else
+                                   r.string(y, join(p, key::y), graph.y);
+                               if (g.contains(toQString(key::x)))
+                                   r.string(g.value(toQString(key::x)), join(p, key::x), graph.x);
+                               in.graphs.push_back(std::move(graph));
+                           });
+    }
+    static constexpr std::string_view kEndKeys[] = {key::ends};
+    std::vector<std::array<std::string, 2>> rulers;
+    std::vector<std::array<std::string, 3>> protractors;
+    if (has(key::rulers))
+        readInstrumentList(
+            r, get(key::rulers), at(key::rulers), kEndKeys,
+            [&](const QJsonObject& e, const QString& p) { readEnds(r, e, p, rulers); });
+    if (has(key::protractors))
+        readInstrumentList(
+            r, get(key::protractors), at(key::protractors), kEndKeys,
+            [&](const QJsonObject& e, const QString& p) { readEnds(r, e, p, protractors); });
+    for (auto& e : rulers) in.rulers.push_back({std::move(e)});
+    for (auto& e : protractors) in.protractors.push_back({std::move(e)});
+    if (has(key::freeBody)) r.string(get(key::freeBody), at(key::freeBody), in.freeBody);
+    if (has(key::view)) {
+        QJsonObject v;
+        if (r.object(get(key::view), at(key::view), v)) {
+            static constexpr std::string_view kViewKeys[] = {key::center, key::width};
+            refuseUnknownKeys(r, v, at(key::view), kViewKeys);
+            ViewDesc view;
+            Fields fields(r, v, at(key::view), kViewKeys);
+            fields.point(key::center, view.center, Need::Required);
+            fields.number(key::width, view.width, Need::Required);
+            in.view = view;
+        }
+    }
+    if (has(key::plots)) {
+        readStrings(r, get(key::plots), at(key::plots), in.plots);
+        for (std::size_t i = 0; i < in.plots.size(); ++i) {
+            if (std::find(std::begin(kPlotNames), std::end(kPlotNames), in.plots[i]) !=
+                std::end(kPlotNames))
+                continue;
+            QStringList names;
+            for (std::string_view n : kPlotNames) names << toQString(n);
+            r.fail(index(at(key::plots), qsizetype(i)),
+                   QStringLiteral("must be one of %1 (got \"%2\")")
+                       .arg(names.join(QStringLiteral(", ")),
+                            jsontext::shortened(QString::fromStdString(in.plots[i]))));
+        }
+    }
+}
+
 // format and version decide whether the rest can be read at all; false = stop here.
 bool readHeader(Reader& r, const QJsonObject& top) {
     const QString formatKey = toQString(key::format);
@@ -643,6 +782,7 @@ SceneLoadResult SceneIO::parse(const QByteArray& text, const QString& sourceName
     }
     schema::forEachObjectKind(
         [&](const auto& table, auto array) { readObjects(fields, table.key, scene.*array); });
+    readInstruments(fields, scene.instruments);
 
     // Ranges and references are checked only on a fully read scene: after a type error the
     // description holds defaults in that place, and checking them would report made-up values.

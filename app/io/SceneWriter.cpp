@@ -85,6 +85,12 @@ public:
         key(k);
         string(v);
     }
+    template <typename Strings>
+    void strings(const Strings& list) {
+        beginArray(true);
+        for (const std::string& s : list) string(s);
+        endArray();
+    }
 
 private:
     struct Level {
@@ -228,6 +234,63 @@ void writeFields(Writer& w, const D& d) {
     w.endObject();
 }
 
+// CONTRACT §7: only what the lesson uses is written.
+void writeInstruments(Writer& w, const InstrumentsDesc& in) {
+    namespace key = schema::key;
+    w.beginObject();
+    if (!in.probes.empty()) {
+        w.key(key::probes);
+        w.strings(in.probes);
+    }
+    if (!in.graphs.empty()) {
+        w.key(key::graphs);
+        w.beginArray();
+        for (const GraphDesc& g : in.graphs) {
+            w.beginObject();
+            w.field(key::y, g.y);
+            if (!g.x.empty()) w.field(key::x, g.x);
+            w.endObject();
+        }
+        w.endArray();
+    }
+    if (!in.timers.empty()) {
+        w.key(key::timers);
+        w.strings(in.timers);
+    }
+    if (in.stopwatch) {
+        w.key(key::stopwatch);
+        w.boolean(true);
+    }
+    auto instruments = [&](std::string_view k, const auto& list) {
+        if (list.empty()) return;
+        w.key(k);
+        w.beginArray();
+        for (const auto& item : list) {
+            w.beginObject();
+            w.key(key::ends);
+            w.strings(item.ends);
+            w.endObject();
+        }
+        w.endArray();
+    };
+    instruments(key::rulers, in.rulers);
+    instruments(key::protractors, in.protractors);
+    if (!in.freeBody.empty()) w.field(key::freeBody, in.freeBody);
+    if (in.view) {
+        w.key(key::view);
+        w.beginObject();
+        w.key(key::center);
+        w.point(in.view->center);
+        w.field(key::width, in.view->width);
+        w.endObject();
+    }
+    if (!in.plots.empty()) {
+        w.key(key::plots);
+        w.strings(in.plots);
+    }
+    w.endObject();
+}
+
 }  // namespace
 
 QByteArray SceneIO::serialize(const SceneDesc& scene) {
@@ -256,6 +319,10 @@ QByteArray SceneIO::serialize(const SceneDesc& scene) {
         for (const auto& item : scene.*array) writeFields(w, item);
         w.endArray();
     });
+    if (!scene.instruments.empty()) {
+        w.key(key::instruments);
+        writeInstruments(w, scene.instruments);
+    }
     w.endObject();
     return w.take();
 }

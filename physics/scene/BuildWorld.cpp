@@ -7,6 +7,7 @@
 #include "physics/effects/GravityEffect.h"
 #include "physics/effects/NewtonianGravityEffect.h"
 #include "physics/effects/WindEffect.h"
+#include "physics/scene/InstrumentValidation.h"
 #include "physics/scene/SceneSchema.h"
 
 #include <algorithm>
@@ -404,6 +405,9 @@ BuildResult buildWorld(const SceneDesc& setup) {
 
     world.setSettings(simulationSettings(scene.simulation));
     world.commit();
+    // The instruments name objects and joints, which only the world resolves.
+    if (auto issues = checkInstruments(scene.instruments, world); !issues.empty())
+        throw SceneError(std::move(issues));
     return result;
 }
 

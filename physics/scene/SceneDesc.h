@@ -4,6 +4,7 @@
 // validateScene() checks it, and app/SceneIO maps it to and from JSON.
 
 #include "physics/contacts/ContactModel.h"
+#include "physics/scene/InstrumentsDesc.h"
 
 #include <array>
 #include <cstddef>
@@ -245,7 +246,10 @@ struct SceneDesc {
     int formatVersion() const {
         const bool contactModels = simulation.contactModel != ContactModel::Impulse ||
                                    simulation.contactStiffness || simulation.contactDamping != 0.0;
-        return disks.empty() && polygons.empty() && joints.empty() && !contactModels ? 1 : 2;
+        return disks.empty() && polygons.empty() && joints.empty() && !contactModels &&
+                       instruments.empty()
+                   ? 1
+                   : 2;
     }
 
     std::string name;
@@ -260,6 +264,7 @@ struct SceneDesc {
     std::vector<SpringDesc> springs;
     std::vector<ClothDesc> cloths;
     std::vector<JointDesc> joints;
+    InstrumentsDesc instruments;  // version 2; what the app's instruments were (§7)
 };
 
 // Default ids by position (CONTRACT.md §1, §6): p0…, b0…, d0…, poly0…, plane0…, s0….

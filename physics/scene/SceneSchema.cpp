@@ -106,7 +106,7 @@ const SolverSetting kSolverSettings[] = {
 constexpr std::string_view kTopKeys[] = {
     key::format,  key::version,   key::name,   key::description, key::simulation,
     key::effects, key::particles, key::boxes,  key::disks,       key::polygons,
-    key::planes,  key::springs,   key::cloths, key::joints};
+    key::planes,  key::springs,   key::cloths, key::joints,      key::instruments};
 
 }  // namespace
 

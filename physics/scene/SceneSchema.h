@@ -47,6 +47,7 @@ inline constexpr std::string_view planes = "planes";
 inline constexpr std::string_view springs = effectName::springs;
 inline constexpr std::string_view cloths = "cloths";
 inline constexpr std::string_view joints = "joints";
+inline constexpr std::string_view instruments = "instruments";
 // simulation, and its contact solver settings
 inline constexpr std::string_view integrator = "integrator";
 inline constexpr std::string_view dt = "dt";
@@ -135,6 +136,20 @@ inline constexpr std::string_view circle = "circle";
 inline constexpr std::string_view center = "center";
 inline constexpr std::string_view line = "line";
 inline constexpr std::string_view direction = "direction";
+// instruments (CONTRACT §7)
+inline constexpr std::string_view probes = "probes";
+inline constexpr std::string_view graphs = "graphs";
+inline constexpr std::string_view x = "x";
+inline constexpr std::string_view y = "y";
+inline constexpr std::string_view timers = "timers";
+inline constexpr std::string_view stopwatch = "stopwatch";
+inline constexpr std::string_view rulers = "rulers";
+inline constexpr std::string_view protractors = "protractors";
+inline constexpr std::string_view ends = "ends";
+inline constexpr std::string_view freeBody = "free_body";
+inline constexpr std::string_view view = "view";
+inline constexpr std::string_view width = "width";
+inline constexpr std::string_view plots = "plots";
 }  // namespace key
 
 // The values of a joint's "type", in JointType's order (a Choice field's choices).

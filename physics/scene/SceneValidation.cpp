@@ -6,6 +6,7 @@
 #include "physics/scene/ValidationChecks.h"
 
 #include "physics/integrators/Integrator.h"
+#include "physics/scene/InstrumentValidation.h"
 #include "physics/scene/SceneSchema.h"
 
 #include <algorithm>
@@ -446,6 +447,7 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
         checkFields(check, path, s);
     }
     if (!scene.joints.empty()) checkJoints(check, scene, claim, reference);
+    validateInstrumentValues(scene.instruments, issues);
     return issues;
 }
 

@@ -293,10 +293,11 @@ private slots:
         Window window;
         window.load(springScene(50.0, 2.0));
         const QString path = dir.filePath(QStringLiteral("spring.phasebox.json"));
-        QString error;
-        QVERIFY2(window.w.saveFile(path, &error), qPrintable(error));
         QVERIFY(window.instruments()->plotProbe(QStringLiteral("bob.x")));
         QVERIFY(window.instruments()->timeProbe(QStringLiteral("bob.x")));
+        // Saved with the scene (CONTRACT §7): Open and Revert bring them back.
+        QString error;
+        QVERIFY2(window.w.saveFile(path, &error), qPrintable(error));
         ui::GraphsView* graphs = window.panel()->graphs();
         ui::TimerView* timer = window.panel()->timer();
         ui::ProbeTableView* table = window.panel()->table();
@@ -353,8 +354,11 @@ private slots:
         window.w.action("new")->trigger();
         checkCleared("new");
         QVERIFY(!window.w.action("revert")->isEnabled());  // nothing to revert to
-        // The new scene has no bob: the graph says so instead of reading another object.
-        QVERIFY(graphs->graph(0)->message().contains(QStringLiteral("no object \"bob\"")));
+        // The new scene has no bob, and none of the last scene's instruments.
+        QCOMPARE(graphs->count(), 1);
+        QVERIFY(graphs->graph(0)->yPicker()->probe().isEmpty());
+        QVERIFY(timer->picker()->probe().isEmpty());
+        QCOMPARE(window.w.probeRecorder().probeCount(), 0);
         QVERIFY(window.w.controller().advance(0.5));
         window.w.refreshNow();
         QCOMPARE(graphs->graph(0)->pointCount(), 0);

@@ -272,6 +272,10 @@ void SceneView::syncView() const {
 
 void SceneView::frameNow() const {
     const QSizeF widget(size());
+    if (framing_ == Framing::Width) {
+        view_ = ViewTransform(shownCentre_, std::max(1.0, widget.width()) / shownWidth_, widget);
+        return;
+    }
     // Corners by hand: QRectF::united() drops empty rects, and a plane's point is one.
     double lo[2] = {std::numeric_limits<double>::infinity(),
                     std::numeric_limits<double>::infinity()};
@@ -340,6 +344,22 @@ void SceneView::fitToWorld(double marginPixels, const QRectF& alsoInclude) {
     syncedSize_ = size();
     surface_->update();
     emit viewChanged();
+}
+
+void SceneView::showWidth(QPointF centre, double widthMetres) {
+    framing_ = Framing::Width;
+    shownCentre_ = centre;
+    shownWidth_ = widthMetres;
+    frameNow();
+    syncedSize_ = size();
+    surface_->update();
+    emit viewChanged();
+}
+
+double SceneView::shownWidth() const {
+    if (framing_ == Framing::Width) return shownWidth_;  // as asked, not as rounded by the scale
+    const ViewTransform v = view();
+    return std::max(1.0, v.widgetSize().width()) / v.pixelsPerMetre();
 }
 
 void SceneView::zoomBy(double factor) {

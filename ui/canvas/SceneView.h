@@ -69,6 +69,13 @@ public:
     // alsoInclude (left = min x, top = min y; null = nothing): a world area to frame as well,
     // such as where the scene's motion will go (kept while the view follows the widget's size).
     void fitToWorld(double marginPixels = 32.0, const QRectF& alsoInclude = {});
+    // Shows widthMetres of the world across, centred on centre (a lesson's saved view); until
+    // the user navigates, a resize keeps that width across.
+    void showWidth(QPointF centre, double widthMetres);
+    // The world width the view shows across now.
+    double shownWidth() const;
+    // The user navigated (or showWidth set the view): the view is not the automatic framing.
+    bool isChosenView() const { return framing_ == Framing::Width || framing_ == Framing::Manual; }
     void zoomBy(double factor);  // around the widget's centre
     QPointF toWorld(QPointF widgetPoint) const { return view().toWorld(widgetPoint); }
     QPointF toWidget(QPointF worldPoint) const { return view().toScreen(worldPoint); }
@@ -124,7 +131,7 @@ protected:
 
 private:
     // How the view follows the widget's size until the user navigates.
-    enum class Framing { Default, World, Manual };
+    enum class Framing { Default, World, Width, Manual };
 
     void createSurface(CanvasBackend resolved);
     void paintSurface(QPainter& painter, QSize size);
@@ -146,6 +153,8 @@ private:
     Framing framing_ = Framing::Default;
     QRectF alsoInclude_;  // fitToWorld's extra area
     double fitMargin_ = 32.0;
+    QPointF shownCentre_;  // showWidth's view
+    double shownWidth_ = 10.0;
 
     RenderOptions options_;
     TrailHistory trails_;

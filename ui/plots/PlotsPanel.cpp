@@ -204,4 +204,12 @@ void PlotsPanel::setPresentation(bool on) {
     // Takes effect with the next chart (a few frames away while running).
 }
 
+PlotsPanel::Plot PlotsPanel::lowerPlot() const {
+    return lowerTabs_->currentIndex() == 1 ? Plot::Error : Plot::Phase;
+}
+
+void PlotsPanel::showLowerPlot(Plot plot) {
+    if (plot != Plot::Energy) lowerTabs_->setCurrentIndex(plot == Plot::Error ? 1 : 0);
+}
+
 }  // namespace phasebox::ui

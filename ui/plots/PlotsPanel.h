@@ -48,6 +48,9 @@ public:
     // The live error estimate; an empty series shows why there is none (text).
     void setError(std::span<const QPointF> samples, const QString& title, const QString& emptyText);
 
+    // The plot shown below the energy plot (Phase or Error), and showing one there.
+    Plot lowerPlot() const;
+    void showLowerPlot(Plot plot);
     // Shows which coordinate the phase plot has (no signal).
     void setPhaseCoordinate(const QString& coordinate);
 

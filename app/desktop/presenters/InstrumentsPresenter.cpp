@@ -79,6 +79,8 @@ InstrumentsPresenter::InstrumentsPresenter(ui::InstrumentsPanel& panel, Document
     graphs_.resize(static_cast<std::size_t>(panel_.graphs()->count()));
     connect(&document_, &Document::sceneReset, this, &InstrumentsPresenter::onSceneReset);
     connect(&document_, &Document::sceneEdited, this, &InstrumentsPresenter::onSceneEdited);
+    connect(&document_, &Document::instrumentsLoaded, this,
+            [this] { applyInstruments(document_.loadedInstruments()); });
     connect(&document_, &Document::selectionChanged, this, [this] {
         updateOffered();
         refreshReadouts();
@@ -342,6 +344,7 @@ void InstrumentsPresenter::removeTableColumn(const QString& probe) {
 void InstrumentsPresenter::startStopStopwatch() {
     const double now = document_.world().time();
     stopwatch_.isRunning() ? stopwatch_.stop(now) : stopwatch_.start(now);
+    stopwatchUsed_ = true;
     refreshStopwatch();
 }
 

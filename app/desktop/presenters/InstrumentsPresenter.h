@@ -27,6 +27,7 @@ QT_END_NAMESPACE
 
 namespace phasebox {
 
+struct InstrumentsDesc;
 class Document;
 class ProbeRecorder;
 class SimulationController;
@@ -69,6 +70,12 @@ public:
     bool exportTable(const QString& path, QString* error) const;
     // Copies the table's selected rows (all when none) as tab-separated text.
     void copyTable() const;
+
+    // A lesson's instruments (CONTRACT §7, InstrumentsLesson.cpp): set from the opened file
+    // (replacing every graph, the timer and the table; New brings none), and what is set now
+    // for Save: probes, graphs, timers and the stopwatch.
+    void applyInstruments(const InstrumentsDesc& instruments);
+    void collectInstruments(InstrumentsDesc& instruments) const;
 
     Stopwatch& stopwatch() { return stopwatch_; }
     void startStopStopwatch();
@@ -121,6 +128,8 @@ private:
     ProbeRecorder& probes_;
     std::vector<Graph> graphs_;
     QString periodProbe_;
+    QStringList savedTimers_;     // the lesson's period timers (the window times the first)
+    bool stopwatchUsed_ = false;  // the lesson times by hand
     QStringList tableProbes_;
     QStringList offered_;
     Stopwatch stopwatch_;
