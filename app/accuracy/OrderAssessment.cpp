@@ -197,9 +197,9 @@ OrderAssessment assessOne(const AccuracyResult& result, const std::string& name)
     if (a.floorFromDt && a.kind != OrderAssessment::Kind::RoundOffFloor) {
         note << "; " << (result.referenceExact ? "round-off floor" : "reference's accuracy")
              << " reached at dt ≤ " << formatStep(*a.floorFromDt);
-        why << " At dt ≤ " << formatStep(*a.floorFromDt) << " the error ("
-            << (result.referenceExact ? "round-off floor" : "the reference's own accuracy")
-            << ") no longer improves: "
+        why << " At dt ≤ " << formatStep(*a.floorFromDt) << " the error has reached "
+            << (result.referenceExact ? "the round-off floor" : "the reference's own accuracy")
+            << " and no longer improves: "
             << (result.referenceExact
                     ? "the computer's rounding errors, added up over many steps, are as large "
                       "as the method's own error"
