@@ -12,6 +12,7 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QEvent>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -131,6 +132,7 @@ AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
     chart_ = new QChartView(ui::createWorkPrecisionChart({}, tr("Work-precision diagram"), font()),
                             this);
     chart_->setObjectName(QStringLiteral("workPrecisionChart"));
+    chart_->installEventFilter(this);
     chart_->setRenderHint(QPainter::Antialiasing);
     // Below this the axis titles and the dt labels no longer fit (the chart elides them).
     chart_->setMinimumSize(560, 340);
@@ -216,6 +218,26 @@ AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
         emit applyRequested(QString::fromStdString(chosen_->integrator), chosen_->dt,
                             chosen_->tolerance.value_or(scene_.simulation.tolerance));
     });
+}
+
+QFont AccuracyDialog::chartFont() const {
+    // The diagram's text grows with it: a full-screen dialog on a projector reads from the back
+    // of the room, a small one keeps the room for the plot. One point per 45 pixels of height.
+    QFont f = font();
+    if (f.pointSizeF() > 0.0)
+        f.setPointSizeF(std::clamp(chart_->height() / 45.0, f.pointSizeF(), 18.0));
+    return f;
+}
+
+bool AccuracyDialog::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == chart_ && event->type() == QEvent::Resize) {
+        const QFont f = chartFont();
+        if (f != chartFont_) {
+            chartFont_ = f;
+            ui::setWorkPrecisionFont(chart_->chart(), f);
+        }
+    }
+    return QDialog::eventFilter(watched, event);
 }
 
 void AccuracyDialog::setCurrentScene(const SceneDesc& scene) {
@@ -313,7 +335,7 @@ void AccuracyDialog::onFinished() {
                                                   tr("%1: error at t = %2 s against CPU time")
                                                       .arg(QString::fromStdString(scene_.name))
                                                       .arg(result.endTime),
-                                                  font()));
+                                                  chartFont()));
     delete old;
     fillTable(result);
     summary_->setText(summaryText());

@@ -7,6 +7,7 @@
 #include "app/accuracy/AccuracyStudy.h"
 
 #include <QDialog>
+#include <QFont>
 
 #include <optional>
 
@@ -58,7 +59,11 @@ signals:
     // (and tolerance for the adaptive methods).
     void applyRequested(const QString& integrator, double dt, double tolerance);
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
+    QFont chartFont() const;  // the dialog's font, larger as the diagram grows
     void onFinished();
     void updateCheapest();
     void fillTable(const AccuracyResult& result);
@@ -83,6 +88,7 @@ private:
     QLabel* cheapest_ = nullptr;
     QPushButton* apply_ = nullptr;
     std::optional<AccuracyRecord> chosen_;
+    QFont chartFont_;  // what the diagram's text was last sized from
 };
 
 }  // namespace phasebox

@@ -184,6 +184,8 @@ private slots:
             const QString at = QStringLiteral("%1x%2").arg(size.width()).arg(size.height());
             savePicture(dialog, QStringLiteral("accuracy-lab-") + at);
             QVERIFY2(view->height() >= 340 && view->width() >= 560, qPrintable(at));
+            // Text at least 10 pt, and larger on the larger screen.
+            QVERIFY(y->labelsFont().pointSizeF() >= (size.height() > 1000 ? 12.0 : 10.0));
             QVERIFY2(caption->isVisible() &&
                          caption->height() >= caption->heightForWidth(caption->width()),
                      qPrintable(at));

@@ -70,6 +70,70 @@ struct PointLabel {
 
 }  // namespace
 
+// Point labels are plain text items on the chart: Qt 6.4's series labels can show only the
+// coordinates, not the dt. They follow the points whenever the plot area is laid out or their
+// font changes. Each takes the first free place around its point (right, left, above, below,
+// then the corners), free meaning clear of every label placed before it and of every point's
+// marker; one with no free place (crowded points, or a point that coincides with another, as
+// midpoint and heun do on a linear force) is left out rather than printed over its neighbour.
+// The first and last point of a line come first, so the range of dt is always readable.
+class DtLabels : public QObject {
+    Q_OBJECT
+
+public:
+    DtLabels(QChart* chart, std::vector<PointLabel> labels)
+        : QObject(chart), chart_(chart), labels_(std::move(labels)) {
+        std::stable_sort(
+            labels_.begin(), labels_.end(),
+            [](const PointLabel& a, const PointLabel& b) { return a.priority < b.priority; });
+        connect(chart, &QChart::plotAreaChanged, this, &DtLabels::place);
+    }
+
+    void setFont(const QFont& font) {
+        for (const PointLabel& l : labels_) l.item->setFont(font);
+        place(chart_->plotArea());
+    }
+
+    void place(const QRectF& area) {
+        std::vector<QRectF> taken;
+        constexpr double kMarker = 5.0;  // half a marker, and a hair
+        for (const PointLabel& l : labels_) {
+            const QPointF at = chart_->mapToPosition(l.value, l.series);
+            taken.emplace_back(at - QPointF(kMarker, kMarker), QSizeF(2 * kMarker, 2 * kMarker));
+        }
+        for (const PointLabel& l : labels_) {
+            const QPointF at = chart_->mapToPosition(l.value, l.series);
+            const QSizeF size = l.item->boundingRect().size();
+            const double w = size.width(), h = size.height(), gap = kMarker + 2.0;
+            const QPointF corners[] = {{gap, -h / 2},
+                                       {-w - gap, -h / 2},
+                                       {-w / 2, -h - gap},
+                                       {-w / 2, gap},
+                                       {gap - 2, -h - gap + 2},
+                                       {gap - 2, gap - 2},
+                                       {-w - gap + 2, -h - gap + 2},
+                                       {-w - gap + 2, gap - 2}};
+            bool placed = false;
+            for (const QPointF& corner : corners) {
+                const QRectF rect(at + corner, size);
+                const bool free = area.contains(rect) &&
+                                  std::none_of(taken.begin(), taken.end(),
+                                               [&](const QRectF& r) { return r.intersects(rect); });
+                if (!free) continue;
+                l.item->setPos(rect.topLeft());
+                taken.push_back(rect);
+                placed = true;
+                break;
+            }
+            l.item->setVisible(placed);
+        }
+    }
+
+private:
+    QChart* chart_;
+    std::vector<PointLabel> labels_;
+};
+
 QString workPrecisionErrorTitle() {
     return QObject::tr("position error [m], lower is better");
 }
@@ -84,21 +148,8 @@ QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, con
 
 QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, const QString& title,
                                  const QFont& font) {
-    // Sizes from the given font, never below what a projector at the back of a room shows.
-    QFont text = font;
-    if (text.pointSizeF() > 0.0) text.setPointSizeF(std::max(10.0, text.pointSizeF()));
-    QFont bold = text;
-    bold.setBold(true);
-    QFont titleFont = bold;
-    if (titleFont.pointSizeF() > 0.0) titleFont.setPointSizeF(text.pointSizeF() * 1.15);
-    QFont labelFont = text;
-    if (labelFont.pointSizeF() > 0.0)
-        labelFont.setPointSizeF(std::max(9.0, text.pointSizeF() * 0.9));
-
     auto* chart = new QChart;
     chart->setTitle(title);
-    chart->setTitleFont(titleFont);
-    chart->legend()->setFont(text);
     chart->setAnimationOptions(QChart::NoAnimation);
     chart->setBackgroundRoundness(0);
     // The room goes to the plot: Qt's default margins leave a wide empty frame.
@@ -113,7 +164,7 @@ QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, con
             names.push_back(p.integrator);
 
     double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo, ylo = xlo, yhi = -xlo;
-    auto labels = std::make_shared<std::vector<PointLabel>>();
+    std::vector<PointLabel> labels;
     for (const QString& name : names) {
         auto* series = new QLineSeries(chart);
         series->setName(name);
@@ -141,16 +192,15 @@ QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, con
             yhi = std::max(yhi, value.y());
             if (p.label.isEmpty()) continue;
             auto* item = new QGraphicsSimpleTextItem(p.label, chart);
-            item->setFont(labelFont);
             item->setBrush(color.darker(130));
             item->setZValue(10.0);
-            labels->push_back({item, value, series, 1});
-            if (!firstLabel) firstLabel = labels->size();
+            labels.push_back({item, value, series, 1});
+            if (!firstLabel) firstLabel = labels.size();
         }
         // A line's ends first: they say which dt it runs from and to.
         if (firstLabel) {
-            (*labels)[*firstLabel - 1].priority = 0;
-            labels->back().priority = 0;
+            labels[*firstLabel - 1].priority = 0;
+            labels.back().priority = 0;
         }
         if (diverged > 0)
             series->setName(
@@ -164,10 +214,6 @@ QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, con
     x->setTitleText(workPrecisionTimeTitle());
     auto* y = new QValueAxis;
     y->setTitleText(workPrecisionErrorTitle());
-    for (QValueAxis* axis : {x, y}) {
-        axis->setTitleFont(bold);
-        axis->setLabelsFont(text);
-    }
     fitDecades(x, xlo, xhi);
     fitDecades(y, ylo, yhi);
     chart->addAxis(x, Qt::AlignBottom);
@@ -177,52 +223,31 @@ QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, con
         s->attachAxis(y);
     }
 
-    // Point labels are plain text items on the chart: Qt 6.4's series labels can show only the
-    // coordinates, not the dt. They follow the points whenever the plot area is laid out. Each
-    // takes the first free place around its point (right, left, above, below, then the
-    // corners), free meaning clear of every label placed before it and of every point's marker;
-    // one with no free place (crowded points, or a point that coincides with another, as
-    // midpoint and heun do on a linear force) is left out rather than printed over its
-    // neighbour. The first and last point of a line come first, so the range of dt is always
-    // readable.
-    std::stable_sort(labels->begin(), labels->end(), [](const PointLabel& a, const PointLabel& b) {
-        return a.priority < b.priority;
-    });
-    QObject::connect(chart, &QChart::plotAreaChanged, chart, [chart, labels](const QRectF& area) {
-        std::vector<QRectF> taken;
-        constexpr double kMarker = 5.0;  // half a marker, and a hair
-        for (const PointLabel& l : *labels) {
-            const QPointF at = chart->mapToPosition(l.value, l.series);
-            taken.emplace_back(at - QPointF(kMarker, kMarker), QSizeF(2 * kMarker, 2 * kMarker));
-        }
-        for (const PointLabel& l : *labels) {
-            const QPointF at = chart->mapToPosition(l.value, l.series);
-            const QSizeF size = l.item->boundingRect().size();
-            const double w = size.width(), h = size.height(), gap = kMarker + 2.0;
-            const QPointF corners[] = {{gap, -h / 2},
-                                       {-w - gap, -h / 2},
-                                       {-w / 2, -h - gap},
-                                       {-w / 2, gap},
-                                       {gap - 2, -h - gap + 2},
-                                       {gap - 2, gap - 2},
-                                       {-w - gap + 2, -h - gap + 2},
-                                       {-w - gap + 2, gap - 2}};
-            bool placed = false;
-            for (const QPointF& corner : corners) {
-                const QRectF rect(at + corner, size);
-                const bool free = area.contains(rect) &&
-                                  std::none_of(taken.begin(), taken.end(),
-                                               [&](const QRectF& r) { return r.intersects(rect); });
-                if (!free) continue;
-                l.item->setPos(rect.topLeft());
-                taken.push_back(rect);
-                placed = true;
-                break;
-            }
-            l.item->setVisible(placed);
-        }
-    });
+    new DtLabels(chart, std::move(labels));
+    setWorkPrecisionFont(chart, font);
     return chart;
 }
 
+void setWorkPrecisionFont(QChart* chart, const QFont& font) {
+    // Sizes from the given font, never below what a projector at the back of a room shows.
+    QFont text = font;
+    if (text.pointSizeF() > 0.0) text.setPointSizeF(std::max(10.0, text.pointSizeF()));
+    QFont bold = text;
+    bold.setBold(true);
+    QFont title = bold;
+    if (title.pointSizeF() > 0.0) title.setPointSizeF(text.pointSizeF() * 1.15);
+    QFont label = text;
+    if (label.pointSizeF() > 0.0) label.setPointSizeF(std::max(9.0, text.pointSizeF() * 0.9));
+    chart->setTitleFont(title);
+    chart->legend()->setFont(text);
+    for (QAbstractAxis* axis : chart->axes()) {
+        axis->setTitleFont(bold);
+        axis->setLabelsFont(text);
+    }
+    if (auto* labels = chart->findChild<DtLabels*>(QString(), Qt::FindDirectChildrenOnly))
+        labels->setFont(label);
+}
+
 }  // namespace phasebox::ui
+
+#include "WorkPrecisionChart.moc"

@@ -36,5 +36,8 @@ QString workPrecisionTimeTitle();   // "CPU time [s], left is faster"
 QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, const QString& title,
                                  const QFont& font);
 QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, const QString& title);
+// The text sizes of a chart made above, again from `font` (the dialog makes the text larger as
+// the diagram grows); the dt labels are placed anew.
+void setWorkPrecisionFont(QChart* chart, const QFont& font);
 
 }  // namespace phasebox::ui
