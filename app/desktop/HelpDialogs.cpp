@@ -1,6 +1,8 @@
 #include "app/desktop/HelpDialogs.h"
 
+#include <QAbstractTextDocumentLayout>
 #include <QAction>
+#include <QDesktopServices>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QFile>
@@ -8,8 +10,11 @@
 #include <QImage>
 #include <QLabel>
 #include <QRegularExpression>
+#include <QScrollBar>
 #include <QTableWidget>
+#include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextCursor>
 #include <QUrl>
 #include <QVBoxLayout>
 
@@ -61,6 +66,37 @@ QString joinImageCaptions(QString markdown) {
     return out;
 }
 
+// GitHub's anchor for a heading: lower case, punctuation dropped, spaces to hyphens. The guide
+// links its own sections that way ("#measuring-the-instruments-dock"); Qt's Markdown reader
+// makes no anchors, so a link is followed by finding the heading it names.
+QString headingSlug(const QString& heading) {
+    QString slug;
+    for (const QChar c : heading.toLower()) {
+        if (c.isLetterOrNumber() || c == QLatin1Char('-') || c == QLatin1Char('_'))
+            slug += c;
+        else if (c == QLatin1Char(' '))
+            slug += QLatin1Char('-');
+    }
+    return slug;
+}
+
+void followLink(QTextBrowser& browser, const QUrl& url) {
+    if (url.scheme() == QLatin1String("http") || url.scheme() == QLatin1String("https")) {
+        QDesktopServices::openUrl(url);
+        return;
+    }
+    if (!url.hasFragment() || !url.path().isEmpty()) return;  // another file: not in the app
+    for (QTextBlock b = browser.document()->begin(); b.isValid(); b = b.next()) {
+        if (b.blockFormat().headingLevel() == 0 || headingSlug(b.text()) != url.fragment())
+            continue;
+        QTextCursor cursor(b);
+        browser.setTextCursor(cursor);
+        const QRectF at = browser.document()->documentLayout()->blockBoundingRect(b);
+        browser.verticalScrollBar()->setValue(static_cast<int>(at.top()));
+        return;
+    }
+}
+
 QString withoutMnemonic(QString text) {
     text.replace(QStringLiteral("&&"), QStringLiteral("\x01"));
     text.remove(QLatin1Char('&'));
@@ -79,7 +115,9 @@ QDialog* createUserGuideDialog(QWidget* parent) {
     auto* browser = new GuideBrowser(dialog);
     browser->setObjectName(QStringLiteral("userGuide"));
     browser->setAccessibleName(QObject::tr("User guide"));
-    browser->setOpenExternalLinks(true);
+    browser->setOpenLinks(false);
+    QObject::connect(browser, &QTextBrowser::anchorClicked, browser,
+                     [browser](const QUrl& url) { followLink(*browser, url); });
     // Relative links and pictures resolve beside the guide, in the resources.
     browser->setSearchPaths({QStringLiteral(":/docs")});
     QFile file(QStringLiteral(":/docs/user-guide.md"));

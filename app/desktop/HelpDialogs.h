@@ -17,6 +17,8 @@ namespace phasebox {
 
 // The guide in a non-modal dialog (object name "userGuideDialog"; its QTextBrowser is
 // "userGuide"). A picture is scaled down to the page's width; one that is missing is left out.
+// A link to a section of the guide scrolls there, a web link opens in the browser; a link to
+// another file of docs/ does nothing (only the guide is compiled in).
 QDialog* createUserGuideDialog(QWidget* parent);
 
 // One action with a shortcut: its text without the mnemonic '&', every key that triggers it
