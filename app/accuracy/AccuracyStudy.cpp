@@ -436,6 +436,9 @@ AccuracyResult runAccuracyStudy(const SceneDesc& scene, const AccuracyOptions& o
         result.error = outcome.error;
         reference = std::move(outcome.positions);
     }
+    result.positionScale = probe.world->positions().lpNorm<Eigen::Infinity>();
+    if (reference && reference->size() > 0)
+        result.positionScale = std::max(result.positionScale, reference->lpNorm<Eigen::Infinity>());
     int done = 1;
     report(done);
 

@@ -76,6 +76,9 @@ struct AccuracyResult {
     bool contacts = false;            // the scene has contacts (orders are then left empty)
     std::string note;  // kContactNote (kPenaltyContactNote) for scenes with contacts, else empty
     double endTime = 0.0;
+    // The largest |coordinate| of the start and reference positions: round-off is relative to
+    // it (assessOrders).
+    double positionScale = 0.0;
     std::vector<AccuracyRecord> records;
     int plannedRuns = 0;  // records a complete study has
     bool cancelled = false;

@@ -1,5 +1,7 @@
 #include "app/desktop/AccuracyDialog.h"
 
+#include "app/accuracy/OrderAssessment.h"
+
 #include "app/io/ChartFile.h"
 #include "app/io/NumberFormat.h"
 #include "app/io/OutputFile.h"
@@ -10,6 +12,7 @@
 
 #include <QChart>
 #include <QChartView>
+#include <QEvent>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -22,6 +25,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTextStream>
 #include <QVBoxLayout>
@@ -34,12 +38,8 @@
 namespace phasebox {
 
 namespace {
-// "1/120" when dt is the inverse of a whole number (as the default list is), else the number.
 QString formatDt(double dt) {
-    const double inverse = 1.0 / dt;
-    if (std::abs(inverse - std::round(inverse)) < 1e-9 * inverse)
-        return QStringLiteral("1/%1").arg(static_cast<long long>(std::llround(inverse)));
-    return QString::number(dt, 'g', 4);
+    return QString::fromStdString(formatStep(dt));
 }
 
 QString formatError(double e) {
@@ -48,17 +48,13 @@ QString formatError(double e) {
     return QString::number(e, 'e', 2);
 }
 
-const IntegratorInfo* infoOf(const std::string& name) {
-    for (const IntegratorInfo& info : integratorRegistry())
-        if (info.name == name) return &info;
-    return nullptr;
-}
 }  // namespace
 
 AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
     setWindowTitle(tr("Accuracy Lab — what accuracy costs in time"));
     setObjectName(QStringLiteral("accuracyDialog"));
     resize(1200, 800);
+    setMinimumSize(900, 620);
 
     // Choices: which methods, which steps, how long.
     integrators_ = new QListWidget(this);
@@ -71,7 +67,8 @@ AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
         item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
         item->setCheckState(Qt::Checked);
     }
-    integrators_->setMaximumWidth(220);
+    integrators_->setObjectName(QStringLiteral("integrators"));
+    integrators_->setAccessibleName(tr("Integrators to study"));
     dts_ = new QLineEdit(this);
     dts_->setToolTip(
         tr("Step sizes, separated by commas; fractions such as 1/120 are fine. The "
@@ -91,19 +88,33 @@ AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
                               [this, format] { exportInteractively(format); });
     exportButton->setMenu(exportMenu);
 
+    // Left: what to study and the buttons. Right: the diagram above (it gets the room), its
+    // caption, then the orders and the runs as tabs, then the cheapest settings.
+    auto* choices = new QWidget(this);
     auto* form = new QFormLayout;
+    form->setRowWrapPolicy(QFormLayout::WrapAllRows);
     form->addRow(tr("&dt list:"), dts_);
     form->addRow(tr("D&uration [s]:"), duration_);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(runButton_);
     buttons->addWidget(cancelButton_);
-    buttons->addWidget(progress_, 1);
     buttons->addWidget(exportButton);
-    form->addRow(buttons);
+    auto* integratorsLabel = new QLabel(tr("&Integrators:"), this);
+    integratorsLabel->setBuddy(integrators_);
+    auto* left = new QVBoxLayout(choices);
+    left->setContentsMargins(0, 0, 0, 0);
+    left->addWidget(integratorsLabel);
+    left->addWidget(integrators_, 1);
+    left->addLayout(form);
+    left->addLayout(buttons);
+    left->addWidget(progress_);
+    choices->setMinimumWidth(230);
+    choices->setMaximumWidth(300);
 
     // "Cheapest settings for an error of …"
     target_ = new QLineEdit(QStringLiteral("1e-4"), this);
     target_->setToolTip(tr("The largest position error you accept at the end time, in metres"));
+    target_->setMaximumWidth(90);
     cheapest_ = new QLabel(this);
     cheapest_->setWordWrap(true);
     apply_ = new QPushButton(tr("&Apply to the scene"), this);
@@ -117,40 +128,82 @@ AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
 
     summary_ = new QLabel(this);
     summary_->setWordWrap(true);
-    chart_ = new QChartView(ui::createWorkPrecisionChart({}, tr("Work-precision diagram")), this);
+    summary_->setObjectName(QStringLiteral("summary"));
+    chart_ = new QChartView(ui::createWorkPrecisionChart({}, tr("Work-precision diagram"), font()),
+                            this);
+    chart_->setObjectName(QStringLiteral("workPrecisionChart"));
+    chart_->installEventFilter(this);
     chart_->setRenderHint(QPainter::Antialiasing);
-    chart_->setMinimumHeight(300);
+    // Below this the axis titles and the dt labels no longer fit (the chart elides them).
+    chart_->setMinimumSize(560, 340);
+    chart_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    auto* caption = new QLabel(
+        tr("Each point is one run, labelled with its step dt. <b>Lower is better</b> (a smaller "
+           "error) and <b>left is faster</b> (less CPU time): the best methods sit at the lower "
+           "left. A steeper line is a higher order: halving dt divides the error by "
+           "2<sup>p</sup>."),
+        this);
+    caption->setObjectName(QStringLiteral("chartCaption"));
+    caption->setWordWrap(true);
     table_ = new QTableWidget(this);
+    table_->setObjectName(QStringLiteral("runsTable"));
     table_->setColumnCount(9);
     table_->setHorizontalHeaderLabels({tr("integrator"), tr("dt"), tr("tolerance"), tr("steps"),
                                        tr("force evals"), tr("CPU [s]"), tr("position error [m]"),
                                        tr("energy drift [J]"), tr("order")});
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setStretchLastSection(true);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     orders_ = new QTableWidget(this);
-    orders_->setColumnCount(3);
-    orders_->setHorizontalHeaderLabels({tr("integrator"), tr("observed order"), tr("theory")});
+    orders_->setObjectName(QStringLiteral("ordersTable"));
+    orders_->setColumnCount(4);
+    orders_->setHorizontalHeaderLabels(
+        {tr("integrator"), tr("measured order"), tr("theory"), tr("what it means")});
     orders_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    orders_->horizontalHeader()->setSectionResizeMode(3, QHeaderView::Stretch);
+    orders_->setWordWrap(true);
     orders_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    orders_->setToolTip(tr("Rest the mouse on a row for the whole explanation"));
+    // The explanation of the chosen row in full, where a projector shows it (a tooltip it
+    // does not).
+    orderDetail_ = new QLabel(this);
+    orderDetail_->setObjectName(QStringLiteral("orderExplanation"));
+    orderDetail_->setWordWrap(true);
+    orderDetail_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    connect(orders_, &QTableWidget::currentCellChanged, this, [this](int row) {
+        const QTableWidgetItem* item = row >= 0 ? orders_->item(row, 0) : nullptr;
+        orderDetail_->setText(
+            item
+                ? QStringLiteral("<b>%1</b>: %2").arg(item->text(), item->toolTip().toHtmlEscaped())
+                : QString());
+    });
+    auto* ordersPage = new QWidget(this);
+    auto* ordersLayout = new QVBoxLayout(ordersPage);
+    ordersLayout->setContentsMargins(0, 0, 0, 0);
+    ordersLayout->addWidget(orders_, 1);
+    ordersLayout->addWidget(orderDetail_);
+    auto* tables = new QTabWidget(this);
+    tables->addTab(ordersPage, tr("&Orders"));
+    tables->addTab(table_, tr("A&ll runs"));
 
-    auto* top = new QHBoxLayout;
-    top->addWidget(integrators_);
-    auto* topRight = new QVBoxLayout;
-    topRight->addLayout(form);
-    topRight->addWidget(summary_);
-    topRight->addLayout(cheapRow);
-    top->addLayout(topRight, 1);
-    auto* tables = new QSplitter(Qt::Horizontal, this);
-    tables->addWidget(table_);
-    tables->addWidget(orders_);
-    tables->setStretchFactor(0, 3);
-    tables->setStretchFactor(1, 1);
+    auto* diagram = new QWidget(this);
+    auto* diagramLayout = new QVBoxLayout(diagram);
+    diagramLayout->setContentsMargins(0, 0, 0, 0);
+    diagramLayout->addWidget(chart_, 1);
+    diagramLayout->addWidget(caption);
     auto* body = new QSplitter(Qt::Vertical, this);
-    body->addWidget(chart_);
+    body->addWidget(diagram);
     body->addWidget(tables);
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(top);
-    layout->addWidget(body, 1);
+    body->setStretchFactor(0, 3);
+    body->setStretchFactor(1, 2);
+    body->setChildrenCollapsible(false);
+    auto* right = new QVBoxLayout;
+    right->addWidget(summary_);
+    right->addWidget(body, 1);
+    right->addLayout(cheapRow);
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(choices);
+    layout->addLayout(right, 1);
 
     connect(runButton_, &QPushButton::clicked, this, &AccuracyDialog::run);
     connect(cancelButton_, &QPushButton::clicked, this, &AccuracyDialog::cancel);
@@ -165,6 +218,26 @@ AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
         emit applyRequested(QString::fromStdString(chosen_->integrator), chosen_->dt,
                             chosen_->tolerance.value_or(scene_.simulation.tolerance));
     });
+}
+
+QFont AccuracyDialog::chartFont() const {
+    // The diagram's text grows with it: a full-screen dialog on a projector reads from the back
+    // of the room, a small one keeps the room for the plot. One point per 45 pixels of height.
+    QFont f = font();
+    if (f.pointSizeF() > 0.0)
+        f.setPointSizeF(std::clamp(chart_->height() / 45.0, f.pointSizeF(), 18.0));
+    return f;
+}
+
+bool AccuracyDialog::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == chart_ && event->type() == QEvent::Resize) {
+        const QFont f = chartFont();
+        if (f != chartFont_) {
+            chartFont_ = f;
+            ui::setWorkPrecisionFont(chart_->chart(), f);
+        }
+    }
+    return QDialog::eventFilter(watched, event);
 }
 
 void AccuracyDialog::setCurrentScene(const SceneDesc& scene) {
@@ -258,10 +331,11 @@ void AccuracyDialog::onFinished() {
             {QString::fromStdString(r.integrator), r.cpuSeconds, r.positionError,
              r.tolerance ? QStringLiteral("tol %1").arg(*r.tolerance, 0, 'g', 1) : formatDt(r.dt)});
     QChart* old = chart_->chart();
-    chart_->setChart(
-        ui::createWorkPrecisionChart(points, tr("%1: error at t = %2 s against CPU time")
-                                                 .arg(QString::fromStdString(scene_.name))
-                                                 .arg(result.endTime)));
+    chart_->setChart(ui::createWorkPrecisionChart(points,
+                                                  tr("%1: error at t = %2 s against CPU time")
+                                                      .arg(QString::fromStdString(scene_.name))
+                                                      .arg(result.endTime),
+                                                  chartFont()));
     delete old;
     fillTable(result);
     summary_->setText(summaryText());
@@ -287,21 +361,46 @@ QString AccuracyDialog::summaryText() const {
     return text;
 }
 
-std::optional<double> AccuracyDialog::observedOrder(const std::vector<AccuracyRecord>& records,
+std::optional<double> AccuracyDialog::observedOrder(const AccuracyResult& result,
                                                     const std::string& integrator) {
-    std::vector<double> orders;
-    for (const AccuracyRecord& r : records)
-        if (r.integrator == integrator && r.order && std::isfinite(*r.order))
-            orders.push_back(*r.order);
-    if (orders.empty()) return std::nullopt;
-    std::sort(orders.begin(), orders.end());
-    return orders[orders.size() / 2];
+    for (const OrderAssessment& a : assessOrders(result))
+        if (a.integrator == integrator) return a.measured;
+    return std::nullopt;
 }
 
 void AccuracyDialog::fillTable(const AccuracyResult& result) {
+    const std::vector<OrderAssessment> assessments = assessOrders(result);
+    const auto assessmentOf = [&](const std::string& name) -> const OrderAssessment* {
+        for (const OrderAssessment& a : assessments)
+            if (a.integrator == name) return &a;
+        return nullptr;
+    };
     table_->setRowCount(static_cast<int>(result.records.size()));
     int row = 0;
     for (const AccuracyRecord& r : result.records) {
+        // A run's order with what it is worth: the pair of steps it was measured on may be
+        // unstable or at the floor, where the number is not the method's order.
+        const OrderAssessment* a = assessmentOf(r.integrator);
+        QString order = r.order ? QString::number(*r.order, 'f', 2) : QString();
+        QString orderTip;
+        if (r.diverged) {
+            order = tr("diverged: unstable at this dt");
+            orderTip = QString::fromStdString(r.divergence);
+        } else if (a && a->unstableUpToDt && r.dt >= *a->unstableUpToDt) {
+            order +=
+                (order.isEmpty() ? QString() : QStringLiteral("  ")) + tr("unstable at this dt");
+            orderTip =
+                tr("The error does not shrink as the step is halved here: the method is "
+                   "unstable at this step, so this number is not its order.");
+        } else if (a && a->floorFromDt && r.dt <= *a->floorFromDt && r.order) {
+            order +=
+                QStringLiteral("  ") + (result.referenceExact ? tr("round-off floor reached")
+                                                              : tr("reference's accuracy reached"));
+            orderTip =
+                tr("The error is already as small as rounding (or the reference) allows: "
+                   "smaller steps no longer improve it, so this number is not the "
+                   "method's order.");
+        }
         const QStringList cells = {QString::fromStdString(r.integrator),
                                    formatDt(r.dt),
                                    r.tolerance ? QString::number(*r.tolerance, 'g', 2) : QString(),
@@ -310,28 +409,53 @@ void AccuracyDialog::fillTable(const AccuracyResult& result) {
                                    QString::number(r.cpuSeconds, 'g', 3),
                                    formatError(r.positionError),
                                    QString::number(r.energyDrift, 'e', 2),
-                                   r.order ? QString::number(*r.order, 'f', 2) : QString()};
-        for (int c = 0; c < cells.size(); ++c)
-            table_->setItem(row, c, new QTableWidgetItem(cells[c]));
+                                   order};
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            if (c == 8 && !orderTip.isEmpty()) item->setToolTip(orderTip);
+            table_->setItem(row, c, item);
+        }
         ++row;
     }
-    orders_->setRowCount(0);
-    std::vector<std::string> seen;
-    for (const AccuracyRecord& r : result.records) {
-        if (std::find(seen.begin(), seen.end(), r.integrator) != seen.end()) continue;
-        seen.push_back(r.integrator);
-        const IntegratorInfo* info = infoOf(r.integrator);
-        const auto order = observedOrder(result.records, r.integrator);
-        const int at = orders_->rowCount();
-        orders_->insertRow(at);
-        orders_->setItem(at, 0, new QTableWidgetItem(QString::fromStdString(r.integrator)));
-        orders_->setItem(
-            at, 1,
-            new QTableWidgetItem(order ? QString::number(*order, 'f', 2)
-                                       : (result.contacts ? tr("contacts") : tr("–"))));
-        orders_->setItem(at, 2,
-                         new QTableWidgetItem(info ? QString::number(info->order) : QString()));
+    orders_->setRowCount(static_cast<int>(assessments.size()));
+    row = 0;
+    for (const OrderAssessment& a : assessments) {
+        const QString tip = QString::fromStdString(a.explanation);
+        const QStringList cells = {
+            QString::fromStdString(a.integrator),
+            a.measured ? QString::number(*a.measured, 'f', 2) : QStringLiteral("–"),
+            a.theory > 0 ? QString::number(a.theory) : QString(), QString::fromStdString(a.note)};
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            item->setToolTip(tip);
+            if (c == 1 || c == 2) item->setTextAlignment(Qt::AlignCenter);
+            orders_->setItem(row, c, item);
+        }
+        ++row;
     }
+    orders_->resizeRowsToContents();
+    // The first method whose number needs words, else the first.
+    int chosen = 0;
+    for (std::size_t i = 0; i < assessments.size(); ++i) {
+        const OrderAssessment& a = assessments[i];
+        const bool odd = (a.kind != OrderAssessment::Kind::AsExpected &&
+                          a.kind != OrderAssessment::Kind::NotMeasured) ||
+                         a.floorFromDt || a.unstableUpToDt || a.preAsymptoticUpToDt;
+        if (odd) {
+            chosen = static_cast<int>(i);
+            break;
+        }
+    }
+    if (orders_->rowCount() > 0) {
+        orders_->setCurrentCell(-1, -1);
+        orders_->setCurrentCell(chosen, 0);
+    }
+}
+
+QString AccuracyDialog::orderExplanation(const QString& integrator) const {
+    for (const OrderAssessment& a : assessOrders(study_.result()))
+        if (a.integrator == integrator.toStdString()) return QString::fromStdString(a.explanation);
+    return {};
 }
 
 std::optional<AccuracyRecord> AccuracyDialog::cheapestFor(double targetError) const {

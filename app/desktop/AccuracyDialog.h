@@ -7,6 +7,7 @@
 #include "app/accuracy/AccuracyStudy.h"
 
 #include <QDialog>
+#include <QFont>
 
 #include <optional>
 
@@ -43,9 +44,12 @@ public:
 
     // The cheapest finished run whose error is at most target (least CPU time), if any.
     std::optional<AccuracyRecord> cheapestFor(double targetError) const;
-    // The observed order of each integrator (median of its records' orders), for the table.
-    static std::optional<double> observedOrder(const std::vector<AccuracyRecord>& records,
+    // The order measured for an integrator on the steps in its asymptotic range (above the
+    // round-off floor, below any unstable step: assessOrders), as the orders table shows it.
+    static std::optional<double> observedOrder(const AccuracyResult& result,
                                                const std::string& integrator);
+    // The orders table's explanation for an integrator of the last study (its tooltip).
+    QString orderExplanation(const QString& integrator) const;
 
     bool exportTo(const QString& path, QString* error) const;  // .png, .svg or .csv
     QString summaryText() const;
@@ -55,7 +59,11 @@ signals:
     // (and tolerance for the adaptive methods).
     void applyRequested(const QString& integrator, double dt, double tolerance);
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
+    QFont chartFont() const;  // the dialog's font, larger as the diagram grows
     void onFinished();
     void updateCheapest();
     void fillTable(const AccuracyResult& result);
@@ -74,11 +82,13 @@ private:
     QChartView* chart_ = nullptr;
     QTableWidget* table_ = nullptr;
     QTableWidget* orders_ = nullptr;
+    QLabel* orderDetail_ = nullptr;  // the explanation of the orders table's current row
     QLabel* summary_ = nullptr;
     QLineEdit* target_ = nullptr;
     QLabel* cheapest_ = nullptr;
     QPushButton* apply_ = nullptr;
     std::optional<AccuracyRecord> chosen_;
+    QFont chartFont_;  // what the diagram's text was last sized from
 };
 
 }  // namespace phasebox

@@ -2,6 +2,7 @@
 
 #include "app/desktop/AccuracyDialog.h"
 #include "app/desktop/CanvasTools.h"
+#include "app/desktop/HelpDialogs.h"
 #include "app/desktop/MeasureTools.h"
 #include "app/desktop/SceneFiles.h"
 #include "app/desktop/SceneLibraryMenu.h"
@@ -137,6 +138,13 @@ void MainWindow::createActions() {
         });
     estimate->setCheckable(true);
     estimate->setChecked(true);
+    // F1 where the platform has no binding for HelpContents (it has one on every desktop).
+    make("userGuide", tr("&User Guide"),
+         QKeySequence::keyBindings(QKeySequence::HelpContents).value(0, QKeySequence(Qt::Key_F1)),
+         [this] { showUserGuide(); })
+        ->setToolTip(tr("How to use Phasebox: the window, building scenes, measuring, files"));
+    make("keyboardShortcuts", tr("&Keyboard Shortcuts"), QKeySequence(),
+         [this] { showKeyboardShortcuts(); });
 }
 
 void MainWindow::createMenus() {
@@ -173,7 +181,9 @@ void MainWindow::createMenus() {
     addNamedActions(view, *this,
                     {"", "fit", "follow", "trails", "velocityArrows", "forceArrows", "freeBody",
                      "labels", "viewExact", "grid", "errorEstimate", "presentation"});
-    menuBar()->addMenu(tr("&Help"))->addAction(tr("&About Phasebox"), this, [this] {
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    addNamedActions(help, *this, {"userGuide", "keyboardShortcuts", ""});
+    help->addAction(tr("&About Phasebox"), this, [this] {
         QMessageBox::about(this, tr("About Phasebox"),
                            tr("<b>Phasebox %1</b><p>A 2D physics sandbox for the classroom: drop "
                               "particles, springs, cloth and boxes into a scene, switch the "
@@ -344,6 +354,23 @@ void MainWindow::setPresentationMode(bool on) {
     // The canvas changed size with the layout: frame the scene again once it has settled.
     QTimer::singleShot(0, canvas_, [this] { canvas_->fitToWorld(); });
     plotsPresenter_->setPresentation(on);
+}
+
+void MainWindow::showUserGuide() {
+    if (!guide_) guide_ = createUserGuideDialog(this);
+    guide_->show();
+    guide_->raise();
+    guide_->activateWindow();
+}
+
+void MainWindow::showKeyboardShortcuts() {
+    // Made anew each time from the actions as they are now.
+    delete shortcuts_;
+    shortcuts_ = createShortcutsDialog(*this);
+    shortcuts_->setAttribute(Qt::WA_DeleteOnClose);
+    shortcuts_->show();
+    shortcuts_->raise();
+    shortcuts_->activateWindow();
 }
 
 }  // namespace phasebox

@@ -13,12 +13,14 @@
 #include "ui/plots/PlotsPanel.h"
 
 #include <QMainWindow>
+#include <QPointer>
 #include <QStringList>
 
 #include <memory>
 
 QT_BEGIN_NAMESPACE
 class QAction;
+class QDialog;
 class QDockWidget;
 class QTextBrowser;
 QT_END_NAMESPACE
@@ -94,6 +96,10 @@ public:
     // The accuracy lab (created on first use).
     AccuracyDialog* accuracyDialog();
     void showAccuracyLab();
+    // Help > User Guide (F1): docs/user-guide.md in a dialog. Help > Keyboard Shortcuts: every
+    // action of the window that has a key, listed from the actions themselves.
+    void showUserGuide();
+    void showKeyboardShortcuts();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -151,6 +157,8 @@ private:
     StatusPresenter* status_ = nullptr;
 
     AccuracyDialog* accuracy_ = nullptr;
+    QDialog* guide_ = nullptr;
+    QPointer<QDialog> shortcuts_;         // deletes itself on close
     std::unique_ptr<Autosave> autosave_;  // the open scene, every minute, for crash recovery
 
     SceneFiles* files_ = nullptr;

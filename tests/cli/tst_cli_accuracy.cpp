@@ -161,7 +161,8 @@ private slots:
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QByteArray text = f.readAll();
         QVERIFY(text.contains("<svg"));
-        QVERIFY(text.contains("log10 CPU time"));
+        QVERIFY(text.contains("CPU time [s], left is faster"));
+        QVERIFY(text.contains("position error [m], lower is better"));
     }
 
     void contactSceneSaysOrdersDoNotApply() {

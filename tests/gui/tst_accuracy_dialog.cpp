@@ -1,13 +1,21 @@
 // The accuracy lab in the app: a study on the open scene in a worker thread, the diagram and
-// tables it fills, the cheapest settings for a target error and applying them, and cancel.
+// tables it fills, the cheapest settings for a target error and applying them, and cancel. And
+// that a class can read it: at 1024×700 and 1920×1080 the axis titles are whole and inside the
+// chart, the dt labels do not overlap, "lower is better" is said, and an odd order is explained
+// in words (RK4 at round-off, explicit Euler unstable on a stiff spring).
 
 #include "app/desktop/AccuracyDialog.h"
 #include "app/desktop/MainWindow.h"
 #include "app/document/Document.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QChart>
 #include <QChartView>
+#include <QGraphicsScene>
+#include <QGraphicsSimpleTextItem>
+#include <QGraphicsTextItem>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
@@ -17,6 +25,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
+#include <QValueAxis>
 
 #include <cmath>
 
@@ -32,6 +41,42 @@ void choose(AccuracyDialog& dialog, const QStringList& names) {
                                                                                 : Qt::Unchecked);
     }
 }
+
+void setLine(AccuracyDialog& dialog, int index, const QString& text) {
+    dialog.findChildren<QLineEdit*>()[index]->setText(text);  // 0: dt list, 1: duration
+}
+
+bool runStudy(AccuracyDialog& dialog) {
+    QSignalSpy finished(&dialog.study(), &AccuracyStudy::finished);
+    return dialog.run() && finished.wait(120000) && !dialog.study().result().records.empty();
+}
+
+// The row of a table whose first cell is text.
+int rowOf(QTableWidget* table, const QString& text) {
+    for (int row = 0; row < table->rowCount(); ++row)
+        if (table->item(row, 0) && table->item(row, 0)->text() == text) return row;
+    return -1;
+}
+
+QTableWidget* table(AccuracyDialog& dialog, const char* name) {
+    return dialog.findChild<QTableWidget*>(QString::fromLatin1(name));
+}
+
+// The title item showing text in the chart view's scene, if it shows it whole: Qt Charts elides
+// a title that does not fit ("position error […"), so an item with the whole text is uncut.
+QGraphicsTextItem* wholeTitle(QChartView* view, const QString& text) {
+    for (QGraphicsItem* item : view->scene()->items())
+        if (auto* t = dynamic_cast<QGraphicsTextItem*>(item);
+            t && t->isVisible() && t->toPlainText() == text)
+            return t;
+    return nullptr;
+}
+
+void savePicture(QWidget* widget, const QString& name) {
+    const QString dir = qEnvironmentVariable("PHASEBOX_SCREENSHOT_DIR");
+    if (!dir.isEmpty()) widget->grab().save(QStringLiteral("%1/%2.png").arg(dir, name));
+}
+
 }  // namespace
 
 class TestAccuracyDialog : public QObject {
@@ -62,8 +107,9 @@ private slots:
             if (t->columnCount() == 9) runs = t;
         QVERIFY(runs);
         QCOMPARE(runs->rowCount(), 12);
-        const auto euler = AccuracyDialog::observedOrder(records, "explicit_euler");
-        const auto rk4 = AccuracyDialog::observedOrder(records, "rk4");
+        const auto euler =
+            AccuracyDialog::observedOrder(dialog->study().result(), "explicit_euler");
+        const auto rk4 = AccuracyDialog::observedOrder(dialog->study().result(), "rk4");
         QVERIFY(euler && std::abs(*euler - 1.0) < 0.2);
         QVERIFY(rk4 && std::abs(*rk4 - 4.0) < 0.2);
 
@@ -111,6 +157,145 @@ private slots:
         QVERIFY(csv.open(QIODevice::ReadOnly));
         QVERIFY(csv.readLine().startsWith(
             "integrator,dt,steps,force_evals,cpu_seconds,position_error,energy_drift,order"));
+    }
+
+    void readableAtClassroomSizes() {
+        MainWindow w;
+        QVERIFY(w.openFile(QStringLiteral(":/scenes/spring-oscillator.phasebox.json"), true));
+        w.action("accuracyLab")->trigger();
+        AccuracyDialog* dialog = w.accuracyDialog();
+        QVERIFY(runStudy(*dialog));  // every method, the default steps: the crowded case
+        auto* view = dialog->findChild<QChartView*>(QStringLiteral("workPrecisionChart"));
+        QVERIFY(view);
+        QChart* chart = view->chart();
+        auto* x = qobject_cast<QValueAxis*>(chart->axes(Qt::Horizontal).value(0));
+        auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).value(0));
+        QVERIFY(x && y);
+        QVERIFY(y->titleText().contains(QStringLiteral("lower is better")));
+        QVERIFY(x->titleText().contains(QStringLiteral("left is faster")));
+        QVERIFY(y->labelsFont().pointSizeF() >= 10.0);
+        auto* caption = dialog->findChild<QLabel*>(QStringLiteral("chartCaption"));
+        QVERIFY(caption && caption->text().contains(QStringLiteral("Lower is better")));
+
+        for (const QSize size : {QSize(1024, 700), QSize(1920, 1080)}) {
+            dialog->resize(size);
+            QApplication::processEvents();
+            QCOMPARE(dialog->size(), size);
+            const QString at = QStringLiteral("%1x%2").arg(size.width()).arg(size.height());
+            savePicture(dialog, QStringLiteral("accuracy-lab-") + at);
+            QVERIFY2(view->height() >= 340 && view->width() >= 560, qPrintable(at));
+            // Text at least 10 pt, and larger on the larger screen.
+            QVERIFY(y->labelsFont().pointSizeF() >= (size.height() > 1000 ? 12.0 : 10.0));
+            QVERIFY2(caption->isVisible() &&
+                         caption->height() >= caption->heightForWidth(caption->width()),
+                     qPrintable(at));
+
+            // The axis titles and the chart's title are whole and inside the view.
+            const QRect inside = view->viewport()->rect();
+            for (const QString& title : {x->titleText(), y->titleText(), chart->title()}) {
+                QGraphicsTextItem* item = wholeTitle(view, title);
+                QVERIFY2(item, qPrintable(at + QStringLiteral(": cut: ") + title));
+                const QRect r = view->mapFromScene(item->sceneBoundingRect()).boundingRect();
+                QVERIFY2(inside.contains(r),
+                         qPrintable(at + QStringLiteral(": outside: ") + title));
+            }
+
+            // The dt labels: in the plot, none over another, and each line's ends labelled
+            // somewhere (at least the six dts' 1/60 and 1/1920 of some line).
+            std::vector<QRectF> shown;
+            QStringList texts;
+            const QRectF plot = chart->mapToScene(chart->plotArea()).boundingRect();
+            for (QGraphicsItem* item : view->scene()->items()) {
+                auto* label = dynamic_cast<QGraphicsSimpleTextItem*>(item);
+                if (!label || !label->isVisible() || label->parentItem() != chart) continue;
+                const QRectF r = label->sceneBoundingRect();
+                QVERIFY2(plot.contains(r), qPrintable(at + QStringLiteral(": ") + label->text()));
+                for (const QRectF& other : shown)
+                    QVERIFY2(!other.intersects(r),
+                             qPrintable(at + QStringLiteral(": overlap at ") + label->text()));
+                shown.push_back(r);
+                texts << label->text();
+            }
+            QVERIFY2(
+                texts.contains(QStringLiteral("1/60")) && texts.contains(QStringLiteral("1/1920")),
+                qPrintable(at + QStringLiteral(": ") + texts.join(QLatin1Char(' '))));
+            QVERIFY2(shown.size() >= 10, qPrintable(at));
+        }
+    }
+
+    void roundOffFloorIsExplained() {
+        // RK4 on the smooth oscillator at steps down to 1/30720: the error falls like dt⁴ to
+        // 1e-15 m and then only wanders (the last slope is negative).
+        MainWindow w;
+        QVERIFY(w.openFile(QStringLiteral(":/scenes/spring-oscillator.phasebox.json"), true));
+        w.action("accuracyLab")->trigger();
+        AccuracyDialog* dialog = w.accuracyDialog();
+        choose(*dialog, {"rk4"});
+        setLine(*dialog, 0,
+                QStringLiteral("1/60, 1/120, 1/240, 1/480, 1/960, 1/1920, 1/3840, 1/7680, "
+                               "1/15360, 1/30720"));
+        setLine(*dialog, 1, QStringLiteral("1.3"));
+        QVERIFY(runStudy(*dialog));
+        const AccuracyResult& result = dialog->study().result();
+        // The data is what the explanation claims: the finest error is at the floor (below
+        // 1e-9 of the positions' size) and did not fall as fast as dt⁴ from the step before.
+        const AccuracyRecord& finest = result.records.back();
+        const AccuracyRecord& before = result.records[result.records.size() - 2];
+        QVERIFY(finest.positionError < 1e-9 * result.positionScale);
+        QVERIFY(finest.order && *finest.order < 3.5);
+        QVERIFY(before.positionError < 1e-12);
+
+        QTableWidget* orders = table(*dialog, "ordersTable");
+        const int row = rowOf(orders, QStringLiteral("rk4"));
+        QVERIFY(row >= 0);
+        const double measured = orders->item(row, 1)->text().toDouble();
+        QVERIFY2(std::abs(measured - 4.0) < 0.3, qPrintable(orders->item(row, 1)->text()));
+        QCOMPARE(orders->item(row, 2)->text(), QStringLiteral("4"));
+        QVERIFY2(orders->item(row, 3)->text().contains(QStringLiteral("round-off floor reached")),
+                 qPrintable(orders->item(row, 3)->text()));
+        QVERIFY(orders->item(row, 3)->toolTip().contains(QStringLiteral("rounding errors")));
+        // In words under the table too (a projector shows no tooltips).
+        auto* detail = dialog->findChild<QLabel*>(QStringLiteral("orderExplanation"));
+        QVERIFY(detail && detail->text().contains(QStringLiteral("rounding errors")));
+        // The run at the floor says so beside its order.
+        QTableWidget* runs = table(*dialog, "runsTable");
+        const QString lastOrder = runs->item(runs->rowCount() - 1, 8)->text();
+        QVERIFY2(lastOrder.contains(QStringLiteral("round-off floor reached")),
+                 qPrintable(lastOrder));
+        QVERIFY(!runs->item(1, 8)->text().contains(QStringLiteral("floor")));
+        dialog->resize(1024, 700);
+        QApplication::processEvents();
+        savePicture(dialog, QStringLiteral("accuracy-lab-roundoff-1024x700"));
+    }
+
+    void instabilityIsExplained() {
+        // Explicit Euler on the stiff spring (ω = 316 rad/s) blows up at every default step;
+        // RK4 blows up at 1/60 only.
+        MainWindow w;
+        QVERIFY(w.openFile(QStringLiteral(":/scenes/stiff-spring-blowup.phasebox.json"), true));
+        w.action("accuracyLab")->trigger();
+        AccuracyDialog* dialog = w.accuracyDialog();
+        choose(*dialog, {"explicit_euler", "rk4"});
+        setLine(*dialog, 1, QStringLiteral("1"));
+        QVERIFY(runStudy(*dialog));
+        const AccuracyResult& result = dialog->study().result();
+        for (const AccuracyRecord& r : result.records)
+            if (r.integrator == "explicit_euler") QVERIFY(r.diverged);
+        QTableWidget* orders = table(*dialog, "ordersTable");
+        const int euler = rowOf(orders, QStringLiteral("explicit_euler"));
+        QVERIFY(euler >= 0);
+        QCOMPARE(orders->item(euler, 1)->text(), QStringLiteral("–"));
+        QCOMPARE(orders->item(euler, 2)->text(), QStringLiteral("1"));
+        QVERIFY2(orders->item(euler, 3)->text().contains(QStringLiteral("unstable")),
+                 qPrintable(orders->item(euler, 3)->text()));
+        QVERIFY(orders->item(euler, 3)->toolTip().contains(QStringLiteral("blew up")));
+        const int rk4 = rowOf(orders, QStringLiteral("rk4"));
+        QVERIFY(orders->item(rk4, 3)->text().contains(QStringLiteral("unstable at dt ≥ 1/60")));
+        QTableWidget* runs = table(*dialog, "runsTable");
+        QVERIFY(runs->item(0, 8)->text().contains(QStringLiteral("unstable at this dt")));
+        dialog->resize(1024, 700);
+        QApplication::processEvents();
+        savePicture(dialog, QStringLiteral("accuracy-lab-unstable-1024x700"));
     }
 
     void cancelStopsTheStudy() {

@@ -10,6 +10,7 @@
 
 QT_BEGIN_NAMESPACE
 class QChart;
+class QFont;
 QT_END_NAMESPACE
 
 namespace phasebox::ui {
@@ -24,8 +25,19 @@ struct WorkPrecisionPoint {
     QString label;  // shown next to the point: "1/120", "tol 1e-4"
 };
 
+// The axis titles, spelled once: tests and the dialog's caption refer to them.
+QString workPrecisionErrorTitle();  // "position error [m], lower is better"
+QString workPrecisionTimeTitle();   // "CPU time [s], left is faster"
+
 // Line styles follow the registry: solid explicit, dashed implicit, dotted adaptive; each
-// integrator keeps its colour in every diagram.
+// integrator keeps its colour in every diagram. Text follows `font` (the widget's, larger in
+// presentation mode): tick labels and legend at its size, titles bold, dt labels a little
+// smaller. Tick labels read 1e-6, not -6: the axes are log10 of the values.
+QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, const QString& title,
+                                 const QFont& font);
 QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, const QString& title);
+// The text sizes of a chart made above, again from `font` (the dialog makes the text larger as
+// the diagram grows); the dt labels are placed anew.
+void setWorkPrecisionFont(QChart* chart, const QFont& font);
 
 }  // namespace phasebox::ui
