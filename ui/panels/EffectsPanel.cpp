@@ -234,7 +234,9 @@ void EffectsPanel::setCosts(std::span<const EffectCost> costs, long long steps,
     const QSignalBlocker blocker(tree_);
     for (auto it = items_.cbegin(); it != items_.cend(); ++it) {
         const auto found = measured.constFind(it.key());
-        const double ms = found != measured.cend() && enabled_.value(it.key()) ? *found : -1.0;
+        // Before the first step nothing was measured: no figure rather than a zero.
+        const double ms =
+            steps > 0 && found != measured.cend() && enabled_.value(it.key()) ? *found : -1.0;
         costs_.insert(it.key(), ms);
         const QString text = formatMs(ms);
         // Setting equal text still repaints; most frames change only some digits.

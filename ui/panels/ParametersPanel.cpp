@@ -190,6 +190,8 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     stiffnessBox_->setSignificantDigits(3);
     stiffnessBox_->setStepFactor(10.0);
     stiffnessBox_->setSuffix(tr(" N/m"));
+    // Shown at the minimum: the automatic stiffness of a scene with nothing that moves.
+    stiffnessBox_->setSpecialValueText(tr("none yet"));
     stiffnessBox_->setToolTip(
         tr("Penalty stiffness k per contact point; the arrows move it by a "
            "factor of ten"));
@@ -332,7 +334,8 @@ void ParametersPanel::setSimulation(const SimulationDesc& simulation) {
 void ParametersPanel::setContactStiffness(double stiffness, bool automatic) {
     const QSignalBlocker blockStiffness(stiffnessBox_);
     const QSignalBlocker blockAutomatic(automaticStiffnessButton_);
-    if (stiffness > 0.0) stiffnessBox_->setValue(stiffness);
+    // No body to set it by (a new scene): no figure, rather than the last scene's.
+    stiffnessBox_->setValue(stiffness > 0.0 ? stiffness : stiffnessBox_->minimum());
     automaticStiffnessButton_->setChecked(automatic);
 }
 

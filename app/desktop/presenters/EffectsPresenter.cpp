@@ -75,19 +75,19 @@ void EffectsPresenter::updateRows() {
 }
 
 void EffectsPresenter::updateCosts() {
-    if (document_.world().stepCount() > 0) showCosts();
+    showCosts();  // a new or reset world clears the last run's figures
 }
 
 void EffectsPresenter::showCosts() {
     const World& world = document_.world();
-    panel_.setCosts(world.effectCosts(), std::max<long long>(1, world.stepCount()),
-                    world.integratorSeconds());
+    // A world that has not stepped shows no costs (what building it evaluated is no step).
+    panel_.setCosts(world.effectCosts(), world.stepCount(), world.integratorSeconds());
     const StepProfile& profile = world.stepProfile();
     std::vector<ui::StageCost> stages;
     for (int i = 0; i < StepProfile::kStageCount; ++i) {
         const std::string_view name = StepProfile::kStageNames[static_cast<std::size_t>(i)];
         stages.push_back({QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())),
-                          profile.ran(i) ? profile.msPerStep(i) : -1.0});
+                          world.stepCount() > 0 && profile.ran(i) ? profile.msPerStep(i) : -1.0});
     }
     panel_.setStageCosts(stages);
 }

@@ -32,6 +32,13 @@ PlotsPresenter::PlotsPresenter(ui::PlotsPanel& panel, Document& document,
         recorder_.clear();
         recorder_.record(document_.world());
     });
+    // New and Open: the phase plot waits for a choice in this scene, as in a new window.
+    connect(&document_, &Document::instrumentsLoaded, this, [this] {
+        const QString coordinate = QStringLiteral("x");
+        recorder_.setPhaseTarget({}, coordinate);
+        panel_.setPhaseCoordinate(coordinate);
+        refresh();
+    });
     connect(&document_, &Document::selectionChanged, this, &PlotsPresenter::followSelection);
     connect(&controller_, &SimulationController::stepped, this, [this] {
         if (sinceRefresh_.elapsed() >= kPlotIntervalMs) refresh();
