@@ -4,6 +4,7 @@
 // closed form T = 4·√(L/g)·K(sin(θ0/2)) of a rod pendulum and of a hinged disk or box (a
 // physical pendulum: L = I_pivot/(m·d)), and whose largest value is the release angle.
 
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -196,6 +197,41 @@ private slots:
             checkSwing(b.name, swing(QStringLiteral("%1.json").arg(b.name), scene, "pivot.angle"),
                        lengthEq, theta0);
         }
+    }
+
+    void hingedDiskOscillatesForTheAdvisorAndTheLab() {
+        // A disk (r = 0.3 m) hinged at d = 0.8 m from its centre: small swings have
+        // ω² = m·g·d/I_pivot = g/L, L = (r²/2 + d²)/d; `info` names that mode, and the accuracy
+        // study measures against the physical pendulum's closed form, RK4 at fourth order.
+        const double d = 0.8, theta0 = kPi / 6.0, lengthEq = (0.5 * 0.3 * 0.3 + d * d) / d;
+        const QString disk =
+            QStringLiteral(
+                R"("disks": [ { "id": "body", "position": [%1, %2], "radius": 0.3, "mass": 2 } ])")
+                .arg(number(d * std::sin(theta0)), number(-d * std::cos(theta0)));
+        const QString path = write(
+            "advised.json",
+            pendulumScene(
+                disk, R"({ "id": "pivot", "type": "hinge", "a": "body", "anchor": [0, 0] })", 2.0));
+        const Result info = cli({"info", path});
+        QCOMPARE(info.status, 0);
+        const QString text = QString::fromUtf8(info.out);
+        const QString omega = QString::number(std::sqrt(kG / lengthEq), 'g', 4);
+        QVERIFY2(text.contains(QStringLiteral("stiffest mode omega = %1 rad/s").arg(omega)),
+                 qPrintable(text));
+        QVERIFY(!text.contains("nothing in the scene oscillates"));
+
+        const Result lab =
+            cli({"accuracy", path, "--integrators", "rk4", "--dt", "0.01,0.005", "--json"});
+        QCOMPARE(lab.status, 0);
+        const QJsonObject study = QJsonDocument::fromJson(lab.out).object();
+        QCOMPARE(study["reference"].toString(), QStringLiteral("exact: physical pendulum"));
+        const QJsonArray rows = study["records"].toArray();
+        QCOMPARE(rows.size(), 2);
+        const double order = rows[1].toObject()["order"].toDouble();
+        qInfo("rk4 against the physical pendulum: errors %.3e, %.3e m, order %.2f",
+              rows[0].toObject()["position_error"].toDouble(),
+              rows[1].toObject()["position_error"].toDouble(), order);
+        QVERIFY(std::abs(order - 4.0) < 0.3);
     }
 
     void jointAngleSignAndTheOtherForms() {
