@@ -146,7 +146,8 @@ Vec2 KeplerMotion::at(double t) const {
 
 std::optional<PendulumMotion> PendulumMotion::fromState(const Vec2& centre, double length,
                                                         const Vec2& g, const Vec2& position,
-                                                        const Vec2& velocity) {
+                                                        const Vec2& velocity,
+                                                        double equivalentLength) {
     const double gn = g.norm();
     if (!(length > 0.0) || !(gn > 0.0)) return std::nullopt;
     PendulumMotion m;
@@ -154,10 +155,11 @@ std::optional<PendulumMotion> PendulumMotion::fromState(const Vec2& centre, doub
     m.length = length;
     m.down = g / gn;
     m.side = perp(m.down);
-    m.omega0 = std::sqrt(gn / length);
+    m.omega0 = std::sqrt(gn / (equivalentLength > 0.0 ? equivalentLength : length));
     const Vec2 r = (position - centre) / length;
     const double theta = std::atan2(r.dot(m.side), r.dot(m.down));
     const double rate = velocity.dot(-std::sin(theta) * m.down + std::cos(theta) * m.side) / length;
+    m.startAngle = theta;
     const double s0 = std::sin(0.5 * theta);
     // The energy fixes k: k² = sin²(θ₀/2) + θ'₀²/(4ω₀²).
     m.k = std::sqrt(s0 * s0 + rate * rate / (4.0 * m.omega0 * m.omega0));
@@ -169,9 +171,12 @@ std::optional<PendulumMotion> PendulumMotion::fromState(const Vec2& centre, doub
     return m;
 }
 
+double PendulumMotion::angle(double t) const {
+    return 2.0 * std::asin(std::clamp(k * jacobiSn(omega0 * t + phase, k), -1.0, 1.0));
+}
+
 Vec2 PendulumMotion::at(double t) const {
-    const double theta =
-        2.0 * std::asin(std::clamp(k * jacobiSn(omega0 * t + phase, k), -1.0, 1.0));
+    const double theta = angle(t);
     return centre + length * (std::cos(theta) * down + std::sin(theta) * side);
 }
 

@@ -22,6 +22,10 @@ using namespace exact_detail;
 Vec ExactReference::positions(double t) const {
     Vec q = Vec::Zero(dimension_);
     for (const Pendulum& p : pendulums_) q.segment<2>(p.dof) = p.motion.at(t);
+    for (const RigidPendulum& p : rigidPendulums_) {
+        q.segment<2>(p.dof) = p.motion.at(t);
+        q[p.dof + 2] = p.angle(t);
+    }
     for (const Coordinate& c : coordinates_) q[c.dof] = c.motion.at(t);
     for (const AxisMotion& a : axes_) q.segment<2>(a.dof) = a.anchor + a.s.at(t) * a.axis;
     for (const Orbit& o : orbits_) q.segment<2>(o.dof) = o.orbit.at(t);
@@ -47,6 +51,10 @@ double ExactReference::Modes::along(std::size_t i, double t) const {
 double ExactReference::position(int dof, double t) const {
     for (const Pendulum& p : pendulums_)
         if (dof == p.dof || dof == p.dof + 1) return p.motion.at(t)[dof - p.dof];
+    for (const RigidPendulum& p : rigidPendulums_) {
+        if (dof == p.dof || dof == p.dof + 1) return p.motion.at(t)[dof - p.dof];
+        if (dof == p.dof + 2) return p.angle(t);
+    }
     for (const Coordinate& c : coordinates_)
         if (dof == c.dof) return c.motion.at(t);
     for (const AxisMotion& a : axes_)
@@ -72,6 +80,8 @@ bool ExactReference::covers(int dof) const {
     const auto pair = [dof](int first) { return dof == first || dof == first + 1; };
     return std::any_of(pendulums_.begin(), pendulums_.end(),
                        [&](auto& p) { return pair(p.dof); }) ||
+           std::any_of(rigidPendulums_.begin(), rigidPendulums_.end(),
+                       [&](auto& p) { return pair(p.dof) || dof == p.dof + 2; }) ||
            std::any_of(coordinates_.begin(), coordinates_.end(),
                        [&](auto& c) { return dof == c.dof; }) ||
            std::any_of(axes_.begin(), axes_.end(), [&](auto& a) { return pair(a.dof); }) ||
@@ -101,6 +111,8 @@ std::vector<double> ExactReference::periods() const {
     for (const Orbit& o : orbits_)
         if (!o.orbit.hyperbolic) out.push_back(kTwoPi / o.orbit.meanMotion);
     for (const Pendulum& p : pendulums_)
+        out.push_back(4.0 * std::comp_ellint_1(p.motion.k) / p.motion.omega0);
+    for (const RigidPendulum& p : rigidPendulums_)
         out.push_back(4.0 * std::comp_ellint_1(p.motion.k) / p.motion.omega0);
     for (const Modes& m : modes_)
         for (Eigen::Index k = 0; k < m.omega.size(); ++k) out.push_back(kTwoPi / m.omega[k]);
@@ -177,7 +189,63 @@ double contactFreeUntil(const ExactReference& ref, const World& world, double en
     return kNone;
 }
 
+// Whether the other end of joint j is fixed: the world, a pinned particle or a static body.
+bool heldToFixed(const World& world, const Joint& joint) {
+    const JointBody& b = joint.b;
+    if (b.kind == JointBody::Kind::Particle) return world.particles()[b.index].dof < 0;
+    if (b.kind == JointBody::Kind::Rigid) return world.boxes()[b.index].dof < 0;
+    return true;
+}
+
+// A rope swings like a rod while it stays taut: from rest at θ0 its tension m·g·(3·cos θ −
+// 2·cos θ0) stays ≥ 0 throughout when θ0 ≤ 90°, that is k = sin(θ0/2) ≤ √½.
+bool ropeStaysTaut(const PendulumMotion& motion) {
+    return motion.k * motion.k <= 0.5 + 1e-12;
+}
+
 }  // namespace
+
+// A rigid body held to a fixed point by joint j under gravity g: a physical pendulum on a hinge
+// (ω₀² = m·g·d/I_pivot, I_pivot = I + m·d², d from the pivot to the centre), a simple pendulum
+// of its centre on a rod or taut rope at the centre (the pull passes through the centre: the
+// spin stays). nullopt otherwise (a rod at another point makes a double pendulum).
+std::optional<ExactReference::RigidPendulum> rigidPendulum(const World& world, int j,
+                                                           const Vec2& g) {
+    const Joint& joint = world.joints()[j];
+    const Box& body = world.boxes()[joint.a.index];
+    if (body.dof < 0 || !heldToFixed(world, joint) || !world.jointSolver()) return std::nullopt;
+    const Vec& q = world.positions();
+    const Vec& u = world.velocities();
+    const Vec2 pivot = world.jointSolver()->pointB(j, q);
+    const Vec2 centre = q.segment<2>(body.dof), velocity = u.segment<2>(body.dof);
+    const double omega = u[body.dof + 2];
+    ExactReference::RigidPendulum out;
+    out.dof = body.dof;
+    out.angle0 = q[body.dof + 2];
+    std::optional<PendulumMotion> motion;
+    if (joint.type == Joint::Type::Hinge) {
+        const double d = (centre - pivot).norm();
+        if (joint.hasLimits || joint.hasMotor || !(d > 0.0)) return std::nullopt;
+        // The body turns about the pivot: its centre moves at ω × (c − pivot).
+        const Vec2 turning = omega * perp(Vec2(centre - pivot));
+        if ((velocity - turning).norm() > 1e-9 * std::max(1.0, velocity.norm()))
+            return std::nullopt;
+        const double lengthEq = (body.inertia + body.mass * d * d) / (body.mass * d);
+        motion = PendulumMotion::fromState(pivot, d, g, centre, velocity, lengthEq);
+    } else if (joint.type == Joint::Type::Rod || joint.type == Joint::Type::Rope) {
+        if (joint.a.point != Vec2::Zero()) return std::nullopt;
+        motion = PendulumMotion::fromState(pivot, joint.length, g, centre, velocity);
+        const double distance = (centre - pivot).norm();
+        if (motion && joint.type == Joint::Type::Rope &&
+            (!ropeStaysTaut(*motion) || std::abs(distance - joint.length) > 1e-9 * joint.length))
+            return std::nullopt;
+        out.hinged = false;
+        out.spin = omega;
+    }
+    if (!motion) return std::nullopt;
+    out.motion = *motion;
+    return out;
+}
 
 std::optional<ExactReference> findExactReference(const SceneDesc& scene, const World& world,
                                                  double endTime) {
@@ -418,17 +486,25 @@ std::optional<ExactReference> ExactReference::ignoringContacts(const SceneDesc& 
     }
 
     if (!world.joints().empty()) {
-        // Simple pendulums only: every dynamic body a particle held by one rod to a fixed
-        // point or one circular track, under gravity alone.
+        // Pendulums only: every dynamic body held by one joint to a fixed point under gravity
+        // alone: a particle by a rod, a taut rope or a circular track, a rigid body as
+        // rigidPendulum() says.
         if (world.effects().size() != 1 || !fx.gravity) return std::nullopt;
         const Vec2 g(fx.gravity->g[0], fx.gravity->g[1]);
         std::vector<int> heldBy(world.particles().size(), -1);
-        for (const Box& b : world.boxes())
-            if (b.dof >= 0) return std::nullopt;
+        std::vector<char> rigidHeld(world.boxes().size(), 0);
         const auto& joints = world.joints();
         for (int j = 0; j < static_cast<int>(joints.size()); ++j) {
             const Joint& joint = joints[j];
-            const bool rod = joint.type == Joint::Type::Rod;
+            if (joint.a.kind == JointBody::Kind::Rigid) {
+                const auto motion = rigidPendulum(world, j, g);
+                if (!motion || rigidHeld[joint.a.index]) return std::nullopt;
+                rigidHeld[joint.a.index] = 1;
+                ref.rigidPendulums_.push_back(*motion);
+                continue;
+            }
+            const bool rope = joint.type == Joint::Type::Rope;
+            const bool rod = joint.type == Joint::Type::Rod || rope;
             const bool hoop = joint.type == Joint::Type::Track && joint.circle;
             if ((!rod && !hoop) || joint.a.kind != JointBody::Kind::Particle) return std::nullopt;
             const Particle& p = world.particles()[joint.a.index];
@@ -436,24 +512,26 @@ std::optional<ExactReference> ExactReference::ignoringContacts(const SceneDesc& 
             Vec2 centre = joint.center;
             double length = joint.radius;
             if (rod) {
-                // The other end must be fixed: the world, a pinned particle or a static body.
-                const JointBody& b = joint.b;
-                if (b.kind == JointBody::Kind::Particle && world.particles()[b.index].dof >= 0)
-                    return std::nullopt;
-                if (b.kind == JointBody::Kind::Rigid && world.boxes()[b.index].dof >= 0)
-                    return std::nullopt;
+                if (!heldToFixed(world, joint)) return std::nullopt;
                 centre = world.jointSolver()->pointB(j, q);
                 length = joint.length;
             }
             const auto motion = PendulumMotion::fromState(centre, length, g, q.segment<2>(p.dof),
                                                           u.segment<2>(p.dof));
             if (!motion) return std::nullopt;
+            const double distance = (q.segment<2>(p.dof) - centre).norm();
+            if (rope && (!ropeStaysTaut(*motion) || std::abs(distance - length) > 1e-9 * length))
+                return std::nullopt;
             heldBy[joint.a.index] = j;
             ref.pendulums_.push_back({p.dof, *motion});
         }
         for (std::size_t i = 0; i < world.particles().size(); ++i)
             if (world.particles()[i].dof >= 0 && heldBy[i] < 0) return std::nullopt;
-        ref.kind_ = "simple pendulum";
+        for (std::size_t i = 0; i < world.boxes().size(); ++i)
+            if (world.boxes()[i].dof >= 0 && !rigidHeld[i]) return std::nullopt;
+        const bool physical = std::any_of(ref.rigidPendulums_.begin(), ref.rigidPendulums_.end(),
+                                          [](const RigidPendulum& p) { return p.hinged; });
+        ref.kind_ = physical ? "physical pendulum" : "simple pendulum";
         return ref;
     }
 

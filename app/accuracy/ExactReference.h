@@ -2,9 +2,11 @@
 // Closed-form solutions for the scenes whose motion Phasebox knows exactly, used as the
 // reference of the accuracy study: linear oscillators (particles on springs to fixed points,
 // undamped or damped, in 2D when the force is linear and along the spring's axis otherwise),
-// free fall (with linear drag and wind, or none), Kepler orbits around one fixed attractor, and
+// free fall (with linear drag and wind, or none), Kepler orbits around one fixed attractor,
 // simple pendulums (a particle on a rod to a fixed point, or a bead on a hoop) swinging under
-// gravity, at any amplitude below the top.
+// gravity, at any amplitude below the top, and physical pendulums (a rigid body on a hinge to a
+// fixed point; on a rod or taut rope at its centre it swings as a simple pendulum and spins
+// freely).
 //
 // Exactness is claimed only when the world's equations of motion are exactly those of the
 // closed form: anything else (a coupling spring, quadratic drag, a contact, a spring with a
@@ -66,9 +68,16 @@ struct PendulumMotion {
     Vec2 centre{0.0, 0.0}, down{0.0, -1.0}, side{1.0, 0.0};
     double length = 1.0, omega0 = 1.0, k = 0.0, phase = 0.0;
 
-    // From the state; nullopt when it goes over the top (k ≥ 1) or sits at the centre.
+    double startAngle = 0.0;  // θ at t = 0
+
+    // From the state; nullopt when it goes over the top (k ≥ 1) or sits at the centre. The
+    // point swings at `length` from the centre; equivalentLength sets ω₀ = √(g/L) when it
+    // differs (a physical pendulum: L = I_pivot/(m·d), with d = length; 0 = length).
     static std::optional<PendulumMotion> fromState(const Vec2& centre, double length, const Vec2& g,
-                                                   const Vec2& position, const Vec2& velocity);
+                                                   const Vec2& position, const Vec2& velocity,
+                                                   double equivalentLength = 0.0);
+    // θ(t), from `down` toward `side`.
+    double angle(double t) const;
     Vec2 at(double t) const;
 };
 // A ball moving straight along a plane's normal under gravity and penalty contact (CONTRACT §6,
@@ -135,6 +144,19 @@ private:
         int dof;
         PendulumMotion motion;
     };
+    // A rigid body whose centre swings as `motion` does: on a hinge it turns with the line from
+    // the pivot (angle = angle0 + θ(t) − θ(0)); on a rod or rope at its centre it spins freely
+    // (angle = angle0 + spin·t).
+    struct RigidPendulum {
+        int dof;
+        PendulumMotion motion;
+        double angle0 = 0.0;
+        bool hinged = true;
+        double spin = 0.0;
+        double angle(double t) const {
+            return hinged ? angle0 + motion.angle(t) - motion.startAngle : angle0 + spin * t;
+        }
+    };
     // x = plane point + s·n + the start's offset along the plane (which stays).
     struct Bounce {
         int dof;
@@ -153,6 +175,8 @@ private:
     std::vector<AxisMotion> axes_;
     std::vector<Orbit> orbits_;
     std::vector<Pendulum> pendulums_;
+    std::vector<RigidPendulum> rigidPendulums_;
+    friend std::optional<RigidPendulum> rigidPendulum(const World&, int, const Vec2&);
     std::vector<Bounce> bounces_;
     // Particles on a line joined by springs to each other and to fixed points: x_i = origin +
     // s_i·axis with M·s'' = −K·s + f, so s(t) = s* + Σ_k φ_k·(a_k·cos ω_k t + b_k·sin ω_k t/ω_k)

@@ -51,7 +51,8 @@ const char* kRunUsage =
     "  --probe EXPR      measure EXPR (repeatable): ID.x ID.y ID.vx ID.vy ID.speed ID.angle\n"
     "                    ID.omega ID.kinetic ID.px ID.py ID.L; system.kinetic .potential\n"
     "                    .total .work_nc .drift .correction .px .py .L .com_x .com_y;\n"
-    "                    distance(A,B) angle(A,B,C) force(JOINT) contact_force(ID)\n"
+    "                    distance(A,B) angle(A,B,C) (ids or points X:Y; vertex B)\n"
+    "                    force(JOINT) JOINT.angle contact_force(ID)\n"
     "  --plot-energy F   the energy plot as .png or .svg\n"
     "  --plot-phase ID.COORD F   phase plot of COORD (x, y or angle) of object ID\n";
 

@@ -53,9 +53,10 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
         QStringLiteral("A,B"));
     const QCommandLineOption protractor(
         QStringLiteral("protractor"),
-        QStringLiteral("Put a protractor on the canvas with its vertex at V and arms to A and B, "
-                       "each an object id or X:Y (repeatable)."),
-        QStringLiteral("V,A,B"));
+        QStringLiteral("Put a protractor on the canvas measuring the angle ABC: arms from the "
+                       "vertex B (the middle one, as in the probe angle(A,B,C)) to A and C, each "
+                       "an object id or X:Y (repeatable)."),
+        QStringLiteral("A,B,C"));
     const QCommandLineOption freeBody(
         QStringLiteral("free-body"),
         QStringLiteral("Show the free-body view (of the object chosen with --select)."));

@@ -20,7 +20,7 @@ struct DesktopOptions {
     QString select;           // an object to select at start (its phase space is plotted)
     QStringList probes;       // probes to graph at start, one graph each (the Instruments dock)
     QStringList rulers;       // "A,B": a ruler between two objects or X:Y points
-    QStringList protractors;  // "V,A,B": a protractor with its vertex at V
+    QStringList protractors;  // "A,B,C": a protractor with its vertex at B
     bool freeBody = false;    // the free-body view on (of the --select object)
 };
 

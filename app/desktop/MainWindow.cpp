@@ -284,6 +284,9 @@ void MainWindow::createDockWindows() {
         in->show();
         in->raise();
     });
+    // A ruler or protractor on the canvas is a probe the dock's graphs, timer and table offer.
+    connect(measure_, &MeasureTools::probesChanged, instrumentsPresenter_,
+            [this] { instrumentsPresenter_->setInstrumentProbes(measure_->probes()); });
 }
 
 // ---- views following the document ------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include <QAction>
 #include <QKeyEvent>
 #include <QLineF>
+#include <QLocale>
 
 #include <algorithm>
 #include <cmath>
@@ -125,8 +126,8 @@ void MeasureTools::addRuler(const End& a, const End& b) {
     refresh();
 }
 
-void MeasureTools::addProtractor(const End& vertex, const End& armA, const End& armB) {
-    protractors_.push_back({{vertex, armA, armB}});
+void MeasureTools::addProtractor(const End& a, const End& vertex, const End& c) {
+    protractors_.push_back({{a, vertex, c}});
     refresh();
 }
 
@@ -150,7 +151,8 @@ bool MeasureTools::addProtractor(const QString& ends, QString* error) {
         for (int k = 0; k < 3; ++k) e[k] = parseEnd(parts[k]);
     if (!e[0] || !e[1] || !e[2]) {
         if (error)
-            *error = tr("--protractor \"%1\": expected VERTEX,A,B with each an object id or X:Y")
+            *error = tr("--protractor \"%1\": expected A,B,C (the vertex B in the middle, as in "
+                        "angle(A,B,C)) with each an object id or X:Y")
                          .arg(ends);
         return false;
     }
@@ -218,7 +220,7 @@ QPointF MeasureTools::rulerEnd(int ruler, int end) const {
 }
 
 double MeasureTools::rulerLength(int ruler) const {
-    return (vec(rulerEnd(ruler, 1)) - vec(rulerEnd(ruler, 0))).norm();
+    return readProbe(rulerProbe(ruler));
 }
 
 QString MeasureTools::rulerText(QPointF a, QPointF b) const {
@@ -234,21 +236,51 @@ QString MeasureTools::rulerLabel(int ruler) const {
 }
 
 double MeasureTools::protractorDegrees(int protractor) const {
-    const Protractor& p = protractors_[protractor];
-    return std::abs(signedAngle(vec(position(p.ends[1])), vec(position(p.ends[0])),
-                                vec(position(p.ends[2])))) *
-           180.0 / std::numbers::pi;
+    return std::abs(readProbe(protractorProbe(protractor))) * 180.0 / std::numbers::pi;
 }
 
-QString MeasureTools::protractorText(QPointF vertex, QPointF a, QPointF b) const {
+QString MeasureTools::protractorText(QPointF a, QPointF vertex, QPointF c) const {
     const double degrees =
-        std::abs(signedAngle(vec(a), vec(vertex), vec(b))) * 180.0 / std::numbers::pi;
+        std::abs(signedAngle(vec(a), vec(vertex), vec(c))) * 180.0 / std::numbers::pi;
     return tr("%1°").arg(degrees, 0, 'f', 1);
 }
 
 QString MeasureTools::protractorLabel(int protractor) const {
     const Protractor& p = protractors_[protractor];
     return protractorText(position(p.ends[0]), position(p.ends[1]), position(p.ends[2]));
+}
+
+QString MeasureTools::probeArgument(const End& end) {
+    if (!end.object.isEmpty()) return end.object;
+    const auto number = [](double v) {
+        return QString::number(v, 'g', QLocale::FloatingPointShortest);
+    };
+    return number(end.point.x()) + QLatin1Char(':') + number(end.point.y());
+}
+
+QString MeasureTools::rulerProbe(int ruler) const {
+    const Ruler& r = rulers_[ruler];
+    return QStringLiteral("distance(%1,%2)")
+        .arg(probeArgument(r.ends[0]), probeArgument(r.ends[1]));
+}
+
+QString MeasureTools::protractorProbe(int protractor) const {
+    const Protractor& p = protractors_[protractor];
+    return QStringLiteral("angle(%1,%2,%3)")
+        .arg(probeArgument(p.ends[0]), probeArgument(p.ends[1]), probeArgument(p.ends[2]));
+}
+
+QStringList MeasureTools::probes() const {
+    QStringList texts;
+    for (int i = 0; i < rulers_.size(); ++i) texts << rulerProbe(i);
+    for (int i = 0; i < protractors_.size(); ++i) texts << protractorProbe(i);
+    return texts;
+}
+
+double MeasureTools::readProbe(const QString& text) const {
+    const World& world = document_.world();
+    const ProbeParse parsed = parseProbe(world, text.toStdString());
+    return parsed ? evaluateProbe(world, *parsed.probe) : 0.0;
 }
 
 // ---- drawing ------------------------------------------------------------------------------
@@ -265,11 +297,11 @@ void MeasureTools::refresh() {
     for (int i = 0; i < protractors_.size(); ++i) {
         const Protractor& p = protractors_[i];
         ui::MeasureOverlay::Protractor drawn;
-        drawn.vertex = position(p.ends[0]);
-        drawn.armA = position(p.ends[1]);
+        drawn.armA = position(p.ends[0]);
+        drawn.vertex = position(p.ends[1]);
         drawn.armB = position(p.ends[2]);
         for (int k = 0; k < 3; ++k) drawn.attached[k] = !p.ends[k].object.isEmpty();
-        drawn.label = protractorText(drawn.vertex, drawn.armA, *drawn.armB);
+        drawn.label = protractorText(drawn.armA, drawn.vertex, *drawn.armB);
         drawn.selected = selectedKind_ == Kind::Protractor && selectedIndex_ == i;
         overlay.protractors.push_back(drawn);
     }
@@ -279,12 +311,12 @@ void MeasureTools::refresh() {
                                   !pending_[1].object.isEmpty(), rulerText(a, b), false, true});
     } else if (gesture_ != Gesture::None) {
         ui::MeasureOverlay::Protractor drawn;
-        drawn.vertex = position(pending_[0]);
-        drawn.armA = position(pending_[1]);
+        drawn.armA = position(pending_[0]);
+        drawn.vertex = position(pending_[1]);
         const int arms = gesture_ == Gesture::ProtractorSecondArm ? 3 : 2;
         if (arms == 3) {
             drawn.armB = position(pending_[2]);
-            drawn.label = protractorText(drawn.vertex, drawn.armA, *drawn.armB);
+            drawn.label = protractorText(drawn.armA, drawn.vertex, *drawn.armB);
         }
         for (int k = 0; k < arms; ++k) drawn.attached[k] = !pending_[k].object.isEmpty();
         drawn.pending = true;
@@ -303,6 +335,10 @@ void MeasureTools::refresh() {
         if (const std::optional<Vec2> com = system.centreOfMass())
             overlay.centreOfMass = QPointF(com->x(), com->y());
         overlay.systemMomentum = QPointF(system.momentum.x(), system.momentum.y());
+    }
+    if (const QStringList now = probes(); now != probes_) {
+        probes_ = now;
+        emit probesChanged();
     }
     // Nothing shown before or now: no repaint for it (this runs after every step).
     if (overlay.isEmpty() && view_.measurements().isEmpty()) return;
@@ -364,7 +400,7 @@ void MeasureTools::pressed(QPointF world, Qt::MouseButton button) {
         gesture_ = Gesture::None;
         // The new one is selected: Esc or Delete takes it back.
         select(Kind::Protractor, protractorCount());
-        addProtractor(pending_[0], pending_[1], pending_[2]);
+        addProtractor(pending_[0], pending_[1], pending_[2]);  // A, the vertex B, C
         emit message(tr("Angle %1").arg(protractorLabel(protractorCount() - 1)));
         return;
     }
@@ -402,9 +438,10 @@ void MeasureTools::moved(QPointF world, Qt::MouseButtons buttons) {
         endOf(moving_) = snap(world);
     } else if (gesture_ == Gesture::ProtractorSecondArm) {
         pending_[2] = snap(world);
-    } else if ((gesture_ == Gesture::Ruler || gesture_ == Gesture::ProtractorFirstArm) &&
-               (buttons & Qt::LeftButton)) {
+    } else if (gesture_ == Gesture::Ruler && (buttons & Qt::LeftButton)) {
         pending_[1] = snap(world);
+    } else if (gesture_ == Gesture::ProtractorFirstArm && (buttons & Qt::LeftButton)) {
+        pending_[0] = snap(world);  // the vertex, pressed first, is pending_[1]: ∠ABC's B
     } else {
         return;
     }
@@ -434,15 +471,15 @@ void MeasureTools::released(QPointF world, Qt::MouseButton button) {
                            : tr("Drag from the vertex along the first arm."));
         return;
     }
-    pending_[1] = snap(world);
     if (gesture_ == Gesture::Ruler) {
+        pending_[1] = snap(world);
         gesture_ = Gesture::None;
         select(Kind::Ruler, rulerCount());
         addRuler(pending_[0], pending_[1]);
         emit message(tr("Distance %1").arg(rulerLabel(rulerCount() - 1).replace('\n', ", ")));
         return;
     }
-    pending_[2] = pending_[1];
+    pending_[0] = pending_[2] = snap(world);
     gesture_ = Gesture::ProtractorSecondArm;
     refresh();
     emit message(tr("Now click the second arm (Esc cancels)."));

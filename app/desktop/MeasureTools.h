@@ -4,12 +4,18 @@
 //   Ruler       drag from one point to another; the label reads the distance (m) with dx, dy
 //   Protractor  drag from the vertex along the first arm, release, then click the second arm;
 //               the label reads the angle between the arms (degrees, 0 to 180)
+//
+// A protractor's three ends are kept, passed and written in one order everywhere, that of the
+// probe angle(A,B,C): the first arm A, the vertex B in the middle, the second arm C.
 //   either      drag an end of one to move it (and attach or detach it)
 //
 // An end pressed or dropped on a particle or rigid body attaches to its centre and follows it
 // while the simulation runs (the reading is live); elsewhere it stays at that point of the
 // world. Readings come from the probes' functions (physics/world/Probes: the same positions and
-// signed angle as distance(A,B) and angle(A,B,C)). An instrument stays until removed: Esc or
+// signed angle as distance(A,B) and angle(A,B,C)). Each instrument is a probe: rulerProbe() and
+// protractorProbe() give its text (`angle(bob,0:0,0:-1)`: an id for an attached end, `X:Y` for
+// a point), the reading is that probe's value, and the Instruments dock offers it to its graphs,
+// timer and table (probesChanged()). An instrument stays until removed: Esc or
 // Delete on the canvas while it is selected (one just drawn is; a click on one with its tool,
 // or with Select off any object, selects it), or Clear Measurements. One attached to an object that
 // is deleted, or absent after a reset or an opened file, goes with it.
@@ -22,6 +28,7 @@
 
 #include <QPointF>
 #include <QString>
+#include <QStringList>
 #include <QVector>
 
 #include <optional>
@@ -56,9 +63,10 @@ public:
     // Parses "ID" (an object) or "X:Y" (a world point, metres); nullopt when it is neither.
     std::optional<End> parseEnd(const QString& text) const;
     void addRuler(const End& a, const End& b);
-    void addProtractor(const End& vertex, const End& armA, const End& armB);
-    // From the command line: "A,B" and "V,A,B" with ends as parseEnd reads them; false with
-    // the reason in *error.
+    // ∠ABC: the vertex is b, the middle end.
+    void addProtractor(const End& a, const End& vertex, const End& c);
+    // From the command line: "A,B" and "A,B,C" (B the vertex) with ends as parseEnd reads them;
+    // false with the reason in *error.
     bool addRuler(const QString& ends, QString* error);
     bool addProtractor(const QString& ends, QString* error);
     void clear();
@@ -80,6 +88,11 @@ public:
     // Protractor i's angle between its arms, in degrees in [0, 180].
     double protractorDegrees(int protractor) const;
     QString protractorLabel(int protractor) const;
+    // The probe each instrument reads: distance(A,B), angle(A,B,C).
+    QString rulerProbe(int ruler) const;
+    QString protractorProbe(int protractor) const;
+    // Every instrument's probe, rulers first.
+    QStringList probes() const;
 
     bool freeBodyShown() const { return freeBodyShown_; }
     void setFreeBodyShown(bool on);
@@ -92,13 +105,15 @@ public:
 
 signals:
     void freeBodyShownChanged(bool on);
+    // The instruments' probes (probes()) changed: one was added, removed or moved.
+    void probesChanged();
 
 private:
     struct Ruler {
         End ends[2];
     };
     struct Protractor {
-        End ends[3];  // vertex, first arm, second arm
+        End ends[3];  // ∠ABC: first arm, vertex, second arm
     };
     enum class Gesture { None, Ruler, ProtractorFirstArm, ProtractorSecondArm, MoveEnd };
     enum class Kind { None, Ruler, Protractor };
@@ -127,7 +142,11 @@ private:
     void dropOrphans();
     void select(Kind kind, int index);
     QString rulerText(QPointF a, QPointF b) const;
-    QString protractorText(QPointF vertex, QPointF a, QPointF b) const;
+    QString protractorText(QPointF a, QPointF vertex, QPointF c) const;
+    // An end as a probe's argument: the object's id, or the point as X:Y.
+    static QString probeArgument(const End& end);
+    // The instrument's reading through its probe (parsed against the world as it is now).
+    double readProbe(const QString& text) const;
 
     Document& document_;
     CanvasTools& tools_;
@@ -143,6 +162,7 @@ private:
     EndRef moving_;  // MoveEnd: the end dragged, and where it was (Esc puts it back)
     End movedFrom_;
     bool freeBodyShown_ = false;
+    QStringList probes_;  // as last announced by probesChanged()
 };
 
 }  // namespace phasebox

@@ -3,7 +3,7 @@
 //   phasebox [SCENE]
 //   phasebox --screenshot FILE.png [--run-for S] [SCENE]
 //   phasebox --canvas raster|opengl|auto   --presentation
-//   phasebox --ruler A,B  --protractor V,A,B  --free-body --select ID
+//   phasebox --ruler A,B  --protractor A,B,C  --free-body --select ID
 
 #include "app/desktop/DesktopOptions.h"
 #include "app/desktop/MainWindow.h"

@@ -1,5 +1,7 @@
 #include "physics/diagnostics/StabilityAdvisor.h"
 
+#include "physics/joints/JointSolver.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,6 +15,58 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kPenaltyMargin = 1.0;
 // A method is recommended at a step only when its largest stable step is this much larger.
 constexpr double kRecommendMargin = 1.25;
+
+// The small-amplitude frequency of the pendulums in the world: each dynamic body held by one
+// hinge, rod or rope (and no other joint) to a fixed point under uniform gravity. The force
+// Jacobian does not see them (gravity is constant; the joints' pull is not a force source), yet
+// a pendulum oscillates at ω² = m·g·d/I_pivot (a rigid body on a hinge, I_pivot = I + m·d²) or
+// g/L (a particle on a rod or rope, a rigid body on one at its centre), and an explicit method
+// meets that ω like a spring's. A rod at another point of a body makes a double pendulum: left
+// out. 0 when there is none.
+double pendulumOmega(const World& world) {
+    Vec2 g(0.0, 0.0);
+    bool uniform = false;
+    for (const auto& effect : world.effects()) uniform = effect->uniformAcceleration(g) || uniform;
+    const double gn = g.norm();
+    const JointSolver* solver = world.jointSolver();
+    if (!uniform || !(gn > 0.0) || !solver) return 0.0;
+    const auto& joints = world.joints();
+    // Bodies in more than one joint (chains, ragdolls) are not single pendulums.
+    // (A fixed support may hold many: a pendulum wave.)
+    std::vector<int> particleJoints(world.particles().size()), rigidJoints(world.boxes().size());
+    const auto count = [&](const JointBody& body) -> int* {
+        if (body.kind == JointBody::Kind::Particle) return &particleJoints[body.index];
+        if (body.kind == JointBody::Kind::Rigid) return &rigidJoints[body.index];
+        return nullptr;
+    };
+    for (const Joint& joint : joints)
+        for (const JointBody* body : {&joint.a, &joint.b})
+            if (int* n = count(*body)) ++*n;
+    const auto fixed = [&](const JointBody& body) {
+        if (body.kind == JointBody::Kind::Particle) return world.particles()[body.index].dof < 0;
+        if (body.kind == JointBody::Kind::Rigid) return world.boxes()[body.index].dof < 0;
+        return true;
+    };
+    double omega2 = 0.0;
+    for (int j = 0; j < static_cast<int>(joints.size()); ++j) {
+        const Joint& joint = joints[j];
+        const bool line = joint.type == Joint::Type::Rod || joint.type == Joint::Type::Rope;
+        if ((!line && joint.type != Joint::Type::Hinge) || !fixed(joint.b) || fixed(joint.a) ||
+            *count(joint.a) != 1)
+            continue;
+        if (line && joint.length > 0.0 &&
+            (joint.a.kind == JointBody::Kind::Particle || joint.a.point == Vec2::Zero())) {
+            omega2 = std::max(omega2, gn / joint.length);
+        } else if (!line && joint.a.kind == JointBody::Kind::Rigid) {
+            const Box& body = world.boxes()[joint.a.index];
+            const double d =
+                (world.boxPosition(joint.a.index) - solver->pointB(j, world.positions())).norm();
+            if (d > 0.0)
+                omega2 = std::max(omega2, body.mass * gn * d / (body.inertia + body.mass * d * d));
+        }
+    }
+    return std::sqrt(omega2);
+}
 
 std::string number(double v) {
     std::ostringstream out;
@@ -70,7 +124,7 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
     const double anticipated = world.anticipatedContactOmegaSquared();
     const bool penalty =
         world.settings().contactModel == ContactModel::Penalty && anticipated > 0.0;
-    advice.omegaMax = std::max(advice.omegaMax, std::sqrt(anticipated));
+    advice.omegaMax = std::max({advice.omegaMax, std::sqrt(anticipated), pendulumOmega(world)});
     const auto boundOf = [penalty](double bound) {
         return penalty && bound > 0.0 && std::isfinite(bound) ? std::min(bound, kPenaltyMargin)
                                                               : bound;

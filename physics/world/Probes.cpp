@@ -4,6 +4,7 @@
 #include "physics/world/World.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <numbers>
 
@@ -15,7 +16,8 @@ constexpr std::string_view kVocabulary =
     "ID.x, ID.y, ID.vx, ID.vy, ID.speed, ID.angle, ID.omega, ID.kinetic, ID.px, ID.py, ID.L, "
     "system.kinetic, system.potential, system.total, system.work_nc, system.drift, "
     "system.correction, system.px, system.py, system.L, system.com_x, system.com_y, "
-    "distance(A,B), angle(A,B,C), force(JOINT), contact_force(ID)";
+    "distance(A,B), angle(A,B,C) (A, B, C: ids or points X:Y, the vertex B), force(JOINT), "
+    "JOINT.angle, contact_force(ID)";
 
 struct Field {
     std::string_view name;
@@ -100,6 +102,18 @@ std::string quoted(std::string_view s) {
     return text;
 }
 
+int findJoint(const World& world, std::string_view id) {
+    const auto& joints = world.joints();
+    for (std::size_t j = 0; j < joints.size(); ++j)
+        if (joints[j].id == id) return static_cast<int>(j);
+    return -1;
+}
+
+bool measuresAngle(const Joint& joint) {
+    return joint.type == Joint::Type::Hinge || joint.type == Joint::Type::Rod ||
+           joint.type == Joint::Type::Rope;
+}
+
 // An instrument: distance(A,B), angle(A,B,C), force(JOINT), contact_force(ID). nullopt when
 // the name is none of them (the text may still be an object's field: an id may hold brackets).
 std::optional<ProbeParse> parseInstrument(const World& world, std::string_view text,
@@ -129,16 +143,20 @@ std::optional<ProbeParse> parseInstrument(const World& world, std::string_view t
     probe.text = std::string(text);
     probe.kind = instrument->kind;
     if (instrument->kind == ProbeKind::JointForce) {
-        const auto& joints = world.joints();
-        for (std::size_t j = 0; j < joints.size(); ++j)
-            if (joints[j].id == args[0]) probe.joint = static_cast<int>(j);
+        probe.joint = findJoint(world, args[0]);
         if (probe.joint < 0) return refuse(text, "no joint " + quoted(args[0]));
         return ProbeParse{std::move(probe), {}};
     }
+    const bool points = instrument->kind != ProbeKind::ContactForce;
     for (std::size_t k = 0; k < args.size(); ++k) {
-        const std::optional<ProbeObject> object = findProbeObject(world, args[k]);
-        if (!object) return refuse(text, "no object " + quoted(args[k]));
-        probe.objects[k] = *object;
+        // An object's id first: ids are free text, so "1:2" may name one.
+        if (const std::optional<ProbeObject> object = findProbeObject(world, args[k]))
+            probe.objects[k] = *object;
+        else if (const std::optional<Vec2> point = parseProbePoint(args[k]); points && point)
+            probe.points[k] = *point;
+        else
+            return refuse(text, "no object " + quoted(args[k]) +
+                                    (points ? " (nor a point X:Y in metres)" : ""));
     }
     if (instrument->kind == ProbeKind::ContactForce) {
         const ProbeObject& o = probe.objects[0];
@@ -183,7 +201,72 @@ ObjectState stateOf(const World& world, const ProbeObject& o) {
     return s;
 }
 
+// Where argument k of distance or angle is now: its object or its fixed point.
+Vec2 argumentPosition(const World& world, const Probe& probe, int k) {
+    return probe.points[k] ? *probe.points[k] : probeObjectPosition(world, probe.objects[k]);
+}
+
+// Where a joint's point on one of its bodies is now (in the world frame).
+Vec2 jointPoint(const World& world, const JointBody& body) {
+    switch (body.kind) {
+        case JointBody::Kind::Particle:
+            return world.particlePosition(body.index);
+        case JointBody::Kind::Rigid:
+            return world.boxPosition(body.index) +
+                   rotation(world.boxAngle(body.index)) * body.point;
+        case JointBody::Kind::World:
+            break;
+    }
+    return body.point;
+}
+
+// The angle of the line from `from` to `to` measured from straight down (−y), counter-clockwise
+// positive, in (−π, π].
+double angleFromDown(const Vec2& from, const Vec2& to) {
+    const Vec2 r = to - from;
+    const double angle = std::atan2(r.x(), -r.y());
+    return angle <= -std::numbers::pi ? std::numbers::pi : angle;
+}
+
 }  // namespace
+
+std::optional<Vec2> parseProbePoint(std::string_view text) {
+    const std::size_t colon = text.find(':');
+    if (colon == std::string_view::npos) return std::nullopt;
+    double xy[2];
+    const std::string_view parts[2] = {trim(text.substr(0, colon)), trim(text.substr(colon + 1))};
+    for (int k = 0; k < 2; ++k) {
+        std::string_view part = parts[k];
+        // from_chars takes no leading '+'; a number written "+1" is still a number.
+        if (!part.empty() && part.front() == '+') part.remove_prefix(1);
+        const char* end = part.data() + part.size();
+        const auto [last, status] = std::from_chars(part.data(), end, xy[k]);
+        if (part.empty() || status != std::errc() || last != end || !std::isfinite(xy[k]))
+            return std::nullopt;
+    }
+    return Vec2(xy[0], xy[1]);
+}
+
+std::optional<double> jointAngle(const World& world, int j) {
+    if (j < 0 || j >= static_cast<int>(world.joints().size())) return std::nullopt;
+    const Joint& joint = world.joints()[j];
+    if (!measuresAngle(joint)) return std::nullopt;
+    const bool hinge = joint.type == Joint::Type::Hinge;
+    if (joint.b.kind != JointBody::Kind::World) {
+        if (!hinge) return angleFromDown(jointPoint(world, joint.b), jointPoint(world, joint.a));
+        const auto angleOf = [&](const JointBody& body) {
+            return body.kind == JointBody::Kind::Rigid ? world.boxAngle(body.index) : 0.0;
+        };
+        return angleOf(joint.b) - angleOf(joint.a) - joint.referenceAngle;
+    }
+    // Held to the world: b's point is the anchor. A hinge's a-point sits on the anchor, so the
+    // pendulum's line runs to a's centre; a rod or rope pulls on a's point.
+    const Vec2 end =
+        hinge ? (joint.a.kind == JointBody::Kind::Rigid ? world.boxPosition(joint.a.index)
+                                                        : world.particlePosition(joint.a.index))
+              : jointPoint(world, joint.a);
+    return angleFromDown(joint.b.point, end);
+}
 
 std::optional<ProbeObject> findProbeObject(const World& world, std::string_view id) {
     for (std::size_t i = 0; i < world.particles().size(); ++i)
@@ -257,6 +340,15 @@ ProbeParse parseProbe(const World& world, std::string_view text) {
         }
     }
     const std::optional<ProbeObject> object = findProbeObject(world, id);
+    if (const int joint = findJoint(world, id); !object && joint >= 0 && field == "angle") {
+        if (!measuresAngle(world.joints()[joint]))
+            return refuse(t, quoted(id) +
+                                 " is not a hinge, rod or rope: JOINT.angle is a "
+                                 "pendulum's angle");
+        probe.kind = ProbeKind::JointAngle;
+        probe.joint = joint;
+        return ProbeParse{std::move(probe), {}};
+    }
     const std::optional<ProbeKind> kind = findField(kObjectFields, field);
     if (!kind) return refuse(t);
     if (!object) return refuse(t, "no object " + quoted(id));
@@ -326,13 +418,12 @@ double evaluateProbe(const World& world, const Probe& probe) {
             return probe.kind == ProbeKind::SystemComX ? com->x() : com->y();
         }
         case ProbeKind::Distance:
-            return (probeObjectPosition(world, probe.objects[1]) -
-                    probeObjectPosition(world, probe.objects[0]))
-                .norm();
+            return (argumentPosition(world, probe, 1) - argumentPosition(world, probe, 0)).norm();
         case ProbeKind::AngleAt:
-            return signedAngle(probeObjectPosition(world, probe.objects[0]),
-                               probeObjectPosition(world, probe.objects[1]),
-                               probeObjectPosition(world, probe.objects[2]));
+            return signedAngle(argumentPosition(world, probe, 0), argumentPosition(world, probe, 1),
+                               argumentPosition(world, probe, 2));
+        case ProbeKind::JointAngle:
+            return jointAngle(world, probe.joint).value_or(0.0);
         case ProbeKind::JointForce: {
             const JointSolver* joints = world.jointSolver();
             if (!joints || probe.joint >= joints->jointCount()) return 0.0;
@@ -375,7 +466,18 @@ std::vector<std::string> listProbes(const World& world) {
     for (const Particle& p : world.particles())
         if (p.cloth < 0) add(p.id);
     for (const Box& b : world.boxes()) add(b.id);
-    for (const Joint& j : world.joints()) texts.push_back("force(" + j.id + ')');
+    for (const Joint& j : world.joints()) {
+        const std::vector<std::string> fields = jointProbes(world, j.id);
+        texts.insert(texts.end(), fields.begin(), fields.end());
+    }
+    return texts;
+}
+
+std::vector<std::string> jointProbes(const World& world, std::string_view id) {
+    const int joint = findJoint(world, id);
+    if (joint < 0) return {};
+    std::vector<std::string> texts{"force(" + std::string(id) + ')'};
+    if (measuresAngle(world.joints()[joint])) texts.push_back(std::string(id) + ".angle");
     return texts;
 }
 

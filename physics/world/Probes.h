@@ -10,6 +10,10 @@
 //   system.kinetic .potential .total .work_nc .drift .correction     the energy ledger
 //   system.px .py .L .com_x .com_y        of the dynamic objects (pinned and static excluded)
 //   distance(A,B) angle(A,B,C) force(JOINT) contact_force(ID)
+//   JOINT.angle                           a pendulum's θ from straight down (hinge, rod, rope)
+//
+// The arguments of distance and angle are objects or fixed points `X:Y` in metres
+// (`angle(0:0,0:1.5,bob)`); angle's vertex is the middle one, as in ∠ABC.
 //
 // An object is a particle (a cloth node too: `flag[2,0]`) or a rigid body (box, disk,
 // polygon). Pinned and static objects are valid everywhere: they sit at their fixed place with
@@ -61,6 +65,7 @@ enum class ProbeKind : unsigned char {
     AngleAt,       // the angle at objects[1] from objects[0] to objects[2]
     JointForce,    // joint
     ContactForce,  // objects[0]
+    JointAngle,    // joint: a pendulum's θ (jointAngle())
 };
 
 // An object a probe measures, resolved to its record.
@@ -73,6 +78,8 @@ struct Probe {
     std::string text;  // as given: the CSV column and the JSON key
     ProbeKind kind = ProbeKind::X;
     ProbeObject objects[3];
+    // distance and angle: argument k is the fixed point points[k] (`X:Y`) instead of objects[k].
+    std::optional<Vec2> points[3];
     int joint = -1;
 };
 
@@ -92,9 +99,19 @@ struct ProbeParse {
 std::optional<ProbeObject> findProbeObject(const World& world, std::string_view id);
 // Where it is now (a fixed object at its fixed place).
 Vec2 probeObjectPosition(const World& world, const ProbeObject& object);
+// A fixed point `X:Y` in metres (`-1.5:2e-1`), or nullopt when the text is not one.
+std::optional<Vec2> parseProbePoint(std::string_view text);
 // The signed angle at vertex from a − vertex to c − vertex, counter-clockwise positive, in
 // (−π, π] (angle(A,B,C)); 0 when an arm has no length.
 double signedAngle(const Vec2& a, const Vec2& vertex, const Vec2& c);
+
+// JOINT.angle (CONTRACT §7), a pendulum's θ: for a hinge, rod or rope held to the world, the
+// angle of the line from the anchor to a's centre (a hinge) or a's point (a rod, a rope) from
+// straight down (−y), counter-clockwise positive, in (−π, π]; between two bodies a hinge's joint
+// angle θb − θa − its value at load (CONTRACT §6, not wrapped: a wheel may turn many times), and
+// a rod's or rope's line from b's point to a's point from straight down. nullopt for the other
+// joint types.
+std::optional<double> jointAngle(const World& world, int joint);
 
 // Σ over the dynamic objects (pinned and static excluded): system.px, .py, .L, .com_x, .com_y.
 struct SystemMotion {
@@ -127,12 +144,16 @@ double evaluateProbe(const World& world, const Probe& probe);
 
 // The probe texts that parse against this world, for pickers that offer only valid probes: the
 // system's, each particle's and rigid body's fields (angle and omega of rigid bodies only),
-// force(JOINT) of each joint and contact_force(ID) of each moving body. Cloth nodes are left
+// force(JOINT) of each joint, JOINT.angle of each hinge, rod and rope, and contact_force(ID) of
+// each moving body. Cloth nodes are left
 // out (a cloth has hundreds): objectProbes() lists one node's.
 std::vector<std::string> listProbes(const World& world);
 // The fields of one object (`ID.x`, …, `contact_force(ID)` when it moves); empty when the world
 // has no object of that id.
 std::vector<std::string> objectProbes(const World& world, std::string_view id);
+// The probes of one joint (`force(J)`, `J.angle` for a hinge, rod or rope); empty when the world
+// has no joint of that id.
+std::vector<std::string> jointProbes(const World& world, std::string_view id);
 
 // The statistics of a probe's samples over a run (CONTRACT §7 `--probe` in `--json`).
 struct ProbeSummary {

@@ -12,6 +12,7 @@
 #include "app/desktop/DesktopOptions.h"
 #include "app/desktop/MainWindow.h"
 #include "app/desktop/MeasureTools.h"
+#include "app/desktop/presenters/InstrumentsPresenter.h"
 #include "physics/world/FreeBody.h"
 #include "physics/world/World.h"
 #include "ui/canvas/MeasureOverlay.h"
@@ -175,16 +176,26 @@ void TestMeasureTools::protractorReadsRightAndHalfRightAngles() {
     QCOMPARE(win.measure()->protractorCount(), 1);
     QVERIFY(std::abs(win.measure()->protractorDegrees(0) - 90.0) < 1e-12);
     QCOMPARE(win.measure()->protractorLabel(0), QStringLiteral("90.0°"));
-    // 45°, clockwise or counter-clockwise, from the command line's form.
+    // It is the probe angle(A,B,C) with the vertex in the middle: the first arm's end, the
+    // vertex, the second arm's end, points written X:Y.
+    QCOMPARE(win.measure()->protractorProbe(0), QStringLiteral("angle(2:0,0:0,0:3)"));
+    // 45°, clockwise or counter-clockwise, from the command line's form A,B,C (B the vertex).
     QString error;
-    QVERIFY2(win.measure()->addProtractor(QStringLiteral("0:0,1:0,1:1"), &error),
+    QVERIFY2(win.measure()->addProtractor(QStringLiteral("1:0,0:0,1:1"), &error),
              qPrintable(error));
     QVERIFY(std::abs(win.measure()->protractorDegrees(1) - 45.0) < 1e-12);
-    QVERIFY(win.measure()->addProtractor(QStringLiteral("1:1, 3:1, 2:0"), &error));
+    QVERIFY(win.measure()->addProtractor(QStringLiteral("3:1, 1:1, 2:0"), &error));
     QVERIFY(std::abs(win.measure()->protractorDegrees(2) - 45.0) < 1e-12);
+    QCOMPARE(win.measure()->protractorProbe(2), QStringLiteral("angle(3:1,1:1,2:0)"));
+    // The canvas draws the vertex where the middle end is.
     QCOMPARE(win.canvas()->measurements().protractors.size(), 3);
+    QCOMPARE(win.canvas()->measurements().protractors[2].vertex, QPointF(1.0, 1.0));
+    QCOMPARE(win.canvas()->measurements().protractors[0].vertex, QPointF(0.0, 0.0));
+    // The Instruments dock offers every instrument's probe.
+    for (int i = 0; i < 3; ++i)
+        QVERIFY(win.w.instruments()->offered().contains(win.measure()->protractorProbe(i)));
     QVERIFY(!win.measure()->addProtractor(QStringLiteral("0:0,1:0"), &error));
-    QVERIFY(error.contains(QStringLiteral("VERTEX,A,B")));
+    QVERIFY2(error.contains(QStringLiteral("A,B,C")), qPrintable(error));
     win.snapshot(QStringLiteral("protractor.png"));
 }
 

@@ -132,9 +132,10 @@ void drawProtractor(const Painter& g, const MeasureOverlay::Protractor& r) {
         g.p.setPen(g.pen(kRulerColor, 2.0, style));
         g.p.drawLine(v, arm);
     }
-    for (int k = 0; k < arms.size(); ++k)
-        if (r.attached[k + 1]) g.ring(arms[k], kRulerColor);
-    if (r.attached[0]) g.ring(v, kRulerColor);
+    // attached[] is in ∠ABC's order: the first arm, the vertex, the second arm.
+    if (r.attached[0]) g.ring(a, kRulerColor);
+    if (r.attached[1]) g.ring(v, kRulerColor);
+    if (r.armB && r.attached[2]) g.ring(arms[1], kRulerColor);
     if (!r.armB) return;
     // The arc from the first arm to the second the shorter way (the sign of angle(A,B,C)), in
     // world angles: Qt's arc angles are counter-clockwise on screen, as world angles are.

@@ -37,12 +37,12 @@ struct MeasureOverlay {
         bool selected = false;
         bool pending = false;  // being drawn: dashed
     };
-    // The angle at vertex from armA to armB; without armB (still being drawn) only the first
-    // arm and the vertex.
+    // The angle at vertex from armA to armB (∠ABC: A = armA, B = vertex, C = armB); without
+    // armB (still being drawn) only the first arm and the vertex.
     struct Protractor {
-        QPointF vertex, armA;
+        QPointF armA, vertex;
         std::optional<QPointF> armB;
-        bool attached[3] = {false, false, false};  // vertex, armA, armB
+        bool attached[3] = {false, false, false};  // armA, vertex, armB: ∠ABC's order
         QString label;
         bool selected = false;
         bool pending = false;

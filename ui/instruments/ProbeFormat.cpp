@@ -18,6 +18,7 @@ QString probeUnit(ProbeKind kind) {
             return QStringLiteral("m/s");
         case ProbeKind::Angle:
         case ProbeKind::AngleAt:
+        case ProbeKind::JointAngle:
             return QStringLiteral("rad");
         case ProbeKind::Omega:
             return QStringLiteral("rad/s");

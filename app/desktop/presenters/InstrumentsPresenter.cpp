@@ -222,9 +222,9 @@ void InstrumentsPresenter::updateOffered() {
         const std::vector<std::string> fields = objectProbes(world, name);
         if (!fields.empty()) objects.push_back(name);
         for (const std::string& f : fields) add(QString::fromStdString(f));
-        if (isJoint(world, name)) add(QStringLiteral("force(%1)").arg(id));
+        for (const std::string& f : jointProbes(world, name)) add(QString::fromStdString(f));
     }
-    std::vector<QString> instruments;
+    std::vector<QString> instruments(instrumentProbes_.begin(), instrumentProbes_.end());
     if (objects.size() >= 2) {
         const QString a = QString::fromStdString(objects[0]),
                       b = QString::fromStdString(objects[1]);
@@ -242,12 +242,19 @@ void InstrumentsPresenter::updateOffered() {
     const bool all = count <= static_cast<std::size_t>(kMaxListedObjects);
     for (const std::string& text : listProbes(world)) {
         const QString probe = QString::fromStdString(text);
-        if (all || probe.startsWith(QLatin1String("system.")) ||
-            probe.startsWith(QLatin1String("force(")))
-            add(probe);
+        const bool joint = probe.startsWith(QLatin1String("force(")) ||
+                           (probe.endsWith(QLatin1String(".angle")) &&
+                            isJoint(world, probe.chopped(6).toStdString()));
+        if (all || probe.startsWith(QLatin1String("system.")) || joint) add(probe);
     }
     offered_ = list;
     panel_.setOffered(list);
+}
+
+void InstrumentsPresenter::setInstrumentProbes(const QStringList& probes) {
+    if (probes == instrumentProbes_) return;
+    instrumentProbes_ = probes;
+    updateOffered();
 }
 
 bool InstrumentsPresenter::check(const QString& text, ui::ProbePicker* picker, QString* error) {
@@ -451,6 +458,8 @@ void InstrumentsPresenter::refreshReadouts() {
     if (!joint.isEmpty()) {
         if (subject.isEmpty()) subject = tr("%1 (joint)").arg(joint);
         addRow(tr("constraint force of %1").arg(joint), {QStringLiteral("force(%1)").arg(joint)});
+        // Hinges, rods and ropes: the pendulum's angle (the row is left out for the others).
+        addRow(tr("angle of %1").arg(joint), {joint + QStringLiteral(".angle")});
     }
     const bool live = document_.hasRun();
     const QString state = live ? tr("live, t = %1 s").arg(world.time(), 0, 'f', 2) : tr("setup");

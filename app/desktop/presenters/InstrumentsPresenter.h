@@ -52,6 +52,9 @@ public:
 
     // The probes the pickers offer now.
     QStringList offered() const { return offered_; }
+    // The canvas instruments' probes (a ruler's distance(A,B), a protractor's angle(A,B,C)):
+    // offered first, after the selection's, while they stand.
+    void setInstrumentProbes(const QStringList& probes);
 
     // Plots y against x ("" = time) in the first empty graph, or a new one; false with a
     // message (and *error) when either is not a probe of the scene or no graph is left.
@@ -132,6 +135,7 @@ private:
     bool stopwatchUsed_ = false;  // the lesson times by hand
     QStringList tableProbes_;
     QStringList offered_;
+    QStringList instrumentProbes_;
     Stopwatch stopwatch_;
     QElapsedTimer sinceRefresh_;
     long long clears_ = 0;  // recordings cleared, for the table's model
