@@ -13,12 +13,14 @@
 #include "ui/plots/PlotsPanel.h"
 
 #include <QMainWindow>
+#include <QPointer>
 #include <QStringList>
 
 #include <memory>
 
 QT_BEGIN_NAMESPACE
 class QAction;
+class QMessageBox;
 class QDockWidget;
 class QTextBrowser;
 QT_END_NAMESPACE
@@ -97,6 +99,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
@@ -117,7 +120,10 @@ private:
     void newScene();
     void openIfSaved(const QString& path);
     void updateTitle();
-    void onDiverged(const QString& message);
+    void onDiverged(const QString& message, const QString& details);
+    // Gives the canvas at least kCanvasShare of the window's width (from the side docks).
+    void keepCanvasWide();
+    static constexpr double kCanvasShare = 0.5;
 
     Document document_;
     Recorder recorder_;
@@ -146,6 +152,8 @@ private:
     StatusPresenter* status_ = nullptr;
 
     AccuracyDialog* accuracy_ = nullptr;
+    QPointer<QDockWidget> leftDock_, rightDock_;  // the docks keepCanvasWide() narrows
+    QPointer<QMessageBox> divergenceBox_;         // the blow-up dialog while it is open
     std::unique_ptr<Autosave> autosave_;  // the open scene, every minute, for crash recovery
 
     SceneFiles* files_ = nullptr;
