@@ -17,7 +17,6 @@
 #include <QAbstractSeries>
 #include <QChart>
 #include <QChartView>
-#include <QDockWidget>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineSeries>
@@ -248,11 +247,6 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QVERIFY(w.openFile(QStringLiteral(":/scenes/demo.phasebox.json"), true));
-        QTest::qWait(200);
-        for (QDockWidget* d : w.findChildren<QDockWidget*>())
-            qInfo("%s visible %d width %d min %d hint %d", qPrintable(d->objectName()),
-                  d->isVisible(), d->width(), d->minimumSizeHint().width(), d->minimumWidth());
-        qInfo("canvas %d", w.canvas()->width());
         QTRY_VERIFY(w.canvas()->width() >= 512);
         qInfo("canvas %d of %d px", w.canvas()->width(), w.width());
 
