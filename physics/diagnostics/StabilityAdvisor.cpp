@@ -101,11 +101,10 @@ std::string contactModelWarning(const World& world) {
     if (!(g.norm() > 0.0)) return {};  // nothing presses one body on another
     const auto stack = findStack(world, -g.normalized());
     if (!stack) return {};
-    return "Kinematic contacts cannot hold a stack: \"" + world.boxes()[stack->first].id +
+    return "Kinematic contacts cannot hold a stack (\"" + world.boxes()[stack->first].id +
            "\" rests on \"" + world.boxes()[stack->second].id +
-           "\", and kinematic contacts only stop bodies moving into each other and push them "
-           "apart, so nothing carries the weight of the bodies above and the stack sinks into "
-           "itself and the floor. Use impulse contacts for stacked bodies.";
+           "\"): they only stop bodies moving into each other and push them apart, so the stack "
+           "sinks into the floor. Use impulse contacts for stacks.";
 }
 
 double stabilityBound(std::string_view integrator) {
