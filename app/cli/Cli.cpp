@@ -240,6 +240,8 @@ int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     }
     out << (advice.currentStable ? "advice:      " : "warning:     ")
         << QString::fromStdString(advice.message) << "\n";
+    if (!advice.contactWarning.empty())
+        out << "warning:     " << QString::fromStdString(advice.contactWarning) << "\n";
     return kSuccess;
 }
 

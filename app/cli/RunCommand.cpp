@@ -436,6 +436,8 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     for (const std::string& name : built.unsupported)
         err << "phasebox-cli: warning: the effect \"" << QString::fromStdString(name)
             << "\" is not simulated yet and is ignored\n";
+    if (const std::string warning = contactModelWarning(world); !warning.empty())
+        err << "phasebox-cli: warning: " << QString::fromStdString(warning) << "\n";
 
     // What to record.
     std::vector<Tracked> tracked;

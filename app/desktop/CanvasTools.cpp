@@ -111,7 +111,7 @@ QString CanvasTools::toolHelp(Tool tool) {
         case Tool::Spring:
             return tr("Drag from an object to another, or to empty space for a fixed anchor.");
         case Tool::Cloth:
-            return tr("Drag a rectangle: a cloth pinned along its top edge.");
+            return tr("Drag a rectangle: a cloth hung from its top corners.");
         case Tool::Box:
             return tr("Drag a rectangle: a box of that size.");
         case Tool::Disk:
@@ -368,6 +368,13 @@ void CanvasTools::finish(QPointF world) {
                 return std::clamp(int(length / 0.2) + 1, 4, 24);
             };
             c.resolution = {nodes(c.size[0]), nodes(c.size[1])};
+            // A cloth that drapes: hung from its top corners, stretchy along its threads and
+            // hardly resisting shear, with no bending springs (in the plane they only resist
+            // compression and would stiffen it into a board). The format's defaults, pinned
+            // along the top, hang as a rigid net. Damping lets it settle.
+            c.pinned = std::string("top_corners");
+            c.stiffness = kDrawnClothStiffness;
+            c.damping = kDrawnClothDamping;
             report(addDrawn(c, &error, &id), error);
             break;
         }

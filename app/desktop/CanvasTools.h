@@ -75,6 +75,9 @@ public:
     static constexpr double kClickPixels = 4.0;
     // The radius of a disk added with a click rather than a drag (m).
     static constexpr double kClickDiskRadius = 0.5;
+    // The cloth the tool draws (N/m per spring; damping N·s/m along each spring).
+    static constexpr ClothStiffnessDesc kDrawnClothStiffness{200.0, 2.0, 0.0};
+    static constexpr double kDrawnClothDamping = 0.05;
     // The polygon tool's regular polygon: this many sides unless set (3 to 16).
     static constexpr int kPolygonSides = 6;
     int polygonSides() const { return polygonSides_; }

@@ -11,6 +11,8 @@
 #include <QApplication>
 #include <QBuffer>
 #include <QCommandLineParser>
+#include <QMessageBox>
+#include <QPainter>
 #include <QPixmap>
 #include <QTextStream>
 
@@ -60,8 +62,12 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
     const QCommandLineOption freeBody(
         QStringLiteral("free-body"),
         QStringLiteral("Show the free-body view (of the object chosen with --select)."));
-    parser.addOptions(
-        {screenshot, runFor, canvas, presentation, select, probe, ruler, protractor, freeBody});
+    const QCommandLineOption size(
+        QStringLiteral("size"),
+        QStringLiteral("Open the window W×H pixels large, e.g. 1024x700 (for --screenshot)."),
+        QStringLiteral("WxH"));
+    parser.addOptions({screenshot, runFor, canvas, presentation, select, probe, ruler, protractor,
+                       freeBody, size});
     parser.addPositionalArgument(QStringLiteral("scene"),
                                  QStringLiteral("Scene file to open (default: the demo)."));
     if (!parser.parse(arguments)) {
@@ -91,6 +97,18 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
     options.rulers = parser.values(ruler);
     options.protractors = parser.values(protractor);
     options.freeBody = parser.isSet(freeBody);
+    if (parser.isSet(size)) {
+        const QStringList wh = parser.value(size).toLower().split(QLatin1Char('x'));
+        bool okW = false, okH = false;
+        const int w = wh.size() == 2 ? wh[0].toInt(&okW) : 0;
+        const int h = wh.size() == 2 ? wh[1].toInt(&okH) : 0;
+        if (!okW || !okH || w < 320 || h < 240 || w > 16384 || h > 16384) {
+            *error = QStringLiteral("--size: expected WxH in pixels (at least 320x240), got \"%1\"")
+                         .arg(parser.value(size));
+            return false;
+        }
+        options.size = QSize(w, h);
+    }
     const QStringList positional = parser.positionalArguments();
     if (positional.size() > 1) {
         *error = QStringLiteral("expected at most one scene file, got %1").arg(positional.size());
@@ -109,7 +127,16 @@ int takeScreenshot(MainWindow& window, const DesktopOptions& options, QString* e
     QApplication::processEvents();
     if (options.presentation) window.canvas()->fitToWorld();  // the layout changed under it
     QApplication::processEvents();
-    const QPixmap picture = window.grab();
+    QPixmap picture = window.grab();
+    // A blow-up's dialog is a window of its own: drawn over the picture where it stands, centred
+    // on the window, as a user sees it.
+    if (auto* box = window.findChild<QMessageBox*>(QStringLiteral("divergenceDialog"));
+        box && box->isVisible()) {
+        const QPixmap dialog = box->grab();
+        QPainter painter(&picture);
+        painter.drawPixmap((picture.width() - dialog.width()) / 2,
+                           (picture.height() - dialog.height()) / 2, dialog);
+    }
     QBuffer png;  // written by OutputFile, like every file the app writes
     png.open(QIODevice::WriteOnly);
     if (picture.isNull() || !picture.save(&png, "PNG")) {
@@ -135,6 +162,7 @@ int runDesktop(QApplication& app) {
         : options.canvas == QLatin1String("opengl") ? ui::CanvasBackend::OpenGL
                                                     : ui::CanvasBackend::Auto;
     window.canvas()->setBackend(backend);
+    if (options.size.isValid()) window.resize(options.size);
     const QString scene = options.scene.isEmpty() ? kDemoScene : options.scene;
     const bool headless = !options.screenshot.isEmpty();
     if (!window.openFile(scene, headless, &error)) {

@@ -2,6 +2,7 @@
 // The desktop app's command line (CONTRACT.md §5) and its screenshot mode, apart from main()
 // so that tests can drive them.
 
+#include <QSize>
 #include <QString>
 #include <QStringList>
 
@@ -22,6 +23,7 @@ struct DesktopOptions {
     QStringList rulers;       // "A,B": a ruler between two objects or X:Y points
     QStringList protractors;  // "A,B,C": a protractor with its vertex at B
     bool freeBody = false;    // the free-body view on (of the --select object)
+    QSize size;               // valid: the window's size in pixels (--size WxH)
 };
 
 inline const QString kDemoScene = QStringLiteral(":/scenes/demo.phasebox.json");

@@ -31,12 +31,15 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QStatusBar>
 #include <QTextBrowser>
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
 
+#include <algorithm>
+#include <cmath>
 #include <tuple>
 
 namespace phasebox {
@@ -68,6 +71,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), controller_(docum
     createMenus();
     createToolBar();
     connect(&document_, &Document::sceneReset, this, &MainWindow::updateTitle);
+    // The blow-up dialog speaks of a run that New, Open, Reset and Revert have ended.
+    connect(&document_, &Document::sceneReset, this, [this] {
+        if (divergenceBox_) divergenceBox_->close();
+    });
     connect(&document_, &Document::modifiedChanged, this, &MainWindow::updateTitle);
     connect(&document_, &Document::filePathChanged, this, &MainWindow::updateTitle);
     const auto revertable = [this] {
@@ -238,8 +245,15 @@ void MainWindow::createDockWindows() {
     QDockWidget* pl = addDock(plots_, tr("Plots"), "plotsDock", Qt::RightDockWidgetArea);
     splitDockWidget(pr, pl, Qt::Vertical);
     // The instruments share the plots' place: both are things to watch while it runs.
+    // The instruments' pages need about 375 px (the timer's and the table's rows of buttons);
+    // in a narrower dock they scroll sideways rather than take the canvas's width.
+    auto* instrumentsScroll = new QScrollArea(this);
+    instrumentsScroll->setObjectName(QStringLiteral("instrumentsScroll"));
+    instrumentsScroll->setWidget(instruments_);
+    instrumentsScroll->setWidgetResizable(true);
+    instrumentsScroll->setFrameShape(QFrame::NoFrame);
     QDockWidget* in =
-        addDock(instruments_, tr("Instruments"), "instrumentsDock", Qt::RightDockWidgetArea);
+        addDock(instrumentsScroll, tr("Instruments"), "instrumentsDock", Qt::RightDockWidgetArea);
     tabifyDockWidget(pl, in);
     pl->raise();
     QDockWidget* notes = addDock(notes_, tr("Notes"), "notesDock", Qt::RightDockWidgetArea);
@@ -248,6 +262,8 @@ void MainWindow::createDockWindows() {
     resizeDocks({pr, pl}, {220, 600}, Qt::Vertical);
     resizeDocks({p}, {280}, Qt::Horizontal);
     resizeDocks({pl}, {420}, Qt::Horizontal);
+    leftDock_ = p;
+    rightDock_ = pl;
 
     // The status bar's first: every presenter's messages go to it.
     status_ = new StatusPresenter(*statusBar(), document_, controller_, this);
@@ -304,11 +320,55 @@ void MainWindow::updateTitle() {
     setWindowModified(document_.isModified());
 }
 
-void MainWindow::onDiverged(const QString& message) {
-    status_->showMessage(message);
+void MainWindow::resizeEvent(QResizeEvent* event) {
+    QMainWindow::resizeEvent(event);
+    // After the layout has settled at the new size.
+    QTimer::singleShot(0, this, &MainWindow::keepCanvasWide);
+}
+
+// QMainWindow takes a smaller window's width from the central widget first, so at 1024 px the
+// docks' 700 px left the canvas 300. When the canvas has less than kCanvasShare of the window,
+// the side docks give up what it lacks, each in proportion to what it has above its minimum; a
+// dock the user widened on a large window is left alone.
+void MainWindow::keepCanvasWide() {
+    if (!canvas_ || isFullScreen()) return;
+    const int lacking = static_cast<int>(kCanvasShare * width()) - canvas_->width();
+    if (lacking <= 0) return;
+    QList<QDockWidget*> docks;
+    QList<int> widths, slacks;
+    int totalSlack = 0;
+    for (QDockWidget* dock : {leftDock_.data(), rightDock_.data()}) {
+        if (!dock || !dock->isVisible() || dock->isFloating()) continue;
+        const int least = std::max(dock->minimumSizeHint().width(), dock->minimumWidth());
+        docks << dock;
+        widths << dock->width();
+        slacks << std::max(0, dock->width() - least);
+        totalSlack += slacks.back();
+    }
+    if (totalSlack <= 0) return;
+    const int cut = std::min(lacking, totalSlack);
+    for (qsizetype i = 0; i < docks.size(); ++i)
+        widths[i] -= static_cast<int>(std::ceil(double(cut) * slacks[i] / totalSlack));
+    resizeDocks(docks, widths, Qt::Horizontal);
+}
+
+void MainWindow::onDiverged(const QString& message, const QString& details) {
+    // The status bar: what happened and where, the first two lines.
+    status_->showMessage(
+        message.split(QLatin1Char('\n'), Qt::SkipEmptyParts).mid(0, 2).join(QLatin1Char(' ')));
     refreshNow();
-    if (!QApplication::platformName().startsWith(QLatin1String("offscreen")) && isVisible())
-        QMessageBox::warning(this, tr("The simulation diverged"), message);
+    if (!isVisible()) return;
+    // Window-modal and open(), not exec(): the window stays responsive behind it, and a later
+    // blow-up updates the one dialog instead of stacking another.
+    if (!divergenceBox_) {
+        divergenceBox_ = new QMessageBox(QMessageBox::Warning, tr("The simulation became unstable"),
+                                         QString(), QMessageBox::Ok, this);
+        divergenceBox_->setObjectName(QStringLiteral("divergenceDialog"));
+        divergenceBox_->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    divergenceBox_->setText(message);
+    divergenceBox_->setDetailedText(details);
+    divergenceBox_->open();
 }
 
 AccuracyDialog* MainWindow::accuracyDialog() {

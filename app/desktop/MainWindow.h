@@ -21,6 +21,7 @@
 QT_BEGIN_NAMESPACE
 class QAction;
 class QDialog;
+class QMessageBox;
 class QDockWidget;
 class QTextBrowser;
 QT_END_NAMESPACE
@@ -103,6 +104,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
@@ -128,7 +130,10 @@ private:
     void newScene();
     void openIfSaved(const QString& path);
     void updateTitle();
-    void onDiverged(const QString& message);
+    void onDiverged(const QString& message, const QString& details);
+    // Gives the canvas at least kCanvasShare of the window's width (from the side docks).
+    void keepCanvasWide();
+    static constexpr double kCanvasShare = 0.5;
 
     Document document_;
     Recorder recorder_;
@@ -158,7 +163,9 @@ private:
 
     AccuracyDialog* accuracy_ = nullptr;
     QDialog* guide_ = nullptr;
-    QPointer<QDialog> shortcuts_;         // deletes itself on close
+    QPointer<QDialog> shortcuts_;                 // deletes itself on close
+    QPointer<QDockWidget> leftDock_, rightDock_;  // the docks keepCanvasWide() narrows
+    QPointer<QMessageBox> divergenceBox_;         // the blow-up dialog while it is open
     std::unique_ptr<Autosave> autosave_;  // the open scene, every minute, for crash recovery
 
     SceneFiles* files_ = nullptr;

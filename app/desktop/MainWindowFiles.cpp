@@ -68,6 +68,8 @@ void MainWindow::connectLessonInstruments() {
             const ViewDesc& v = *in.view;
             canvas_->showWidth(QPointF(v.center[0], v.center[1]), v.width);
         }
+        // No plots named: the energy and phase plots, as a new window shows them.
+        plots_->showLowerPlot(ui::PlotsPanel::Plot::Phase);
         if (in.plots.empty()) return;
         QDockWidget* dock = findChild<QDockWidget*>(QStringLiteral("plotsDock"));
         for (const std::string& name : in.plots) {

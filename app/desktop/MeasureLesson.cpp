@@ -24,9 +24,8 @@ void MeasureTools::applyInstruments(const InstrumentsDesc& in) {
         return parseEnd(QString::fromStdString(text)).value_or(End{});
     };
     for (const RulerDesc& r : in.rulers) rulers_.push_back({{end(r.ends[0]), end(r.ends[1])}});
-    // The file's order is ∠ABC, the vertex in the middle.
-    for (const ProtractorDesc& p : in.protractors)
-        protractors_.push_back({{end(p.ends[1]), end(p.ends[0]), end(p.ends[2])}});
+    for (const ProtractorDesc& p : in.protractors)  // ∠ABC in both
+        protractors_.push_back({{end(p.ends[0]), end(p.ends[1]), end(p.ends[2])}});
     if (!in.freeBody.empty()) document_.setSelection({QString::fromStdString(in.freeBody)});
     setFreeBodyShown(!in.freeBody.empty());
     refresh();
@@ -38,7 +37,7 @@ void MeasureTools::collectInstruments(InstrumentsDesc& out) const {
             {{endText(r.ends[0]).toStdString(), endText(r.ends[1]).toStdString()}});
     for (const Protractor& p : protractors_)
         out.protractors.push_back(
-            {{endText(p.ends[1]).toStdString(), endText(p.ends[0]).toStdString(),
+            {{endText(p.ends[0]).toStdString(), endText(p.ends[1]).toStdString(),
               endText(p.ends[2]).toStdString()}});
     if (!freeBodyShown_) return;
     for (const QString& id : document_.selection())

@@ -214,14 +214,20 @@ bool Document::addDrawnObject(const ObjectDesc& object, QString* error, QString*
     SimulationDesc simulation = setup_.simulation;
     const std::string before = simulation.integrator;
     simulation.integrator = method;
-    auto* change = new SetSimulationCommand(*this, simulation);
-    undoStack_.beginMacro(add->text());
-    undoStack_.push(add);
-    const bool switched = push(change, error);
-    undoStack_.endMacro();
-    if (switched && notice)
-        *notice = tr("%1 at this dt would blow up with it: switched to %2 (undo to keep %1)")
-                      .arg(QString::fromStdString(before), QString::fromStdString(method));
+    // The switch is an undo step of its own after the object's: one Undo gives the method back
+    // and keeps what was drawn, a second takes the object away.
+    if (!push(add, error)) return false;
+    const bool switched = push(new SetSimulationCommand(*this, simulation), error);
+    if (switched && notice) {
+        const auto label = [](const std::string& name) {
+            const IntegratorInfo* info = findIntegrator(name);
+            return info ? QString::fromUtf8(info->label.data(),
+                                            static_cast<qsizetype>(info->label.size()))
+                        : QString::fromStdString(name);
+        };
+        *notice = tr("Switched to %1 so the %2 stays stable; Undo to go back to %3")
+                      .arg(label(method), objectKindName(objectKind(object)), label(before));
+    }
     return true;
 }
 

@@ -86,7 +86,17 @@ void Recorder::recordError(double t, double error) {
 void Recorder::record(const World& world) {
     const double t = world.time();
     if (t < lastTime_) clear();  // the world was reset: a new run
-    if (t == lastTime_) return;
+    if (t == lastTime_) {
+        // A phase target chosen at this instant (before Play, or while paused) starts its curve
+        // at this state, not after the next step.
+        ui::PhaseSample sample;
+        if (phase_.empty() && samplePhase(world, sample)) {
+            phase_.push_back(sample);
+            phaseTimes_.push_back(t);
+            pending_ = true;
+        }
+        return;
+    }
     lastTime_ = t;
     // Every step is checked for a change of method, sampled or not, so a marker is never lost
     // to the stride.

@@ -1,9 +1,9 @@
 #include "app/sim/SimulationController.h"
 
 #include "app/document/Document.h"
+#include "app/sim/DivergenceReport.h"
 #include "app/sim/ProbeRecorder.h"
 #include "app/sim/Recorder.h"
-#include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/world/World.h"
 
 #include <algorithm>
@@ -167,17 +167,10 @@ bool SimulationController::stepOnce() {
 
 void SimulationController::reportDivergence() {
     pause();
-    World& world = document_.world();
-    QString message = world.divergence()
-                          ? QString::fromStdString(world.divergence()->message())
-                          : tr("the simulation diverged. Try a smaller dt, more sub-steps, or an "
-                               "implicit integrator (implicit_euler).");
-    // The general advice is in the message; the stability advisor can say how small a step
-    // this scene and method need (it reads the stiffest mode from the force Jacobian).
-    const StabilityAdvice advice = adviseStability(world, 500);
-    if (!advice.currentStable && !advice.message.empty())
-        message += QLatin1Char('\n') + QString::fromStdString(advice.message);
-    emit diverged(message);
+    // In the classroom's words, with the stability advisor's step for this scene and method (it
+    // reads the stiffest mode from the force Jacobian); the engine's message is the details.
+    const DivergenceReport report = describeDivergence(document_.world());
+    emit diverged(report.text, report.details);
 }
 
 void SimulationController::updateRealTimeFactor(double wallSeconds, double simSeconds) {

@@ -80,8 +80,9 @@ signals:
     void stepped();
     void statsChanged();
     // The world diverged and was restored to its last good state; the controller paused.
-    // The message names the time and the object and says what to do about it.
-    void diverged(const QString& message);
+    // The message says in plain words when, in which object and what to try (DivergenceReport);
+    // details hold the engine's technical message and the stability advisor's.
+    void diverged(const QString& message, const QString& details);
 
 private:
     void tick();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace phasebox {
@@ -68,6 +69,74 @@ double pendulumOmega(const World& world) {
     return std::sqrt(omega2);
 }
 
+// A rigid body's extent along gravity's "up" and across it, from its shape's support function.
+struct Extent {
+    double low = 0.0, high = 0.0;          // along up
+    double sideLow = 0.0, sideHigh = 0.0;  // across
+    double centre = 0.0;                   // its centre along up
+    int body = -1;
+};
+
+// How far the body reaches from its centre in direction d (unit).
+double reach(const Box& box, double angle, const Vec2& d) {
+    const Vec2 axisX(std::cos(angle), std::sin(angle)), axisY(-axisX.y(), axisX.x());
+    switch (box.shape) {
+        case RigidShape::Disk:
+            return box.radius;
+        case RigidShape::Polygon: {
+            double most = -std::numeric_limits<double>::infinity();
+            for (const Vec2& v : box.vertices)
+                most = std::max(most, d.dot(v.x() * axisX + v.y() * axisY));
+            return most;
+        }
+        case RigidShape::Rectangle:
+            break;
+    }
+    return 0.5 * (std::abs(d.dot(axisX)) * box.size.x() + std::abs(d.dot(axisY)) * box.size.y());
+}
+
+// The first pair (upper, lower) of dynamic rigid bodies where one rests on the other along up:
+// the upper one's bottom within a tenth of the smaller height above the lower one's top (or
+// sunk into it by less than half of it), their spans across overlapping, and the upper one's
+// centre higher. A sweep over the spans across keeps it near linear for a row of bodies.
+std::optional<std::pair<int, int>> findStack(const World& world, const Vec2& up) {
+    const Vec2 side(up.y(), -up.x());
+    std::vector<Extent> extents;
+    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i) {
+        const Box& box = world.boxes()[i];
+        if (box.isStatic) continue;
+        const Vec2 c = world.boxPosition(i);
+        const double angle = world.boxAngle(i);
+        Extent e;
+        e.centre = c.dot(up);
+        e.low = e.centre - reach(box, angle, -up);
+        e.high = e.centre + reach(box, angle, up);
+        e.sideLow = c.dot(side) - reach(box, angle, -side);
+        e.sideHigh = c.dot(side) + reach(box, angle, side);
+        e.body = i;
+        extents.push_back(e);
+    }
+    std::sort(extents.begin(), extents.end(),
+              [](const Extent& a, const Extent& b) { return a.sideLow < b.sideLow; });
+    const auto restsOn = [](const Extent& upper, const Extent& lower) {
+        const double height = std::min(upper.high - upper.low, lower.high - lower.low);
+        const double width =
+            std::min(upper.sideHigh - upper.sideLow, lower.sideHigh - lower.sideLow);
+        const double gap = upper.low - lower.high;
+        const double across =
+            std::min(upper.sideHigh, lower.sideHigh) - std::max(upper.sideLow, lower.sideLow);
+        return upper.centre > lower.centre && gap <= 0.1 * height && gap >= -0.5 * height &&
+               across > 0.1 * width;
+    };
+    for (std::size_t i = 0; i < extents.size(); ++i)
+        for (std::size_t j = i + 1; j < extents.size() && extents[j].sideLow < extents[i].sideHigh;
+             ++j) {
+            if (restsOn(extents[i], extents[j])) return std::pair{extents[i].body, extents[j].body};
+            if (restsOn(extents[j], extents[i])) return std::pair{extents[j].body, extents[i].body};
+        }
+    return std::nullopt;
+}
+
 std::string number(double v) {
     std::ostringstream out;
     out.precision(3);
@@ -75,6 +144,22 @@ std::string number(double v) {
     return out.str();
 }
 }  // namespace
+
+std::string contactModelWarning(const World& world) {
+    if (world.settings().contactModel != ContactModel::Kinematic || !world.contacts()) return {};
+    Vec2 g = Vec2::Zero();
+    for (const auto& effect : world.effects()) {
+        Vec2 a;
+        if (effect->uniformAcceleration(a)) g += a;
+    }
+    if (!(g.norm() > 0.0)) return {};  // nothing presses one body on another
+    const auto stack = findStack(world, -g.normalized());
+    if (!stack) return {};
+    return "Kinematic contacts cannot hold a stack (\"" + world.boxes()[stack->first].id +
+           "\" rests on \"" + world.boxes()[stack->second].id +
+           "\"): they only stop bodies moving into each other and push them apart, so the stack "
+           "sinks into the floor. Use impulse contacts for stacks.";
+}
 
 double stabilityBound(std::string_view integrator) {
     const IntegratorInfo* info = findIntegrator(integrator);
@@ -84,6 +169,7 @@ double stabilityBound(std::string_view integrator) {
 StabilityAdvice adviseStability(World& world, int powerIterations) {
     StabilityAdvice advice;
     world.commit();
+    advice.contactWarning = contactModelWarning(world);
     const SimulationSettings& settings = world.settings();
     advice.dt = settings.dt / settings.substeps;
 

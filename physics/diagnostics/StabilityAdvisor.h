@@ -32,10 +32,18 @@ struct StabilityAdvice {
     // The current integrator at the current sub-step: stable, and if not, what to do.
     bool currentStable = true;
     std::string message;
+    // A warning about the contact model in plain words (contactModelWarning()), or empty.
+    std::string contactWarning;
 };
 
 // Reads the world's force Jacobian at its current state (the world is not changed).
 StabilityAdvice adviseStability(World& world, int powerIterations = 2000);
+
+// What the contact model cannot do for this scene, in a classroom's words, or empty: kinematic
+// contacts under a stack (a dynamic rigid body resting on another along gravity). They only
+// remove the approach velocity and push overlaps apart, so nothing carries the weight of the bodies
+// above: a tower telescopes into the floor.
+std::string contactModelWarning(const World& world);
 
 // ω·h bound of a method for undamped oscillation: +∞, a finite bound, or 0 (unstable).
 double stabilityBound(std::string_view integrator);

@@ -45,7 +45,7 @@ struct InstrumentsDesc {
     std::vector<ProtractorDesc> protractors;
     std::string freeBody;  // the body the free-body view shows; "" = the view is off
     std::optional<ViewDesc> view;
-    std::vector<std::string> plots;  // the plot docks shown, by plotNames(); empty = as they are
+    std::vector<std::string> plots;  // the plots shown (kPlotNames); empty: energy and phase
 
     bool empty() const {
         return probes.empty() && graphs.empty() && timers.empty() && !stopwatch && rulers.empty() &&

@@ -300,7 +300,8 @@ private slots:
     // The rolling race lesson (ramps at 20°): a disk from rest rolls without slipping at
     // a = g·sin θ/(1 + I/(m·r²)) = ⅔·g·sin θ (μ = 0.5 holds it: it needs tan θ/3 = 0.12), a box
     // slides at g·(sin θ − μ·cos θ) with μ = 0.2, a frictionless disk slides at g·sin θ without
-    // turning; until the first of them leaves its ramp (the slider, after 7 m: 2.04 s). The
+    // turning; the ramps run 16 m below the start, so all three stay on them for the lesson's
+    // 3 s (the slider would leave after 3.09 s) and the reference holds throughout. The
     // simulation under RK4 follows each along its ramp within 0.5% of the distance.
     void rollingRaceLessonRollsAndSlides() {
         SceneDesc scene;
@@ -309,8 +310,8 @@ private slots:
         QVERIFY(world && ref.has_value());
         QCOMPARE(ref->kind(), std::string("rolling and sliding"));
         const double g = 9.81, theta = 0.349066, s = std::sin(theta), c = std::cos(theta);
-        const double slide = std::sqrt(2.0 * 7.0 / (g * s));
-        QVERIFY2(std::abs(ref->validUntil() - slide) < 0.01,
+        QVERIFY(std::sqrt(2.0 * 16.0 / (g * s)) > scene.simulation.duration);
+        QVERIFY2(ref->validUntil() >= scene.simulation.duration,
                  qPrintable(QString::number(ref->validUntil())));
         struct Body {
             const char* id;

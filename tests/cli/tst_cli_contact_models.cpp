@@ -31,6 +31,20 @@ QByteArray ballScene(const QByteArray& simulation, const QByteArray& effects, do
                "planes": [{"point": [0, 0], "normal": [0, 1], "restitution": 0, "friction": 0}]})";
 }
 
+// Boxes of 0.5 m standing one on another on a floor at y = 0 (one box: a box on the floor), with
+// the contact model given.
+QByteArray towerScene(int boxes, const QByteArray& model) {
+    QByteArray list;
+    for (int i = 0; i < boxes; ++i)
+        list += (i ? ", " : "") + QByteArray(R"({"id": "b)") + QByteArray::number(i) +
+                R"(", "position": [0, )" + QByteArray::number(0.25 + 0.5 * i) +
+                R"(], "size": [0.5, 0.5]})";
+    return R"({"format": "phasebox-scene", "version": 2,
+               "simulation": {"contact_model": ")" +
+           model + R"("}, "effects": {"gravity": {}}, "boxes": [)" + list + R"(],
+               "planes": [{"id": "floor", "point": [0, 0], "normal": [0, 1]}]})";
+}
+
 }  // namespace
 
 class TestCliContactModels : public QObject {
@@ -174,6 +188,39 @@ private slots:
         QCOMPARE(r.status, 0);
         QVERIFY2(r.out.contains("contacts:    penalty, stiffness 900 N/m per point (automatic"),
                  r.out.constData());
+    }
+
+    // Issue 37: kinematic contacts cannot hold a stack; info and run say so in plain words, and
+    // say nothing for a box alone on the floor or for a tower under impulse contacts.
+    void kinematicContactsOnAStackAreWarnedOf() {
+        QTemporaryDir dir;
+        const QString tower = writeFile(dir, "tower.json", towerScene(4, "kinematic"));
+        const QString single = writeFile(dir, "single.json", towerScene(1, "kinematic"));
+        const QString impulse = writeFile(dir, "impulse.json", towerScene(4, "impulse"));
+        const QByteArray warning = "Kinematic contacts cannot hold a stack";
+
+        const CliResult info = runCli({"info", tower});
+        QCOMPARE(info.status, 0);
+        QVERIFY2(info.out.contains("warning:     " + warning) &&
+                     info.out.contains("Use impulse contacts"),
+                 info.out.constData());
+        const CliResult run = runCli({"run", tower, "--duration", "0.5"});
+        QCOMPARE(run.status, 0);
+        QVERIFY2(run.err.startsWith("phasebox-cli: warning: " + warning), run.err.constData());
+        QCOMPARE(run.err.count('\n'), 1);
+        // The option counts as the scene's key does.
+        const CliResult chosen =
+            runCli({"run", impulse, "--duration", "0.5", "--contact-model", "kinematic"});
+        QVERIFY2(chosen.err.contains(warning), chosen.err.constData());
+
+        for (const QString& scene : {single, impulse}) {
+            const CliResult quietInfo = runCli({"info", scene});
+            QCOMPARE(quietInfo.status, 0);
+            QVERIFY2(!quietInfo.out.contains(warning), quietInfo.out.constData());
+            const CliResult quietRun = runCli({"run", scene, "--duration", "0.5"});
+            QCOMPARE(quietRun.status, 0);
+            QVERIFY2(quietRun.err.isEmpty(), quietRun.err.constData());
+        }
     }
 };
 

@@ -96,7 +96,7 @@ private slots:
             QVERIFY(teacher.instruments().timeProbe(QStringLiteral("bob.x")));
             QVERIFY(teacher.instruments().addTableColumn(QStringLiteral("system.total")));
             QVERIFY(teacher.measure().addRuler(QStringLiteral("bob,0:0"), &error));
-            QVERIFY(teacher.measure().addProtractor(QStringLiteral("0:0,0:-1,bob"), &error));
+            QVERIFY(teacher.measure().addProtractor(QStringLiteral("0:-1,0:0,bob"), &error));
             teacher.w.document().setSelection({QStringLiteral("bob")});
             teacher.measure().setFreeBodyShown(true);
             teacher.w.canvas()->showWidth(QPointF(0.25, -0.5), 3.0);

@@ -169,7 +169,7 @@ private slots:
 
     // Issue 19: what a user draws on a new scene is stable at the defaults. A cloth under
     // symplectic Euler at 1/60 s would blow up; drawing it switches the integrator to one the
-    // stability advisor finds stable with margin, in the same undo step, and says so.
+    // stability advisor finds stable with margin, in an undo step of its own, and says so.
     void drawingAClothKeepsANewSceneStable() {
         MainWindow w;
         w.resize(1200, 800);
@@ -190,19 +190,27 @@ private slots:
         QVERIFY(advice.currentStable);
         bool said = false;
         for (QLabel* label : w.statusBar()->findChildren<QLabel*>())
-            said = said || label->text().contains(QStringLiteral("switched to implicit_euler"));
+            said = said || label->text().contains(
+                               QStringLiteral("Switched to Implicit Euler so the cloth stays "
+                                              "stable; Undo to go back to Symplectic Euler"));
         QVERIFY(said);
         w.controller().play();
         QVERIFY(w.controller().advance(3.0));
         w.controller().pause();
         QVERIFY(!w.document().world().divergence().has_value());
         QVERIFY(w.document().world().positions().allFinite());
-        // One undo takes back the cloth and the switch together.
+        // Issue 37: the switch is its own undo step after the cloth's. One Undo gives the method
+        // back and keeps the cloth; a second takes the cloth away.
         w.controller().reset();
         w.document().undoStack()->undo();
-        QCOMPARE(w.document().setup().cloths.size(), std::size_t(0));
+        QCOMPARE(w.document().setup().cloths.size(), std::size_t(1));
         QCOMPARE(QString::fromStdString(w.document().setup().simulation.integrator),
                  QStringLiteral("symplectic_euler"));
+        QCOMPARE(w.document().world().cloths().size(), std::size_t(1));
+        QCOMPARE(w.document().world().settings().integrator, std::string("symplectic_euler"));
+        w.document().undoStack()->undo();
+        QCOMPARE(w.document().setup().cloths.size(), std::size_t(0));
+        QVERIFY(!w.document().undoStack()->canUndo());
     }
 
     // Issue 19: an example opens with a view that holds its motion over its duration, and

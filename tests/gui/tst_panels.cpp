@@ -235,7 +235,7 @@ private slots:
         QVERIFY(tree->topLevelItem(0)->flags() & Qt::ItemIsUserCheckable);
         QVERIFY(!(tree->topLevelItem(3)->flags() & Qt::ItemIsUserCheckable));
         QVERIFY(!tree->topLevelItem(3)->data(0, Qt::CheckStateRole).isValid());
-        QCOMPARE(panel.costText("contacts"), QString("0.870 ms"));
+        QCOMPARE(panel.costText("contacts"), QString("0.870 ms/step"));
 
         // Same names: updated in place, the selected row stays selected.
         QTreeWidgetItem* drag = tree->topLevelItem(1);
@@ -317,9 +317,10 @@ private slots:
         const std::vector<EffectCost> costs{
             {"gravity", 0.002}, {"drag", 0.0005}, {"contacts", 0.001}};
         panel.setCosts(costs, 1000, 0.005);
-        QCOMPARE(panel.costText("gravity"), QString("2.00 µs"));
+        // Issue 37: each cost carries its unit, per step.
+        QCOMPARE(panel.costText("gravity"), QString("2.00 µs/step"));
         QCOMPARE(panel.costText("springs"), QString("–"));  // not in the profile: not running
-        QCOMPARE(panel.costText("integrator"), QString("1.50 µs"));
+        QCOMPARE(panel.costText("integrator"), QString("1.50 µs/step"));
         QCOMPARE(panel.totalText(), QString("total: 5.00 µs per step"));
         QCOMPARE(EffectsPanel::formatMs(1.2), QString("1.20 ms"));
         QCOMPARE(EffectsPanel::formatMs(123.4), QString("123 ms"));

@@ -33,6 +33,32 @@ bool staysBounded(const SceneDesc& scene, int steps) {
     return true;
 }
 
+// Two boxes under kinematic contacts and gravity g, placed at a and b, on a plane under the
+// first one (its normal against g).
+SceneDesc twoBoxes(Point2 a, Point2 b, Point2 g, double rotate = 0.0) {
+    SceneDesc scene;
+    scene.simulation.contactModel = ContactModel::Kinematic;
+    scene.effects.gravity = GravityDesc{g};
+    for (const auto& [id, at] : {std::pair{"lower", a}, std::pair{"upper", b}}) {
+        BoxDesc box;
+        box.id = id;
+        box.position = at;
+        box.size = {1.0, 1.0};
+        box.angle = rotate;
+        scene.boxes.push_back(box);
+    }
+    PlaneDesc floor;
+    const double norm = std::hypot(g[0], g[1]);
+    floor.normal = {-g[0] / norm, -g[1] / norm};
+    floor.point = {a[0] + 0.5 * g[0] / norm, a[1] + 0.5 * g[1] / norm};
+    scene.planes.push_back(floor);
+    return scene;
+}
+
+std::string warningFor(const SceneDesc& scene) {
+    return contactModelWarning(*buildWorld(scene).world);
+}
+
 }  // namespace
 
 class TestStabilityAdvisor : public QObject {
@@ -148,6 +174,34 @@ private slots:
         const StabilityAdvice a = adviseStability(*world);
         QCOMPARE(a.omegaMax, 0.0);
         QVERIFY(a.currentStable);
+    }
+
+    // Issue 37: kinematic contacts cannot hold a stack, and the advisor says so when a dynamic
+    // body rests on another along gravity (within a tenth of the smaller height), whichever way
+    // gravity points; not for bodies side by side, apart, without gravity or under impulses.
+    void kinematicContactsUnderAStackAreWarnedOf() {
+        const Point2 down{0.0, -9.81}, left{-9.81, 0.0};
+        const std::string stacked = warningFor(twoBoxes({0.0, 0.5}, {0.2, 1.5}, down));
+        QVERIFY2(stacked.find("Kinematic contacts cannot hold a stack (\"upper\" rests on "
+                              "\"lower\")") == 0,
+                 stacked.c_str());
+        QVERIFY(stacked.find("Use impulse contacts") != std::string::npos);
+        QVERIFY(!warningFor(twoBoxes({0.0, 0.5}, {0.05, 1.58}, down)).empty());     // a small gap
+        QVERIFY(!warningFor(twoBoxes({0.5, 0.0}, {1.5, 0.0}, left)).empty());       // sideways g
+        QVERIFY(!warningFor(twoBoxes({0.0, 0.5}, {0.0, 1.5}, down, 0.3)).empty());  // turned
+
+        QVERIFY(warningFor(twoBoxes({0.0, 0.5}, {1.0, 0.5}, down)).empty());  // side by side
+        QVERIFY(warningFor(twoBoxes({0.0, 0.5}, {0.0, 2.0}, down)).empty());  // 0.5 m apart
+        QVERIFY(warningFor(twoBoxes({0.0, 0.5}, {1.2, 1.5}, down)).empty());  // not above it
+        SceneDesc impulse = twoBoxes({0.0, 0.5}, {0.0, 1.5}, down);
+        impulse.simulation.contactModel = ContactModel::Impulse;
+        QVERIFY(warningFor(impulse).empty());
+        SceneDesc weightless = twoBoxes({0.0, 0.5}, {0.0, 1.5}, down);
+        weightless.effects.gravity.reset();
+        QVERIFY(warningFor(weightless).empty());
+        // The advice carries it.
+        auto world = buildWorld(twoBoxes({0.0, 0.5}, {0.0, 1.5}, down)).world;
+        QCOMPARE(adviseStability(*world).contactWarning, contactModelWarning(*world));
     }
 };
 

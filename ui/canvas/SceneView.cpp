@@ -22,6 +22,10 @@ namespace phasebox::ui {
 
 namespace {
 
+// The world a scene of planes alone opens on: 10 m along the ground, 6 m above it.
+constexpr double kEmptyGroundWidth = 10.0;
+constexpr double kEmptyGroundHeight = 6.0;
+
 using PaintFunction = std::function<void(QPainter&, QSize)>;
 
 // Both surfaces only paint: input goes through them to the SceneView, which navigates and
@@ -292,7 +296,19 @@ void SceneView::frameNow() const {
             include(w.particlePosition(i), w.particles()[i].radius);
         for (int i = 0; i < static_cast<int>(w.boxes().size()); ++i)
             include(w.boxPosition(i), 0.5 * w.boxes()[i].size.norm());
-        for (const Plane& plane : w.planes()) include(plane.point, 0.0);
+        // A scene of planes alone (File > New: the ground) shows a classroom's worth of world
+        // above them, kEmptyGroundWidth wide, instead of the few metres around a plane's point.
+        const bool onlyPlanes =
+            w.particles().empty() && w.boxes().empty() && w.springs().empty() && w.joints().empty();
+        for (const Plane& plane : w.planes()) {
+            include(plane.point, 0.0);
+            if (!onlyPlanes) continue;
+            const Vec2 along(plane.normal.y(), -plane.normal.x());
+            include(plane.point + 0.5 * kEmptyGroundWidth * along, 0.0);
+            include(plane.point - 0.5 * kEmptyGroundWidth * along, 0.0);
+            include(plane.point + kEmptyGroundHeight * plane.normal, 0.0);
+            include(plane.point - 0.5 * plane.normal, 0.0);
+        }
         for (const Spring& s : w.springs())
             for (const SpringEnd* end : {&s.a, &s.b})
                 if (end->kind == SpringEnd::Kind::Anchor) include(end->point, 0.0);

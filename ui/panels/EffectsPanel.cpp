@@ -84,14 +84,19 @@ QString EffectsPanel::formatMs(double ms) {
            (micro ? QStringLiteral(" µs") : QStringLiteral(" ms"));
 }
 
+QString EffectsPanel::formatCost(double ms) {
+    const QString time = formatMs(ms);
+    if (!(ms >= 0.0) || !std::isfinite(ms)) return time;
+    return ms == 0.0 ? tr("0 µs/step") : tr("%1/step").arg(time);
+}
+
 EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
     tree_ = new QTreeWidget;
     tree_->setObjectName(QStringLiteral("effects"));
     tree_->setColumnCount(2);
-    tree_->setHeaderLabels({tr("Effect"), tr("per step")});
+    tree_->setHeaderLabels({tr("Effect"), tr("CPU time")});
     tree_->headerItem()->setTextAlignment(kCostColumn, Qt::AlignRight | Qt::AlignVCenter);
-    tree_->headerItem()->setToolTip(kCostColumn,
-                                    tr("Milliseconds of CPU time per step, over the last frames"));
+    tree_->headerItem()->setToolTip(kCostColumn, tr("CPU time per step, over the last frames"));
     tree_->setRootIsDecorated(false);
     tree_->setUniformRowHeights(true);
     tree_->setAllColumnsShowFocus(true);
@@ -101,10 +106,9 @@ EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
     header->setSectionResizeMode(kNameColumn, QHeaderView::Stretch);
     // A fixed cost column: resizing to contents would relayout the view on every frame.
     header->setSectionResizeMode(kCostColumn, QHeaderView::Fixed);
-    const int costWidth =
-        std::max(tree_->fontMetrics().horizontalAdvance(QStringLiteral("0.0000 µs")),
-                 header->fontMetrics().horizontalAdvance(tr("per step"))) +
-        16;
+    const int costWidth = std::max(tree_->fontMetrics().horizontalAdvance(formatCost(0.0000421)),
+                                   header->fontMetrics().horizontalAdvance(tr("CPU time"))) +
+                          16;
     header->resizeSection(kCostColumn, costWidth);
     connect(tree_, &QTreeWidget::itemChanged, this, &EffectsPanel::onItemChanged);
     const int indicator = style()->pixelMetric(QStyle::PM_IndicatorWidth, nullptr, tree_);
@@ -177,7 +181,7 @@ void EffectsPanel::applyRow(QTreeWidgetItem* item, const EffectRow& row) {
     item->setForeground(kCostColumn, text);
     item->setTextAlignment(kCostColumn, Qt::AlignRight | Qt::AlignVCenter);
     const double ms = row.enabled ? row.msPerStep : -1.0;
-    item->setText(kCostColumn, formatMs(ms));
+    item->setText(kCostColumn, formatCost(ms));
     enabled_.insert(row.name, row.enabled);
     costs_.insert(row.name, ms);
 }
@@ -238,7 +242,7 @@ void EffectsPanel::setCosts(std::span<const EffectCost> costs, long long steps,
         const double ms =
             steps > 0 && found != measured.cend() && enabled_.value(it.key()) ? *found : -1.0;
         costs_.insert(it.key(), ms);
-        const QString text = formatMs(ms);
+        const QString text = formatCost(ms);
         // Setting equal text still repaints; most frames change only some digits.
         if (it.value()->text(kCostColumn) != text) it.value()->setText(kCostColumn, text);
     }
@@ -250,7 +254,7 @@ void EffectsPanel::setCost(const QString& name, double msPerStep) {
     if (!item) return;
     const QSignalBlocker blocker(tree_);
     costs_.insert(name, msPerStep);
-    item->setText(kCostColumn, formatMs(msPerStep));
+    item->setText(kCostColumn, formatCost(msPerStep));
     double total = 0.0;
     for (double ms : costs_)
         if (ms > 0.0) total += ms;

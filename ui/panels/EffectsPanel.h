@@ -81,6 +81,8 @@ public:
     static QString displayName(const QString& name);
     // "1.23", "0.0123", "123": three significant digits, "–" when not running.
     static QString formatMs(double ms);
+    // A cost cell: formatMs with its unit per step ("2.00 µs/step"), "–" when not running.
+    static QString formatCost(double ms);
 
 signals:
     void effectToggled(const QString& name, bool enabled);

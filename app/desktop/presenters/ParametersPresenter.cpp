@@ -105,8 +105,10 @@ void ParametersPresenter::showSettings() {
 
 void ParametersPresenter::updateAdvice() {
     const StabilityAdvice advice = adviseStability(document_.world(), 200);
+    // The contact model's warning (kinematic contacts under a stack) stands beside the step's.
+    const QString contactWarning = QString::fromStdString(advice.contactWarning);
     if (advice.omegaMax <= 0.0) {
-        panel_.setAdvice({}, false);
+        panel_.setAdvice(contactWarning, !contactWarning.isEmpty());
         return;
     }
     // The largest stable step of every method, as the advisor computed them.
@@ -120,7 +122,10 @@ void ParametersPresenter::updateAdvice() {
                                                      : tr("%1 s").arg(limit.maxDt, 0, 'g', 3);
         details << QStringLiteral("%1: %2").arg(name, step);
     }
-    panel_.setAdvice(QString::fromStdString(advice.message), !advice.currentStable,
+    QString text = QString::fromStdString(advice.message);
+    if (!contactWarning.isEmpty())
+        text = advice.currentStable ? contactWarning : text + QLatin1Char('\n') + contactWarning;
+    panel_.setAdvice(text, !advice.currentStable || !contactWarning.isEmpty(),
                      details.join(QLatin1Char('\n')));
 }
 

@@ -1,0 +1,122 @@
+#include "app/sim/DivergenceReport.h"
+
+#include "physics/diagnostics/StabilityAdvisor.h"
+#include "physics/world/World.h"
+
+#include <QCoreApplication>
+#include <QStringList>
+
+#include <cmath>
+#include <limits>
+
+namespace phasebox {
+
+namespace {
+QString tr(const char* text) {
+    return QCoreApplication::translate("DivergenceReport", text);
+}
+
+QString seconds(double t) {
+    return QString::number(t, 'g', 3) + QStringLiteral(" s");
+}
+
+// The engine's "what" (DivergenceGuard) in a user's words.
+QString whatHappened(const std::string& what) {
+    if (what.find("non-finite") != std::string::npos)
+        return tr("a position or speed grew so large that it is no longer a number");
+    if (what.find("energy growing") != std::string::npos)
+        return tr("its energy grew without bound");
+    if (what.find("tolerance") != std::string::npos)
+        return tr("the adaptive method could not keep its error small enough");
+    return QString::fromStdString(what);
+}
+
+QString label(std::string_view name) {
+    const IntegratorInfo* info = findIntegrator(name);
+    const std::string_view text = info ? info->label : name;
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+}  // namespace
+
+QString describeObject(const World& world, const QString& id) {
+    const std::string key = id.toStdString();
+    for (const Particle& p : world.particles()) {
+        if (p.id != key) continue;
+        if (p.cloth >= 0) {
+            const Cloth& cloth = world.cloths()[static_cast<std::size_t>(p.cloth)];
+            const int node = static_cast<int>(&p - world.particles().data()) - cloth.firstParticle;
+            const int column = node % cloth.nx, row = node / cloth.nx;
+            return tr("cloth '%1', the node in row %2 from the top, column %3 from the left")
+                .arg(QString::fromStdString(cloth.id))
+                .arg(row + 1)
+                .arg(column + 1);
+        }
+        return tr("particle '%1'").arg(id);
+    }
+    for (const Box& b : world.boxes()) {
+        if (b.id != key) continue;
+        switch (b.shape) {
+            case RigidShape::Disk:
+                return tr("disk '%1'").arg(id);
+            case RigidShape::Polygon:
+                return tr("polygon '%1'").arg(id);
+            case RigidShape::Rectangle:
+                break;
+        }
+        return tr("box '%1'").arg(id);
+    }
+    return id.isEmpty() ? QString() : QStringLiteral("'%1'").arg(id);
+}
+
+DivergenceReport describeDivergence(World& world) {
+    DivergenceReport report;
+    const SimulationSettings& settings = world.settings();
+    if (!world.divergence()) {
+        report.text =
+            tr("The simulation became unstable. Try a smaller time step, more sub-steps "
+               "or Implicit Euler.");
+        return report;
+    }
+    const Divergence& d = *world.divergence();
+    QStringList lines;
+    lines << tr("The simulation became unstable at t = %1: %2. It was paused and put back to "
+                "t = %3.")
+                 .arg(seconds(d.time), whatHappened(d.what), seconds(d.restoredTime));
+    const QString where = describeObject(world, QString::fromStdString(d.objectId));
+    if (!where.isEmpty()) lines << tr("It started at %1.").arg(where);
+
+    // What to try, from the stability advisor at the restored state: the step this method
+    // needs, the sub-steps that give it, a method stable at this step, softer springs.
+    const StabilityAdvice advice = adviseStability(world, 500);
+    QStringList tries;
+    double maxDt = std::numeric_limits<double>::infinity();
+    for (const StepLimit& limit : advice.limits)
+        if (limit.integrator == settings.integrator) maxDt = limit.maxDt;
+    if (!advice.currentStable && maxDt > 0.0 && std::isfinite(maxDt)) {
+        // A margin below the limit: a step right at it is barely stable.
+        const double target = 0.8 * maxDt;
+        const int substeps = static_cast<int>(std::ceil(settings.dt / target));
+        tries << tr("a smaller time step: dt below %1").arg(seconds(target))
+              << tr("%1 sub-steps per step (same dt, each step cut into %1 pieces)").arg(substeps);
+    } else {
+        tries << tr("a smaller time step (half of dt = %1)").arg(seconds(settings.dt))
+              << tr("%1 sub-steps per step").arg(std::max(2, 2 * settings.substeps));
+    }
+    if (settings.integrator != "implicit_euler")
+        tries << tr("%1, which stays stable at any time step (it damps fast motion)")
+                     .arg(label("implicit_euler"));
+    if (!world.springs().empty()) tries << tr("softer springs or cloth (a lower stiffness)");
+    if (settings.contactModel == ContactModel::Penalty)
+        tries << tr("impulse contacts instead of penalty contacts");
+    lines << QString() << tr("What to try:");
+    for (const QString& t : std::as_const(tries)) lines << QStringLiteral("• ") + t;
+    report.text = lines.join(QLatin1Char('\n'));
+
+    QStringList details{QString::fromStdString(d.message())};
+    if (!advice.message.empty())
+        details << tr("Stability advisor: %1").arg(QString::fromStdString(advice.message));
+    report.details = details.join(QLatin1Char('\n'));
+    return report;
+}
+
+}  // namespace phasebox
