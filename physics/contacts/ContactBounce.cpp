@@ -57,27 +57,39 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
             const double ownRestitution = r.restitution;
             BodyState& a = state[c.a];
             BodyState& b = state[c.b];
-            for (int k = 0; k < c.pointCount; ++k) {
+            // A point's impact now: its approach at the moment the bodies meet (vi), the
+            // restitution it takes, and whether it must bounce.
+            double vi[2] = {0.0, 0.0}, e[2] = {0.0, 0.0}, sep[2] = {0.0, 0.0};
+            bool hit[2] = {false, false};
+            const auto measure = [&](int k) {
                 const RowPoint& p = c.p[k];
                 const double s = separation_[2 * i + k];
-                const double normalMass = setup_[i].normalMass[k];
                 const double vn = relativeVelocity(a, b, p.rAx, p.rAy, p.rBx, p.rBy, c.nx, c.ny);
+                sep[k] = s;
+                hit[k] = false;
                 // The threshold keeps resting contact quiet (gravity presses a box on the floor
                 // at g·h per sub-step); it shrinks with 1 − e, so that e = 1 is exactly elastic
                 // however slow the collision, as the lecture's e = 1 means.
-                if (vn >= 0.0 || s + h * vn > 0.0) continue;
+                if (vn >= 0.0 || s + h * vn > 0.0) return;
                 // The smooth forces' share of this sub-step, taken as a constant acceleration
                 // a: the bodies meet at τ with v_i = v_n − a·(h − τ), slower than at the
                 // sub-step's end, and leave at −e·v_i (without this a dropped ball rebounds up
                 // to e·g·h faster than it hit: 2.7% too high at 240 sub-steps a second).
                 const double smooth = r.smoothChange[k] / substeps;
                 const double tau = s > 0.0 ? std::min(h, s / -vn) : 0.0;
-                const double vi = std::min(vn - smooth * (h - tau) / h, 0.0);
-                const double restitution =
-                    bounces_[2 * i + k] < kElasticBounces ? ownRestitution : 0.0;
-                const double threshold = settings.restitutionThreshold * (1.0 - restitution);
-                if (vi >= -threshold) continue;
-                const double lambda = -normalMass * (1.0 + restitution) * vi;
+                vi[k] = std::min(vn - smooth * (h - tau) / h, 0.0);
+                e[k] = bounces_[2 * i + k] < kElasticBounces ? ownRestitution : 0.0;
+                hit[k] = vi[k] < -settings.restitutionThreshold * (1.0 - e[k]);
+            };
+            for (int k = 0; k < c.pointCount; ++k) measure(k);
+            // A point's impulse λ along the normal, and its positional twin (Time of impact:
+            // the bodies meet s/|v_n| into the sub-step and separate for the rest of it, so
+            // they end (1 + e)·s closer than moving by h·v_new from the sub-step's start
+            // implies; without the shift every rebound would start early and rise (1 + e)·s too
+            // high. Only for an isolated pair: shifting a body that touches others could push
+            // it into them.)
+            const auto apply = [&](int k, double lambda, double shift) {
+                const RowPoint& p = c.p[k];
                 removeImpulse(a, p.rAx, p.rAy, lambda * c.nx, lambda * c.ny);
                 applyImpulse(b, p.rBx, p.rBy, lambda * c.nx, lambda * c.ny);
                 any = true;
@@ -85,29 +97,50 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
                 ++clock;
                 if (c.a != world) changedAt_[c.a] = clock;
                 if (c.b != world) changedAt_[c.b] = clock;
-                // Time of impact: the bodies meet s/|v_n| into the sub-step and separate for the
-                // rest of it, so they end (1 + e)·s closer than moving by h·v_new from the
-                // sub-step's start implies; without this shift every rebound would start early
-                // and rise (1 + e)·s too high. Only for an isolated pair: shifting a body that
-                // touches others could push it into them.
-                if (s > 0.0 && r.isolated && !shifted_[2 * i + k]) {
-                    shifted_[2 * i + k] = 1;
-                    moved = true;
-                    const double shift = (1.0 + restitution) * s * normalMass;
-                    const double sx = shift * c.nx, sy = shift * c.ny;
-                    const Vec2 rA(p.rAx, p.rAy), rB(p.rBx, p.rBy);
-                    // A positional impulse: moves the bodies without changing their velocities.
-                    if (c.a != world) {
-                        SolverBody& body = bodies_[c.a];
-                        body.timeShift += body.invMass * Vec2(sx, sy);
-                        body.angleTimeShift += body.invInertia * cross(rA, Vec2(sx, sy));
-                    }
-                    if (c.b != world) {
-                        SolverBody& body = bodies_[c.b];
-                        body.timeShift += body.invMass * Vec2(-sx, -sy);
-                        body.angleTimeShift += body.invInertia * cross(rB, Vec2(-sx, -sy));
-                    }
+                if (!(shift > 0.0) || !r.isolated || shifted_[2 * i + k]) return;
+                shifted_[2 * i + k] = 1;
+                moved = true;
+                const double sx = shift * c.nx, sy = shift * c.ny;
+                const Vec2 rA(p.rAx, p.rAy), rB(p.rBx, p.rBy);
+                // A positional impulse: moves the bodies without changing their velocities.
+                if (c.a != world) {
+                    SolverBody& body = bodies_[c.a];
+                    body.timeShift += body.invMass * Vec2(sx, sy);
+                    body.angleTimeShift += body.invInertia * cross(rA, Vec2(sx, sy));
                 }
+                if (c.b != world) {
+                    SolverBody& body = bodies_[c.b];
+                    body.timeShift += body.invMass * Vec2(-sx, -sy);
+                    body.angleTimeShift += body.invInertia * cross(rB, Vec2(-sx, -sy));
+                }
+            };
+            // Both points of a manifold hit at once (a box landing flat): one impulse pair
+            // K·λ = −(1 + e)·v_i that ends both approaches together. Point by point, the first
+            // point's impulse would turn the body and the second's turn it back with a bounce
+            // left over: a box dropped flat with e = 0 left the floor spinning and toppled.
+            if (hit[0] && hit[1] && setup_[i].blockable) {
+                const double det = c.k11 * c.k22 - c.k12 * c.k12;
+                const double b0 = -(1.0 + e[0]) * vi[0], b1 = -(1.0 + e[1]) * vi[1];
+                const double l0 = (c.k22 * b0 - c.k12 * b1) / det;
+                const double l1 = (c.k11 * b1 - c.k12 * b0) / det;
+                if (l0 >= 0.0 && l1 >= 0.0) {
+                    // The shifts by the same block, so that a flat landing moves flat.
+                    const double d0 = (1.0 + e[0]) * std::max(sep[0], 0.0);
+                    const double d1 = (1.0 + e[1]) * std::max(sep[1], 0.0);
+                    double s0 = (c.k22 * d0 - c.k12 * d1) / det;
+                    double s1 = (c.k11 * d1 - c.k12 * d0) / det;
+                    if (s0 < 0.0 || s1 < 0.0) s0 = s1 = 0.0;
+                    apply(0, l0, s0);
+                    apply(1, l1, s1);
+                    continue;
+                }
+            }
+            // Point by point, each seeing what the one before did.
+            for (int k = 0; k < c.pointCount; ++k) {
+                if (k > 0) measure(k);
+                if (!hit[k]) continue;
+                const double normalMass = setup_[i].normalMass[k];
+                apply(k, -normalMass * (1.0 + e[k]) * vi[k], (1.0 + e[k]) * sep[k] * normalMass);
             }
         }
         if (!any) break;

@@ -179,6 +179,59 @@ private slots:
         QVERIFY2(std::abs(top - 0.64) < 0.02 * 0.64, qPrintable(QString::number(top)));
     }
 
+    // A box dropped flat lands flat: both corners hit at once, so the impact is one impulse
+    // pair and turns nothing (point by point, the first corner's impulse turned the box and a
+    // 1 x 0.6 box dropped 3.2 m onto a floor of e = 0.5 toppled onto its side). Its rebound is
+    // then a disk's of the same height dropped beside it: both are one body meeting the floor
+    // with one normal velocity.
+    void boxDroppedFlatLandsFlat_data() {
+        QTest::addColumn<double>("restitution");
+        QTest::addColumn<double>("drop");
+        QTest::newRow("e = 0.5, 3.2 m") << 0.5 << 3.2;
+        QTest::newRow("e = 0.5, 0.5 m") << 0.5 << 0.5;
+        QTest::newRow("e = 0.9, 1 m") << 0.9 << 1.0;
+    }
+    void boxDroppedFlatLandsFlat() {
+        QFETCH(double, restitution);
+        QFETCH(double, drop);
+        SceneDesc scene;
+        scene.effects.gravity = GravityDesc{};
+        BoxDesc box;
+        box.size = {1.0, 0.6};
+        box.position = {0.0, 0.3 + drop};
+        box.restitution = restitution;
+        scene.boxes.push_back(box);
+        DiskDesc disk;
+        disk.radius = 0.3;
+        disk.position = {3.0, 0.3 + drop};
+        disk.restitution = restitution;
+        scene.disks.push_back(disk);
+        PlaneDesc floor;
+        floor.restitution = restitution;
+        scene.planes.push_back(floor);
+        auto world = build(scene);
+        // Fall, bounce, and record the top of each body's first rebound (its bottom).
+        double top[2] = {0.0, 0.0}, spin = 0.0;
+        bool bounced[2] = {false, false}, done[2] = {false, false};
+        for (int k = 0; k < 600 && !(done[0] && done[1]); ++k) {
+            QVERIFY(run(*world, world->settings().dt));
+            spin = std::max(spin, std::abs(world->boxAngularVelocity(0)));
+            for (int i = 0; i < 2; ++i) {
+                const double vy = world->boxVelocity(i).y();
+                if (vy > 0.0) bounced[i] = true;
+                if (bounced[i] && !done[i])
+                    top[i] = std::max(top[i], world->boxPosition(i).y() - 0.3);
+                if (bounced[i] && vy < 0.0) done[i] = true;
+            }
+        }
+        qInfo("box rebounds to %.4f m, the disk to %.4f m (e^2 h %.4f); largest spin %.3g rad/s",
+              top[0], top[1], restitution * restitution * drop, spin);
+        QVERIFY(done[0] && done[1]);
+        QVERIFY2(spin < 1e-9, qPrintable(QString::number(spin)));
+        QVERIFY(std::abs(world->boxAngle(0)) < 1e-9);
+        QVERIFY2(std::abs(top[0] - top[1]) < 1e-6 * drop, qPrintable(QString::number(top[0])));
+    }
+
     void reboundsMatchESquaredHUnderEveryMethod_data() {
         QTest::addColumn<QString>("integrator");
         for (const char* name : {"symplectic_euler", "velocity_verlet", "rk4", "implicit_euler"})
