@@ -259,7 +259,8 @@ void MainWindow::createDockWindows() {
     QDockWidget* notes = addDock(notes_, tr("Notes"), "notesDock", Qt::RightDockWidgetArea);
     tabifyDockWidget(pr, notes);
     notes->raise();
-    resizeDocks({pr, pl}, {220, 600}, Qt::Vertical);
+    // Properties gets room for a rigid body's state and material (about eight fields).
+    resizeDocks({pr, pl}, {330, 520}, Qt::Vertical);
     resizeDocks({p}, {280}, Qt::Horizontal);
     resizeDocks({pl}, {420}, Qt::Horizontal);
     leftDock_ = p;

@@ -243,6 +243,10 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     title_->setFont(bold);
     title_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     objectLayout->addWidget(title_);
+    stateNote_ = new QLabel;
+    stateNote_->setObjectName(QStringLiteral("stateNote"));
+    stateNote_->setWordWrap(true);
+    objectLayout->addWidget(stateNote_);
     auto* scroll = new QScrollArea;
     scroll->setObjectName(QStringLiteral("formScroll"));
     scroll->setWidgetResizable(true);
@@ -268,6 +272,21 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     layout->setContentsMargins(6, 6, 6, 6);
     layout->addWidget(pages_, 1);
     setMinimumWidth(220);
+}
+
+void PropertiesPanel::setStateNote(const QString& text, bool live) {
+    if (live != live_ || stateNote_->styleSheet().isEmpty()) {
+        // Live numbers in the highlight colour, so a glance tells them from the setup.
+        stateNote_->setStyleSheet(live ? QStringLiteral("QLabel { color: palette(highlight); "
+                                                        "font-weight: bold; }")
+                                       : QStringLiteral("QLabel { color: palette(mid); }"));
+        live_ = live;
+    }
+    if (stateNote_->text() != text) stateNote_->setText(text);
+}
+
+QString PropertiesPanel::stateNote() const {
+    return stateNote_->text();
 }
 
 bool PropertiesPanel::hasObject() const {

@@ -99,6 +99,12 @@ public:
     // is typing into keeps the typed text; unknown keys are ignored.
     void updateValues(const std::vector<PropertyField>& fields);
 
+    // Under the title: whether the numbers are the live state of a run (live: true, set every
+    // frame) or the setup that Reset returns to.
+    void setStateNote(const QString& text, bool live);
+    QString stateNote() const;
+    bool showsLiveState() const { return live_; }
+
     // A validation message under the form, in red; cleared by the next committed edit.
     void showError(const QString& message);
     void clearError();
@@ -118,6 +124,8 @@ private:
     QStackedWidget* pages_ = nullptr;
     QLabel* emptyHint_ = nullptr;
     QLabel* title_ = nullptr;
+    QLabel* stateNote_ = nullptr;
+    bool live_ = false;
     QWidget* form_ = nullptr;
     QFormLayout* formLayout_ = nullptr;
     QLabel* error_ = nullptr;

@@ -3,6 +3,8 @@
 #include "app/document/Document.h"
 #include "app/document/PropertyTable.h"
 #include "app/sim/SimulationController.h"
+#include "physics/scene/StateTransfer.h"
+#include "physics/world/World.h"
 #include "ui/panels/PropertiesPanel.h"
 
 #include <vector>
@@ -33,8 +35,14 @@ void PropertiesPresenter::update(bool rebuild) {
         return;
     }
     const QString id = QString::fromStdString(objectId(setup, ref));  // a cloth node: its cloth
+    // Once the clock has left 0 the numbers are the run's (what the canvas shows), labelled
+    // live; at the setup they are what Reset returns to. An edit of a live position or
+    // velocity starts the object from the number typed (Document::moveObject's rule).
+    const World& world = document_.world();
+    const bool live = document_.hasRun();
+    const SceneDesc liveScene = live ? snapshotScene(world, setup) : SceneDesc{};
     std::vector<ui::PropertyField> fields;
-    for (const PropertyRow& row : propertiesOf(setup, id))
+    for (const PropertyRow& row : propertiesOf(live ? liveScene : setup, id))
         fields.push_back({row.key, row.label, row.unit, row.value, row.minimum, row.maximum,
                           row.decimals, row.isBool});
     if (rebuild || id != shownId_) {
@@ -43,6 +51,10 @@ void PropertiesPresenter::update(bool rebuild) {
     } else {
         panel_.updateValues(fields);
     }
+    panel_.setStateNote(
+        live ? tr("Live at t = %1 s; Reset shows the setup").arg(world.time(), 0, 'f', 3)
+             : tr("Setup: the state at t = 0, what Reset returns to"),
+        live);
 }
 
 void PropertiesPresenter::edit(const QString& key, double value) {
