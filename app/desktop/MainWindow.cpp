@@ -240,10 +240,13 @@ void MainWindow::createDockWindows() {
     QDockWidget* e = addDock(effects_, tr("Effects"), "effectsDock", Qt::LeftDockWidgetArea);
     tabifyDockWidget(e, addDock(browser_, tr("Scene"), "sceneDock", Qt::LeftDockWidgetArea));
     e->raise();
+    // The properties of the selection and the lesson's notes share the left column's lower
+    // half with the effects (raised when an object is chosen): the right column is the plots'
+    // and instruments' whole height, which at 1024 x 700 is what keeps them legible.
     QDockWidget* pr =
-        addDock(properties_, tr("Properties"), "propertiesDock", Qt::RightDockWidgetArea);
+        addDock(properties_, tr("Properties"), "propertiesDock", Qt::LeftDockWidgetArea);
+    tabifyDockWidget(e, pr);
     QDockWidget* pl = addDock(plots_, tr("Plots"), "plotsDock", Qt::RightDockWidgetArea);
-    splitDockWidget(pr, pl, Qt::Vertical);
     // The instruments share the plots' place: both are things to watch while it runs.
     // The instruments' pages need about 375 px (the timer's and the table's rows of buttons);
     // in a narrower dock they scroll sideways rather than take the canvas's width.
@@ -256,11 +259,11 @@ void MainWindow::createDockWindows() {
         addDock(instrumentsScroll, tr("Instruments"), "instrumentsDock", Qt::RightDockWidgetArea);
     tabifyDockWidget(pl, in);
     pl->raise();
-    QDockWidget* notes = addDock(notes_, tr("Notes"), "notesDock", Qt::RightDockWidgetArea);
+    QDockWidget* notes = addDock(notes_, tr("Notes"), "notesDock", Qt::LeftDockWidgetArea);
     tabifyDockWidget(pr, notes);
     notes->raise();
-    // Properties gets room for a rigid body's state and material (about eight fields).
-    resizeDocks({pr, pl}, {330, 520}, Qt::Vertical);
+    // The parameters take the height of their fields; the rest is the lower tabs'.
+    resizeDocks({p, e}, {parameters_->sizeHint().height() + 30, 2000}, Qt::Vertical);
     resizeDocks({p}, {280}, Qt::Horizontal);
     resizeDocks({pl}, {420}, Qt::Horizontal);
     leftDock_ = p;

@@ -252,10 +252,10 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    // The form takes the height it needs (scrolling when the dock is short), so the error
-    // line sits right under the last field instead of at the bottom of a tall dock.
-    scroll->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
-    objectLayout->addWidget(scroll);
+    // The form takes the dock's height (a scroll area's own hint is a few rows, which showed
+    // 2 to 4 fields in a tall dock), scrolling only when the dock is shorter than the form.
+    scroll->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
+    objectLayout->addWidget(scroll, 1);
 
     error_ = new QLabel;
     error_->setObjectName(QStringLiteral("error"));
@@ -265,7 +265,6 @@ PropertiesPanel::PropertiesPanel(QWidget* parent) : QWidget(parent) {
     error_->setStyleSheet(QStringLiteral("QLabel { color: #c62828; font-weight: bold; }"));
     error_->hide();
     objectLayout->addWidget(error_);
-    objectLayout->addStretch(1);
     pages_->addWidget(objectPage);
 
     auto* layout = new QVBoxLayout(this);

@@ -1,0 +1,110 @@
+// Properties while it runs (issue #37): at the setup the panel shows the setup, labelled so;
+// once the clock has left 0 it shows the live state of the run (the numbers the canvas draws),
+// labelled live with the time, and Reset brings the setup back. A rigid body's every field
+// fits the dock of a window at its first size.
+
+#include "app/desktop/MainWindow.h"
+#include "app/document/Document.h"
+#include "app/sim/SimulationController.h"
+#include "physics/world/World.h"
+#include "ui/panels/PropertiesPanel.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QStandardPaths>
+#include <QTest>
+
+#include <cmath>
+
+using namespace phasebox;
+
+namespace {
+
+// A box released 1 m above the ground (its bottom at y = -1): it falls, bounces and rests.
+SceneDesc droppedBox() {
+    SceneDesc scene;
+    scene.name = "A box on the floor";
+    scene.effects.gravity = GravityDesc{};
+    BoxDesc box;
+    box.id = "crate";
+    box.position = {0.0, 0.3};
+    box.size = {1.0, 0.6};
+    scene.boxes.push_back(box);
+    PlaneDesc ground;
+    ground.id = "ground";
+    ground.point = {0.0, -2.0};
+    scene.planes.push_back(ground);
+    return scene;
+}
+
+double shown(ui::PropertiesPanel* panel, const char* key) {
+    auto* spin = qobject_cast<QDoubleSpinBox*>(panel->editor(QString::fromLatin1(key)));
+    return spin ? spin->value() : std::nan("");
+}
+
+}  // namespace
+
+class TestLiveProperties : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void showsTheLiveStateWhileRunningAndTheSetupAtReset() {
+        MainWindow w;
+        w.resize(1400, 880);
+        w.show();
+        QString error;
+        QVERIFY2(w.document().loadFromDesc(droppedBox(), {}, &error), qPrintable(error));
+        w.document().setSelection({QStringLiteral("crate")});
+        ui::PropertiesPanel* panel = w.propertiesPanel();
+        QVERIFY(panel->hasObject());
+        QVERIFY(!panel->showsLiveState());
+        QVERIFY(panel->stateNote().startsWith(QStringLiteral("Setup")));
+        QCOMPARE(shown(panel, "position.y"), 0.3);
+
+        // Running: every frame shows the run's state, not the setup's 0.3 m.
+        w.controller().play();
+        QVERIFY(QTest::qWaitFor([&] { return w.document().world().time() > 0.2; }, 10000));
+        w.controller().pause();
+        w.refreshNow();
+        const World& world = w.document().world();
+        QVERIFY(panel->showsLiveState());
+        QVERIFY2(panel->stateNote().contains(
+                     QStringLiteral("Live at t = %1 s").arg(world.time(), 0, 'f', 3)),
+                 qPrintable(panel->stateNote()));
+        QVERIFY(world.boxPosition(0).y() < 0.25);
+        QVERIFY(std::abs(shown(panel, "position.y") - world.boxPosition(0).y()) < 1e-3);
+        QVERIFY(std::abs(shown(panel, "velocity.y") - world.boxVelocity(0).y()) < 1e-3);
+
+        // At rest on the floor after 3 s: the live y is the resting height, -1.7 m.
+        QVERIFY(w.controller().advance(3.0));
+        w.refreshNow();
+        QVERIFY(std::abs(shown(panel, "position.y") + 1.7) < 2e-3);
+
+        w.action(QStringLiteral("reset"))->trigger();
+        w.refreshNow();
+        QVERIFY(!panel->showsLiveState());
+        QCOMPARE(shown(panel, "position.y"), 0.3);
+    }
+
+    void aRigidBodysFieldsFitTheDock() {
+        MainWindow w;
+        w.resize(1400, 880);
+        w.show();
+        QString error;
+        QVERIFY2(w.document().loadFromDesc(droppedBox(), {}, &error), qPrintable(error));
+        w.document().setSelection({QStringLiteral("crate")});
+        w.findChild<QDockWidget*>(QStringLiteral("propertiesDock"))->raise();
+        QApplication::processEvents();
+        auto* scroll = w.propertiesPanel()->findChild<QScrollArea*>(QStringLiteral("formScroll"));
+        QVERIFY(scroll);
+        QVERIFY(w.propertiesPanel()->keys().size() >= 12);
+        QCOMPARE(scroll->verticalScrollBar()->maximum(), 0);  // nothing hidden below
+    }
+};
+
+QTEST_MAIN(TestLiveProperties)
+#include "tst_live_properties.moc"
