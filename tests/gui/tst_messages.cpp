@@ -149,6 +149,11 @@ private slots:
         scene.cloths.push_back(flag);
         QVERIFY(w.document().loadFromDesc(scene));
         QCOMPARE(w.document().setup().simulation.integrator, std::string("symplectic_euler"));
+        // The Parameters panel's advice, in the lecture's notation, not the terminal's.
+        const QString advice = w.parametersPanel()->adviceText();
+        QVERIFY2(
+            advice.contains(QStringLiteral("ω·h")) && !advice.contains(QStringLiteral("omega")),
+            qPrintable(advice));
         QVERIFY(!w.controller().advance(3.0));
         QMessageBox* box = nullptr;
         QTRY_VERIFY((box = w.findChild<QMessageBox*>("divergenceDialog")) && box->isVisible());

@@ -122,7 +122,9 @@ void ParametersPresenter::updateAdvice() {
                                                      : tr("%1 s").arg(limit.maxDt, 0, 'g', 3);
         details << QStringLiteral("%1: %2").arg(name, step);
     }
-    QString text = QString::fromStdString(advice.message);
+    // The advisor writes for a terminal (omega*h); the panel in the lecture's notation.
+    QString text = QString::fromStdString(advice.message)
+                       .replace(QLatin1String("omega*h"), QStringLiteral("ω·h"));
     if (!contactWarning.isEmpty())
         text = advice.currentStable ? contactWarning : text + QLatin1Char('\n') + contactWarning;
     panel_.setAdvice(text, !advice.currentStable || !contactWarning.isEmpty(),
