@@ -39,7 +39,11 @@ void PropertiesPresenter::update(bool rebuild) {
     // live; at the setup they are what Reset returns to. An edit of a live position or
     // velocity starts the object from the number typed (Document::moveObject's rule).
     const World& world = document_.world();
-    const bool live = document_.hasRun();
+    // Only bodies have a state of their own in a scene (a cloth's nodes, a spring, a joint and
+    // a plane keep their setup numbers while it runs).
+    const bool body = ref.kind == ObjectKind::Particle || ref.kind == ObjectKind::Box ||
+                      ref.kind == ObjectKind::Disk || ref.kind == ObjectKind::Polygon;
+    const bool live = body && document_.hasRun();
     const SceneDesc liveScene = live ? snapshotScene(world, setup) : SceneDesc{};
     std::vector<ui::PropertyField> fields;
     for (const PropertyRow& row : propertiesOf(live ? liveScene : setup, id))
@@ -51,10 +55,12 @@ void PropertiesPresenter::update(bool rebuild) {
     } else {
         panel_.updateValues(fields);
     }
-    panel_.setStateNote(
+    const QString note =
         live ? tr("Live at t = %1 s; Reset shows the setup").arg(world.time(), 0, 'f', 3)
-             : tr("Setup: the state at t = 0, what Reset returns to"),
-        live);
+        : document_.hasRun()
+            ? tr("The setup's numbers (the run is at t = %1 s)").arg(world.time(), 0, 'f', 3)
+            : tr("Setup: the state at t = 0, what Reset returns to");
+    panel_.setStateNote(note, live);
 }
 
 void PropertiesPresenter::edit(const QString& key, double value) {
