@@ -1,7 +1,9 @@
 // A lesson keeps its instruments (issue #37, CONTRACT §7): a teacher sets up graphs, a period
 // timer, a table column, a ruler, a protractor, the free-body view, a zoomed view and the
 // error plot, saves, and a fresh window opening the file shows every one of them and, run for
-// the same time, reads the same numbers to the last bit. New brings none of them back.
+// the same time, reads the same numbers to the last bit. New brings none of them back. Every
+// built-in lesson opens from File → Lessons with the instruments its file names, the dock raised
+// on them, and runs: a lesson with a period timer reads a period after 5 s.
 
 #include "GuiTestSupport.h"
 #include "app/desktop/MainWindow.h"
@@ -20,6 +22,7 @@
 
 #include <QDockWidget>
 #include <QFile>
+#include <QMenu>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -160,6 +163,70 @@ private slots:
         QVERIFY(!student.measure().freeBodyShown());
         QCOMPARE(student.w.probeRecorder().probeCount(), 0);
         QVERIFY(SceneIO::serialize(student.w.document().sceneToSave()).indexOf("instruments") < 0);
+    }
+    // File → Lessons: each lesson opens with its notes and the instruments its file names (the
+    // graphs, the timed probe, the probes they read recorded), the Instruments dock shown on the
+    // tab the lesson measures with, and runs 5 s; a timed swing has a period by then.
+    void lessonsMenuOpensEveryLessonWithItsInstruments() {
+        Window window;
+        MainWindow& w = window.w;
+        auto* menu = w.findChild<QMenu*>(QStringLiteral("lessonsMenu"));
+        QVERIFY(menu);
+        auto* dock = w.findChild<QDockWidget*>(QStringLiteral("instrumentsDock"));
+        QVERIFY(dock);
+        const QList<QAction*> actions = menu->actions();
+        QCOMPARE(actions.size(), 12);
+        int timed = 0;
+        for (QAction* a : actions) {
+            dock->hide();
+            a->trigger();
+            const QString path = a->data().toString();
+            QCOMPARE(w.document().filePath(), path);
+            QCOMPARE(QString::fromStdString(w.document().setup().name), a->text());
+            const SceneLoadResult loaded = SceneIO::load(path);
+            QVERIFY2(loaded.ok(), qPrintable(loaded.errorText()));
+            const InstrumentsDesc& in = loaded.scene->instruments;
+            ui::InstrumentsPanel* panel = w.instrumentsPanel();
+            ui::GraphsView* graphs = panel->graphs();
+            if (in.graphs.empty()) {
+                QVERIFY(graphs->graph(0)->yPicker()->probe().isEmpty());
+            } else {
+                QCOMPARE(graphs->count(), static_cast<int>(in.graphs.size()));
+                for (int i = 0; i < graphs->count(); ++i) {
+                    QCOMPARE(graphs->graph(i)->yPicker()->probe(),
+                             QString::fromStdString(in.graphs[std::size_t(i)].y));
+                    QCOMPARE(graphs->graph(i)->xPicker()->probe(),
+                             QString::fromStdString(in.graphs[std::size_t(i)].x));
+                }
+            }
+            QCOMPARE(panel->timer()->picker()->probe(),
+                     in.timers.empty() ? QString() : QString::fromStdString(in.timers.front()));
+            // The window records the table's, the graphs' and the timed probe (the first
+            // timer; the others are kept for Save).
+            std::vector<std::string> recorded = in.probes;
+            for (const GraphDesc& g : in.graphs) recorded.insert(recorded.end(), {g.y, g.x});
+            if (!in.timers.empty()) recorded.push_back(in.timers.front());
+            for (const std::string& probe : recorded)
+                QVERIFY2(
+                    probe.empty() || w.probeRecorder().indexOf(QString::fromStdString(probe)) >= 0,
+                    probe.c_str());
+            QCOMPARE(dock->isVisible(), !in.graphs.empty() || !in.timers.empty() || in.stopwatch ||
+                                            !in.probes.empty());
+            if (!in.graphs.empty())
+                QCOMPARE(panel->currentTab(), ui::InstrumentsPanel::Tab::Graphs);
+            else if (!in.timers.empty())
+                QCOMPARE(panel->currentTab(), ui::InstrumentsPanel::Tab::Timer);
+            else if (!in.probes.empty())
+                QCOMPARE(panel->currentTab(), ui::InstrumentsPanel::Tab::Table);
+            QVERIFY2(w.controller().advance(5.0), qPrintable(path));
+            w.refreshNow();
+            if (!in.timers.empty()) {
+                const std::optional<double> period = panel->timer()->period();
+                QVERIFY2(period && *period > 0.0, qPrintable(path));
+                ++timed;
+            }
+        }
+        QCOMPARE(timed, 2);  // the simple pendulum and the bead on the hoop
     }
 };
 
