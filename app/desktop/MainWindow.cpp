@@ -248,8 +248,8 @@ void MainWindow::createDockWindows() {
     tabifyDockWidget(e, pr);
     QDockWidget* pl = addDock(plots_, tr("Plots"), "plotsDock", Qt::RightDockWidgetArea);
     // The instruments share the plots' place: both are things to watch while it runs.
-    // The instruments' pages need about 375 px (the timer's and the table's rows of buttons);
-    // in a narrower dock they scroll sideways rather than take the canvas's width.
+    // The instruments' pages are laid out in short rows that fit the dock at 1024 x 700; in a
+    // narrower one they scroll sideways rather than take the canvas's width.
     auto* instrumentsScroll = new QScrollArea(this);
     instrumentsScroll->setObjectName(QStringLiteral("instrumentsScroll"));
     instrumentsScroll->setWidget(instruments_);

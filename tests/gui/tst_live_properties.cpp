@@ -1,15 +1,18 @@
 // Properties while it runs (issue #37): at the setup the panel shows the setup, labelled so;
 // once the clock has left 0 it shows the live state of the run (the numbers the canvas draws),
 // labelled live with the time, and Reset brings the setup back. A rigid body's every field
-// fits the dock of a window at its first size.
+// fits the dock of a window at its first size, and at 1024 x 700 every page of the
+// Instruments dock fits its width (nothing cut at the right edge).
 
 #include "app/desktop/MainWindow.h"
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
 #include "physics/world/World.h"
+#include "ui/instruments/InstrumentsPanel.h"
 #include "ui/panels/PropertiesPanel.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDockWidget>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -103,6 +106,28 @@ private slots:
         QVERIFY(scroll);
         QVERIFY(w.propertiesPanel()->keys().size() >= 12);
         QCOMPARE(scroll->verticalScrollBar()->maximum(), 0);  // nothing hidden below
+    }
+
+    void instrumentsFitASmallWindow() {
+        MainWindow w;
+        w.resize(1024, 700);
+        w.show();
+        QVERIFY(w.openFile(QStringLiteral(":/lessons/simple-pendulum.phasebox.json"), true));
+        QVERIFY(w.controller().advance(3.0));
+        auto* dock = w.findChild<QDockWidget*>(QStringLiteral("instrumentsDock"));
+        dock->raise();
+        auto* scroll = w.findChild<QScrollArea*>(QStringLiteral("instrumentsScroll"));
+        QVERIFY(scroll);
+        using Tab = ui::InstrumentsPanel::Tab;
+        for (const Tab tab : {Tab::Readouts, Tab::Graphs, Tab::Timer, Tab::Table}) {
+            w.instrumentsPanel()->showTab(tab);
+            w.refreshNow();
+            QApplication::processEvents();
+            QVERIFY2(scroll->horizontalScrollBar()->maximum() == 0,
+                     qPrintable(QStringLiteral("tab %1: %2 px wider than the dock")
+                                    .arg(int(tab))
+                                    .arg(scroll->horizontalScrollBar()->maximum())));
+        }
     }
 };
 

@@ -14,6 +14,8 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace phasebox::ui {
 
 // ---- one graph --------------------------------------------------------------------------------
@@ -44,12 +46,15 @@ ProbeGraphView::ProbeGraphView(QWidget* parent) : QFrame(parent) {
     remove->setText(QStringLiteral("✕"));
     remove->setToolTip(tr("Close this graph"));
     remove->setAutoRaise(true);
-    row->addWidget(y_, 3);
-    row->addWidget(against);
-    row->addWidget(x_, 2);
+    // Two short rows rather than one long one: the dock shares a 1024-pixel screen.
+    row->addWidget(y_, 1);
     row->addWidget(exportButton);
     row->addWidget(remove);
     layout->addLayout(row);
+    auto* againstRow = new QHBoxLayout;
+    againstRow->addWidget(against);
+    againstRow->addWidget(x_, 1);
+    layout->addLayout(againstRow);
     message_ = new QLabel(this);
     message_->setWordWrap(true);
     layout->addWidget(message_);
@@ -65,7 +70,9 @@ ProbeGraphView::ProbeGraphView(QWidget* parent) : QFrame(parent) {
 void ProbeGraphView::setSeries(const QVector<QPointF>& points, const QString& xTitle,
                                const QString& yUnit, bool timeAxis) {
     QChart* old = view_->chart();
-    view_->setChart(createProbeChart(points, xTitle, yUnit, {}, timeAxis));
+    // As many ticks as the width holds whole labels (about 70 px each).
+    const int ticks = std::clamp(view_->width() / 70, 2, 6);
+    view_->setChart(createProbeChart(points, xTitle, yUnit, {}, timeAxis, ticks));
     delete old;  // QChartView lets go of the old chart without deleting it
 }
 

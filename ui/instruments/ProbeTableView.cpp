@@ -98,10 +98,12 @@ ProbeTableView::ProbeTableView(QWidget* parent) : QWidget(parent) {
     copy->setToolTip(tr("Copy the selected rows (or all) as tab-separated text"));
     auto* exportCsv = new QToolButton(this);
     exportCsv->setText(tr("Export CSV…"));
-    bar->addWidget(picker_, 1);
+    // The picker on its own row, the buttons under it: a narrow dock shows both whole.
+    layout->addWidget(picker_);
     bar->addWidget(remove_);
     bar->addWidget(copy);
     bar->addWidget(exportCsv);
+    bar->addStretch(1);
     layout->addLayout(bar);
     summary_ = new QLabel(this);
     summary_->setWordWrap(true);

@@ -9,9 +9,9 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QPushButton>
 #include <QSplitter>
 #include <QTableWidget>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -83,19 +83,17 @@ TimerView::TimerView(QWidget* parent) : QWidget(parent) {
     pickRow->addWidget(new QLabel(tr("Probe:"), periodBox));
     pickRow->addWidget(picker_, 1);
     periodLayout->addLayout(pickRow);
-    auto* readings = new QHBoxLayout;
+    // The period, and under it its frequency: a narrow dock shows both whole.
     periodLabel_ = bigLabel(periodBox);
     periodLabel_->setObjectName(QStringLiteral("periodValue"));
     frequency_ = new QLabel(periodBox);
-    frequency_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     frequency_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    readings->addWidget(periodLabel_, 1);
-    readings->addWidget(frequency_);
-    periodLayout->addLayout(readings);
+    periodLayout->addWidget(periodLabel_);
+    periodLayout->addWidget(frequency_);
     detail_ = new QLabel(periodBox);
     detail_->setWordWrap(true);
     periodLayout->addWidget(detail_);
-    crossings_ = newList({tr("#"), tr("upward crossing t [s]"), tr("interval [s]")}, periodBox);
+    crossings_ = newList({tr("#"), tr("crossing t [s]"), tr("interval [s]")}, periodBox);
     crossings_->setObjectName(QStringLiteral("crossings"));
     periodLayout->addWidget(crossings_, 1);
     connect(picker_, &ProbePicker::probeEntered, this, &TimerView::probeEntered);
@@ -106,20 +104,27 @@ TimerView::TimerView(QWidget* parent) : QWidget(parent) {
     auto* watchRow = new QHBoxLayout;
     stopwatch_ = bigLabel(watchBox);
     stopwatch_->setObjectName(QStringLiteral("stopwatchValue"));
-    startStop_ = new QPushButton(tr("Start"), watchBox);
+    // Tool buttons: a push button's style keeps it 80 px wide, too wide for three in a narrow
+    // dock.
+    startStop_ = new QToolButton(watchBox);
+    startStop_->setText(tr("Start"));
     startStop_->setObjectName(QStringLiteral("stopwatchStart"));
-    lap_ = new QPushButton(tr("Lap"), watchBox);
-    auto* reset = new QPushButton(tr("Reset"), watchBox);
-    watchRow->addWidget(stopwatch_, 1);
+    lap_ = new QToolButton(watchBox);
+    lap_->setText(tr("Lap"));
+    auto* reset = new QToolButton(watchBox);
+    reset->setText(tr("Reset"));
+    // The reading above its buttons, so that a narrow dock shows both whole.
+    watchLayout->addWidget(stopwatch_);
     watchRow->addWidget(startStop_);
     watchRow->addWidget(lap_);
     watchRow->addWidget(reset);
+    watchRow->addStretch(1);
     watchLayout->addLayout(watchRow);
     laps_ = newList({tr("#"), tr("split [s]"), tr("lap [s]")}, watchBox);
     watchLayout->addWidget(laps_, 1);
-    connect(startStop_, &QPushButton::clicked, this, &TimerView::startStopClicked);
-    connect(lap_, &QPushButton::clicked, this, &TimerView::lapClicked);
-    connect(reset, &QPushButton::clicked, this, &TimerView::resetClicked);
+    connect(startStop_, &QToolButton::clicked, this, &TimerView::startStopClicked);
+    connect(lap_, &QToolButton::clicked, this, &TimerView::lapClicked);
+    connect(reset, &QToolButton::clicked, this, &TimerView::resetClicked);
     splitter->setStretchFactor(0, 3);
     splitter->setStretchFactor(1, 2);
 

@@ -13,7 +13,7 @@
 
 QT_BEGIN_NAMESPACE
 class QLabel;
-class QPushButton;
+class QToolButton;
 class QTableWidget;
 QT_END_NAMESPACE
 
@@ -56,8 +56,8 @@ private:
     std::optional<double> period_;
 
     QLabel* stopwatch_ = nullptr;
-    QPushButton* startStop_ = nullptr;
-    QPushButton* lap_ = nullptr;
+    QToolButton* startStop_ = nullptr;
+    QToolButton* lap_ = nullptr;
     QTableWidget* laps_ = nullptr;
 };
 

@@ -76,7 +76,8 @@ std::pair<double, double> paddedRange(double lo, double hi) {
 }
 
 QChart* createProbeChart(const QVector<QPointF>& points, const QString& xTitle,
-                         const QString& yTitle, const QString& title, bool timeAxis) {
+                         const QString& yTitle, const QString& title, bool timeAxis,
+                         int maxXTicks) {
     auto* chart = new QChart;
     chart->setTitle(title);
     chart->setAnimationOptions(QChart::NoAnimation);
@@ -126,10 +127,10 @@ QChart* createProbeChart(const QVector<QPointF>& points, const QString& xTitle,
     }
     if (timeAxis) {
         // Time runs exactly over the samples, as in the energy plot.
-        applyNiceTicks(x, xlo, xhi > xlo ? xhi : xlo + 1.0);
+        applyNiceTicks(x, xlo, xhi > xlo ? xhi : xlo + 1.0, maxXTicks);
     } else {
         const auto [lo, hi] = paddedRange(xlo, xhi);
-        applyNiceTicks(x, lo, hi);
+        applyNiceTicks(x, lo, hi, maxXTicks);
     }
     const auto [lo, hi] = paddedRange(ylo, yhi);
     applyNiceTicks(y, lo, hi);

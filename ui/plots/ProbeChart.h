@@ -39,8 +39,10 @@ std::pair<double, double> paddedRange(double lo, double hi);
 
 // A probe's samples as a line: y against time (timeAxis: the axis runs exactly over the samples)
 // or against another probe (a curve: both axes padded). Non-finite points are left out, and a
-// long series is thinned to kMaxPlotPoints (Charts.h). An empty title leaves the room to the plot.
+// long series is thinned to kMaxPlotPoints (Charts.h). An empty title leaves the room to the plot;
+// maxXTicks is as many x labels as the view's width holds whole.
 QChart* createProbeChart(const QVector<QPointF>& points, const QString& xTitle,
-                         const QString& yTitle, const QString& title, bool timeAxis);
+                         const QString& yTitle, const QString& title, bool timeAxis,
+                         int maxXTicks = 6);
 
 }  // namespace phasebox::ui
