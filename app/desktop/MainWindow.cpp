@@ -35,8 +35,10 @@
 #include <QStatusBar>
 #include <QTextBrowser>
 #include <QTimer>
+
 #include <QToolBar>
 #include <QUndoStack>
+#include <utility>
 
 #include <algorithm>
 #include <cmath>
@@ -322,6 +324,18 @@ void MainWindow::updateTitle() {
                              : QFileInfo(path).fileName();
     setWindowTitle((name.isEmpty() ? tr("Untitled") : name) + QStringLiteral("[*] — Phasebox"));
     setWindowModified(document_.isModified());
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    // The columns' widths set while the window was built were clamped to a default-sized
+    // window's; the first show gives them theirs, unless the settings brought the user's own.
+    if (std::exchange(shownOnce_, true) || layoutRestored_ || !leftDock_ || !rightDock_) return;
+    QTimer::singleShot(0, this, [this] {  // once the layout is live
+        if (leftDock_ && rightDock_)
+            resizeDocks({leftDock_.data(), rightDock_.data()}, {280, 420}, Qt::Horizontal);
+        keepCanvasWide();  // then a small window's canvas its share again
+    });
 }
 
 void MainWindow::resizeEvent(QResizeEvent* event) {

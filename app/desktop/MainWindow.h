@@ -104,6 +104,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
@@ -166,6 +167,9 @@ private:
     QPointer<QDialog> shortcuts_;                 // deletes itself on close
     QPointer<QDockWidget> leftDock_, rightDock_;  // the docks keepCanvasWide() narrows
     QPointer<QMessageBox> divergenceBox_;         // the blow-up dialog while it is open
+    // The docks' layout came from the settings (else the first show sets the columns' widths).
+    bool layoutRestored_ = false;
+    bool shownOnce_ = false;
     std::unique_ptr<Autosave> autosave_;  // the open scene, every minute, for crash recovery
 
     SceneFiles* files_ = nullptr;

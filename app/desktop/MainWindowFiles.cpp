@@ -137,7 +137,7 @@ void MainWindow::readSettings() {
     // No saved geometry (the first start) or one that no longer fits: a size that shows it all.
     if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
         resize(1400, 880);
-    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    layoutRestored_ = restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     files_->readSettings(settings);
     parametersPresenter_->readSettings(settings);
     canvasPresenter_->readSettings(settings);

@@ -8,6 +8,7 @@
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
 #include "physics/world/World.h"
+#include "ui/canvas/SceneView.h"
 #include "ui/instruments/InstrumentsPanel.h"
 #include "ui/panels/PropertiesPanel.h"
 
@@ -106,6 +107,20 @@ private slots:
         QVERIFY(scroll);
         QVERIFY(w.propertiesPanel()->keys().size() >= 12);
         QCOMPARE(scroll->verticalScrollBar()->maximum(), 0);  // nothing hidden below
+    }
+
+    // A lesson opened before a small window is first shown (from the command line): the first
+    // show's column widths leave the canvas its half of the window.
+    void aLessonOpenedBeforeShowingLeavesTheCanvasItsShare() {
+        MainWindow w;
+        w.resize(1024, 700);
+        QVERIFY(w.openFile(QStringLiteral(":/lessons/simple-pendulum.phasebox.json"), true));
+        w.show();
+        QApplication::processEvents();
+        QTest::qWait(50);
+        QVERIFY(w.findChild<QDockWidget*>(QStringLiteral("instrumentsDock"))->isVisible());
+        QVERIFY2(w.canvas()->width() >= 1024 / 2 - 2,
+                 qPrintable(QString::number(w.canvas()->width())));
     }
 
     void instrumentsFitASmallWindow() {
