@@ -6,6 +6,7 @@
 #include "app/io/SceneIO.h"
 #include "app/sim/SimulationController.h"
 
+#include <QDebug>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -100,7 +101,12 @@ bool SceneFiles::saveTo(const QString& path, QString* error) {
 }
 
 void SceneFiles::offerRecovery(const QString& recoveryDir) {
-    const auto recovery = Autosave::findRecovery(recoveryDir);
+    QStringList problems;
+    const auto recovery = Autosave::findRecovery(recoveryDir, &problems);
+    for (const QString& problem : std::as_const(problems)) {
+        qWarning().noquote() << "phasebox:" << problem;
+        emit message(problem);
+    }
     if (!recovery) return;
     const QString from = recovery->originalPath.isEmpty()
                              ? tr("an unsaved scene")

@@ -1,0 +1,183 @@
+// Issue #38: what the app reads at start and shows cannot hang or exhaust it.
+// - a settings file or a recovery sidecar that is a FIFO (the start blocked for ever) or a link
+//   to /dev/zero (read until memory ran out) is removed with a message, never read;
+
+#include "app/desktop/MainWindow.h"
+#include "app/document/Autosave.h"
+#include "app/io/SceneIO.h"
+#include "physics/world/World.h"
+#include "tests/gui/GuiTestSupport.h"
+
+#include <QApplication>
+#include <QDebug>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QProcess>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBrowser>
+#include <QTreeWidget>
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+using namespace phasebox;
+
+namespace {
+
+// The desktop app with its settings and data folders in dir.
+QProcessEnvironment appEnvironment(const QTemporaryDir& dir) {
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("QT_QPA_PLATFORM", "offscreen");
+    env.insert("HOME", dir.path());
+    env.insert("XDG_CONFIG_HOME", dir.filePath("config"));
+    env.insert("XDG_DATA_HOME", dir.filePath("data"));
+    return env;
+}
+
+QString settingsFile(const QTemporaryDir& dir) {
+    return dir.filePath("config/Phasebox/Phasebox.conf");
+}
+QString recoveryDir(const QTemporaryDir& dir) {
+    return dir.filePath("data/Phasebox/Phasebox/recovery");
+}
+
+// Starts the app (a window, as a user starts it) and waits for every one of the expected lines
+// on its standard error; the app is then ended. Memory is bounded so that reading /dev/zero
+// fails at once instead of filling the machine.
+QString startAndWaitFor(const QTemporaryDir& dir, const QStringList& expected) {
+    QProcess app;
+    app.setProcessEnvironment(appEnvironment(dir));
+    app.setChildProcessModifier([] {
+        rlimit limit{};
+        ::getrlimit(RLIMIT_AS, &limit);
+        limit.rlim_cur = rlim_t(4) << 30;
+        ::setrlimit(RLIMIT_AS, &limit);
+    });
+    app.start(QStringLiteral(PHASEBOX_DESKTOP), {"--canvas", "raster"});
+    if (!app.waitForStarted(20000)) return QStringLiteral("not started");
+    QByteArray err;
+    QElapsedTimer clock;
+    clock.start();
+    auto allSeen = [&] {
+        for (const QString& line : expected)
+            if (!QString::fromUtf8(err).contains(line)) return false;
+        return true;
+    };
+    while (!allSeen() && clock.elapsed() < 30000 && app.state() == QProcess::Running) {
+        app.waitForReadyRead(200);
+        err += app.readAllStandardError();
+    }
+    err += app.readAllStandardError();
+    const bool ok = allSeen();
+    app.kill();
+    app.waitForFinished(10000);
+    return ok ? QString()
+              : QStringLiteral("standard error after %1 ms: %2")
+                    .arg(clock.elapsed())
+                    .arg(QString::fromUtf8(err.left(2000)));
+}
+
+SceneDesc savedScene() {
+    return testing::freeScene();
+}
+
+// The folders of a start in dir, with an autosaved scene left by a crash; returns the path of
+// its sidecar (not written).
+QString prepareStart(const QTemporaryDir& dir) {
+    QDir().mkpath(QFileInfo(settingsFile(dir)).path());
+    QDir().mkpath(recoveryDir(dir));
+    QString error;
+    if (!SceneIO::save(savedScene(), Autosave::recoveryFilePath(recoveryDir(dir)), &error))
+        qWarning() << error;
+    return Autosave::sidecarFilePath(recoveryDir(dir));
+}
+
+}  // namespace
+
+class TestStartupRobustness : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    // Item 1: a FIFO would block the start until someone writes to it.
+    void fifoSettingsAndSidecarAreRemovedNotRead() {
+        QTemporaryDir dir;
+        const QString sidecar = prepareStart(dir);
+        QCOMPARE(::mkfifo(QFile::encodeName(settingsFile(dir)).constData(), 0600), 0);
+        QCOMPARE(::mkfifo(QFile::encodeName(sidecar).constData(), 0600), 0);
+        const QString failure =
+            startAndWaitFor(dir, {"not a settings file", "not a recovery file"});
+        // Whatever happened, nothing may stay blocked on the FIFOs: a writer that opens and
+        // closes them ends a read waiting there.
+        for (const QString& fifo : {settingsFile(dir), sidecar}) {
+            const int fd = ::open(QFile::encodeName(fifo).constData(), O_WRONLY | O_NONBLOCK);
+            if (fd >= 0) ::close(fd);
+        }
+        QVERIFY2(failure.isEmpty(), qPrintable(failure));
+        QVERIFY(!QFileInfo::exists(settingsFile(dir)) ||
+                QFileInfo(settingsFile(dir)).isFile());  // removed (the app may write a new one)
+        QVERIFY(!QFileInfo::exists(sidecar));
+        // The scene itself is kept for the recovery.
+        QVERIFY(QFileInfo(Autosave::recoveryFilePath(recoveryDir(dir))).isFile());
+    }
+
+    // Item 1: /dev/zero has no end; read whole, it ended the app with std::bad_alloc.
+    void linksToDevZeroAreRemovedNotRead() {
+        QTemporaryDir dir;
+        const QString sidecar = prepareStart(dir);
+        QVERIFY(QFile::link(QStringLiteral("/dev/zero"), settingsFile(dir)));
+        QVERIFY(QFile::link(QStringLiteral("/dev/zero"), sidecar));
+        const QString failure =
+            startAndWaitFor(dir, {"not a settings file", "not a recovery file"});
+        QVERIFY2(failure.isEmpty(), qPrintable(failure));
+        QVERIFY(!QFileInfo(sidecar).isSymLink());
+        QVERIFY(!QFileInfo(settingsFile(dir)).isSymLink());
+        QVERIFY(QFileInfo::exists(QStringLiteral("/dev/zero")));  // the link went, not its target
+    }
+
+    // Item 1, in the library: the recovery's sidecar and scene are never opened when they are
+    // not regular files, and a sidecar past its bound is not read.
+    void findRecoveryReadsOnlyBoundedRegularFiles() {
+        QTemporaryDir dir;
+        const QString recovery = dir.filePath("recovery");
+        QVERIFY(QDir().mkpath(recovery));
+        QString error;
+        QVERIFY2(SceneIO::save(savedScene(), Autosave::recoveryFilePath(recovery), &error),
+                 qPrintable(error));
+        QVERIFY(QFile::link(QStringLiteral("/dev/zero"), Autosave::sidecarFilePath(recovery)));
+        QStringList problems;
+        const auto found = Autosave::findRecovery(recovery, &problems);
+        QVERIFY(found.has_value());
+        QVERIFY(found->originalPath.isEmpty());
+        QCOMPARE(problems.size(), 1);
+        QVERIFY2(problems.first().contains("a device"), qPrintable(problems.first()));
+        // A regular sidecar over 64 KiB is not ours: not read, said so.
+        QFile big(Autosave::sidecarFilePath(recovery));
+        QVERIFY(big.open(QIODevice::WriteOnly));
+        big.write(QByteArray(100 * 1024, ' '));
+        big.close();
+        problems.clear();
+        QVERIFY(Autosave::findRecovery(recovery, &problems).has_value());
+        QCOMPARE(problems.size(), 1);
+        QVERIFY2(problems.first().contains("larger than"), qPrintable(problems.first()));
+        // The scene a FIFO: removed, nothing found.
+        QVERIFY(QFile::remove(Autosave::recoveryFilePath(recovery)));
+        QCOMPARE(
+            ::mkfifo(QFile::encodeName(Autosave::recoveryFilePath(recovery)).constData(), 0600), 0);
+        problems.clear();
+        QVERIFY(!Autosave::findRecovery(recovery, &problems).has_value());
+        QVERIFY(!QFileInfo::exists(Autosave::recoveryFilePath(recovery)));
+        QVERIFY2(problems.join(' ').contains("FIFO"), qPrintable(problems.join(' ')));
+    }
+};
+
+QTEST_MAIN(TestStartupRobustness)
+#include "tst_startup_robustness.moc"
