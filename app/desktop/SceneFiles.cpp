@@ -5,6 +5,7 @@
 #include "app/document/Document.h"
 #include "app/io/SceneIO.h"
 #include "app/sim/SimulationController.h"
+#include "ui/panels/DisplayText.h"
 
 #include <QDebug>
 #include <QDir>
@@ -108,9 +109,10 @@ void SceneFiles::offerRecovery(const QString& recoveryDir) {
         emit message(problem);
     }
     if (!recovery) return;
-    const QString from = recovery->originalPath.isEmpty()
-                             ? tr("an unsaved scene")
-                             : QDir::toNativeSeparators(recovery->originalPath);
+    const QString from =
+        recovery->originalPath.isEmpty()
+            ? tr("an unsaved scene")
+            : ui::shownText(QDir::toNativeSeparators(recovery->originalPath), 1000);
     const QString when = QLocale().toString(recovery->savedAt.toLocalTime(), QLocale::ShortFormat);
     const auto answer = QMessageBox::question(
         &window_, tr("Recover the last scene?"),

@@ -1,6 +1,8 @@
 // Issue #38: what the app reads at start and shows cannot hang or exhaust it.
 // - a settings file or a recovery sidecar that is a FIFO (the start blocked for ever) or a link
 //   to /dev/zero (read until memory ran out) is removed with a message, never read;
+// - a scene whose name and description are one word of a million characters loads and shows
+//   at once, with a bounded window title;
 
 #include "app/desktop/MainWindow.h"
 #include "app/document/Autosave.h"
@@ -176,6 +178,37 @@ private slots:
         QVERIFY(!Autosave::findRecovery(recovery, &problems).has_value());
         QVERIFY(!QFileInfo::exists(Autosave::recoveryFilePath(recovery)));
         QVERIFY2(problems.join(' ').contains("FIFO"), qPrintable(problems.join(' ')));
+    }
+
+    // Item 2: one word of a million characters as the name and as the description.
+    void aMillionCharacterNameShowsAtOnce() {
+        MainWindow w;
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        SceneDesc scene = testing::freeScene();
+        scene.name = std::string(1'000'000, 'w');
+        scene.description = std::string(1'000'000, 'd');
+        scene.particles[0].id = std::string(100'000, 'p');
+        scene.springs[0].a = scene.particles[0].id;
+        QElapsedTimer clock;
+        clock.start();
+        QString error;
+        QVERIFY2(w.document().loadFromDesc(scene, {}, &error), qPrintable(error));
+        w.refreshNow();
+        QApplication::processEvents();
+        QVERIFY2(clock.elapsed() < 1000, qPrintable(QString::number(clock.elapsed())));
+        QVERIFY2(w.windowTitle().size() < 400, qPrintable(w.windowTitle().left(100)));
+        QVERIFY(w.windowTitle().contains(QChar(0x2026)));
+        const auto* notes = w.findChild<QTextBrowser*>(QStringLiteral("notes"));
+        QVERIFY(notes);
+        QVERIFY(notes->toPlainText().size() < 100'000);
+        const auto* tree = w.findChild<QTreeWidget*>(QStringLiteral("objects"));
+        QVERIFY(tree);
+        for (QTreeWidgetItemIterator it(const_cast<QTreeWidget*>(tree)); *it; ++it)
+            QVERIFY((*it)->text(0).size() <= 1000);
+        // The scene keeps its full name: a save writes it whole.
+        QCOMPARE(w.document().setup().name.size(), std::size_t(1'000'000));
     }
 };
 
