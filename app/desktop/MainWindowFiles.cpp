@@ -198,10 +198,15 @@ void MainWindow::readSettings() {
         return;
     }
     const QSettings settings;
-    // No saved geometry (the first start) or one that no longer fits: a size that shows it all.
-    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
+    // No saved geometry (the first start), one that is not ours (Qt's is under 100 bytes, its
+    // dock state a few kilobytes) or one that no longer fits: a size that shows it all.
+    const QByteArray geometry = settings.value(QStringLiteral("window/geometry")).toByteArray();
+    if (geometry.size() > 4096 || !restoreGeometry(geometry) || width() < 320 || height() < 240 ||
+        width() > 16384 || height() > 16384)
         resize(1400, 880);
-    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    if (const QByteArray state = settings.value(QStringLiteral("window/state")).toByteArray();
+        state.size() <= 256 * 1024)
+        restoreState(state);
     files_->readSettings(settings);
     parametersPresenter_->readSettings(settings);
     canvasPresenter_->readSettings(settings);

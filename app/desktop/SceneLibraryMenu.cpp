@@ -49,7 +49,17 @@ void RecentFiles::add(const QString& path) {
 }
 
 void RecentFiles::readSettings(const QSettings& settings) {
-    paths_ = settings.value(QStringLiteral("recentFiles")).toStringList();
+    // Only names are read (no file is opened until one is chosen); a damaged or hand-edited
+    // list is cut to kMaxFiles names that a system could hold (empty, over 4096 characters
+    // or holding a NUL are dropped).
+    paths_.clear();
+    const QStringList stored = settings.value(QStringLiteral("recentFiles")).toStringList();
+    for (const QString& path : stored) {
+        if (paths_.size() >= kMaxFiles) break;
+        if (!path.isEmpty() && path.size() <= 4096 && !path.contains(QChar(u'\0')) &&
+            !paths_.contains(path))
+            paths_.append(path);
+    }
     updateMenu();
 }
 

@@ -3,6 +3,7 @@
 //   to /dev/zero (read until memory ran out) is removed with a message, never read;
 // - a scene whose name and description are one word of a million characters loads and shows
 //   at once, with a bounded window title;
+// - a settings file saying speed=nan (or inf, negative, huge) does not stop Play;
 
 #include "app/desktop/MainWindow.h"
 #include "app/document/Autosave.h"
@@ -209,6 +210,34 @@ private slots:
             QVERIFY((*it)->text(0).size() <= 1000);
         // The scene keeps its full name: a save writes it whole.
         QCOMPARE(w.document().setup().name.size(), std::size_t(1'000'000));
+    }
+
+    // Item 3: every number read from the settings is checked.
+    void badSpeedInTheSettingsKeepsPlayRunning_data() {
+        QTest::addColumn<QString>("speed");
+        for (const char* s : {"nan", "inf", "-inf", "-1", "0", "1e308", "fast"})
+            QTest::newRow(s) << QString::fromLatin1(s);
+    }
+    void badSpeedInTheSettingsKeepsPlayRunning() {
+        QFETCH(QString, speed);
+        {
+            QSettings settings;
+            settings.setValue(QStringLiteral("simulation/speed"), speed);
+            settings.setValue(QStringLiteral("window/geometry"), QByteArray(100'000, 'g'));
+            settings.sync();
+        }
+        MainWindow w;
+        QCOMPARE(w.controller().speed(), 1.0);
+        QVERIFY(w.width() >= 320 && w.width() <= 16384);
+        w.show();
+        QVERIFY(w.openFile(QStringLiteral(":/scenes/demo.phasebox.json"), true));
+        const double before = w.document().world().time();
+        w.controller().play();
+        QTest::qWait(400);
+        w.controller().pause();
+        QVERIFY2(w.document().world().time() > before + 0.05,
+                 qPrintable(QString::number(w.document().world().time())));
+        QSettings().clear();
     }
 };
 
