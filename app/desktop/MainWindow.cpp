@@ -393,6 +393,7 @@ AccuracyDialog* MainWindow::accuracyDialog() {
 void MainWindow::showAccuracyLab() {
     AccuracyDialog* dialog = accuracyDialog();
     if (!dialog->study().isRunning()) dialog->setScene(document_.setup());
+    dialog->setSceneFile(document_.filePath());
     dialog->show();
     dialog->raise();
 }

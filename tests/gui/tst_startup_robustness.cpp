@@ -4,6 +4,7 @@
 // - a scene whose name and description are one word of a million characters loads and shows
 //   at once, with a bounded window title;
 // - a settings file saying speed=nan (or inf, negative, huge) does not stop Play;
+// - a screenshot, or an export, onto the open scene's file (or a link to it) is refused.
 
 #include "app/desktop/MainWindow.h"
 #include "app/document/Autosave.h"
@@ -238,6 +239,57 @@ private slots:
         QVERIFY2(w.document().world().time() > before + 0.05,
                  qPrintable(QString::number(w.document().world().time())));
         QSettings().clear();
+    }
+
+    // Item 4: the picture must not replace the scene it shows.
+    void screenshotOntoTheSceneIsRefused() {
+        QTemporaryDir dir;
+        const QString scene = dir.filePath("lesson.json");
+        QString error;
+        QVERIFY2(SceneIO::save(savedScene(), scene, &error), qPrintable(error));
+        QFile original(scene);
+        QVERIFY(original.open(QIODevice::ReadOnly));
+        const QByteArray bytes = original.readAll();
+        original.close();
+        QVERIFY(QFile::link(scene, dir.filePath("link.png")));
+        QVERIFY(QFile::link(scene, dir.filePath("link.json")));
+        const QList<QStringList> cases{
+            {scene, scene},
+            {dir.filePath("./lesson.json"), scene},
+            {dir.filePath("link.png"), scene},
+            {scene, dir.filePath("link.json")},
+        };
+        for (const QStringList& c : cases) {
+            QProcess app;
+            app.setProcessEnvironment(appEnvironment(dir));
+            app.start(QStringLiteral(PHASEBOX_DESKTOP), {"--screenshot", c[0], c[1]});
+            QVERIFY(app.waitForFinished(60000));
+            const QByteArray err = app.readAllStandardError();
+            QVERIFY2(app.exitCode() == 2, qPrintable(c.join(' ') + ": " + err));
+            QVERIFY2(err.contains("open scene's file"), err.constData());
+            QFile after(scene);
+            QVERIFY(after.open(QIODevice::ReadOnly));
+            QCOMPARE(after.readAll(), bytes);
+        }
+    }
+
+    // Item 4: the app's exports are refused onto the open scene's file too.
+    void exportsOntoTheOpenSceneAreRefused() {
+        QTemporaryDir dir;
+        const QString scene = dir.filePath("lesson.png");  // a scene may have any name
+        QString error;
+        QVERIFY2(SceneIO::save(savedScene(), scene, &error), qPrintable(error));
+        QVERIFY(QFile::link(scene, dir.filePath("link.png")));
+        MainWindow w;
+        QVERIFY2(w.openFile(scene, true, &error), qPrintable(error));
+        for (const QString& target : {scene, dir.filePath("link.png")}) {
+            QVERIFY(!w.exportCanvas(target, &error));
+            QVERIFY2(error.contains("open scene's file"), qPrintable(error));
+            QVERIFY(!w.exportPlot(ui::PlotsPanel::Plot::Energy, target, &error));
+            QVERIFY2(error.contains("open scene's file"), qPrintable(error));
+        }
+        QVERIFY(SceneIO::load(scene).ok());
+        QVERIFY(w.exportCanvas(dir.filePath("other.png"), &error));
     }
 };
 

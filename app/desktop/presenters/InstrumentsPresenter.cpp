@@ -607,6 +607,7 @@ void InstrumentsPresenter::refreshTable() {
 // ---- exports ----------------------------------------------------------------------------------
 
 bool InstrumentsPresenter::exportGraph(int index, const QString& path, QString* error) const {
+    if (!document_.mayWriteOutput(path, error)) return false;
     if (index < 0 || index >= static_cast<int>(graphs_.size()) ||
         graphs_[static_cast<std::size_t>(index)].y.isEmpty()) {
         if (error) *error = tr("graph %1 plots nothing: pick a probe first").arg(index + 1);
@@ -632,6 +633,7 @@ bool InstrumentsPresenter::exportGraph(int index, const QString& path, QString* 
 }
 
 bool InstrumentsPresenter::exportTable(const QString& path, QString* error) const {
+    if (!document_.mayWriteOutput(path, error)) return false;
     return probes_.writeCsv(path, {}, error);
 }
 
