@@ -1,6 +1,7 @@
 #include "app/desktop/AccuracyDialog.h"
 
 #include "app/accuracy/OrderAssessment.h"
+#include "app/document/Document.h"
 
 #include "app/io/ChartFile.h"
 #include "app/io/NumberFormat.h"
@@ -501,6 +502,7 @@ void AccuracyDialog::updateCheapest() {
 }
 
 bool AccuracyDialog::exportTo(const QString& path, QString* error) const {
+    if (!Document::mayWriteOutput(path, sceneFile_, error)) return false;
     if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) {
         OutputFile file(path, tr("the CSV file"));
         if (!file.open()) {

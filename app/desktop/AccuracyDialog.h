@@ -31,6 +31,8 @@ public:
 
     // The scene the next study runs on (a copy is taken when it starts).
     void setScene(const SceneDesc& scene);
+    // The open scene's file, which an export must not replace.
+    void setSceneFile(const QString& path) { sceneFile_ = path; }
     // The document's scene now: a study's result applies only to the scene it studied, so
     // Apply is disabled while they differ in anything but the simulation settings (which are
     // what Apply changes).
@@ -89,6 +91,7 @@ private:
     QPushButton* apply_ = nullptr;
     std::optional<AccuracyRecord> chosen_;
     QFont chartFont_;  // what the diagram's text was last sized from
+    QString sceneFile_;
 };
 
 }  // namespace phasebox

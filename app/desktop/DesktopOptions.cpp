@@ -3,6 +3,7 @@
 #include "app/desktop/MainWindow.h"
 #include "app/desktop/MeasureTools.h"
 #include "app/desktop/presenters/InstrumentsPresenter.h"
+#include "app/document/Document.h"
 #include "app/io/OutputFile.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
@@ -119,6 +120,8 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
 }
 
 int takeScreenshot(MainWindow& window, const DesktopOptions& options, QString* error) {
+    // The picture must not replace the scene it shows (the same file under any name).
+    if (!window.document().mayWriteOutput(options.screenshot, error)) return 2;
     window.show();
     QApplication::processEvents();
     int status = 0;
@@ -154,6 +157,13 @@ int runDesktop(QApplication& app) {
     QTextStream err(stderr);
     if (!parseDesktopOptions(app.arguments(), options, &error)) {
         err << "phasebox: error: " << error << "\n";
+        return 2;
+    }
+    // Refused before anything is opened: `--screenshot lesson.json lesson.json` (or a link to the
+    // scene) would replace the scene with a picture.
+    if (!options.screenshot.isEmpty() && !options.scene.isEmpty() &&
+        !Document::mayWriteOutput(options.screenshot, options.scene, &error)) {
+        err << "phasebox: error: --screenshot: " << error << "\n";
         return 2;
     }
     MainWindow window;

@@ -19,6 +19,7 @@
 #include "app/document/Autosave.h"
 #include "ui/canvas/SceneView.h"
 #include "ui/instruments/InstrumentsPanel.h"
+#include "ui/panels/DisplayText.h"
 #include "ui/panels/EffectsPanel.h"
 #include "ui/panels/ParametersPanel.h"
 #include "ui/panels/PropertiesPanel.h"
@@ -322,7 +323,8 @@ void MainWindow::updateTitle() {
     const QString name = path.isEmpty() || path.startsWith(QLatin1Char(':'))
                              ? QString::fromStdString(document_.setup().name)
                              : QFileInfo(path).fileName();
-    setWindowTitle((name.isEmpty() ? tr("Untitled") : name) + QStringLiteral("[*] — Phasebox"));
+    setWindowTitle((name.isEmpty() ? tr("Untitled") : ui::shownText(name)) +
+                   QStringLiteral("[*] — Phasebox"));
     setWindowModified(document_.isModified());
 }
 
@@ -405,6 +407,7 @@ AccuracyDialog* MainWindow::accuracyDialog() {
 void MainWindow::showAccuracyLab() {
     AccuracyDialog* dialog = accuracyDialog();
     if (!dialog->study().isRunning()) dialog->setScene(document_.setup());
+    dialog->setSceneFile(document_.filePath());
     dialog->show();
     dialog->raise();
 }

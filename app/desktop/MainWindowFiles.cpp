@@ -8,11 +8,15 @@
 #include "app/desktop/presenters/InstrumentsPresenter.h"
 #include "app/desktop/presenters/ParametersPresenter.h"
 #include "app/desktop/presenters/PlotsPresenter.h"
+#include "app/desktop/presenters/StatusPresenter.h"
 #include "app/document/Autosave.h"
+#include "app/io/InputFile.h"
 #include "ui/canvas/SceneView.h"
 
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDebug>
+#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -20,6 +24,8 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSettings>
+#include <QStandardPaths>
+#include <QTimer>
 
 namespace phasebox {
 
@@ -132,12 +138,75 @@ void MainWindow::dropEvent(QDropEvent* event) {
     event->acceptProposedAction();
 }
 
+namespace {
+// QSettings opens and reads its file with no bound: a FIFO there blocks the start for ever, and
+// a link to /dev/zero is read until memory runs out. So before the first QSettings, the user's
+// settings files (Qt's names for them: ORGANIZATION/APPLICATION.conf and ORGANIZATION.conf in
+// the generic config folder) are checked without being opened: one that is not a regular file
+// is removed (a link, not its target), and one larger than 1 MiB (ours hold a few kilobytes)
+// is moved aside as NAME.too-large. Says what was done in *problems, one line each; false when
+// a file that must not be read is still there (then no QSettings may be made).
+bool guardSettingsFiles(QStringList* problems) {
+    bool safe = true;
+    if (QSettings::defaultFormat() != QSettings::NativeFormat &&
+        QSettings::defaultFormat() != QSettings::IniFormat)
+        return safe;
+#if defined(Q_OS_UNIX) && !defined(Q_OS_DARWIN)
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::GenericConfigLocation);
+    const QString organization = QCoreApplication::organizationName().isEmpty()
+                                     ? QStringLiteral("Unknown Organization")  // as QSettings
+                                     : QCoreApplication::organizationName();
+    const QString application = QCoreApplication::applicationName();
+    QStringList paths{folder + QLatin1Char('/') + organization + QStringLiteral(".conf")};
+    if (!application.isEmpty())
+        paths.prepend(folder + QLatin1Char('/') + organization + QLatin1Char('/') + application +
+                      QStringLiteral(".conf"));
+    constexpr qint64 kMaxSettingsBytes = 1024 * 1024;
+    for (const QString& path : std::as_const(paths)) {
+        if (const QString kind = inputfile::irregularKind(path); !kind.isEmpty()) {
+            const bool removed = QFileInfo(path).isDir() ? QDir().rmdir(path) : QFile::remove(path);
+            safe = safe && removed;
+            *problems << QStringLiteral(
+                             "%1: it is %2, not a settings file; %3 (default settings used)")
+                             .arg(path, kind,
+                                  removed ? QStringLiteral("removed") : QStringLiteral("ignored"));
+        } else if (const QFileInfo info(path); info.isFile() && info.size() > kMaxSettingsBytes) {
+            const QString aside = path + QStringLiteral(".too-large");
+            QFile::remove(aside);
+            const bool moved = QFile::rename(path, aside);
+            safe = safe && moved;
+            *problems << QStringLiteral(
+                             "%1: the settings file is larger than 1 MiB; %2 (default "
+                             "settings used)")
+                             .arg(path, moved ? QStringLiteral("moved to ") + aside
+                                              : QStringLiteral("could not move it aside"));
+        }
+    }
+#endif
+    return safe;
+}
+}  // namespace
+
 void MainWindow::readSettings() {
-    const QSettings settings;
-    // No saved geometry (the first start) or one that no longer fits: a size that shows it all.
-    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
+    QStringList problems;
+    const bool safe = guardSettingsFiles(&problems);
+    for (const QString& problem : problems) qWarning().noquote() << "phasebox:" << problem;
+    if (!problems.isEmpty())
+        QTimer::singleShot(0, this, [this, problems] { status_->showMessage(problems.join(' ')); });
+    if (!safe) {  // a file that could not be removed or moved aside: nothing is read from it
         resize(1400, 880);
-    layoutRestored_ = restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+        return;
+    }
+    const QSettings settings;
+    // No saved geometry (the first start), one that is not ours (Qt's is under 100 bytes, its
+    // dock state a few kilobytes) or one that no longer fits: a size that shows it all.
+    const QByteArray geometry = settings.value(QStringLiteral("window/geometry")).toByteArray();
+    if (geometry.size() > 4096 || !restoreGeometry(geometry) || width() < 320 || height() < 240 ||
+        width() > 16384 || height() > 16384)
+        resize(1400, 880);
+    if (const QByteArray state = settings.value(QStringLiteral("window/state")).toByteArray();
+        state.size() <= 256 * 1024)
+        layoutRestored_ = restoreState(state);
     files_->readSettings(settings);
     parametersPresenter_->readSettings(settings);
     canvasPresenter_->readSettings(settings);

@@ -5,7 +5,9 @@
 #include "app/document/Document.h"
 #include "app/io/SceneIO.h"
 #include "app/sim/SimulationController.h"
+#include "ui/panels/DisplayText.h"
 
+#include <QDebug>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -100,11 +102,17 @@ bool SceneFiles::saveTo(const QString& path, QString* error) {
 }
 
 void SceneFiles::offerRecovery(const QString& recoveryDir) {
-    const auto recovery = Autosave::findRecovery(recoveryDir);
+    QStringList problems;
+    const auto recovery = Autosave::findRecovery(recoveryDir, &problems);
+    for (const QString& problem : std::as_const(problems)) {
+        qWarning().noquote() << "phasebox:" << problem;
+        emit message(problem);
+    }
     if (!recovery) return;
-    const QString from = recovery->originalPath.isEmpty()
-                             ? tr("an unsaved scene")
-                             : QDir::toNativeSeparators(recovery->originalPath);
+    const QString from =
+        recovery->originalPath.isEmpty()
+            ? tr("an unsaved scene")
+            : ui::shownText(QDir::toNativeSeparators(recovery->originalPath), 1000);
     const QString when = QLocale().toString(recovery->savedAt.toLocalTime(), QLocale::ShortFormat);
     const auto answer = QMessageBox::question(
         &window_, tr("Recover the last scene?"),

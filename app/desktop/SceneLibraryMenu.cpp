@@ -1,6 +1,7 @@
 #include "app/desktop/SceneLibraryMenu.h"
 
 #include "app/io/SceneIO.h"
+#include "ui/panels/DisplayText.h"
 
 #include <QAction>
 #include <QDir>
@@ -23,10 +24,11 @@ void fillSceneLibraryMenu(QMenu& menu, const QString& folder,
     for (const QString& path : builtInScenes(folder)) {
         const SceneLoadResult loaded = SceneIO::load(path);
         const QString title = loaded.ok() && !loaded.scene->name.empty()
-                                  ? QString::fromStdString(loaded.scene->name)
+                                  ? ui::shownText(QString::fromStdString(loaded.scene->name))
                                   : QFileInfo(path).completeBaseName();
         QAction* a = menu.addAction(title, &menu, [open, path] { open(path); });
-        if (loaded.ok()) a->setToolTip(QString::fromStdString(loaded.scene->description));
+        if (loaded.ok())
+            a->setToolTip(ui::shownDescription(QString::fromStdString(loaded.scene->description)));
         a->setData(path);
     }
     menu.setToolTipsVisible(true);
@@ -47,7 +49,17 @@ void RecentFiles::add(const QString& path) {
 }
 
 void RecentFiles::readSettings(const QSettings& settings) {
-    paths_ = settings.value(QStringLiteral("recentFiles")).toStringList();
+    // Only names are read (no file is opened until one is chosen); a damaged or hand-edited
+    // list is cut to kMaxFiles names that a system could hold (empty, over 4096 characters
+    // or holding a NUL are dropped).
+    paths_.clear();
+    const QStringList stored = settings.value(QStringLiteral("recentFiles")).toStringList();
+    for (const QString& path : stored) {
+        if (paths_.size() >= kMaxFiles) break;
+        if (!path.isEmpty() && path.size() <= 4096 && !path.contains(QChar(u'\0')) &&
+            !paths_.contains(path))
+            paths_.append(path);
+    }
     updateMenu();
 }
 
@@ -58,8 +70,10 @@ void RecentFiles::writeSettings(QSettings& settings) const {
 void RecentFiles::updateMenu() {
     menu_.clear();
     for (const QString& path : paths_)
-        menu_.addAction(QFileInfo(path).fileName(), this, [this, path] { open_(path); })
-            ->setToolTip(path);
+        menu_
+            .addAction(ui::shownText(QFileInfo(path).fileName()), this,
+                       [this, path] { open_(path); })
+            ->setToolTip(ui::shownText(path, 1000));
     menu_.setEnabled(!paths_.isEmpty());
 }
 

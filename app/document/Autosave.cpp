@@ -1,6 +1,7 @@
 #include "app/document/Autosave.h"
 
 #include "app/document/Document.h"
+#include "app/io/InputFile.h"
 #include "app/io/OutputFile.h"
 #include "app/io/SceneIO.h"
 
@@ -109,20 +110,44 @@ bool Autosave::removeRecovery(const QString& recoveryDir) {
     return ok;
 }
 
-std::optional<RecoveryInfo> Autosave::findRecovery(const QString& recoveryDir) {
-    const QFileInfo scene(recoveryFilePath(recoveryDir));
+namespace {
+// Removes path when it exists and is not a regular file (never opening it); says so.
+bool removeIfIrregular(const QString& path, QStringList* problems) {
+    const QString kind = inputfile::irregularKind(path);
+    if (kind.isEmpty()) return false;
+    const bool removed = QFileInfo(path).isDir() ? QDir().rmdir(path) : QFile::remove(path);
+    if (problems)
+        *problems << QStringLiteral("%1: it is %2, not a recovery file; %3")
+                         .arg(path, kind,
+                              removed ? QStringLiteral("removed") : QStringLiteral("ignored"));
+    return true;
+}
+}  // namespace
+
+std::optional<RecoveryInfo> Autosave::findRecovery(const QString& recoveryDir,
+                                                   QStringList* problems) {
+    const QString scenePath = recoveryFilePath(recoveryDir);
+    const QString sidecarPath = sidecarFilePath(recoveryDir);
+    removeIfIrregular(scenePath, problems);
+    const bool irregularSidecar = removeIfIrregular(sidecarPath, problems);
+    const QFileInfo scene(scenePath);
     if (!scene.isFile()) return std::nullopt;
     RecoveryInfo info;
     info.recoveryFile = scene.filePath();
     info.savedAt = scene.lastModified().toUTC();
-    QFile sidecar(sidecarFilePath(recoveryDir));
     // A sidecar is a few hundred bytes; a larger one is not ours and is not read.
-    if (sidecar.open(QIODevice::ReadOnly) && sidecar.size() < 64 * 1024) {
-        const QJsonObject object = QJsonDocument::fromJson(sidecar.readAll()).object();
+    QByteArray bytes;
+    QString error;
+    if (!irregularSidecar && QFileInfo::exists(sidecarPath) &&
+        inputfile::readAll(sidecarPath, 64 * 1024, &bytes, &error,
+                           QStringLiteral("recovery file"))) {
+        const QJsonObject object = QJsonDocument::fromJson(bytes).object();
         info.originalPath = object.value(QStringLiteral("original_path")).toString();
         const QDateTime savedAt = QDateTime::fromString(
             object.value(QStringLiteral("saved_at")).toString(), Qt::ISODateWithMs);
         if (savedAt.isValid()) info.savedAt = savedAt.toUTC();
+    } else if (!error.isEmpty() && problems) {
+        *problems << error;
     }
     return info;
 }

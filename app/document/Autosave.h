@@ -12,6 +12,7 @@
 #include <QDateTime>
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QTimer>
 
 #include <optional>
@@ -47,8 +48,12 @@ public:
     // The recovery left by an earlier session, or nothing. A sidecar that is missing or
     // unreadable still yields the scene (a lost path must not lose the work): originalPath is
     // then empty and savedAt the file's modification time.
+    // Nothing is read that could block or has no end: a recovery file or sidecar that is not
+    // a regular file (a FIFO, a device, a link to /dev/zero, a folder) is removed (a link, not
+    // its target) and never opened, with one line for each in *problems; a sidecar over 64 KiB
+    // is not ours and is ignored.
     static std::optional<RecoveryInfo> findRecovery(
-        const QString& recoveryDir = defaultRecoveryDir());
+        const QString& recoveryDir = defaultRecoveryDir(), QStringList* problems = nullptr);
     // Removes a recovery file and its sidecar (after the user declined or took the recovery).
     static bool removeRecovery(const QString& recoveryDir);
 

@@ -1,6 +1,7 @@
 #include "app/document/Document.h"
 
 #include "app/document/Commands.h"
+#include "app/io/OutputFile.h"
 #include "app/io/SceneIO.h"
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/effects/MouseSpringEffect.h"
@@ -9,6 +10,7 @@
 #include "physics/scene/StateTransfer.h"
 #include "physics/world/World.h"
 
+#include <QFileInfo>
 #include <QtGlobal>
 
 #include <cmath>
@@ -403,6 +405,23 @@ void Document::releaseGrab() {
 
 const MouseSpringEffect* Document::mouseSpring() const {
     return mouseSpring_;
+}
+
+bool Document::mayWriteOutput(const QString& path, QString* error) const {
+    return mayWriteOutput(path, filePath_, error);
+}
+
+bool Document::mayWriteOutput(const QString& path, const QString& sceneFile, QString* error) {
+    if (sceneFile.isEmpty() || sceneFile.startsWith(QLatin1Char(':'))) return true;
+    const QString canonical = QFileInfo(path).canonicalFilePath();
+    const bool same =
+        OutputFile::sameFile(path, sceneFile) ||
+        (!canonical.isEmpty() && canonical == QFileInfo(sceneFile).canonicalFilePath());
+    if (!same) return true;
+    if (error)
+        *error = QStringLiteral("%1: this is the open scene's file (%2); choose another name")
+                     .arg(path, QFileInfo(sceneFile).fileName());
+    return false;
 }
 
 }  // namespace phasebox

@@ -55,6 +55,11 @@ public:
 
     QUndoStack* undoStack() { return &undoStack_; }
     QString filePath() const { return filePath_; }
+    // Whether an export may write path: not when it is the open scene's file under any name
+    // (the path, another spelling, a hard or symbolic link), which the export would replace.
+    // False with *error "PATH: this is the open scene's file (NAME); choose another name".
+    bool mayWriteOutput(const QString& path, QString* error) const;
+    static bool mayWriteOutput(const QString& path, const QString& sceneFile, QString* error);
     bool isModified() const { return !undoStack_.isClean(); }
 
     // ---- files --------------------------------------------------------------------------

@@ -1,5 +1,6 @@
 #include "app/io/SceneIO.h"
 
+#include "app/io/InputFile.h"
 #include "app/io/JsonText.h"
 #include "physics/scene/SceneSchema.h"
 
@@ -21,12 +22,6 @@
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#if defined(Q_OS_UNIX)
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-#endif
 
 namespace phasebox {
 
@@ -649,57 +644,6 @@ bool readHeader(Reader& r, const QJsonObject& top) {
     return r.clean();
 }
 
-// Opens path for reading if it is a regular file (or a built-in :/ resource); otherwise says
-// what it is. A FIFO would block the open until someone writes to it, and a device such as
-// /dev/zero or /dev/urandom would be read for ever, so neither is opened the ordinary way: the
-// file is opened without blocking and its type checked on the open descriptor, which also
-// leaves no gap for it to be swapped between a check and the open.
-QString openForReading(const QString& path, QFile& file) {
-    const QString cannot = QStringLiteral("cannot read the file: ");
-    // The system's calls end a name at its first NUL: another file would be read.
-    if (path.contains(QChar(u'\0')))
-        return cannot + QStringLiteral("the name holds a NUL character");
-#if defined(Q_OS_UNIX)
-    if (!path.startsWith(QLatin1Char(':'))) {
-        const int fd =
-            ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-        if (fd < 0) return cannot + QString::fromLocal8Bit(std::strerror(errno));
-        struct stat st {};
-        QString what;
-        if (::fstat(fd, &st) != 0)
-            what = QString::fromLocal8Bit(std::strerror(errno));
-        else if (S_ISDIR(st.st_mode))
-            what = QStringLiteral("it is a folder");
-        else if (S_ISFIFO(st.st_mode))
-            what = QStringLiteral("it is a FIFO (named pipe), not a scene file");
-        else if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
-            what = QStringLiteral("it is a device, not a scene file");
-        else if (S_ISSOCK(st.st_mode))
-            what = QStringLiteral("it is a socket, not a scene file");
-        else if (!S_ISREG(st.st_mode))
-            what = QStringLiteral("it is not a regular file");
-        if (!what.isEmpty()) {
-            ::close(fd);
-            return cannot + what;
-        }
-        // Back to blocking reads for the regular file; QFile owns the descriptor from here.
-        ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-        if (!file.open(fd, QIODevice::ReadOnly, QFileDevice::AutoCloseHandle)) {
-            ::close(fd);
-            return cannot + file.errorString();
-        }
-        return {};
-    }
-#endif
-    // QFile refuses a directory with "Unknown error", which tells the user nothing.
-    const QFileInfo info(path);
-    if (info.isDir()) return cannot + QStringLiteral("it is a folder");
-    if (info.exists() && !info.isFile()) return cannot + QStringLiteral("it is not a regular file");
-    file.setFileName(path);
-    if (!file.open(QIODevice::ReadOnly)) return cannot + file.errorString();
-    return {};
-}
-
 }  // namespace
 
 SceneLoadResult SceneIO::load(const QString& path) {
@@ -709,7 +653,7 @@ SceneLoadResult SceneIO::load(const QString& path) {
         return result;
     };
     QFile file;
-    if (const QString refused = openForReading(path, file); !refused.isEmpty())
+    if (const QString refused = inputfile::open(path, file); !refused.isEmpty())
         return fail(refused);
     const QString tooLarge =
         QStringLiteral("the file is larger than 64 MiB, too large for a scene");

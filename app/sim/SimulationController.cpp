@@ -34,6 +34,9 @@ SimulationController::SimulationController(Document& document, QObject* parent)
 }
 
 void SimulationController::setSpeed(double speed) {
+    // std::clamp passes a NaN through, and a NaN speed never fills the backlog: Play would
+    // run no step at all.
+    if (!std::isfinite(speed)) return;
     speed_ = std::clamp(speed, kMinSpeed, kMaxSpeed);
 }
 

@@ -1,6 +1,7 @@
 #include "ui/panels/SceneBrowser.h"
 
 #include "physics/scene/SceneSchema.h"
+#include "ui/panels/DisplayText.h"
 
 #include <QHash>
 #include <QHeaderView>
@@ -144,9 +145,11 @@ QTreeWidgetItem* SceneBrowser::addGroup(const QString& key, const QString& title
 
 void SceneBrowser::addObject(QTreeWidgetItem* group, const QString& id, const QString& summary) {
     auto* item = new QTreeWidgetItem(group);
-    item->setText(kIdColumn, id);
-    item->setText(kSummaryColumn, summary);
-    item->setToolTip(kSummaryColumn, summary);
+    // Shown cut (a long id would be laid out whole, and the column sized to it); the full id
+    // stays in kIdRole, which selection uses.
+    item->setText(kIdColumn, shownText(id));
+    item->setText(kSummaryColumn, shownText(summary, 1000));
+    item->setToolTip(kSummaryColumn, shownText(summary, 1000));
     item->setData(kIdColumn, kIdRole, id);
 }
 

@@ -239,6 +239,7 @@ void CanvasPresenter::showSelection() {
 }
 
 bool CanvasPresenter::exportPicture(const QString& path, QString* error) const {
+    if (!document_.mayWriteOutput(path, error)) return false;
     const QImage image = view_.renderImage(view_.size().expandedTo(QSize(800, 600)));
     QBuffer png;
     png.open(QIODevice::WriteOnly);

@@ -12,6 +12,7 @@
 #include "ui/instruments/ProbeTableView.h"
 #include "ui/instruments/ReadoutView.h"
 #include "ui/instruments/TimerView.h"
+#include "ui/panels/DisplayText.h"
 #include "ui/plots/ProbeChart.h"
 
 #include <QAction>
@@ -606,6 +607,7 @@ void InstrumentsPresenter::refreshTable() {
 // ---- exports ----------------------------------------------------------------------------------
 
 bool InstrumentsPresenter::exportGraph(int index, const QString& path, QString* error) const {
+    if (!document_.mayWriteOutput(path, error)) return false;
     if (index < 0 || index >= static_cast<int>(graphs_.size()) ||
         graphs_[static_cast<std::size_t>(index)].y.isEmpty()) {
         if (error) *error = tr("graph %1 plots nothing: pick a probe first").arg(index + 1);
@@ -620,9 +622,10 @@ bool InstrumentsPresenter::exportGraph(int index, const QString& path, QString* 
     const SceneDesc& setup = document_.setup();
     const QString title =
         tr("%1 against %2 — %3 (%4, dt %5 s)")
-            .arg(graph.y, graph.x.isEmpty() ? tr("time") : graph.x,
-                 QString::fromStdString(setup.name.empty() ? "Untitled" : setup.name),
-                 QString::fromStdString(setup.simulation.integrator))
+            .arg(
+                graph.y, graph.x.isEmpty() ? tr("time") : graph.x,
+                ui::shownText(QString::fromStdString(setup.name.empty() ? "Untitled" : setup.name)),
+                QString::fromStdString(setup.simulation.integrator))
             .arg(setup.simulation.dt, 0, 'g', 4);
     std::unique_ptr<QChart> chart(ui::createProbeChart(
         graphPoints(graph), axisTitle(graph.x), axisTitle(graph.y), title, graph.x.isEmpty()));
@@ -630,6 +633,7 @@ bool InstrumentsPresenter::exportGraph(int index, const QString& path, QString* 
 }
 
 bool InstrumentsPresenter::exportTable(const QString& path, QString* error) const {
+    if (!document_.mayWriteOutput(path, error)) return false;
     return probes_.writeCsv(path, {}, error);
 }
 

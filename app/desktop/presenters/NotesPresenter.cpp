@@ -1,6 +1,7 @@
 #include "app/desktop/presenters/NotesPresenter.h"
 
 #include "app/document/Document.h"
+#include "ui/panels/DisplayText.h"
 
 #include <QTextBrowser>
 
@@ -9,6 +10,9 @@ namespace phasebox {
 NotesPresenter::NotesPresenter(QTextBrowser& notes, Document& document, QObject* parent)
     : Presenter(parent), notes_(notes), document_(document) {
     notes_.setOpenExternalLinks(true);
+    // A long word (a URL, a formula, a damaged file's single million-character word) wraps
+    // anywhere instead of being laid out as one line.
+    notes_.setWordWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
     connect(&document_, &Document::sceneReset, this, [this] {
         refresh();
         if (!document_.setup().description.empty()) emit notesToRead();
@@ -17,9 +21,10 @@ NotesPresenter::NotesPresenter(QTextBrowser& notes, Document& document, QObject*
 
 void NotesPresenter::refresh() {
     const SceneDesc& scene = document_.setup();
-    notes_.setHtml(QStringLiteral("<h3>%1</h3><p>%2</p>")
-                       .arg(QString::fromStdString(scene.name).toHtmlEscaped(),
-                            QString::fromStdString(scene.description).toHtmlEscaped()));
+    notes_.setHtml(
+        QStringLiteral("<h3>%1</h3><p>%2</p>")
+            .arg(ui::shownText(QString::fromStdString(scene.name)).toHtmlEscaped(),
+                 ui::shownDescription(QString::fromStdString(scene.description)).toHtmlEscaped()));
 }
 
 }  // namespace phasebox

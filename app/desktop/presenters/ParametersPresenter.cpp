@@ -83,7 +83,14 @@ void ParametersPresenter::createActions(QWidget& window) {
 }
 
 void ParametersPresenter::readSettings(const QSettings& settings) {
-    setSpeed(settings.value(QStringLiteral("simulation/speed"), 1.0).toDouble());
+    // A hand-edited or damaged file may hold anything: not a number, nan, inf, a negative or
+    // huge speed. Those give the default, as a missing key does.
+    bool ok = false;
+    const double speed = settings.value(QStringLiteral("simulation/speed"), 1.0).toDouble(&ok);
+    setSpeed(ok && std::isfinite(speed) && speed >= SimulationController::kMinSpeed &&
+                     speed <= SimulationController::kMaxSpeed
+                 ? speed
+                 : 1.0);
 }
 
 void ParametersPresenter::writeSettings(QSettings& settings) const {

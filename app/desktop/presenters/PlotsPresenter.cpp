@@ -143,6 +143,7 @@ void PlotsPresenter::choosePhaseCoordinate(const QString& coordinate) {
 bool PlotsPresenter::exportPlot(ui::PlotsPanel::Plot plot, const QString& path,
                                 QString* error) const {
     using Plot = ui::PlotsPanel::Plot;
+    if (!document_.mayWriteOutput(path, error)) return false;
     if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) {
         switch (plot) {
             case Plot::Energy:
