@@ -184,6 +184,40 @@ private slots:
             << QByteArray(
                    R"({"format": "phasebox-scene", "version": 1, "simulation": {"duration": 1e300}})")
             << ": simulation.duration: must be <= 1e6 (got 1e300)";
+        // Issue #38: simulation.sleep took any value; it is a boolean (CONTRACT §6).
+        QTest::newRow("sleep a string")
+            << QByteArray(
+                   R"({"format": "phasebox-scene", "version": 2, "simulation": {"sleep": "yes"}})")
+            << ": simulation.sleep: must be true or false";
+        QTest::newRow("sleep a number")
+            << QByteArray(
+                   R"({"format": "phasebox-scene", "version": 2, "simulation": {"sleep": 1}})")
+            << ": simulation.sleep: must be true or false";
+        // Issue #38: Qt calls a comment or a single-quoted string an "unterminated object"
+        // somewhere after it, and drops the backslash of an invalid escape ("C:\lessons" read
+        // as "C:lessons"). Each is named where it starts.
+        QTest::newRow("line comment") << QByteArray(
+                                             "{\"format\": \"phasebox-scene\", \"version\": 1,\n"
+                                             "  // the ball\n  \"particles\": []}")
+                                      << ":2:3: JSON has no comments; remove the // comment";
+        QTest::newRow("block comment")
+            << QByteArray("{\"format\": \"phasebox-scene\", /* v1 */ \"version\": 1}")
+            << ":1:30: JSON has no comments; remove the /* */ comment";
+        QTest::newRow("comment after the object")
+            << QByteArray("{\"format\": \"phasebox-scene\", \"version\": 1}\n// end\n")
+            << ":2:1: JSON has no comments; remove the // comment";
+        QTest::newRow("single-quoted value")
+            << QByteArray("{\"format\": 'phasebox-scene', \"version\": 1}")
+            << ":1:12: strings take double quotes (\"...\"), not single quotes";
+        QTest::newRow("single-quoted key")
+            << QByteArray("{\"format\": \"phasebox-scene\",\n 'version': 1}")
+            << ":2:2: strings take double quotes (\"...\"), not single quotes";
+        QTest::newRow("invalid escape")
+            << QByteArray(R"({"format": "phasebox-scene", "version": 1, "name": "C:\lessons"})")
+            << ":1:55: invalid escape \\l; write \\\\ for a backslash";
+        QTest::newRow("invalid unicode escape")
+            << QByteArray(R"({"format": "phasebox-scene", "version": 1, "name": "\u12"})")
+            << ":1:53: invalid escape \\u: it takes four hexadecimal digits (\\u00e9)";
     }
 
     void badSceneFilesExitTwo() {
