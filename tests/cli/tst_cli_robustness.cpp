@@ -115,6 +115,21 @@ private slots:
             "unexpected argument \"other.json\" (the scene is \"BALL\")");
         row("json and csv on stdout", {"--json", "--csv", "-"},
             "--json and --csv - both write to standard output; give --csv a file");
+        // Issue #38: an empty output name was ignored (exit 0), a repeated output option kept
+        // only the last one.
+        row("csv empty", {"--csv", ""},
+            "--csv: the file name is empty; give a file, or - for standard output");
+        row("plot-energy empty", {"--plot-energy", ""},
+            "--plot-energy: the file name is empty; give a file, or - for standard output");
+        row("csv twice", {"--csv", "a.csv", "--csv", "b.csv"},
+            "--csv given twice; each output is written once, give it one file");
+        row("plot-energy twice", {"--plot-energy", "a.png", "--plot-energy", "b.png"},
+            "--plot-energy given twice; each output is written once, give it one file");
+        row("plot-phase twice",
+            {"--plot-phase", "ball.x", "a.png", "--plot-phase", "ball.y", "b.png"},
+            "--plot-phase given twice; each output is written once, give it one file");
+        row("json and csv /dev/stdout", {"--json", "--csv", "/dev/stdout"},
+            "--json and --csv /dev/stdout both write to standard output; give --csv a file");
         row("unknown track id", {"--track", "ghost"}, "--track: unknown object id \"ghost\"");
         row("phase of nothing", {"--plot-phase", "ghost.x", "p.png"},
             "--plot-phase: unknown object \"ghost.x\" (expected ID.COORD, e.g. ball.x)");
@@ -231,6 +246,16 @@ private slots:
             QCOMPARE(firstMessage(r.err),
                      QStringLiteral("phasebox-cli: error: ") + path + expected);
         }
+    }
+
+    // Issue #38: `accuracy --duration 1e7` blamed the scene file (simulation.duration); the
+    // message names the option.
+    void accuracyDurationOutOfRangeNamesTheOption() {
+        const Result r = cli({"accuracy", ball_, "--duration", "1e7"}, 30000);
+        QCOMPARE(r.status, 2);
+        QCOMPARE(
+            firstMessage(r.err),
+            QStringLiteral("phasebox-cli: error: --duration: must be > 0 and <= 1e6 (got 1e7)"));
     }
 
     // An output that cannot be written is exit 3 (CONTRACT §4), not bad input.
