@@ -100,6 +100,7 @@ QString parseNumbers(const QString& option, const QString& text, double upper,
 QString parseOptions(const QStringList& args, AccuracyCliOptions& o) {
     static const QStringList withValue{"--integrators", "--dt",  "--duration",
                                        "--tolerances",  "--csv", "--plot"};
+    QStringList outputsSeen;
     for (int i = 0; i < args.size(); ++i) {
         const QString& a = args[i];
         if (!a.startsWith(QLatin1String("--")) || a == QLatin1String("-")) {
@@ -146,10 +147,17 @@ QString parseOptions(const QStringList& args, AccuracyCliOptions& o) {
             if (!(error = parseNumbers(a, v, kUnbounded, d)).isEmpty()) return error;
             if (d.size() != 1)
                 return QStringLiteral("--duration takes one number (got \"%1\")").arg(v);
+            // The scene's own bound, named as the option's: the study would otherwise refuse
+            // it as the scene's simulation.duration (issue #38).
+            static_assert(SceneLimits::kMaxDuration == 1e6);
+            if (d.front() > SceneLimits::kMaxDuration)
+                return QStringLiteral("--duration: must be > 0 and <= 1e6 (got %1)").arg(v);
             o.study.duration = d.front();
         } else if (a == QLatin1String("--csv")) {
+            if (!(error = noteOutputOption(a, v, outputsSeen)).isEmpty()) return error;
             o.csv = v;
         } else if (a == QLatin1String("--plot")) {
+            if (!(error = noteOutputOption(a, v, outputsSeen)).isEmpty()) return error;
             const QString suffix = QFileInfo(v).suffix().toLower();
             if (suffix != QLatin1String("png") && suffix != QLatin1String("svg"))
                 return QStringLiteral("%1: the plot must be a .png or .svg file").arg(v);
@@ -157,9 +165,6 @@ QString parseOptions(const QStringList& args, AccuracyCliOptions& o) {
         }
     }
     if (o.scene.isEmpty()) return QStringLiteral("accuracy needs a SCENE file");
-    if (o.json && o.csv == QLatin1String("-"))
-        return QStringLiteral(
-            "--json and --csv - both write to standard output; give --csv a file");
     return {};
 }
 
@@ -301,7 +306,9 @@ int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err)
     AccuracyCliOptions o;
     if (const QString error = parseOptions(args, o); !error.isEmpty()) return fail(err, error);
     if (const QString error = checkOutputs(
-            o.scene, {{QStringLiteral("--csv"), o.csv}, {QStringLiteral("--plot"), o.plot}});
+            o.scene, {{QStringLiteral("--json"), o.json ? QStringLiteral("-") : QString()},
+                      {QStringLiteral("--csv"), o.csv},
+                      {QStringLiteral("--plot"), o.plot}});
         !error.isEmpty())
         return fail(err, error);
     const SceneLoadResult loaded = SceneIO::load(o.scene);
@@ -314,10 +321,9 @@ int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err)
         // Progress only where a person watches; scripts and pipes get clean output.
         const AccuracyProgress progress =
             stderrIsTerminal() ? AccuracyProgress(writeProgress) : AccuracyProgress();
-        // Ctrl-C or SIGTERM cancels the study at its next check; the finished runs are written
-        // and the exit status is 130 (CONTRACT §4).
-        const InterruptGuard interrupt;
-        result = runAccuracyStudy(scene, o.study, progress, &InterruptGuard::flag());
+        // Ctrl-C, SIGTERM or SIGHUP (also one that came while the scene loaded) cancels the
+        // study at its next check; the finished runs are written and the exit status is 130.
+        result = runAccuracyStudy(scene, o.study, progress, &interruptFlag());
     } catch (const SceneError& e) {
         QStringList lines;
         for (const SceneIssue& issue : e.issues())
@@ -347,7 +353,7 @@ int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err)
     err.flush();
 
     if (!o.csv.isEmpty()) {
-        if (o.csv == QLatin1String("-")) {
+        if (OutputFile::isStandardOutput(o.csv)) {
             writeCsv(out, result);
         } else {
             OutputFile file(o.csv, QStringLiteral("the CSV file"));

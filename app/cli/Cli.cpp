@@ -29,7 +29,7 @@ const char* kUsage =
     "                           file, to FILE or standard output; no NAME lists them\n"
     "\n"
     "exit status: 0 success, 1 the simulation diverged, 2 bad input, 3 an output could not\n"
-    "be written, 130 interrupted (Ctrl-C or SIGTERM: the results so far are written)\n";
+    "be written, 130 interrupted (Ctrl-C, SIGTERM or SIGHUP: the results so far are written)\n";
 }  // namespace
 
 int fail(QTextStream& err, const QString& message) {
@@ -44,10 +44,50 @@ int failWrite(QTextStream& err, const QString& message) {
     return kWriteFailed;
 }
 
+QString checkOutputPath(const QString& option, const QString& path) {
+    if (path.isEmpty())
+        return QStringLiteral("%1: the file name is empty; give a file, or - for standard output")
+            .arg(option);
+    if (const QString why = OutputFile::unusablePath(path); !why.isEmpty())
+        return QStringLiteral("%1 %2: %3").arg(option, path, why);
+    return {};
+}
+
+QString noteOutputOption(const QString& option, const QString& path, QStringList& seen) {
+    if (seen.contains(option))
+        return QStringLiteral("%1 given twice; each output is written once, give it one file")
+            .arg(option);
+    seen << option;
+    if (path.isEmpty()) return checkOutputPath(option, path);
+    return {};
+}
+
 QString checkOutputs(const QString& scene, const QList<QPair<QString, QString>>& outputs) {
+    // Standard output that is the scene itself (`>> scene.json`): the summary would be
+    // appended to the scene.
+    if (!scene.isEmpty() && scene != QLatin1String("-") && OutputFile::isStandardOutput(scene))
+        return QStringLiteral(
+                   "standard output is the scene file being read (%1); writing it would destroy "
+                   "the "
+                   "scene. Send the output elsewhere")
+            .arg(scene);
     QList<QPair<QString, QString>> files;
-    for (const auto& [option, path] : outputs)
-        if (!path.isEmpty() && !OutputFile::isStandardOutput(path)) files.append({option, path});
+    QString onStandardOutput;
+    for (const auto& [option, path] : outputs) {
+        if (path.isEmpty()) continue;  // not given (an empty name is refused while parsing)
+        if (const QString problem = checkOutputPath(option, path); !problem.isEmpty())
+            return problem;
+        if (!OutputFile::isStandardOutput(path)) {
+            files.append({option, path});
+            continue;
+        }
+        // "-", /dev/stdout, /proc/self/fd/1 or the file standard output is: one stream, which
+        // two outputs would write over each other.
+        if (!onStandardOutput.isEmpty())
+            return QStringLiteral("%1 and %2 %3 both write to standard output; give %2 a file")
+                .arg(onStandardOutput, option, path);
+        onStandardOutput = option;
+    }
     for (qsizetype i = 0; i < files.size(); ++i) {
         const auto& [option, path] = files[i];
         // The same inode: a hard link, a symbolic link or another spelling of the scene's path.
@@ -137,6 +177,9 @@ int sceneCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             out << SceneIO::serialize(scene);
             return kSuccess;
         }
+        if (const QString problem = checkOutputPath(QStringLiteral("scene FILE"), args[1]);
+            !problem.isEmpty())
+            return fail(err, problem);
         QString error;
         if (!SceneIO::save(scene, args[1], &error)) return failWrite(err, error);
         return kSuccess;
@@ -149,6 +192,8 @@ int sceneCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
 
 int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     if (args.size() != 1) return fail(err, QStringLiteral("usage: phasebox-cli info SCENE"));
+    if (const QString problem = checkOutputs(args.first(), {}); !problem.isEmpty())
+        return fail(err, problem);
     const SceneLoadResult loaded = SceneIO::load(args.first());
     if (!loaded.ok()) return fail(err, loaded.errorText());
     BuildResult built;
@@ -160,12 +205,18 @@ int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     const SceneDesc& scene = *loaded.scene;
     const World& world = *built.world;
 
-    int pinned = 0, clothNodes = 0, staticBoxes = 0;
+    int pinned = 0, clothNodes = 0;
     for (const Particle& p : world.particles()) {
         pinned += p.pinned;
         clothNodes += p.cloth >= 0;
     }
-    for (const Box& b : world.boxes()) staticBoxes += b.isStatic;
+    // The rigid bodies by shape (the world keeps them in one array): boxes, disks, polygons.
+    int rigid[3] = {0, 0, 0}, rigidStatic[3] = {0, 0, 0};
+    for (const Box& b : world.boxes()) {
+        const auto shape = static_cast<std::size_t>(b.shape);
+        ++rigid[shape];
+        rigidStatic[shape] += b.isStatic;
+    }
     const int clothSprings = [&] {
         int n = 0;
         for (const Cloth& c : world.cloths()) n += c.springCount;
@@ -180,13 +231,19 @@ int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     out << "objects:\n";
     out << "  particles  " << world.particles().size() - clothNodes << " (" << pinned
         << " pinned in all)\n";
-    out << "  boxes      " << world.boxes().size() << " (" << staticBoxes << " static)\n";
+    static_assert(static_cast<int>(RigidShape::Rectangle) == 0 &&
+                  static_cast<int>(RigidShape::Disk) == 1 &&
+                  static_cast<int>(RigidShape::Polygon) == 2);
+    out << "  boxes      " << rigid[0] << " (" << rigidStatic[0] << " static)\n";
+    out << "  disks      " << rigid[1] << " (" << rigidStatic[1] << " static)\n";
+    out << "  polygons   " << rigid[2] << " (" << rigidStatic[2] << " static)\n";
     out << "  planes     " << world.planes().size() << "\n";
     out << "  springs    " << world.springs().size() - clothSprings << "\n";
     out << "  cloths     " << world.cloths().size();
     if (!world.cloths().empty())
         out << " (" << clothNodes << " nodes, " << clothSprings << " springs)";
     out << "\n";
+    out << "  joints     " << world.joints().size() << "\n";
     out << "state:       " << world.dimension() << " degrees of freedom\n";
     // The same list as run --json's effects: everything that costs time per step.
     out << "effects that will run:";

@@ -1,7 +1,7 @@
 #pragma once
 // phasebox-cli (CONTRACT.md §4). Exit status: 0 success, 1 the simulation diverged,
 // 2 bad input (usage, unreadable or invalid scene, an output that is the scene itself),
-// 3 an output could not be written, 130 interrupted (SIGINT or SIGTERM).
+// 3 an output could not be written, 130 interrupted (SIGINT, SIGTERM or SIGHUP).
 
 #include <QList>
 #include <QPair>
@@ -30,9 +30,16 @@ int fail(QTextStream& err, const QString& message);
 // The same for an output that could not be written; returns kWriteFailed.
 int failWrite(QTextStream& err, const QString& message);
 
-// The files a command will write, each with the option that names it ("-" and empty paths
-// are skipped). Returns an error message (for kBadInput) when one is the scene being read,
-// or when two name the same file; else an empty string. Checked before anything runs.
+// The files a command will write, each with the option that names it (empty paths are not
+// given; {"--json", "-"} for a report on standard output). Returns an error message (for
+// kBadInput) when one is the scene being read (standard output included), a loop of symbolic
+// links, or when two name the same file or both standard output ("-", /dev/stdout, the file
+// `>` opened); else an empty string. Checked before anything runs.
 QString checkOutputs(const QString& scene, const QList<QPair<QString, QString>>& outputs);
+// One output path: refused when empty or a loop of symbolic links; else an empty string.
+QString checkOutputPath(const QString& option, const QString& path);
+
+// An output option (--csv, --plot-*) met while parsing: refused when empty or given twice.
+QString noteOutputOption(const QString& option, const QString& path, QStringList& seen);
 
 }  // namespace phasebox::cli

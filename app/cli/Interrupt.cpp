@@ -1,5 +1,7 @@
 #include "app/cli/Interrupt.h"
 
+#include "app/io/OutputFile.h"
+
 #include <csignal>
 
 #if defined(__unix__) || defined(__APPLE__)
@@ -48,46 +50,35 @@ extern "C" void onInterrupt(int signal) {
     gInterrupted.store(true, std::memory_order_relaxed);
 }
 
-#if PHASEBOX_POSIX_SIGNALS
-struct sigaction gPreviousInt {
-}, gPreviousTerm{};
-#endif
-
 }  // namespace
 
-InterruptGuard::InterruptGuard() {
-    gInterrupted.store(false);
+void installInterruptHandlers() {
 #if PHASEBOX_POSIX_SIGNALS
     struct sigaction action {};
     action.sa_handler = onInterrupt;
     sigemptyset(&action.sa_mask);
-    // The first signal asks for a clean stop; a second one half a second later or more ends
-    // the program at once (onInterrupt). SA_RESTART: system calls under way carry on (not every
-    // library retries after EINTR).
-    action.sa_flags = SA_RESTART;
-    ::sigaction(SIGINT, &action, &gPreviousInt);
-    ::sigaction(SIGTERM, &action, &gPreviousTerm);
+    // No SA_RESTART: a write() blocked on a pipe nobody reads (`| sleep 1000`) returns EINTR,
+    // and OutputFile, seeing the flag, abandons it (exit 130) instead of blocking for ever.
+    action.sa_flags = 0;
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        // A signal ignored by whoever started us (nohup, a shell's background job) stays ignored.
+        struct sigaction previous {};
+        if (::sigaction(signal, nullptr, &previous) == 0 && previous.sa_handler == SIG_IGN)
+            continue;
+        ::sigaction(signal, &action, nullptr);
+    }
 #else
     std::signal(SIGINT, onInterrupt);
     std::signal(SIGTERM, onInterrupt);
 #endif
+    OutputFile::setInterruptFlag(&gInterrupted);
 }
 
-InterruptGuard::~InterruptGuard() {
-#if PHASEBOX_POSIX_SIGNALS
-    ::sigaction(SIGINT, &gPreviousInt, nullptr);
-    ::sigaction(SIGTERM, &gPreviousTerm, nullptr);
-#else
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-#endif
-}
-
-bool InterruptGuard::interrupted() {
+bool interrupted() {
     return gInterrupted.load(std::memory_order_relaxed);
 }
 
-const std::atomic<bool>& InterruptGuard::flag() {
+const std::atomic<bool>& interruptFlag() {
     return gInterrupted;
 }
 

@@ -1,26 +1,24 @@
 #pragma once
-// Ctrl-C and SIGTERM during `phasebox-cli run` and `accuracy` (CONTRACT.md §4): the step in
-// progress finishes, the results so far are written, and the exit status is 130.
+// Ctrl-C, SIGTERM and SIGHUP in phasebox-cli (CONTRACT.md §4): the step in progress finishes,
+// the results so far are written, and the exit status is 130.
 //
-// While an InterruptGuard lives, SIGINT and SIGTERM only set a flag that the step loop reads
-// between steps; a second signal ends the program at once (the handler is one-shot), so a
-// person who presses Ctrl-C twice is never kept waiting.
+// installInterruptHandlers() is the first thing main() does, so a signal that comes while the
+// scene loads is not lost (it was, in the first ~100 ms, before issue #38). The first signal only
+// sets a flag that the commands read (after loading, after building, between steps); a second
+// one half a second or more later ends the program at once. The handlers are installed without
+// SA_RESTART, so a write blocked on a full pipe returns EINTR and the output layer
+// (OutputFile, which reads the same flag) gives up on it instead of waiting for ever.
 
 #include <atomic>
 
 namespace phasebox::cli {
 
-class InterruptGuard {
-public:
-    InterruptGuard();
-    ~InterruptGuard();
-    InterruptGuard(const InterruptGuard&) = delete;
-    InterruptGuard& operator=(const InterruptGuard&) = delete;
+// Installs the handlers of SIGINT, SIGTERM and SIGHUP and hands the flag to OutputFile.
+void installInterruptHandlers();
 
-    // Whether SIGINT or SIGTERM arrived since the guard was made.
-    static bool interrupted();
-    // The flag itself, for code that takes a cancel flag (runAccuracyStudy).
-    static const std::atomic<bool>& flag();
-};
+// Whether SIGINT, SIGTERM or SIGHUP arrived since the program started.
+bool interrupted();
+// The flag itself, for code that takes a cancel flag (runAccuracyStudy).
+const std::atomic<bool>& interruptFlag();
 
 }  // namespace phasebox::cli

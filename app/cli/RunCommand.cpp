@@ -105,6 +105,7 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
         if (!ok) return QStringLiteral("%1: must be an integer (got \"%2\")").arg(option, text);
         return {};
     };
+    QStringList outputsSeen;
     for (int i = 0; i < args.size(); ++i) {
         const QString& a = args[i];
         if (!a.startsWith(QLatin1String("--"))) {
@@ -175,26 +176,26 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
             if (n < 1) return QStringLiteral("--every: must be >= 1 (got %1)").arg(v);
             o.every = n;
         } else if (a == QLatin1String("--csv")) {
+            if (!(error = noteOutputOption(a, v, outputsSeen)).isEmpty()) return error;
             o.csv = v;
         } else if (a == QLatin1String("--track")) {
             o.track = splitIds(v);
         } else if (a == QLatin1String("--probe")) {
             o.probes << v;
         } else if (a == QLatin1String("--plot-energy")) {
+            if (!(error = noteOutputOption(a, v, outputsSeen)).isEmpty()) return error;
             if (!isChartPath(v, &error)) return error;
             o.plotEnergy = v;
         } else if (a == QLatin1String("--plot-phase")) {
             o.phaseTarget = v;
             o.plotPhase = args[++i];
+            if (!(error = noteOutputOption(a, o.plotPhase, outputsSeen)).isEmpty()) return error;
             if (!isChartPath(o.plotPhase, &error)) return error;
         } else {
             return QStringLiteral("unknown option \"%1\"; see phasebox-cli run --help").arg(a);
         }
     }
     if (o.scene.isEmpty()) return QStringLiteral("run needs a SCENE file");
-    if (o.json && o.csv == QLatin1String("-"))
-        return QStringLiteral(
-            "--json and --csv - both write to standard output; give --csv a file");
     return {};
 }
 
@@ -274,6 +275,12 @@ public:
         return true;
     }
     QTextStream& stream() { return *stream_; }
+    // Whether a write has failed already (a full disk, a reader gone): the run stops there.
+    bool failed() const {
+        return (file_ && file_->failed()) || stream_->status() == QTextStream::WriteFailed;
+    }
+    // Whether a signal abandoned a blocked write (exit 130 rather than 3).
+    bool interrupted() const { return file_ && file_->interrupted(); }
     bool commit(QString* error) {
         if (!file_) return true;
         owned_->flush();
@@ -384,6 +391,12 @@ double median(std::vector<double> v) {
     return 0.5 * (*mid + *std::max_element(v.begin(), mid));
 }
 
+int interruptedBeforeRun(QTextStream& err) {
+    err << "phasebox-cli: interrupted before the run began; nothing was written\n";
+    err.flush();
+    return kInterrupted;
+}
+
 bool writePlot(QChart* chart, const QString& path, QTextStream& err) {
     std::unique_ptr<QChart> owner(chart);
     QString error;
@@ -401,15 +414,17 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     }
     RunOptions o;
     if (const QString error = parseOptions(args, o); !error.isEmpty()) return fail(err, error);
-    if (const QString error =
-            checkOutputs(o.scene, {{QStringLiteral("--csv"), o.csv},
-                                   {QStringLiteral("--plot-energy"), o.plotEnergy},
-                                   {QStringLiteral("--plot-phase"), o.plotPhase}});
+    if (const QString error = checkOutputs(
+            o.scene, {{QStringLiteral("--json"), o.json ? QStringLiteral("-") : QString()},
+                      {QStringLiteral("--csv"), o.csv},
+                      {QStringLiteral("--plot-energy"), o.plotEnergy},
+                      {QStringLiteral("--plot-phase"), o.plotPhase}});
         !error.isEmpty())
         return fail(err, error);
 
     SceneLoadResult loaded = SceneIO::load(o.scene);
     if (!loaded.ok()) return fail(err, loaded.errorText());
+    if (interrupted()) return interruptedBeforeRun(err);
     SceneDesc& scene = *loaded.scene;
     SimulationDesc& sim = scene.simulation;
     if (o.integrator) sim.integrator = o.integrator->toStdString();
@@ -502,9 +517,10 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     };
     sampleProbes();
 
-    // From here a Ctrl-C or SIGTERM stops the run between steps, and what was computed is
-    // written (CONTRACT §4); before it, the default action ends a load or build at once.
-    const InterruptGuard interrupt;
+    // A Ctrl-C, SIGTERM or SIGHUP while the scene loaded (the handlers are installed first
+    // thing in main): nothing was computed, so nothing is written.
+    if (interrupted()) return interruptedBeforeRun(err);
+    // From here a signal stops the run between steps, and what was computed is written.
     CsvOutput csv;
     if (!o.csv.isEmpty()) {
         QString error;
@@ -569,13 +585,19 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             worstJoint.angle = std::max(worstJoint.angle, now.angle);
         }
         // The last row of an interrupted run is its final state, as at the end of a full one.
-        interrupted = k < steps && InterruptGuard::interrupted();
+        interrupted = k < steps && cli::interrupted();
         const bool last = k == steps || interrupted;
-        if (!o.csv.isEmpty() && (k % o.every == 0 || last))
+        if (!o.csv.isEmpty() && (k % o.every == 0 || last)) {
             writeCsvRow(csv.stream(), world, tracked, probeValues);
+            // A write that failed (a disk that filled, a reader gone) ends the run now, not
+            // at its end: exit 3 (or 130 for a write a signal abandoned).
+            if (csv.failed()) break;
+        }
         if (plotting && (energy.due(k) || last)) sample();
         if (interrupted) break;
     }
+    // A signal that came during the write that ended the loop.
+    if (!diverged && done < steps && cli::interrupted()) interrupted = true;
     const double wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
     // A runaway is confirmed a few steps after it began and the world goes back to where it
     // began: report the steps of the state that is shown, as sim_time does.
@@ -584,7 +606,10 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     int status = kSuccess;
     if (!o.csv.isEmpty()) {
         QString error;
-        if (!csv.commit(&error)) status = failWrite(err, error);
+        if (!csv.commit(&error)) {
+            status = failWrite(err, error);
+            if (csv.interrupted()) status = kInterrupted;
+        }
     }
     const QString title =
         QStringLiteral("%1 — %2, dt = %3 s")
@@ -685,7 +710,10 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         }
         if (interrupted) report.insert("interrupted", true);
         writeJsonReport(out, report, world);
-    } else if (o.csv != QLatin1String("-")) {
+    } else if (!OutputFile::isStandardOutput(o.csv) &&
+               !OutputFile::isStandardOutput(o.plotEnergy) &&
+               !OutputFile::isStandardOutput(o.plotPhase)) {
+        // The summary only when no output took standard output (CONTRACT §4).
         out << "scene:      " << (scene.name.empty() ? o.scene : QString::fromStdString(scene.name))
             << "\n"
             << "integrator: " << QString::fromStdString(sim.integrator)

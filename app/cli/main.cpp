@@ -9,6 +9,7 @@
 // own messages are dropped unless PHASEBOX_QT_MESSAGES is set, and then carry the prefix too.
 
 #include "app/cli/Cli.h"
+#include "app/cli/Interrupt.h"
 #include "app/io/OutputFile.h"
 
 #include <QApplication>
@@ -41,6 +42,9 @@ void qtMessage(QtMsgType type, const QMessageLogContext&, const QString& message
 }  // namespace
 
 int main(int argc, char** argv) {
+    // First of all: a Ctrl-C, SIGTERM or SIGHUP while Qt starts or the scene loads is a request
+    // to stop, not a silent death (CONTRACT.md §4: "from the moment the command starts").
+    phasebox::cli::installInterruptHandlers();
 #if defined(__unix__) || defined(__APPLE__)
     // A reader that goes away (`| head`) makes a write fail with EPIPE, reported as a failed
     // write (exit 3), instead of killing the program silently with SIGPIPE.
@@ -73,9 +77,21 @@ int main(int argc, char** argv) {
         status = phasebox::cli::run(arguments, out, err);
         out.flush();
     }
-    // Bad input stays bad input; any other outcome whose output was lost is a failed write.
-    if (!standardOutput.commit() && status != phasebox::cli::kBadInput)
-        status = phasebox::cli::failWrite(err, standardOutput.error());
+    // Bad input stays bad input; any other outcome whose output was lost is a failed write,
+    // unless a signal abandoned it (a reader that took nothing: interrupted, 130).
+    if (!standardOutput.commit() && status != phasebox::cli::kBadInput) {
+        if (standardOutput.interrupted()) {
+            phasebox::cli::fail(err, standardOutput.error());
+            status = phasebox::cli::kInterrupted;
+        } else {
+            status = phasebox::cli::failWrite(err, standardOutput.error());
+        }
+    }
+    // A command that finished although a signal asked it to stop (info, scene) says so.
+    if (status == phasebox::cli::kSuccess && phasebox::cli::interrupted()) {
+        err << "phasebox-cli: interrupted\n";
+        status = phasebox::cli::kInterrupted;
+    }
     err.flush();
     return status;
 }

@@ -1,7 +1,8 @@
 // jsontext::scan: one pass over a scene's raw text for what QJsonDocument cannot say. Qt's
-// reader keeps the last of two equal keys without a word, and it reads `0x10` or `01` as the
-// end of a number followed by garbage ("unterminated object", somewhere after it). The scan
-// follows the JSON grammar (RFC 8259) closely enough to know where values and keys are; at any
+// reader keeps the last of two equal keys without a word, it reads `0x10` or `01` as the
+// end of a number followed by garbage ("unterminated object", somewhere after it), and so it
+// reads a comment or a single-quoted string; it accepts an invalid escape (\l) and drops it. The
+// scan follows the JSON grammar (RFC 8259) closely enough to know where values and keys are; at any
 // other syntax error it stops and leaves the message to Qt's parser.
 
 #include "app/io/JsonText.h"
@@ -115,15 +116,32 @@ public:
     // Anything after the top-level value is Qt's to report.
     ScanResult run() {
         skipSpace();
-        value(0);
+        if (value(0) == Stop::Done) skipSpace();  // a comment after the value
         return std::move(result_);
     }
 
 private:
     enum class Stop { Done, Quit };
 
+    // Skips white space; a comment there (JSON has none) is reported and ends the scan.
     void skipSpace() {
         while (p_ < n_ && isSpace(s_[p_])) ++p_;
+        if (p_ + 1 < n_ && s_[p_] == '/' && (s_[p_ + 1] == '/' || s_[p_ + 1] == '*')) {
+            report(p_,
+                   QStringLiteral("JSON has no comments; remove the %1 comment")
+                       .arg(s_[p_ + 1] == '/' ? QStringLiteral("//") : QStringLiteral("/* */")));
+            p_ = n_;  // every caller quits at the end of the text
+        }
+    }
+
+    void report(qsizetype offset, const QString& what) {
+        if (!result_.problem) result_.problem = SyntaxProblem{offset, what};
+    }
+
+    // A string in single quotes, where a value or a key should be.
+    Stop singleQuoted() {
+        report(p_, QStringLiteral("strings take double quotes (\"...\"), not single quotes"));
+        return Stop::Quit;
     }
 
     Stop value(int depth) {
@@ -134,6 +152,7 @@ private:
             std::string_view ignored;
             return string(ignored, nullptr) ? Stop::Done : Stop::Quit;
         }
+        if (c == '\'') return singleQuoted();
         if (c == '-' || c == '+' || c == '.' || isDigit(c)) return number();
         for (std::string_view word :
              {std::string_view("true"), std::string_view("false"), std::string_view("null")}) {
@@ -158,7 +177,7 @@ private:
         if (word == "nan" || word == "inf" || word == "infinity") return Stop::Quit;
         const QString problem = numberProblem(token);
         if (problem.isEmpty()) return Stop::Done;
-        result_.invalidNumber =
+        result_.problem =
             SyntaxProblem{start, QStringLiteral("invalid number \"%1\": %2")
                                      .arg(shortened(QString::fromLatin1(
                                               token.data(), static_cast<qsizetype>(token.size()))),
@@ -181,10 +200,21 @@ private:
                 const char e = s_[p_];
                 if (e == 'u') {
                     for (int k = 1; k <= 4; ++k)
-                        if (p_ + k >= n_ || !std::isxdigit(static_cast<unsigned char>(s_[p_ + k])))
+                        if (p_ + k >= n_ ||
+                            !std::isxdigit(static_cast<unsigned char>(s_[p_ + k]))) {
+                            report(p_ - 1, QStringLiteral("invalid escape \\u: it takes four "
+                                                          "hexadecimal digits (\\u00e9)"));
                             return false;
+                        }
                     p_ += 4;
                 } else if (std::string_view("\"\\/bfnrt").find(e) == std::string_view::npos) {
+                    // Qt drops the backslash: "C:\lessons" would load as "C:lessons".
+                    // The whole character, for one outside ASCII (the text is valid UTF-8).
+                    QString shown = QString::fromUtf8(s_ + p_, std::min<qsizetype>(4, n_ - p_));
+                    shown.truncate(shown.isEmpty() || !shown[0].isHighSurrogate() ? 1 : 2);
+                    report(p_ - 1, QStringLiteral("invalid escape \\%1; write \\\\ for a "
+                                                  "backslash")
+                                       .arg(shown));
                     return false;
                 }
             }
@@ -219,6 +249,7 @@ private:
         while (true) {
             Frame& frame = stack_[depth];
             if (object) {
+                if (p_ < n_ && s_[p_] == '\'') return singleQuoted();
                 if (p_ >= n_ || s_[p_] != '"') return Stop::Quit;
                 const qsizetype keyOffset = p_;
                 std::string_view key;

@@ -137,7 +137,7 @@ std::optional<SyntaxProblem> parse(const QByteArray& text, QJsonDocument& docume
                                  "is this a scene file?")
                       .arg(static_cast<unsigned char>(text[*bad]), 2, 16, QLatin1Char('0'))};
     ScanResult found = scan(text);
-    if (found.invalidNumber) return found.invalidNumber;
+    if (found.problem) return found.problem;
     if (scanned) *scanned = std::move(found);
     QJsonParseError error;
     QJsonDocument parsed = QJsonDocument::fromJson(text, &error);

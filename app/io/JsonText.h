@@ -36,9 +36,11 @@ struct DuplicateKey {
 
 // What a pass over the raw text finds that Qt's parser hides or misreports.
 struct ScanResult {
-    // A number the JSON grammar forbids (0x10, 01, +1, .5, 1., 1e): Qt calls most of them an
-    // "unterminated object" somewhere else.
-    std::optional<SyntaxProblem> invalidNumber;
+    // What the JSON grammar forbids and Qt misreports or accepts: a number such as 0x10, 01,
+    // +1, .5, 1. or 1e (Qt calls most of them an "unterminated object" somewhere else), a
+    // comment or a single-quoted string (the same), and an invalid escape such as \l, which Qt
+    // accepts and drops ("C:\lessons" read as "C:lessons"). The first one, where it starts.
+    std::optional<SyntaxProblem> problem;
     // The first kMaxReportedDuplicates duplicate keys, and how many there are in all.
     std::vector<DuplicateKey> duplicates;
     long long duplicateCount = 0;

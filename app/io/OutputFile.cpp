@@ -9,8 +9,11 @@
 #include <mutex>
 
 #if defined(Q_OS_UNIX)
+#include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <cerrno>
+#include <cstring>
 #else
 #include <cstdio>
 #define STDOUT_FILENO 1
@@ -56,6 +59,13 @@ void ignoreFileSizeSignal() {
 #endif
 }
 
+std::atomic<const std::atomic<bool>*> gInterruptFlag{nullptr};
+
+bool interruptRequested() {
+    const std::atomic<bool>* flag = gInterruptFlag.load();
+    return flag && flag->load(std::memory_order_relaxed);
+}
+
 enum class Kind { Missing, Regular, Folder, Special };
 
 // What is at path now (following symbolic links). Anything under /dev or /proc counts as
@@ -79,6 +89,41 @@ Kind kindOf(const QString& path) {
 }
 
 }  // namespace
+
+bool OutputFile::isStandardOutput(const QString& path) {
+    if (path == QLatin1String("-") || path == QLatin1String("/dev/stdout")) return true;
+#if defined(Q_OS_UNIX)
+    if (path.isEmpty() || path.contains(QChar(u'\0'))) return false;
+    struct stat named {
+    }, out{};
+    if (::stat(QFile::encodeName(path).constData(), &named) != 0 ||
+        ::fstat(STDOUT_FILENO, &out) != 0)
+        return false;
+    // Devices are left alone: /dev/null or a terminal written twice loses nothing.
+    if (S_ISCHR(out.st_mode) || S_ISBLK(out.st_mode)) return false;
+    return named.st_dev == out.st_dev && named.st_ino == out.st_ino;
+#else
+    return false;
+#endif
+}
+
+QString OutputFile::unusablePath(const QString& path) {
+#if defined(Q_OS_UNIX)
+    if (path.isEmpty() || path.contains(QChar(u'\0'))) return {};
+    struct stat st {};
+    if (::stat(QFile::encodeName(path).constData(), &st) != 0 && errno == ELOOP)
+        return QStringLiteral(
+            "it is a loop of symbolic links (too many levels); it would be replaced by a "
+            "regular file");
+#else
+    (void)path;
+#endif
+    return {};
+}
+
+void OutputFile::setInterruptFlag(const std::atomic<bool>* flag) {
+    gInterruptFlag.store(flag);
+}
 
 OutputFile::OutputFile(QString path, QString what)
     : path_(std::move(path)), what_(std::move(what)) {}
@@ -117,6 +162,7 @@ bool OutputFile::open() {
     // The system's calls end a name at its first NUL, so the file written would be another
     // one than the name says (found by fuzz_cli_outputs).
     if (path_.contains(QChar(u'\0'))) return fail(QStringLiteral("the name holds a NUL character"));
+    if (const QString why = unusablePath(path_); !why.isEmpty()) return fail(why);
     if (isStandardOutput(path_)) {
         inPlace_ = true;
         direct_ = std::make_unique<QFile>();
@@ -163,6 +209,7 @@ QIODevice* OutputFile::target() const {
 bool OutputFile::write(const QByteArray& bytes) {
     if (failed()) return false;
     if (!open_) return fail(QStringLiteral("the file is not open"));
+    if (direct_) return writeDirect(bytes.constData(), bytes.size());
     QIODevice* device = target();
     qint64 done = 0;
     const qint64 size = bytes.size();
@@ -173,6 +220,42 @@ bool OutputFile::write(const QByteArray& bytes) {
         done += n;
     }
     return true;
+}
+
+bool OutputFile::writeDirect(const char* data, qint64 size) {
+#if defined(Q_OS_UNIX)
+    const int fd = direct_->handle();
+    qint64 done = 0;
+    while (done < size) {
+        if (interruptRequested()) {
+            // Interrupted already: the results so far may still go out, but a reader that
+            // takes nothing for a second does not keep the program waiting (`| sleep 1000`).
+            pollfd p{fd, POLLOUT, 0};
+            if (::poll(&p, 1, 1000) == 0) {
+                interrupted_ = true;
+                return fail(QStringLiteral("interrupted while the output was blocked"));
+            }
+        }
+        const ssize_t n = ::write(fd, data + done, static_cast<size_t>(size - done));
+        if (n < 0 && errno == EINTR) {
+            if (!interruptRequested()) continue;
+            interrupted_ = true;
+            return fail(QStringLiteral("interrupted while the output was blocked"));
+        }
+        if (n < 0) return fail(QString::fromLocal8Bit(std::strerror(errno)));
+        if (n == 0) return fail(reason(done, size));
+        done += n;
+    }
+    return true;
+#else
+    qint64 done = 0;
+    while (done < size) {
+        const qint64 n = direct_->write(data + done, size - done);
+        if (n <= 0) return fail(reason(done, size));
+        done += n;
+    }
+    return true;
+#endif
 }
 
 bool OutputFile::commit() {

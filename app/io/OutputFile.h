@@ -16,6 +16,7 @@
 #include <QByteArray>
 #include <QString>
 
+#include <atomic>
 #include <memory>
 
 QT_BEGIN_NAMESPACE
@@ -36,8 +37,17 @@ public:
     OutputFile(const OutputFile&) = delete;
     OutputFile& operator=(const OutputFile&) = delete;
 
-    // "-": standard output.
-    static bool isStandardOutput(const QString& path) { return path == QLatin1String("-"); }
+    // Standard output: "-", "/dev/stdout", and any path that leads to the very file, pipe or
+    // socket standard output is (/proc/self/fd/1, a link to it, the file `> out.csv` opened).
+    // Opened again by name, such a path would write from offset 0 and the summary would
+    // overwrite the CSV's head (issue #38).
+    static bool isStandardOutput(const QString& path);
+    // Why path cannot be written at all (a loop of symbolic links), or an empty string.
+    static QString unusablePath(const QString& path);
+    // The flag that SIGINT, SIGTERM and SIGHUP set (phasebox-cli). When it is set, a write
+    // that the signal interrupted (EINTR), or one that cannot go on within a second, is
+    // abandoned as interrupted() instead of blocking for ever on a pipe nobody reads.
+    static void setInterruptFlag(const std::atomic<bool>* flag);
     // Whether two paths name the same existing file (the same device and inode, so links and
     // different spellings count); false when either does not exist.
     static bool sameFile(const QString& a, const QString& b);
@@ -57,6 +67,8 @@ public:
     void cancel();
 
     bool failed() const { return !error_.isEmpty(); }
+    // Whether the output was abandoned because of an interrupting signal (exit 130, not 3).
+    bool interrupted() const { return interrupted_; }
     // "PATH: cannot write WHAT: REASON", or empty.
     const QString& error() const { return error_; }
     const QString& path() const { return path_; }
@@ -69,6 +81,8 @@ private:
     bool fail(const QString& reason);
     // The device's error text, or a short write's description when it set none.
     QString reason(qint64 written = -1, qint64 wanted = -1) const;
+    // Writes in place with write(2), retrying after a signal unless it asked to stop.
+    bool writeDirect(const char* data, qint64 size);
 
     QString path_;
     QString what_;
@@ -77,6 +91,7 @@ private:
     std::unique_ptr<QIODevice> checked_;
     bool inPlace_ = false;
     bool open_ = false;
+    bool interrupted_ = false;
     QString error_;
 };
 

@@ -87,6 +87,27 @@ private slots:
         QVERIFY(text.contains("cloths     1 (9 nodes"));
     }
 
+    // Issue #38: info counted disks and polygons as boxes and never mentioned joints.
+    void infoCountsDisksPolygonsAndJointsApart() {
+        const Result r = cli({"info", write("shapes.json", R"({
+  "format": "phasebox-scene", "version": 2, "name": "shapes",
+  "particles": [ { "id": "p", "position": [0, 3] } ],
+  "boxes": [ { "id": "b", "position": [0, 0], "size": [1, 1] },
+             { "id": "floor", "position": [0, -5], "size": [10, 1], "static": true } ],
+  "disks": [ { "id": "d1", "position": [2, 0], "radius": 0.5 },
+             { "id": "d2", "position": [4, 0], "radius": 0.5, "static": true },
+             { "id": "d3", "position": [6, 0], "radius": 0.5 } ],
+  "polygons": [ { "id": "tri", "position": [8, 0], "vertices": [[0, 0], [1, 0], [0, 1]] } ],
+  "joints": [ { "type": "rod", "a": "p", "b": "b" }, { "type": "hinge", "a": "d1", "anchor": [2, 1] } ]
+})")});
+        QVERIFY2(r.status == 0, r.err.constData());
+        const QString text = QString::fromUtf8(r.out);
+        QVERIFY2(text.contains("  boxes      2 (1 static)\n"), qPrintable(text));
+        QVERIFY2(text.contains("  disks      3 (1 static)\n"), qPrintable(text));
+        QVERIFY2(text.contains("  polygons   1 (0 static)\n"), qPrintable(text));
+        QVERIFY2(text.contains("  joints     2\n"), qPrintable(text));
+    }
+
     void runJsonHasEveryField() {
         const Result r = cli({"run", write("mixed.json", kMixed), "--json"});
         QCOMPARE(r.status, 0);

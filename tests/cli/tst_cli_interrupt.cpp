@@ -15,6 +15,9 @@
 
 #include "CliTestSupport.h"
 
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <csignal>
 
 namespace {
@@ -84,6 +87,34 @@ void checkWholeRows(const QByteArray& csv, int minimumRows) {
     }
 }
 
+// The signals the process ignores, from /proc/PID/status (SigIgn, a hexadecimal mask).
+unsigned long long ignoredSignals(qint64 pid) {
+    QFile status(QStringLiteral("/proc/%1/status").arg(pid));
+    if (!status.open(QIODevice::ReadOnly)) return 0;
+    for (const QByteArray& line : status.readAll().split('\n'))
+        if (line.startsWith("SigIgn:")) return line.mid(7).trimmed().toULongLong(nullptr, 16);
+    return 0;
+}
+
+// A scene of n particles on a grid: big enough that loading it takes a while.
+QByteArray manyParticles(int n) {
+    QByteArray scene = R"({ "format": "phasebox-scene", "version": 1, "name": "many",
+  "simulation": { "integrator": "symplectic_euler", "dt": 0.001, "duration": 1000 },
+  "particles": [)";
+    for (int i = 0; i < n; ++i)
+        scene += (i ? ",\n" : "\n") + QByteArray(R"({ "position": [)") +
+                 QByteArray::number(i % 1000) + ", " + QByteArray::number(i / 1000) + "] }";
+    return scene + "\n] }\n";
+}
+
+// The three signals that ask for a clean stop, as a data column "signal".
+void signalRows() {
+    QTest::addColumn<int>("signal");
+    QTest::newRow("SIGINT") << SIGINT;
+    QTest::newRow("SIGTERM") << SIGTERM;
+    QTest::newRow("SIGHUP") << SIGHUP;
+}
+
 }  // namespace
 
 class TestCliInterrupt : public QObject {
@@ -105,6 +136,8 @@ private slots:
         QTest::addColumn<int>("times");
         QTest::newRow("SIGINT") << SIGINT << 1;
         QTest::newRow("SIGTERM") << SIGTERM << 1;
+        // A terminal closed (issue #38): ended the program with nothing written.
+        QTest::newRow("SIGHUP") << SIGHUP << 1;
         // One request delivered twice (timeout -s INT): still a clean stop, not "end now".
         QTest::newRow("SIGINT twice at once") << SIGINT << 2;
     }
@@ -176,6 +209,79 @@ private slots:
         const QByteArray rows = file.readAll();
         QVERIFY(rows.endsWith('\n'));
         QCOMPARE(rows.count('\n'), records + 1);
+    }
+
+    // Issue #38: a signal in the first moments (Qt starting, the scene loading) ended the
+    // program at once: the handlers came after the load. Now main() installs them first; the
+    // signal is sent as soon as main() has begun (SIGPIPE ignored, its second line), while a
+    // large scene loads, and the run ends as interrupted (130) with nothing written.
+    void signalWhileTheSceneLoadsIsNotLost_data() { signalRows(); }
+    void signalWhileTheSceneLoadsIsNotLost() {
+        QFETCH(int, signal);
+        const QString scene = dir_.filePath("many.json");
+        if (!QFileInfo::exists(scene))
+            phasebox::testing::writeFile(dir_, "many.json", manyParticles(200000));
+        const QString csv = dir_.filePath(QStringLiteral("load-%1.csv").arg(signal));
+        QProcess p;
+        p.start(QStringLiteral(PHASEBOX_CLI), {"run", scene, "--csv", csv, "--json"});
+        QVERIFY(p.waitForStarted());
+        QElapsedTimer waited;
+        waited.start();
+        const unsigned long long sigpipe = 1ULL << (SIGPIPE - 1);
+        while (!(ignoredSignals(p.processId()) & sigpipe) && waited.elapsed() < 10000)
+            ::usleep(200);
+        QVERIFY2(p.state() == QProcess::Running, "it ended before the signal");
+        ::kill(static_cast<pid_t>(p.processId()), signal);
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 130);
+        QCOMPARE(QString::fromUtf8(p.readAllStandardError()).trimmed(),
+                 QStringLiteral("phasebox-cli: interrupted before the run began; nothing was "
+                                "written"));
+        QVERIFY(!QFileInfo::exists(csv));
+    }
+
+    // Issue #38: `run --csv - | sleep 1000`: blocked in write() on a full pipe, the program
+    // let SIGINT and SIGTERM restart the write (SA_RESTART) and waited for ever. Now the write
+    // is abandoned and the run ends as interrupted (130) within seconds.
+    void signalWhileWriteBlocksOnAFullPipeEndsTheRun_data() { signalRows(); }
+    void signalWhileWriteBlocksOnAFullPipeEndsTheRun() {
+        QFETCH(int, signal);
+        int fds[2];
+        QCOMPARE(::pipe(fds), 0);
+        const QByteArray program = PHASEBOX_CLI, scene = QFile::encodeName(ball_);
+        const QByteArray errPath = QFile::encodeName(dir_.filePath("blocked.err"));
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            ::dup2(fds[1], 1);
+            const int err = ::open(errPath.constData(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            ::dup2(err, 2);
+            ::close(fds[0]);
+            ::execl(program.constData(), program.constData(), "run", scene.constData(), "--csv",
+                    "-", static_cast<char*>(nullptr));
+            ::_exit(127);
+        }
+        ::close(fds[1]);
+        QTest::qWait(1500);  // the pipe (64 KiB) is full within milliseconds; nobody reads it
+        ::kill(pid, signal);
+        int status = 0;
+        QElapsedTimer waited;
+        waited.start();
+        pid_t done = 0;
+        while ((done = ::waitpid(pid, &status, WNOHANG)) == 0 && waited.elapsed() < 10000)
+            ::usleep(10000);
+        if (done == 0) {
+            ::kill(pid, SIGKILL);
+            ::waitpid(pid, &status, 0);
+        }
+        ::close(fds[0]);
+        QVERIFY2(done == pid, "still blocked in write() 10 s after the signal");
+        QVERIFY(WIFEXITED(status));
+        QCOMPARE(WEXITSTATUS(status), 130);
+        QFile err(QString::fromLocal8Bit(errPath));
+        QVERIFY(err.open(QIODevice::ReadOnly));
+        const QByteArray text = err.readAll();
+        QVERIFY2(text.contains("phasebox-cli: interrupted at t = "), text.constData());
     }
 
     // Without a signal nothing says "interrupted".

@@ -40,6 +40,21 @@ Result cli(const QStringList& args, int timeoutMs = 60000) {
     return phasebox::testing::runCli(args, timeoutMs);
 }
 
+// Starts the CLI in p (set up by the caller) and waits up to a minute for it.
+Result finish(QProcess& p, const QStringList& args) {
+    p.start(QStringLiteral(PHASEBOX_CLI), args);
+    Result r;
+    if (!p.waitForFinished(60000)) {
+        p.kill();
+        p.waitForFinished();
+        return r;
+    }
+    r.status = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = p.readAllStandardOutput();
+    r.err = p.readAllStandardError();
+    return r;
+}
+
 // Runs the CLI with a file-size limit (RLIMIT_FSIZE, set in the child between fork and exec)
 // and, when given, standard output going to a file. SIGXFSZ keeps its default action in the
 // child: the program itself must not die of it.
@@ -52,17 +67,15 @@ Result cliLimited(const QStringList& args, rlim_t bytes, const QString& stdoutFi
         ::setrlimit(RLIMIT_FSIZE, &limit);
     });
     if (!stdoutFile.isEmpty()) p.setStandardOutputFile(stdoutFile);
-    p.start(QStringLiteral(PHASEBOX_CLI), args);
-    Result r;
-    if (!p.waitForFinished(60000)) {
-        p.kill();
-        p.waitForFinished();
-        return r;
-    }
-    r.status = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
+    return finish(p, args);
+}
+
+// Runs the CLI with standard output going to stdoutFile, appended when append is set (the
+// shell's `> FILE` and `>> FILE`).
+Result cliToFile(const QStringList& args, const QString& stdoutFile, bool append = false) {
+    QProcess p;
+    p.setStandardOutputFile(stdoutFile, append ? QIODevice::Append : QIODevice::Truncate);
+    return finish(p, args);
 }
 
 // Every line of standard error is one of phasebox-cli's own.
@@ -336,6 +349,102 @@ private slots:
                                 "%1; give each its own file")
                      .arg(png));
         QVERIFY(!QFileInfo::exists(png));
+    }
+
+    // Issue #38: `run --csv /dev/stdout > out.csv` opened out.csv a second time at offset 0,
+    // and the summary, written through standard output, overwrote the CSV's head. A path that
+    // is standard output (by name, through /proc/self/fd/1, or the very file `>` opened) is
+    // standard output: the CSV alone, whole, and no summary.
+    void csvOntoStandardOutputByAnotherNameIsNotOverwritten_data() {
+        QTest::addColumn<QString>("spelling");
+        QTest::newRow("/dev/stdout") << "/dev/stdout";
+        QTest::newRow("/proc/self/fd/1") << "/proc/self/fd/1";
+        QTest::newRow("the file itself") << "file";
+    }
+    void csvOntoStandardOutputByAnotherNameIsNotOverwritten() {
+        QFETCH(QString, spelling);
+        const QString out = dir_.filePath("stdout.csv");
+        const QString csv = spelling == "file" ? out : spelling;
+        const Result r = cliToFile({"run", ball_, "--csv", csv}, out);
+        QCOMPARE(r.status, 0);
+        const QByteArray text = readAll(out);
+        QVERIFY2(text.startsWith("t,kinetic,potential,work_nc,drift,correction,constraint_error,"),
+                 text.left(200).constData());
+        QVERIFY2(!text.contains("scene:"), "the summary went into the CSV");
+        QCOMPARE(text.count('\n'), 12);  // the header, t = 0 and ten steps
+    }
+
+    // Two outputs on the one standard output (`--json` and `--csv /proc/self/fd/1`): refused.
+    void twoOutputsOntoStandardOutputAreRefused() {
+        const Result r = cli({"run", ball_, "--json", "--csv", "/proc/self/fd/1"}, 30000);
+        QCOMPARE(r.status, 2);
+        QCOMPARE(QString::fromUtf8(r.err).trimmed(),
+                 QStringLiteral("phasebox-cli: error: --json and --csv /proc/self/fd/1 both write "
+                                "to standard output; give --csv a file"));
+    }
+
+    // A symbolic link that leads to itself was replaced by a regular file (exit 0): refused
+    // before anything runs, and the link stays.
+    void outputThatIsASymlinkLoopIsRefused() {
+        const QString loop = dir_.filePath("loop.csv");
+        QFile::remove(loop);
+        QCOMPARE(::symlink("loop.csv", QFile::encodeName(loop).constData()), 0);
+        const Result r = cli({"run", ball_, "--csv", loop}, 30000);
+        QCOMPARE(r.status, 2);
+        QCOMPARE(QString::fromUtf8(r.err).trimmed(),
+                 QStringLiteral("phasebox-cli: error: --csv %1: it is a loop of symbolic links "
+                                "(too many levels); it would be replaced by a regular file")
+                     .arg(loop));
+        QVERIFY(QFileInfo(loop).isSymLink());
+        const Result scene = cli({"scene", "pyramid", loop}, 30000);
+        QCOMPARE(scene.status, 2);
+        QVERIFY(QFileInfo(loop).isSymLink());
+    }
+
+    // Standard output appended to the scene (`>> scene.json`): the summary would be added to
+    // the scene. Refused, the scene byte for byte.
+    void standardOutputThatIsTheSceneIsRefused() {
+        const QString scene = write("appended.json", kBall);
+        for (const char* command : {"run", "accuracy", "info"}) {
+            const Result r = cliToFile({QString::fromLatin1(command), scene}, scene, true);
+            QCOMPARE(r.status, 2);
+            QCOMPARE(QString::fromUtf8(r.err).trimmed(),
+                     QStringLiteral("phasebox-cli: error: standard output is the scene file being "
+                                    "read (%1); writing it would destroy the scene. Send the "
+                                    "output elsewhere")
+                         .arg(scene));
+            QCOMPARE(readAll(scene), QByteArray(kBall));
+        }
+    }
+
+    // `scene NAME ''` and `accuracy --csv ''`: an empty name is refused (exit 2).
+    void emptyOutputNameIsRefused() {
+        const Result scene = cli({"scene", "pyramid", ""}, 30000);
+        QCOMPARE(scene.status, 2);
+        QCOMPARE(QString::fromUtf8(scene.err).trimmed(),
+                 QStringLiteral("phasebox-cli: error: scene FILE: the file name is empty; give a "
+                                "file, or - for standard output"));
+        const Result accuracy = cli({"accuracy", ball_, "--csv", ""}, 30000);
+        QCOMPARE(accuracy.status, 2);
+        const Result twice = cli({"accuracy", ball_, "--plot", "a.png", "--plot", "b.png"}, 30000);
+        QCOMPARE(twice.status, 2);
+        QCOMPARE(QString::fromUtf8(twice.err).trimmed(),
+                 QStringLiteral("phasebox-cli: error: --plot given twice; each output is written "
+                                "once, give it one file"));
+    }
+
+    // A disk that fills during a long run: the run stops at the failed write (exit 3 within
+    // seconds), not at its end, a billion steps later.
+    void csvOntoFullDeviceStopsALongRunPromptly() {
+        const QString full = device("full-long", SystemDevice::Full);
+        QVERIFY(!full.isEmpty());
+        const Result r =
+            cli({"run", ball_, "--dt", "0.001", "--duration", "1000000", "--csv", full}, 30000);
+        QCOMPARE(r.status, 3);
+        QCOMPARE(QString::fromUtf8(r.err).trimmed(),
+                 QStringLiteral("phasebox-cli: error: %1: cannot write the CSV file: No space "
+                                "left on device")
+                     .arg(full));
     }
 
     // A FIFO, a device or a folder as the scene: refused at once (a FIFO with no writer used to

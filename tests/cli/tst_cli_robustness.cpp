@@ -115,6 +115,21 @@ private slots:
             "unexpected argument \"other.json\" (the scene is \"BALL\")");
         row("json and csv on stdout", {"--json", "--csv", "-"},
             "--json and --csv - both write to standard output; give --csv a file");
+        // Issue #38: an empty output name was ignored (exit 0), a repeated output option kept
+        // only the last one.
+        row("csv empty", {"--csv", ""},
+            "--csv: the file name is empty; give a file, or - for standard output");
+        row("plot-energy empty", {"--plot-energy", ""},
+            "--plot-energy: the file name is empty; give a file, or - for standard output");
+        row("csv twice", {"--csv", "a.csv", "--csv", "b.csv"},
+            "--csv given twice; each output is written once, give it one file");
+        row("plot-energy twice", {"--plot-energy", "a.png", "--plot-energy", "b.png"},
+            "--plot-energy given twice; each output is written once, give it one file");
+        row("plot-phase twice",
+            {"--plot-phase", "ball.x", "a.png", "--plot-phase", "ball.y", "b.png"},
+            "--plot-phase given twice; each output is written once, give it one file");
+        row("json and csv /dev/stdout", {"--json", "--csv", "/dev/stdout"},
+            "--json and --csv /dev/stdout both write to standard output; give --csv a file");
         row("unknown track id", {"--track", "ghost"}, "--track: unknown object id \"ghost\"");
         row("phase of nothing", {"--plot-phase", "ghost.x", "p.png"},
             "--plot-phase: unknown object \"ghost.x\" (expected ID.COORD, e.g. ball.x)");
@@ -184,6 +199,40 @@ private slots:
             << QByteArray(
                    R"({"format": "phasebox-scene", "version": 1, "simulation": {"duration": 1e300}})")
             << ": simulation.duration: must be <= 1e6 (got 1e300)";
+        // Issue #38: simulation.sleep took any value; it is a boolean (CONTRACT §6).
+        QTest::newRow("sleep a string")
+            << QByteArray(
+                   R"({"format": "phasebox-scene", "version": 2, "simulation": {"sleep": "yes"}})")
+            << ": simulation.sleep: must be true or false";
+        QTest::newRow("sleep a number")
+            << QByteArray(
+                   R"({"format": "phasebox-scene", "version": 2, "simulation": {"sleep": 1}})")
+            << ": simulation.sleep: must be true or false";
+        // Issue #38: Qt calls a comment or a single-quoted string an "unterminated object"
+        // somewhere after it, and drops the backslash of an invalid escape ("C:\lessons" read
+        // as "C:lessons"). Each is named where it starts.
+        QTest::newRow("line comment") << QByteArray(
+                                             "{\"format\": \"phasebox-scene\", \"version\": 1,\n"
+                                             "  // the ball\n  \"particles\": []}")
+                                      << ":2:3: JSON has no comments; remove the // comment";
+        QTest::newRow("block comment")
+            << QByteArray("{\"format\": \"phasebox-scene\", /* v1 */ \"version\": 1}")
+            << ":1:30: JSON has no comments; remove the /* */ comment";
+        QTest::newRow("comment after the object")
+            << QByteArray("{\"format\": \"phasebox-scene\", \"version\": 1}\n// end\n")
+            << ":2:1: JSON has no comments; remove the // comment";
+        QTest::newRow("single-quoted value")
+            << QByteArray("{\"format\": 'phasebox-scene', \"version\": 1}")
+            << ":1:12: strings take double quotes (\"...\"), not single quotes";
+        QTest::newRow("single-quoted key")
+            << QByteArray("{\"format\": \"phasebox-scene\",\n 'version': 1}")
+            << ":2:2: strings take double quotes (\"...\"), not single quotes";
+        QTest::newRow("invalid escape")
+            << QByteArray(R"({"format": "phasebox-scene", "version": 1, "name": "C:\lessons"})")
+            << ":1:55: invalid escape \\l; write \\\\ for a backslash";
+        QTest::newRow("invalid unicode escape")
+            << QByteArray(R"({"format": "phasebox-scene", "version": 1, "name": "\u12"})")
+            << ":1:53: invalid escape \\u: it takes four hexadecimal digits (\\u00e9)";
     }
 
     void badSceneFilesExitTwo() {
@@ -197,6 +246,16 @@ private slots:
             QCOMPARE(firstMessage(r.err),
                      QStringLiteral("phasebox-cli: error: ") + path + expected);
         }
+    }
+
+    // Issue #38: `accuracy --duration 1e7` blamed the scene file (simulation.duration); the
+    // message names the option.
+    void accuracyDurationOutOfRangeNamesTheOption() {
+        const Result r = cli({"accuracy", ball_, "--duration", "1e7"}, 30000);
+        QCOMPARE(r.status, 2);
+        QCOMPARE(
+            firstMessage(r.err),
+            QStringLiteral("phasebox-cli: error: --duration: must be > 0 and <= 1e6 (got 1e7)"));
     }
 
     // An output that cannot be written is exit 3 (CONTRACT §4), not bad input.
