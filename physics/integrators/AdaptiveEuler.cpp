@@ -48,8 +48,9 @@ public:
         const double end = t + H;
         double time = t;
         long long internal = 0;
-        const long long maxInternal = AdaptiveStepper::budget(settings_.workShare, kMaxInternalWork,
-                                                              q0.size(), kMaxInternalSteps);
+        const long long maxInternal = std::min<long long>(
+            kMaxInternalSteps, static_cast<long long>(settings_.workShare * kMaxInternalWork /
+                                                      static_cast<double>(q0.size() + 1)));
         while (time < end) {
             const double h = stepper_.next(end - time, H);
             if (AdaptiveStepper::collapsed(h, H) || ++internal > maxInternal) return false;

@@ -34,21 +34,6 @@ public:
     // rather than loop forever on a singular or diverging problem.
     static bool collapsed(double h, double callerStep) { return h < 1e-12 * callerStep; }
 
-    // The most internal steps a caller's step may take: within maxWork internal steps times
-    // coordinates (a large scene), and within kMaxInternalPerFrame whatever the scene's size,
-    // each shared by workShare (the caller's sub-steps split the frame's budget). Past it the
-    // method gives up and the world reports the scene too stiff for it: its step had fallen
-    // below about dt/1024 on average, and a chain of 100 particles on rods whipping under
-    // adaptive_euler took 13,000 evaluations a frame, 76 s for 10 s (issue #38), where the
-    // coordinates' budget alone allowed 500,000 internal steps a frame.
-    static constexpr long long kMaxInternalPerFrame = 1024;
-    static long long budget(double workShare, double maxWork, long long coordinates,
-                            long long maxSteps) {
-        const double byWork = workShare * maxWork / static_cast<double>(coordinates + 1);
-        const double byFrame = std::max(1.0, workShare * kMaxInternalPerFrame);
-        return static_cast<long long>(std::min({static_cast<double>(maxSteps), byWork, byFrame}));
-    }
-
 private:
     double suggested_ = 0.0;
 };

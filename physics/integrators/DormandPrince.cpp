@@ -73,8 +73,9 @@ public:
         const Eigen::Index n = q.size();
         double time = t;
         long long internal = 0;
-        const long long maxInternal = AdaptiveStepper::budget(settings_.workShare, kMaxInternalWork,
-                                                              q0.size(), kMaxInternalSteps);
+        const long long maxInternal = std::min<long long>(
+            kMaxInternalSteps, static_cast<long long>(settings_.workShare * kMaxInternalWork /
+                                                      static_cast<double>(q0.size() + 1)));
         // First stage at the start of this call; later ones reuse the last stage.
         power_[0] = sys.acceleration(time, q, u, ku_[0]);
         kq_[0] = u;
