@@ -315,6 +315,12 @@ int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err)
     if (!loaded.ok()) return fail(err, loaded.errorText());
     const SceneDesc& scene = *loaded.scene;
     const QString sceneName = scene.name.empty() ? o.scene : QString::fromStdString(scene.name);
+    // Each dt's run is refused as `run` refuses it (issue #38: --dt 1e-10 ran unbounded). The
+    // default list is the scene's dt, which `run` takes, and smaller by at most 32.
+    const double duration = o.study.duration > 0.0 ? o.study.duration : scene.simulation.duration;
+    for (const double dt : o.study.dts)
+        if (const QString problem = runLengthProblem(duration, dt); !problem.isEmpty())
+            return fail(err, problem);
 
     AccuracyResult result;
     try {

@@ -5,8 +5,6 @@
 
 #include <QFile>
 #include <QFileInfo>
-
-#include <cmath>
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
@@ -60,6 +58,17 @@ QString noteOutputOption(const QString& option, const QString& path, QStringList
     seen << option;
     if (path.isEmpty()) return checkOutputPath(option, path);
     return {};
+}
+
+QString runLengthProblem(double duration, double dt) {
+    // Checked as a double: the count of a 1e6 s run at dt = 1e-300 does not fit any integer.
+    const double stepCount = std::ceil(duration / dt - 1e-9);
+    if (stepCount <= kMaxRunSteps) return {};
+    return QStringLiteral(
+               "a run of %1 s at dt = %2 s takes %3 steps; at most %4 are "
+               "allowed: use a larger --dt or a shorter --duration")
+        .arg(QString::number(duration, 'g', 15), QString::number(dt, 'g', 15),
+             QString::number(stepCount, 'g', 3), QString::number(kMaxRunSteps, 'g', 3));
 }
 
 QString checkOutputs(const QString& scene, const QList<QPair<QString, QString>>& outputs) {

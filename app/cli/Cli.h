@@ -42,4 +42,11 @@ QString checkOutputPath(const QString& option, const QString& path);
 // An output option (--csv, --plot-*) met while parsing: refused when empty or given twice.
 QString noteOutputOption(const QString& option, const QString& path, QStringList& seen);
 
+// A run longer than this is refused before it starts: at dt = 1/60 it is 190 days of simulated
+// time, and a tiny --dt with a long --duration would otherwise run for years.
+constexpr double kMaxRunSteps = 1e9;
+// The message refusing a run of duration at dt when it takes more than kMaxRunSteps steps;
+// empty when it does not. `run` and `accuracy` (each of its dt) refuse alike.
+QString runLengthProblem(double duration, double dt);
+
 }  // namespace phasebox::cli

@@ -18,6 +18,13 @@ namespace phasebox {
 namespace {
 // Motor impulses and the velocity projection alternate this many times.
 constexpr int kMotorIterations = 4;
+// A motor turns b against a, and each end must take its torque: a rigid body, the world or a
+// fixed point. A free particle has no angle: a motor on one turned the other body alone, an
+// external torque booked as motor work (issue #38; the validation refuses such a motor, and
+// one left here does nothing).
+bool takesTorque(const joints::End& e) {
+    return e.rigid || e.dof < 0;
+}
 }  // namespace
 
 // ---- binding: ends and the joint graph ----------------------------------------------------
@@ -72,7 +79,8 @@ void JointSolver::bind(const Bodies& bodies) {
     for (const Joint& j : joints_) {
         endA_.push_back(withSlot(resolve(j.a)));
         endB_.push_back(withSlot(resolve(j.b)));
-        hasMotors_ = hasMotors_ || j.hasMotor;
+        hasMotors_ =
+            hasMotors_ || (j.hasMotor && takesTorque(endA_.back()) && takesTorque(endB_.back()));
         hasInequalities_ = hasInequalities_ || j.hasLimits || j.type == Joint::Type::Rope ||
                            j.type == Joint::Type::Pulley;
     }
@@ -419,9 +427,9 @@ double JointSolver::driveMotors(double h, const Vec& q, Vec& u, const Vec& mass,
     for (int it = 0; it < kMotorIterations; ++it) {
         for (int k = 0; k < jointCount(); ++k) {
             const Joint& j = joints_[k];
-            if (!j.hasMotor) continue;
             const End& a = endA_[k];
             const End& b = endB_[k];
+            if (!j.hasMotor || !takesTorque(a) || !takesTorque(b)) continue;
             const double ia = a.turns ? invMass[a.dof + 2] : 0.0;
             const double ib = b.turns ? invMass[b.dof + 2] : 0.0;
             if (ia + ib <= 0.0) continue;

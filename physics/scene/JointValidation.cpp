@@ -132,14 +132,22 @@ void checkJoints(Checker& check, const SceneDesc& scene, const ClaimId& claim,
         switch (j.type) {
             case JointType::Hinge:
                 if (!j.anchor) check.fail(here(key::anchor), "is required");
-                // The joint angle is θb − θa: with no body that turns it never changes.
-                if (endsKnown && !a->turns() && !(b && b->turns()))
+                // The joint angle is θb − θa: with no body that turns it never changes. A free
+                // particle has no angle and takes no torque: a motor or a limit against one would
+                // turn the other body alone, an external torque out of nowhere (issue #38).
+                if (const char* why =
+                        !endsKnown ? nullptr
+                        : !a->turns() && !(b && b->turns())
+                            ? "neither body can turn, so the joint angle cannot change; limits "
+                              "and a motor need a dynamic box, disk or polygon"
+                        : (!a->rigid && !a->fixed) || (b && !b->rigid && !b->fixed)
+                            ? "a free particle has no angle and takes no torque; limits and a "
+                              "motor need both ends to be boxes, disks, polygons or fixed, so "
+                              "that their torque acts on both"
+                            : nullptr)
                     for (const auto& [field, given] : {std::pair{key::limits, j.limits.has_value()},
                                                        std::pair{key::motor, j.motor.has_value()}})
-                        if (given)
-                            check.fail(here(field),
-                                       "neither body can turn, so the joint angle cannot change; "
-                                       "limits and a motor need a dynamic box, disk or polygon");
+                        if (given) check.fail(here(field), why);
                 break;
             case JointType::Rod:
             case JointType::Rope:

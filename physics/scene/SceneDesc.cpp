@@ -109,9 +109,10 @@ std::string springId(const SceneDesc& s, std::size_t i) {
     return defaultOr(s.springs[i].id, "s", i);
 }
 long long stepWorkUnits(const SceneDesc& scene) {
-    long long units =
-        static_cast<long long>(scene.particles.size() + scene.boxes.size() + scene.disks.size() +
-                               scene.polygons.size() + scene.springs.size() + scene.joints.size());
+    const auto count = [](const auto& objects) { return static_cast<long long>(objects.size()); };
+    long long units = count(scene.particles) + count(scene.springs) +
+                      SceneLimits::kCostlyWorkUnits * (count(scene.boxes) + count(scene.disks) +
+                                                       count(scene.polygons) + count(scene.joints));
     for (const ClothDesc& cloth : scene.cloths) {
         const long long nx = std::max(0, cloth.resolution[0]),
                         ny = std::max(0, cloth.resolution[1]);
@@ -127,8 +128,9 @@ std::string substepWorkProblem(const SceneDesc& scene, long long substeps) {
     const long long units = std::max(1LL, stepWorkUnits(scene));
     if (substeps <= SceneLimits::kMaxSubstepWork / units) return {};
     return std::to_string(substeps) + " sub-steps of a scene of " + std::to_string(units) +
-           " objects (particles, cloth nodes and springs, rigid bodies, springs, joints) is " +
-           "too much work a step: sub-steps times objects may be at most " +
+           " work units (a particle, cloth node or spring 1, a rigid body or joint " +
+           std::to_string(SceneLimits::kCostlyWorkUnits) + ") is " +
+           "too much work a step: sub-steps times units may be at most " +
            std::to_string(SceneLimits::kMaxSubstepWork) + ", so at most " +
            std::to_string(SceneLimits::kMaxSubstepWork / units) + " sub-steps for this scene";
 }

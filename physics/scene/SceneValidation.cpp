@@ -181,8 +181,28 @@ void checkPolygon(Checker& check, const std::string& path, const std::vector<Poi
         }
         turning += std::atan2(cross, in[0] * out[0] + in[1] * out[1]);
     }
-    if (!(std::abs(std::abs(turning) - 2.0 * std::numbers::pi) < 1e-6))
+    if (!(std::abs(std::abs(turning) - 2.0 * std::numbers::pi) < 1e-6)) {
         check.fail(path, "the polygon is not convex: its edges cross");
+        return;
+    }
+    // The size floor boxes have (kMinBoxSize on each side): a polygon's thinnest extent, its
+    // width across the edge it is narrowest over (a convex polygon's width is least flush with
+    // an edge), as a box's is its shorter side. Below it the moment of inertia (∝ size⁴·ρ)
+    // leaves the range the solvers are accurate in: a 1e-9 triangle loaded and diverged.
+    double width = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto e = edge(i);
+        const double length = std::hypot(e[0], e[1]);
+        double across = 0.0;
+        for (const Point2& p : v)
+            across = std::max(across,
+                              std::abs(e[0] * (p[1] - v[i][1]) - e[1] * (p[0] - v[i][0])) / length);
+        width = std::min(width, across);
+    }
+    if (!(width >= L::kMinBoxSize))
+        check.fail(path, "the polygon is too small: its width is " + fmt(width) +
+                             " m; it must be at least " + fmt(L::kMinBoxSize) +
+                             " m across, as a box's sides must");
 }
 
 }  // namespace

@@ -225,6 +225,10 @@ void TestJointSceneIO::jointErrors_data() {
     const QString noTurn = QStringLiteral(
         "neither body can turn, so the joint angle cannot change; limits and a motor need a "
         "dynamic box, disk or polygon");
+    // Issue #38: a free particle takes no torque, so a limit or motor against it is refused.
+    const QString freeParticle = QStringLiteral(
+        "a free particle has no angle and takes no torque; limits and a motor need both ends to "
+        "be boxes, disks, polygons or fixed, so that their torque acts on both");
     const QString sameEnds = QStringLiteral(
         "its two ends start at the same point, so its length would be 0; give a length > 0");
     const QString noDirection =
@@ -305,7 +309,8 @@ void TestJointSceneIO::jointErrors_data() {
            {"type": "hinge", "a": "p", "b": "wall", "anchor": [0, 0], "limits": [0, 1]},
            {"type": "hinge", "a": "p", "b": "wheel", "anchor": [0, 0], "limits": [0, 1]})",
         {msg("joints[0].limits", noTurn), msg("joints[0].motor", noTurn),
-         msg("joints[1].motor", noTurn), msg("joints[2].limits", noTurn)});
+         msg("joints[1].motor", noTurn), msg("joints[2].limits", noTurn),
+         msg("joints[3].limits", freeParticle)});
     row("motor torque", R"({"type": "hinge", "a": "box", "anchor": [2, 0],
                             "motor": {"speed": 1e7, "max_torque": -1}})",
         {msg("joints[0].motor.speed", "must be between -1e6 and 1e6 (got 1e7)"),

@@ -219,6 +219,11 @@ private slots:
             << QStringList{"accuracy", scene, "--plot", dir_.filePath("x.gif")} << ".png or .svg";
         QTest::newRow("unknown option")
             << QStringList{"accuracy", scene, "--fast"} << "unknown option";
+        // Issue #38: refused at once as `run` refuses it (it ran unbounded).
+        QTest::newRow("dt 1e-10")
+            << QStringList{"accuracy", scene, "--dt", "0.01,1e-10", "--duration", "10"}
+            << "a run of 10 s at dt = 1e-10 s takes 1e+11 steps; at most 1e+09 are allowed: use "
+               "a larger --dt or a shorter --duration";
     }
 
     void badInputExitsTwo() {

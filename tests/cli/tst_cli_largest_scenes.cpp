@@ -199,8 +199,8 @@ private slots:
     }
 
     // Sub-steps times the scene's size is bounded (the largest chain takes 2.5 s a sub-step):
-    // 200 particles may take the format's 10,000 sub-steps, 201 may not, in the file or on the
-    // command line, and the message names the limit and the most this scene may take.
+    // 6,400 particles may take the format's 10,000 sub-steps, 6,401 may not, in the file or on
+    // the command line, and the message names the limit and the most this scene may take.
     void substepWorkIsBounded() {
         const auto spread = [](int n, int substeps) {
             QByteArray text = QStringLiteral(R"({"format": "phasebox-scene", "version": 1,
@@ -215,26 +215,27 @@ private slots:
                             .toLatin1();
             return text + "]}";
         };
-        const QString ok = phasebox::testing::writeFile(dir_, "work-ok.json", spread(200, 10000));
+        const QString ok = phasebox::testing::writeFile(dir_, "work-ok.json", spread(6400, 10000));
         const MeasuredResult run = measure({"run", ok, "--duration", "0.016666666666666666"});
         QVERIFY2(run.status == 0, qPrintable(describe(run)));
         const QString over =
-            phasebox::testing::writeFile(dir_, "work-over.json", spread(201, 10000));
+            phasebox::testing::writeFile(dir_, "work-over.json", spread(6401, 10000));
         const MeasuredResult refused = measure({"info", over});
         QCOMPARE(refused.status, 2);
-        QVERIFY2(refused.err.contains("simulation.substeps: 10000 sub-steps of a scene of 201 "
-                                      "objects") &&
-                     refused.err.contains("sub-steps times objects may be at most 2000000, so at "
-                                          "most 9950 sub-steps for this scene"),
+        QVERIFY2(refused.err.contains("simulation.substeps: 10000 sub-steps of a scene of 6401 "
+                                      "work units") &&
+                     refused.err.contains("sub-steps times units may be at most 64000000, so at "
+                                          "most 9998 sub-steps for this scene"),
                  qPrintable(describe(refused)));
-        const QString small = phasebox::testing::writeFile(dir_, "work-small.json", spread(201, 1));
+        const QString small =
+            phasebox::testing::writeFile(dir_, "work-small.json", spread(6401, 1));
         const MeasuredResult flag = measure({"run", small, "--substeps", "10000"});
         QCOMPARE(flag.status, 2);
-        QVERIFY2(flag.err.contains("--substeps: 10000 sub-steps of a scene of 201 objects"),
+        QVERIFY2(flag.err.contains("--substeps: 10000 sub-steps of a scene of 6401 work units"),
                  qPrintable(describe(flag)));
     }
 
-    // The largest cloth at the most sub-steps it may take (17: 113,410 objects with its
+    // The largest cloth at the most sub-steps it may take (564: 113,410 work units with its
     // springs) at 2e4 N/m under adaptive_euler, which needs tiny steps (they follow the
     // stiffest mode): the methods' work budget is per frame, shared by its sub-steps, so the
     // frame stops within the bounds (1.7 s here). With a whole budget per sub-step the frame
@@ -242,18 +243,18 @@ private slots:
     void largestClothAtItsMostSubsteps() {
         QByteArray text = cloth(128, 128, "adaptive_euler", 2e4);
         text.replace(R"("dt": 0.016666666666666666})",
-                     R"("dt": 0.016666666666666666, "substeps": 17})");
-        const QString scene = phasebox::testing::writeFile(dir_, "cloth128-17.json", text);
+                     R"("dt": 0.016666666666666666, "substeps": 564})");
+        const QString scene = phasebox::testing::writeFile(dir_, "cloth128-564.json", text);
         const MeasuredResult step = measure({"run", scene, "--duration", "0.016666666666666666"});
         QVERIFY2(step.status == 1, qPrintable(describe(step)));
         QVERIFY2(step.err.contains("could not meet its tolerance"), qPrintable(describe(step)));
         QVERIFY2(step.cpuSeconds < kSecondsBound && step.maxRssKb < kMemoryBoundKb,
                  qPrintable(describe(step)));
-        text.replace(R"("substeps": 17})", R"("substeps": 18})");
-        const QString over = phasebox::testing::writeFile(dir_, "cloth128-18.json", text);
+        text.replace(R"("substeps": 564})", R"("substeps": 565})");
+        const QString over = phasebox::testing::writeFile(dir_, "cloth128-565.json", text);
         const MeasuredResult refused = measure({"info", over});
         QCOMPARE(refused.status, 2);
-        QVERIFY2(refused.err.contains("18 sub-steps of a scene of 113410 objects"),
+        QVERIFY2(refused.err.contains("565 sub-steps of a scene of 113410 work units"),
                  qPrintable(describe(refused)));
     }
 

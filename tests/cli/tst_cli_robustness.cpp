@@ -233,6 +233,14 @@ private slots:
         QTest::newRow("invalid unicode escape")
             << QByteArray(R"({"format": "phasebox-scene", "version": 1, "name": "\u12"})")
             << ":1:53: invalid escape \\u: it takes four hexadecimal digits (\\u00e9)";
+        // Issue #38: polygons have the boxes' size floor (1 µm across); a 1e-9 triangle loaded
+        // and diverged. A polygon's size is its width, its least extent across (a box's is its
+        // shorter side), here the height of a 2e-9 x 1e-9 triangle.
+        QTest::newRow("polygon 1e-9")
+            << QByteArray(
+                   R"({"format": "phasebox-scene", "version": 2, "polygons": [{"position": [0, 0], "vertices": [[-1e-9, 0], [1e-9, 0], [0, 1e-9]]}]})")
+            << ": polygons[0].vertices: the polygon is too small: its width is 1e-9 m; it must "
+               "be at least 1e-6 m across, as a box's sides must";
     }
 
     void badSceneFilesExitTwo() {
