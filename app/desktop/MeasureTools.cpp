@@ -113,12 +113,10 @@ std::optional<FreeBody> MeasureTools::freeBody() const {
 std::optional<MeasureTools::End> MeasureTools::parseEnd(const QString& text) const {
     const QString t = text.trimmed();
     if (findProbeObject(document_.world(), t.toStdString())) return End{t, {}};
-    const QStringList xy = t.split(QLatin1Char(':'));
-    if (xy.size() != 2) return std::nullopt;
-    bool okX = false, okY = false;
-    const double x = xy[0].toDouble(&okX), y = xy[1].toDouble(&okY);
-    if (!okX || !okY || !std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
-    return End{{}, QPointF(x, y)};
+    // The probes' own reading of X:Y, so an end means what its probe means.
+    const std::optional<Vec2> point = parseProbePoint(t.toStdString());
+    if (!point) return std::nullopt;
+    return End{{}, QPointF(point->x(), point->y())};
 }
 
 void MeasureTools::addRuler(const End& a, const End& b) {

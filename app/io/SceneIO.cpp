@@ -134,17 +134,26 @@ public:
 
     // A key that is close to a known one is a typo that would silently drop a value (a
     // teacher's spring losing its stiffness), so it is an error; anything further away is an
-    // extension and is ignored.
-    void checkKeys(const QJsonObject& object, const QString& path, KeyList known) {
+    // extension and is ignored, unless the object is strict (the instruments, the app's own
+    // section: there an instrument misspelt would vanish from a lesson without a word).
+    enum class Unknown { Ignored, Refused };
+    void checkKeys(const QJsonObject& object, const QString& path, KeyList known,
+                   Unknown unknown = Unknown::Ignored) {
         for (auto it = object.begin(); it != object.end(); ++it) {
             const QString key = it.key();
             const bool isKnown = std::any_of(known.begin(), known.end(), [&](std::string_view k) {
                 return key == toQString(k);
             });
             if (isKnown) continue;
-            if (const auto guess = misspeltKey(key, known))
+            if (const auto guess = misspeltKey(key, known)) {
                 fail(join(path, key),
                      QStringLiteral("unknown key; did you mean \"%1\"?").arg(toQString(*guess)));
+            } else if (unknown == Unknown::Refused) {
+                QStringList names;
+                for (std::string_view k : known) names << toQString(k);
+                fail(join(path, key),
+                     QStringLiteral("unknown key; known: ") + names.join(QStringLiteral(", ")));
+            }
         }
     }
 
@@ -224,9 +233,10 @@ enum class Need { Optional, Required };
 // fields keep the value already in the description, which holds the contract's default.
 class Fields {
 public:
-    Fields(Reader& reader, QJsonObject object, QString path, KeyList known)
+    Fields(Reader& reader, QJsonObject object, QString path, KeyList known,
+           Reader::Unknown unknown = Reader::Unknown::Ignored)
         : r_(reader), object_(std::move(object)), path_(std::move(path)) {
-        r_.checkKeys(object_, path_, known);
+        r_.checkKeys(object_, path_, known, unknown);
     }
 
     bool has(std::string_view key) const { return object_.contains(toQString(key)); }
@@ -474,20 +484,7 @@ void readEffect(Fields& effects, std::string_view key, std::optional<Desc>& out)
     out = std::move(desc);
 }
 
-// ---- instruments (CONTRACT §7) ----
-// The app's own section: every key in it is known, so any other is refused (an instrument
-// misspelt would vanish from a lesson without a word).
-void refuseUnknownKeys(Reader& r, const QJsonObject& object, const QString& path, KeyList known) {
-    QStringList names;
-    for (std::string_view k : known) names << toQString(k);
-    for (auto it = object.begin(); it != object.end(); ++it) {
-        if (names.contains(it.key())) continue;
-        const auto guess = misspeltKey(it.key(), known);
-        r.fail(join(path, it.key()),
-               guess ? QStringLiteral("unknown key; did you mean \"%1\"?").arg(toQString(*guess))
-                     : QStringLiteral("unknown key; known: ") + names.join(QStringLiteral(", ")));
-    }
-}
+// ---- instruments (CONTRACT §7): every key checked strictly (Reader::checkKeys) ----
 
 // An array of non-empty strings (exactly count of them when count > 0).
 void readStrings(Reader& r, const QJsonValue& v, const QString& path, std::vector<std::string>& out,
@@ -518,7 +515,7 @@ void readInstrumentList(Reader& r, const QJsonValue& v, const QString& path, Key
     for (qsizetype i = 0; i < array.size(); ++i) {
         QJsonObject object;
         if (!r.object(array[i], index(path, i), object)) continue;
-        refuseUnknownKeys(r, object, index(path, i), known);
+        r.checkKeys(object, index(path, i), known, Reader::Unknown::Refused);
         one(object, index(path, i));
     }
 }
@@ -548,7 +545,7 @@ void readInstruments(Fields& top, InstrumentsDesc& in) {
     static constexpr std::string_view kKeys[] = {key::probes,    key::graphs, key::timers,
                                                  key::stopwatch, key::rulers, key::protractors,
                                                  key::freeBody,  key::view,   key::plots};
-    refuseUnknownKeys(r, o, path, kKeys);
+    r.checkKeys(o, path, kKeys, Reader::Unknown::Refused);
     auto at = [&](std::string_view k) { return join(path, k); };
     auto has = [&](std::string_view k) { return o.contains(toQString(k)); };
     auto get = [&](std::string_view k) { return o.value(toQString(k)); };
@@ -589,9 +586,8 @@ void readInstruments(Fields& top, InstrumentsDesc& in) {
         QJsonObject v;
         if (r.object(get(key::view), at(key::view), v)) {
             static constexpr std::string_view kViewKeys[] = {key::center, key::width};
-            refuseUnknownKeys(r, v, at(key::view), kViewKeys);
             ViewDesc view;
-            Fields fields(r, v, at(key::view), kViewKeys);
+            Fields fields(r, v, at(key::view), kViewKeys, Reader::Unknown::Refused);
             fields.point(key::center, view.center, Need::Required);
             fields.number(key::width, view.width, Need::Required);
             in.view = view;

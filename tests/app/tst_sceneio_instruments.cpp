@@ -112,6 +112,10 @@ private slots:
         QTest::newRow("view width")
             << QByteArray(R"({"view": {"center": [0, 0]}})") << "instruments.view.width"
             << "is required";
+        QTest::newRow("view key misspelt, said once")
+            << QByteArray(R"({"view": {"center": [0, 0], "width": 1, "widht": 2}})")
+            << "instruments.view.widht"
+            << "unknown key; did you mean \"width\"?";
         QTest::newRow("view zero")
             << QByteArray(R"({"view": {"center": [0, 0], "width": 0}})") << "instruments.view.width"
             << "must be > 0 and at most 2e6";

@@ -7,6 +7,7 @@
 #include "physics/world/World.h"
 #include "ui/panels/PropertiesPanel.h"
 
+#include <variant>
 #include <vector>
 
 namespace phasebox {
@@ -44,7 +45,13 @@ void PropertiesPresenter::update(bool rebuild) {
     const bool body = ref.kind == ObjectKind::Particle || ref.kind == ObjectKind::Box ||
                       ref.kind == ObjectKind::Disk || ref.kind == ObjectKind::Polygon;
     const bool live = body && document_.hasRun();
-    const SceneDesc liveScene = live ? snapshotScene(world, setup) : SceneDesc{};
+    // The selected body alone, snapshotted (this runs every frame: not the whole scene).
+    SceneDesc liveScene;
+    if (live) {
+        std::visit([&](const auto& desc) { arrayOf(liveScene, desc).push_back(desc); },
+                   objectDesc(setup, ref));
+        liveScene = snapshotScene(world, liveScene);
+    }
     std::vector<ui::PropertyField> fields;
     for (const PropertyRow& row : propertiesOf(live ? liveScene : setup, id))
         fields.push_back({row.key, row.label, row.unit, row.value, row.minimum, row.maximum,
