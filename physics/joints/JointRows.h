@@ -29,6 +29,7 @@ struct End {
     Vec2 local{0, 0};     // the point in the body's frame (dynamic rigid body)
     Vec2 fixed{0, 0};     // the point in the world (a fixed end)
     double angle0 = 0.0;  // a fixed end's angle
+    int hub = -1;         // a body kept as a node of the system: its hub (JointSolver.h)
 };
 // An end's point and motion at (q, u).
 struct EndState {

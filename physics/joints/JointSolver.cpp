@@ -118,34 +118,67 @@ void JointSolver::bind(const Bodies& bodies) {
     forceOn_.assign(m, {Vec2::Zero(), Vec2::Zero()});
     motorImpulse_.assign(m, 0.0);
 
-    // The joint graph: two joints are adjacent when they hold a common dynamic body.
+    // The joint graph: two joints are adjacent when they hold a common dynamic body, unless
+    // that body holds more than kHubJoints: then it is a node itself (a hub), adjacent to its
+    // joints (JointSolver.h).
     std::map<int, std::vector<std::pair<int, int>>> byBody;  // dof → (joint, side)
     for (int k = 0; k < m; ++k) {
         if (endA_[k].dof >= 0) byBody[endA_[k].dof].push_back({k, 0});
         if (endB_[k].dof >= 0) byBody[endB_[k].dof].push_back({k, 1});
     }
+    hubs_.clear();
     std::vector<std::set<int>> graph(m);
-    for (const auto& [dof, list] : byBody)
-        for (const auto& [k1, s1] : list)
-            for (const auto& [k2, s2] : list)
-                if (k1 != k2) graph[k1].insert(k2);
-    pattern_.analyse(std::move(graph));
+    for (const auto& [dof, list] : byBody) {
+        if (list.size() <= static_cast<std::size_t>(kHubJoints)) {
+            for (const auto& [k1, s1] : list)
+                for (const auto& [k2, s2] : list)
+                    if (k1 != k2) graph[k1].insert(k2);
+            continue;
+        }
+        const int h = static_cast<int>(hubs_.size());
+        const auto& [k0, s0] = list.front();
+        hubs_.push_back({dof, (s0 == 0 ? endA_[k0] : endB_[k0]).turns ? 3 : 2});
+        graph.emplace_back();
+        for (const auto& [k, side] : list) {
+            (side == 0 ? endA_[k] : endB_[k]).hub = h;
+            graph[k].insert(m + h);
+            graph[m + h].insert(k);
+        }
+    }
+    // A joint that holds hubs alone has no pivot of its own: it goes after them.
+    std::vector<char> late(m + hubs_.size(), 0);
+    const auto outsideHubs = [](const End& e) { return e.dof >= 0 && e.hub < 0; };
+    for (int k = 0; k < m && !hubs_.empty(); ++k)
+        late[k] = !outsideHubs(endA_[k]) && !outsideHubs(endB_[k]);
+    pattern_.analyse(std::move(graph), late);
     couplings_.clear();
+    hubCouplings_.clear();
     for (const auto& [dof, list] : byBody)
-        for (const auto& [k1, s1] : list)
+        for (const auto& [k1, s1] : list) {
+            const int h = (s1 == 0 ? endA_[k1] : endB_[k1]).hub;
+            if (h >= 0) {
+                const int pk = pattern_.position(k1), ph = pattern_.position(m + h);
+                hubCouplings_.push_back(
+                    {pattern_.blockIndex(std::min(pk, ph), std::max(pk, ph)), k1, s1, h, pk > ph});
+                continue;
+            }
             for (const auto& [k2, s2] : list)
                 if (pattern_.position(k1) > pattern_.position(k2))
                     couplings_.push_back(
                         {pattern_.blockIndex(pattern_.position(k2), pattern_.position(k1)), k1, s1,
                          k2, s2});
+        }
     // A weld holds the angle too, and a hinge at a limit: those have three rows.
     blockRows_ = 2;
     for (const Joint& j : joints_)
         if (j.type == Joint::Type::Weld || (j.type == Joint::Type::Hinge && j.hasLimits))
             blockRows_ = 3;
+    for (const Hub& hub : hubs_)
+        if (hub.dofs == 3) blockRows_ = 3;
+    const int nodes = pattern_.size();
     const std::size_t blocks = static_cast<std::size_t>(pattern_.blockCount());
-    factors2_.resize(blockRows_ == 2 ? m : 0, blockRows_ == 2 ? blocks : 0);
-    factors3_.resize(blockRows_ == 3 ? m : 0, blockRows_ == 3 ? blocks : 0);
+    factors2_.resize(blockRows_ == 2 ? nodes : 0, blockRows_ == 2 ? blocks : 0);
+    factors3_.resize(blockRows_ == 3 ? nodes : 0, blockRows_ == 3 ? blocks : 0);
     rowsChanged();
     factoredValid_ = false;
     rowsQ_.resize(0);
@@ -230,20 +263,38 @@ void JointSolver::factorBlocks(BlockLdlt<B>& f, const Vec& invMass) {
         return out;
     };
     const int m = jointCount();
-    for (int p = 0; p < m; ++p) {
+    for (int p = 0; p < pattern_.size(); ++p) {
         const int k = pattern_.node(p);
-        const Rows& r = rows_[k];
         MatB& d = f.diag(p);
-        d = product(r.ja, weights(endA_[k]), r.ja) + product(r.jb, weights(endB_[k]), r.jb);
+        if (k >= m) {  // a hub: −M over its degrees of freedom
+            const Hub& hub = hubs_[k - m];
+            d.setIdentity();
+            for (int i = 0; i < hub.dofs; ++i) {
+                const double w = invMass[hub.dof + i];
+                d(i, i) = w > 0.0 ? -1.0 / w : -1.0;
+            }
+            continue;
+        }
+        const Rows& r = rows_[k];
+        const End& a = endA_[k];
+        const End& b = endB_[k];
+        const bool viaHub = a.hub >= 0 || b.hub >= 0;
+        const auto outside = [&](const End& e) { return e.hub < 0 ? weights(e) : Vec3::Zero(); };
+        d = product(r.ja, outside(a), r.ja) + product(r.jb, outside(b), r.jb);
+        // The whole diagonal, hubs included, scales the regularization below.
+        const MatB whole =
+            viaHub ? MatB(product(r.ja, weights(a), r.ja) + product(r.jb, weights(b), r.jb)) : d;
         for (int i = 0; i < B; ++i) {
             if (i >= r.count) {  // an unused row: the identity keeps the block invertible
                 d.row(i).setZero();
                 d.col(i).setZero();
                 d(i, i) = 1.0;
-            } else {
+            } else if (!viaHub) {
                 // Redundant joints (a closed loop held twice) would make the system singular:
                 // a relative 1e-10 on the diagonal picks the least-norm answer among equals.
                 d(i, i) = d(i, i) > 0.0 ? d(i, i) * (1.0 + 1e-10) : 1.0;
+            } else {
+                d(i, i) = whole(i, i) > 0.0 ? d(i, i) + 1e-10 * whole(i, i) : 1.0;
             }
         }
     }
@@ -255,6 +306,24 @@ void JointSolver::factorBlocks(BlockLdlt<B>& f, const Vec& invMass) {
         const Mat3& jk = c.sideK == 0 ? rk.ja : rk.jb;
         const End& body = c.sideK == 0 ? endA_[c.k] : endB_[c.k];
         f.off(c.block) += product(ji, weights(body), jk);
+    }
+    // A joint and its hub couple by the joint's Jacobian on the hub: [J·W·Jᵀ, J_h; J_hᵀ, −M_h]
+    // eliminates to J·W·Jᵀ with the hub's W back in (Baraff 1996, "Linear-time dynamics using
+    // Lagrange multipliers").
+    for (const HubCoupling& c : hubCouplings_) {
+        const Rows& r = rows_[c.joint];
+        const Mat3& j = c.side == 0 ? r.ja : r.jb;
+        const Hub& hub = hubs_[c.hub];
+        MatB o = MatB::Zero();
+        for (int i = 0; i < std::min(B, r.count); ++i)
+            for (int x = 0; x < hub.dofs; ++x) {
+                const double v = invMass[hub.dof + x] > 0.0 ? j(i, x) : 0.0;
+                if (c.jointLater)
+                    o(i, x) = v;
+                else
+                    o(x, i) = v;
+            }
+        f.off(c.block) += o;
     }
     f.factor(pattern_);
 }
@@ -269,9 +338,16 @@ void JointSolver::solve() {
 template <int B>
 void JointSolver::solveBlocks(BlockLdlt<B>& f) {
     f.solve(
-        pattern_, [&](int p) { return rhs_[pattern_.node(p)].template head<B>(); },
+        pattern_,
+        [&](int p) {
+            const int k = pattern_.node(p);
+            using Column = typename BlockLdlt<B>::Column;
+            return k < jointCount() ? Column(rhs_[k].template head<B>()) : Column::Zero();
+        },
         [&](int p, const std::array<double, B>& x) {
-            Vec3& lambda = lambda_[pattern_.node(p)];
+            const int k = pattern_.node(p);
+            if (k >= jointCount()) return;  // a hub's velocity change: not needed
+            Vec3& lambda = lambda_[k];
             for (int i = 0; i < B; ++i) lambda[i] = x[i];
             if constexpr (B == 2) lambda[2] = 0.0;
         });

@@ -17,9 +17,10 @@
 // the joint graph (one block per joint: 2×2 unless a weld or a hinge limit needs a third row,
 // then 3×3), eliminated in minimum-fill order (physics/linear/BlockLdlt.h).
 // For a chain or a tree of bodies this order makes no fill (tst_joints counts the blocks), so
-// a solve is O(n) (the result
-// Baraff 1996 gets by factoring the body–joint graph); loops add the fill they need. The
-// symbolic part is built once in bind(); evaluations allocate nothing.
+// a solve is O(n) (the result Baraff 1996 gets by factoring the body–joint graph); loops add
+// the fill they need. A body that holds many joints (a star's centre) would make them a
+// clique: it enters the system as a node of its own (hubs_ below), and the star is a tree
+// again. The symbolic part is built once in bind(); evaluations allocate nothing.
 
 #include "physics/core/Bodies.h"
 #include "physics/core/Types.h"
@@ -313,6 +314,21 @@ private:
         int block, i, sideI, k, sideK;
     };
     std::vector<Coupling> couplings_;
+    // A body holding more than kHubJoints joints (a star's centre) is a node of the system
+    // with its own unknowns, its velocity change, instead of coupling each pair of its joints:
+    // a star of n joints is then a tree of n + 1 nodes, factored in O(n), where the pairs make
+    // a clique whose dense factor is O(n³). Kept for larger bodies only, as the pairs are fewer
+    // blocks below that and keep the blocks at 2×2 where every joint has two rows.
+    static constexpr int kHubJoints = 8;
+    struct Hub {
+        int dof, dofs;  // first state index; 2 (particle) or 3 (rigid body)
+    };
+    std::vector<Hub> hubs_;
+    struct HubCoupling {
+        int block, joint, side, hub;
+        bool jointLater;  // the joint is eliminated after the hub
+    };
+    std::vector<HubCoupling> hubCouplings_;
 };
 
 // In the header: every row evaluation takes it twice, and as a call it was a tenth of their cost.

@@ -9,7 +9,7 @@ namespace phasebox {
 
 // ---- the symbolic part -----------------------------------------------------------------------
 
-void BlockLdltPattern::analyse(std::vector<std::set<int>> graph) {
+void BlockLdltPattern::analyse(std::vector<std::set<int>> graph, const std::vector<char>& late) {
     const int m = static_cast<int>(graph.size());
     // Minimum-fill elimination (ties: the smaller degree, then the node that has waited
     // longest): each eliminated node's remaining neighbours become a clique (the fill), and
@@ -22,41 +22,51 @@ void BlockLdltPattern::analyse(std::vector<std::set<int>> graph) {
     // from its root, and the solves were a fifth of the whip's time.
     std::vector<std::vector<int>> later(m);
     const auto fillOf = [&](int k) {
-        int fill = 0;
+        const long long degree = static_cast<long long>(graph[k].size());
+        if (degree > kCountedDegree) return degree * (degree - 1) / 2;
+        long long fill = 0;
         for (auto x = graph[k].begin(); x != graph[k].end(); ++x)
             for (auto y = std::next(x); y != graph[k].end(); ++y) fill += !graph[*x].count(*y);
         return fill;
     };
-    using Key = std::tuple<int, int, int, int>;  // fill, degree, since, node
+    using Key = std::tuple<int, long long, int, int, int>;  // late, fill, degree, since, node
     std::set<Key> queue;
     std::vector<Key> key(m);
+    const auto isLate = [&](int k) { return late.empty() ? 0 : static_cast<int>(late[k] != 0); };
     for (int k = 0; k < m; ++k) {
-        key[k] = {fillOf(k), static_cast<int>(graph[k].size()), 0, k};
+        key[k] = {isLate(k), fillOf(k), static_cast<int>(graph[k].size()), 0, k};
         queue.insert(key[k]);
     }
     order_.clear();
     position_.assign(m, -1);
     while (!queue.empty()) {
-        const int k = std::get<3>(*queue.begin());
+        const int k = std::get<4>(*queue.begin());
         queue.erase(queue.begin());
         position_[k] = static_cast<int>(order_.size());
         order_.push_back(k);
         const std::vector<int> neighbours(graph[k].begin(), graph[k].end());
         later[k] = neighbours;
         for (int x : neighbours) graph[x].erase(k);
+        bool filled = false;
         for (std::size_t s = 0; s < neighbours.size(); ++s)
             for (std::size_t t = s + 1; t < neighbours.size(); ++t)
-                if (graph[neighbours[s]].insert(neighbours[t]).second)
+                if (graph[neighbours[s]].insert(neighbours[t]).second) {
                     graph[neighbours[t]].insert(neighbours[s]);
-        // The fill of the neighbours and of their neighbours may have changed.
+                    filled = true;
+                }
+        // The fill of the neighbours may have changed, and where edges were added that of
+        // their neighbours too (a node's fill counts the missing edges among its neighbours:
+        // without new edges, only the neighbours' own adjacency changed).
         std::set<int> touched(neighbours.begin(), neighbours.end());
-        for (int x : neighbours) touched.insert(graph[x].begin(), graph[x].end());
+        if (filled)
+            for (int x : neighbours) touched.insert(graph[x].begin(), graph[x].end());
         const int now = static_cast<int>(order_.size());
         for (int x : touched) {
-            const int fill = fillOf(x), degree = static_cast<int>(graph[x].size());
-            if (fill == std::get<0>(key[x]) && degree == std::get<1>(key[x])) continue;
+            const long long fill = fillOf(x);
+            const int degree = static_cast<int>(graph[x].size());
+            if (fill == std::get<1>(key[x]) && degree == std::get<2>(key[x])) continue;
             queue.erase(key[x]);
-            key[x] = {fill, degree, now, x};
+            key[x] = {isLate(x), fill, degree, now, x};
             queue.insert(key[x]);
         }
     }

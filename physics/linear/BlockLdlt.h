@@ -22,8 +22,14 @@ class BlockLdltPattern {
 public:
     // The elimination order of the graph (adjacency[i]: node i's neighbours, symmetric, without
     // i itself) and the blocks of L after fill. Minimum fill, ties to the smaller degree, then
-    // to the node that has waited longest (see BlockLdlt.cpp).
-    void analyse(std::vector<std::set<int>> adjacency);
+    // to the node that has waited longest (see BlockLdlt.cpp). Nodes marked in late (empty:
+    // none) come after every other: their pivot is zero until their neighbours are eliminated
+    // (a joint that holds only bodies kept as nodes of the system, JointSolver.h).
+    void analyse(std::vector<std::set<int>> adjacency, const std::vector<char>& late = {});
+    // Past this degree a node's fill is not counted but bounded, d·(d − 1)/2: counting it is
+    // O(d²) each time a neighbour goes, O(d³) over a star's leaves. A node of that degree goes
+    // after the nodes of small fill either way.
+    static constexpr int kCountedDegree = 64;
 
     int size() const { return static_cast<int>(order_.size()); }
     // Position → node, and node → position.
