@@ -119,6 +119,8 @@ public:
     // DOFs [0, pairedDofs()) are the (x, y) pairs of points, which a multigrid solver
     // aggregates together; 0 when the system does not say.
     virtual int pairedDofs() const { return 0; }
+    // One evaluation's cost in the units of core/WorkUnits.h; by default one a coordinate.
+    virtual double workUnits() const { return dimension(); }
 
     // accel = M⁻¹·F(q, u, t). Returns the power of the non-conservative forces at (q, u, t),
     // which integrators accumulate into work_nc with their own quadrature weights.

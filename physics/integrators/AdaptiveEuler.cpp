@@ -2,6 +2,7 @@
 // of h/2; the error is their largest difference. The step is accepted when error ≤ tolerance
 // (keeping the more accurate two half steps), and the next step is 0.9·h·√(tolerance/error).
 
+#include "physics/core/WorkUnits.h"
 #include "physics/integrators/AdaptiveStepper.h"
 #include "physics/integrators/Methods.h"
 
@@ -26,12 +27,9 @@ const IntegratorInfo kAdaptiveEulerInfo{
 
 namespace {
 constexpr long long kMaxInternalSteps = 10'000'000;
-// Internal steps times coordinates per frame (each sub-step gets its share): a stiff scene the
-// method cannot step (a large cloth at a high stiffness) gives up in seconds instead of running for
-// minutes (issue 20: every accepted scene's first step within 20 s). 1e8 is 3,050 internal steps of
-// the largest cloth (32,768 coordinates); 2e8 took 19.4 s of CPU on an idle day of this
-// machine, too near the bound (it took 49 s to finish the step).
-constexpr double kMaxInternalWork = 1e8;
+// Evaluations a frame times the scene's work units (core/WorkUnits.h), each sub-step its share:
+// a scene too stiff for the method gives up in seconds, whatever its size and kind.
+constexpr double kEvaluationsPerStep = 2;
 
 class AdaptiveEuler final : public Integrator {
 public:
@@ -49,8 +47,9 @@ public:
         double time = t;
         long long internal = 0;
         const long long maxInternal = std::min<long long>(
-            kMaxInternalSteps, static_cast<long long>(settings_.workShare * kMaxInternalWork /
-                                                      static_cast<double>(q0.size() + 1)));
+            kMaxInternalSteps,
+            static_cast<long long>(settings_.workShare * kMaxEvaluationWork /
+                                   (kEvaluationsPerStep * std::max(1.0, sys.workUnits()))));
         while (time < end) {
             const double h = stepper_.next(end - time, H);
             if (AdaptiveStepper::collapsed(h, H) || ++internal > maxInternal) return false;

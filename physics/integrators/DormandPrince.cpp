@@ -4,6 +4,7 @@
 // is both the absolute and the relative tolerance. The last stage is evaluated at the new
 // point, so it is the next internal step's first stage (first same as last).
 
+#include "physics/core/WorkUnits.h"
 #include "physics/integrators/AdaptiveStepper.h"
 #include "physics/integrators/Methods.h"
 
@@ -28,12 +29,9 @@ const IntegratorInfo kDormandPrinceInfo{
 
 namespace {
 constexpr long long kMaxInternalSteps = 10'000'000;
-// Internal steps times coordinates per frame (each sub-step gets its share): a stiff scene the
-// method cannot step (a large cloth at a high stiffness) gives up in seconds instead of running for
-// minutes (issue 20: every accepted scene's first step within 20 s). Seven stages a step: 3e7 is
-// 900 internal steps of the largest cloth (32,768 coordinates); 6e7 took 19.4 s of CPU on an idle
-// day of this machine, too near the bound (2e8 took 38 s).
-constexpr double kMaxInternalWork = 3e7;
+// Evaluations a frame times the scene's work units (core/WorkUnits.h), each sub-step its share:
+// a scene too stiff for the method gives up in seconds, whatever its size and kind.
+constexpr double kEvaluationsPerStep = 6;
 constexpr int kStages = 7;
 
 // Butcher tableau.
@@ -74,8 +72,9 @@ public:
         double time = t;
         long long internal = 0;
         const long long maxInternal = std::min<long long>(
-            kMaxInternalSteps, static_cast<long long>(settings_.workShare * kMaxInternalWork /
-                                                      static_cast<double>(q0.size() + 1)));
+            kMaxInternalSteps,
+            static_cast<long long>(settings_.workShare * kMaxEvaluationWork /
+                                   (kEvaluationsPerStep * std::max(1.0, sys.workUnits()))));
         // First stage at the start of this call; later ones reuse the last stage.
         power_[0] = sys.acceleration(time, q, u, ku_[0]);
         kq_[0] = u;

@@ -4,6 +4,7 @@
 // validateScene() checks it, and app/SceneIO maps it to and from JSON.
 
 #include "physics/contacts/ContactModel.h"
+#include "physics/core/WorkUnits.h"
 #include "physics/scene/InstrumentsDesc.h"
 
 #include <array>
@@ -326,8 +327,8 @@ struct SceneLimits {
     // about 5 s a step: 3 sub-steps of the largest chain, 564 of the largest cloth, and 2,283 of
     // a 64 x 64 one, whose stability the advisor gives at 159 to 185 (issue #38: counted alike
     // at 2,000,000, 71 were allowed, and the advisor's remedy was refused).
-    static constexpr long long kMaxSubstepWork = 64'000'000;
-    static constexpr long long kCostlyWorkUnits = 64;
+    static constexpr long long kMaxSubstepWork = kMaxStepWork;
+    static constexpr long long kCostlyWorkUnits = phasebox::kCostlyWorkUnits;
     static constexpr int kMaxNewtonIterations = 100;
 
     // Magnitudes (docs/scene-format.md, "Limits"). A classroom scene is metres, kilograms and

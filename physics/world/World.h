@@ -12,6 +12,7 @@
 #include "physics/core/Bodies.h"
 #include "physics/core/Layout.h"
 #include "physics/core/OdeSystem.h"
+#include "physics/core/WorkUnits.h"
 #include "physics/effects/Effect.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/joints/JointSolver.h"
@@ -176,6 +177,12 @@ public:
     const Vec& inverseMass() const override { return invMass_; }
     const Vec& mass() const override { return mass_; }
     int pairedDofs() const override { return layout_.boxBase(); }
+    // The scene's units of work (core/WorkUnits.h), as the validation counts them.
+    double workUnits() const override {
+        return static_cast<double>(bodies_.particles.size() + bodies_.springs.size()) +
+               static_cast<double>(kCostlyWorkUnits) *
+                   static_cast<double>(bodies_.boxes.size() + bodies_.joints.size());
+    }
     double acceleration(double t, const Vec& q, const Vec& u, Vec& accel) override;
     SplitAcceleration accelerationSplit(double t, const Vec& q, const Vec& u, Vec& rest) override;
     double nonConservativePower(double t, const Vec& q, const Vec& u) override;
