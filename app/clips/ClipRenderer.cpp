@@ -14,8 +14,10 @@
 #include <QPainter>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
+#include <vector>
 
 namespace phasebox {
 
@@ -36,9 +38,16 @@ double frameTime(const ClipOptions& o, int k) {
     return o.from + static_cast<double>(k) / o.fps;
 }
 
-// Where the dynamic objects are at the clip's frames, from a run of its own (the same scene
-// gives the same run): the canvas frames this, so nothing leaves the picture.
-QRectF motionExtent(const SceneDesc& scene, const ClipOptions& o, int frames) {
+// What a run of its own (the same scene gives the same run) shows of the clip's frames: where
+// the dynamic objects go, which the canvas frames so that nothing leaves the picture, and which
+// particle (not of a cloth) or body travels farthest along an axis, which the phase plot
+// follows unless told otherwise.
+struct MotionSurvey {
+    QRectF extent;
+    QString object, coordinate;
+};
+
+MotionSurvey surveyMotion(const SceneDesc& scene, const ClipOptions& o, int frames) {
     BuildResult built = buildWorld(scene);
     World& world = *built.world;
     const double dt = world.settings().dt;
@@ -49,24 +58,52 @@ QRectF motionExtent(const SceneDesc& scene, const ClipOptions& o, int frames) {
             hi[k] = std::max(hi[k], p[k] + reach);
         }
     };
+    // Per particle, then per body: the range of x and of y over the frames.
+    const std::size_t particles = world.particles().size();
+    std::vector<std::array<double, 4>> ranges(particles + world.boxes().size(),
+                                              {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL});
+    const auto track = [&](std::size_t slot, const Vec2& p) {
+        std::array<double, 4>& r = ranges[slot];
+        r = {std::min(r[0], p.x()), std::max(r[1], p.x()), std::min(r[2], p.y()),
+             std::max(r[3], p.y())};
+    };
     for (int k = 0; k < frames; ++k) {
         const long long steps = stepsAt(frameTime(o, k), dt);
         bool ok = true;
         while (ok && world.stepCount() < steps) ok = world.step();
-        for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
-            if (world.particles()[i].dof >= 0)
-                include(world.particlePosition(i), world.particles()[i].radius);
-        for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-            if (world.boxes()[i].dof >= 0)
-                include(world.boxPosition(i), 0.5 * world.boxes()[i].size.norm());
+        for (std::size_t i = 0; i < particles; ++i) {
+            const Particle& p = world.particles()[i];
+            if (p.dof < 0) continue;
+            const Vec2 at = world.particlePosition(static_cast<int>(i));
+            include(at, p.radius);
+            if (p.cloth < 0) track(i, at);
+        }
+        for (std::size_t i = 0; i < world.boxes().size(); ++i) {
+            if (world.boxes()[i].dof < 0) continue;
+            const Vec2 at = world.boxPosition(static_cast<int>(i));
+            include(at, 0.5 * world.boxes()[i].size.norm());
+            track(particles + i, at);
+        }
         if (!ok) break;  // a runaway: the frames after it show the restored state
     }
-    if (!(lo[0] <= hi[0])) return {};
-    return QRectF(QPointF(lo[0], lo[1]), QPointF(hi[0], hi[1]));
+    MotionSurvey survey;
+    if (lo[0] <= hi[0]) survey.extent = QRectF(QPointF(lo[0], lo[1]), QPointF(hi[0], hi[1]));
+    double farthest = 0.0;
+    for (std::size_t slot = 0; slot < ranges.size(); ++slot) {
+        const std::array<double, 4>& r = ranges[slot];
+        const double dx = r[1] - r[0], dy = r[3] - r[2];
+        if (!(std::max(dx, dy) > farthest)) continue;  // untracked ranges are −inf
+        farthest = std::max(dx, dy);
+        survey.object = QString::fromStdString(
+            slot < particles ? world.particles()[slot].id : world.boxes()[slot - particles].id);
+        survey.coordinate = dy > dx ? QStringLiteral("y") : QStringLiteral("x");
+    }
+    return survey;
 }
 
-// The phase plot's default: the first moving particle (not of a cloth) or body, along the axis
-// it moves most, or at rest the one gravity pulls along (as the Plots dock chooses).
+// The phase plot's default where no survey chose one (nothing moves, or the app's view made a
+// survey unnecessary): the first dynamic particle (not of a cloth) or body, along the axis it
+// moves most, or at rest the one gravity pulls along (as the Plots dock chooses).
 void choosePhaseTarget(const World& world, const SceneDesc& scene, QString& object,
                        QString& coordinate) {
     if (!object.isEmpty()) {
@@ -215,11 +252,17 @@ ClipResult renderClip(const SceneDesc& scene, const ClipOptions& o, const QStrin
     encoder = openClipEncoder(clipFormatOf(path).value_or(ClipFormat::Gif), spec, out, &error);
     if (!encoder) return fail(error);
 
-    const QRectF extent = o.view ? QRectF() : motionExtent(scene, o, frames);
+    ClipOptions options = o;
+    MotionSurvey motion;
+    if (!o.view || (o.plots && o.phaseObject.isEmpty())) motion = surveyMotion(scene, o, frames);
+    if (options.phaseObject.isEmpty()) {
+        options.phaseObject = motion.object;
+        options.phaseCoordinate = motion.coordinate;
+    }
     BuildResult built = buildWorld(scene);
     World& world = *built.world;
     const double dt = world.settings().dt;
-    FramePainter painter(scene, o, world);
+    FramePainter painter(scene, options, world);
     bool diverged = false;
     for (int k = 0; k < frames; ++k) {
         const long long steps = stepsAt(frameTime(o, k), dt);
@@ -229,7 +272,7 @@ ClipResult renderClip(const SceneDesc& scene, const ClipOptions& o, const QStrin
         }
         if (diverged && result.message.isEmpty())
             result.message = QString::fromStdString(world.divergence()->message());
-        if (k == 0) painter.frame(extent);
+        if (k == 0) painter.frame(motion.extent);
         if (!encoder->addFrame(painter.draw())) return fail(encoder->error());
         result.frames = k + 1;
         if (progress && !progress(k + 1, frames)) {

@@ -33,8 +33,8 @@ struct ClipOptions {
     // has them; absent, the view frames everything that moves between from and from + duration.
     std::optional<ui::ViewTransform> view;
     ui::RenderOptions renderOptions;
-    // The phase plot's object and coordinate (x, y or angle); empty: the first moving particle
-    // or body, along the axis it moves (or gravity pulls) most.
+    // The phase plot's object and coordinate (x, y or angle); empty: the particle (not of a
+    // cloth) or body that travels farthest along x or y over the clip, along that axis.
     QString phaseObject, phaseCoordinate;
 };
 

@@ -131,6 +131,24 @@ private slots:
         QCOMPARE(stream["width"].toInt(), 400);
     }
 
+    void divergedRunIsDrawnToTheEndAndExits1() {
+        QTemporaryDir work;
+        const QString scene = writeFile(work, QStringLiteral("blow.json"), R"({
+          "format": "phasebox-scene", "version": 1, "name": "blow-up",
+          "simulation": { "integrator": "explicit_euler", "dt": 0.01, "duration": 1 },
+          "particles": [ { "id": "bob", "position": [1, 0] } ],
+          "springs": [ { "a": "bob", "anchor": [0, 0], "stiffness": 10000, "rest_length": 0.5 } ]
+        })");
+        const QString out = work.filePath(QStringLiteral("blow.gif"));
+        const CliResult r = runCli(
+            {"render", scene, "--out", out, "--duration", "1", "--fps", "10", "--size", "64x48"});
+        QCOMPARE(r.status, 1);
+        QVERIFY2(r.err.startsWith("phasebox-cli: diverged: "), r.err.constData());
+        QVERIFY(r.err.contains("\"bob\""));
+        const QJsonObject stream = probe(out)["streams"].toArray().first().toObject();
+        QCOMPARE(stream["nb_read_frames"].toString(), QStringLiteral("10"));
+    }
+
     void unknownExtensionIsRefusedWithTheFormats() {
         const QString out = dir_.filePath(QStringLiteral("clip.avi"));
         const CliResult r = runCli({"render", scene_, "--out", out});
