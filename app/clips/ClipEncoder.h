@@ -38,7 +38,7 @@ QString clipSpecProblem(ClipFormat format, const ClipSpec& spec);
 
 // A GIF's delays in hundredths of a second: frame k (of spec.frames) lasts
 // round((k+1)·T/N) − round(k·T/N) with T = round(100·seconds), so the delays alternate
-// (3, 3, 4, … at 30 fps) and add up to T exactly.
+// (3, 4, 3, 3, 4, 3, … at 30 fps) and add up to T exactly.
 int gifDelayHundredths(const ClipSpec& spec, int frame);
 
 class ClipEncoder {
