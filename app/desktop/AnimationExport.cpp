@@ -154,7 +154,10 @@ ClipResult AnimationExport::exportClip(const QString& path, const ClipOptions& o
         return refused;
     }
     if (!document_.mayWriteOutput(path, &refused.message)) return refused;
-    if (controller_.isRunning()) controller_.pause();
+    // The clip has its own world; the live run would only take time from it while the
+    // progress dialog lets events through, so it waits and goes on afterwards.
+    const bool wasRunning = controller_.isRunning();
+    if (wasRunning) controller_.pause();
     const int frames = clipFrameCount(options.duration, options.fps);
     QProgressDialog progress(tr("Exporting %1…").arg(QFileInfo(path).fileName()), tr("Cancel"), 0,
                              frames, &window_);
@@ -168,6 +171,7 @@ ClipResult AnimationExport::exportClip(const QString& path, const ClipOptions& o
             progress.setValue(done);  // a window-modal dialog processes events here
             return !progress.wasCanceled();
         });
+    if (wasRunning) controller_.play();
     switch (result.status) {
         case ClipResult::Written:
             emit message(tr("Wrote %1 (%2 frames)").arg(path).arg(result.frames));

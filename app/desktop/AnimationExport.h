@@ -60,8 +60,8 @@ public:
     // drawing options and the phase plot's object.
     ClipOptions defaults() const;
     // Writes the clip with a progress dialog whose Cancel stops it (and removes the partial
-    // file); pauses the live run meanwhile. A problem with the options or the file is in the
-    // result (WriteFailed) without anything written.
+    // file); the live run pauses meanwhile and then goes on. A problem with the options or the file
+    // is in the result (WriteFailed) without anything written.
     ClipResult exportClip(const QString& path, const ClipOptions& options);
     // Asks for the file and options, exports, and reports a failure in a message box.
     void exportInteractively();

@@ -206,7 +206,10 @@ private slots:
             }
         });
         timer.start(10);
+        w.controller().play();
         const ClipResult r = exporter(w)->exportClip(path, o);
+        QVERIFY2(w.controller().isRunning(), "the live run goes on after the export");
+        w.controller().pause();
         QCOMPARE(r.status, ClipResult::Cancelled);
         QVERIFY(cancelled > 0);
         QVERIFY(r.frames < 900);
