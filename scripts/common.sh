@@ -2,8 +2,10 @@
 # Sourced, not executed.
 
 PHASEBOX_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# libav*-dev and libgif-dev encode clips (MP4 and GIF); ffmpeg gives the tests ffprobe.
 PHASEBOX_PACKAGES=(cmake ninja-build g++ qt6-base-dev libqt6opengl6-dev qt6-charts-dev
-                   qt6-svg-dev libeigen3-dev libgl1-mesa-dev xvfb xauth)
+                   qt6-svg-dev libeigen3-dev libgl1-mesa-dev xvfb xauth pkg-config
+                   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev libgif-dev ffmpeg)
 
 phasebox_log() { printf '[phasebox] %s\n' "$*" >&2; }
 

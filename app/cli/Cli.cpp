@@ -23,6 +23,8 @@ const char* kUsage =
     "  run SCENE [OPTIONS]      simulate; see 'phasebox-cli run --help'\n"
     "  accuracy SCENE [OPTIONS] error against CPU time per integrator and dt; see\n"
     "                           'phasebox-cli accuracy --help'\n"
+    "  render SCENE --out FILE  draw the run as an MP4 (H.264) or animated GIF clip; see\n"
+    "                           'phasebox-cli render --help'\n"
     "  scene [NAME] [FILE]      write a built-in scene (pyramid, cloth, gas, ...) as a scene\n"
     "                           file, to FILE or standard output; no NAME lists them\n"
     "\n"
@@ -119,6 +121,8 @@ QString checkOutputs(const QString& scene, const QList<QPair<QString, QString>>&
 }
 
 bool needsGui(const QStringList& arguments) {
+    // A clip is drawn by the canvas and Qt Charts, which draw through widgets.
+    if (!arguments.isEmpty() && arguments.first() == QLatin1String("render")) return true;
     return arguments.contains(QStringLiteral("--plot-energy")) ||
            arguments.contains(QStringLiteral("--plot-phase")) ||
            arguments.contains(QStringLiteral("--plot"));
@@ -145,8 +149,9 @@ int run(const QStringList& arguments, QTextStream& out, QTextStream& err) {
     if (command == QLatin1String("run")) return runCommand(rest, out, err);
     if (command == QLatin1String("scene")) return sceneCommand(rest, out, err);
     if (command == QLatin1String("accuracy")) return accuracyCommand(rest, out, err);
-    return fail(err, QStringLiteral(
-                         "unknown command \"%1\"; known: integrators, info, run, scene, accuracy")
+    if (command == QLatin1String("render")) return renderCommand(rest, out, err);
+    return fail(err, QStringLiteral("unknown command \"%1\"; known: integrators, info, run, "
+                                    "scene, accuracy, render")
                          .arg(command));
 }
 

@@ -24,6 +24,7 @@ int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err);
 int runCommand(const QStringList& args, QTextStream& out, QTextStream& err);
 int sceneCommand(const QStringList& args, QTextStream& out, QTextStream& err);
 int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err);
+int renderCommand(const QStringList& args, QTextStream& out, QTextStream& err);
 
 // "phasebox-cli: error: " + each line of message, on err; returns kBadInput.
 int fail(QTextStream& err, const QString& message);

@@ -1,6 +1,7 @@
 #include "app/desktop/MainWindow.h"
 
 #include "app/desktop/AccuracyDialog.h"
+#include "app/desktop/AnimationExport.h"
 #include "app/desktop/CanvasTools.h"
 #include "app/desktop/HelpDialogs.h"
 #include "app/desktop/MeasureTools.h"
@@ -115,6 +116,10 @@ void MainWindow::createActions() {
         if (maybeSave()) files_->openInteractively();
     });
     make("save", tr("&Save"), QKeySequence::Save, [this] { files_->save(); });
+    animationExport_ = new AnimationExport(document_, *canvas_, recorder_, controller_, *this);
+    make("exportAnimation", tr("Export &Animation…"), QKeySequence(), [this] {
+        animationExport_->exportInteractively();
+    })->setToolTip(tr("The run as an MP4 or animated GIF clip, optionally with the plots"));
     make("revert", tr("Re&vert"), QKeySequence(), [this] {
         revert();
     })->setToolTip(tr("Reopen the scene's file as it was last saved, dropping the edits"));
@@ -175,6 +180,8 @@ void MainWindow::createMenus() {
     exports->addAction(action("exportCanvas"));
     plotsPresenter_->addExportActions(*exports);
     instrumentsPresenter_->addExportActions(*exports);
+    addNamedActions(file, *this, {"exportAnimation"});
+    connect(animationExport_, &AnimationExport::message, status_, &StatusPresenter::showMessage);
     addNamedActions(file, *this, {"", "quit"});
     addNamedActions(menuBar()->addMenu(tr("&Edit")), *this,
                     {"undo", "redo", "", "cut", "copy", "paste", "delete"});

@@ -40,6 +40,7 @@ class InstrumentsPanel;
 class CanvasTools;
 class MeasureTools;
 class AccuracyDialog;
+class AnimationExport;
 class Autosave;
 class Presenter;
 class SceneFiles;
@@ -163,6 +164,7 @@ private:
     StatusPresenter* status_ = nullptr;
 
     AccuracyDialog* accuracy_ = nullptr;
+    AnimationExport* animationExport_ = nullptr;  // File > Export Animation
     QDialog* guide_ = nullptr;
     QPointer<QDialog> shortcuts_;                 // deletes itself on close
     QPointer<QDockWidget> leftDock_, rightDock_;  // the docks keepCanvasWide() narrows

@@ -411,7 +411,7 @@ void SceneView::setHudText(const QString& text) {
     surface_->update();
 }
 
-QImage SceneView::renderImage(QSize size) const {
+QImage SceneView::renderImage(QSize size, bool withHud) const {
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
     if (image.isNull()) return image;
     ViewTransform v = view();
@@ -429,6 +429,7 @@ QImage SceneView::renderImage(QSize size) const {
     else
         SceneRenderer::paintEmpty(painter, v, size, options);
     MeasureRenderer::paint(painter, v, size, measurements_, options);
+    if (withHud) drawHud(painter, hudText_, options);
     return image;
 }
 

@@ -98,9 +98,10 @@ public:
     void setHudText(const QString& text);
     QString hudText() const { return hudText_; }
 
-    // The scene and its measurements (no tool preview, no HUD) framed as on screen, at another
-    // size: a larger picture is the same view in more pixels, lines and text thickened to match.
-    QImage renderImage(QSize size) const;
+    // The scene and its measurements (no tool preview; the HUD line only when asked, as a
+    // clip's frames show it) framed as on screen, at another size: a larger picture is the same
+    // view in more pixels, lines and text thickened to match.
+    QImage renderImage(QSize size, bool withHud = false) const;
     PickResult pick(QPointF widgetPoint, double tolerancePixels = 6.0) const;
 
     QSize sizeHint() const override { return {800, 600}; }

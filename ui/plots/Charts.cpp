@@ -296,4 +296,18 @@ QByteArray renderChart(QChart* chart, const QString& format, QSize size) {
     return buffer.data();
 }
 
+void paintChart(QChart* chart, QPainter& painter, const QRectF& target) {
+    QGraphicsScene scene;
+    scene.addItem(chart);
+    const QRectF area(QPointF(0, 0), target.size());
+    chart->setGeometry(area);
+    scene.setSceneRect(area);
+    painter.save();
+    painter.fillRect(target, Qt::white);
+    painter.setRenderHint(QPainter::Antialiasing);
+    scene.render(&painter, target, area);
+    painter.restore();
+    scene.removeItem(chart);
+}
+
 }  // namespace phasebox::ui

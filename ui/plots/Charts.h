@@ -14,6 +14,8 @@
 
 QT_BEGIN_NAMESPACE
 class QChart;
+class QPainter;
+class QRectF;
 QT_END_NAMESPACE
 
 namespace phasebox::ui {
@@ -64,6 +66,9 @@ QChart* createErrorChart(std::span<const QPointF> samples, const QString& title)
 // format or when drawing fails. Needs a QApplication (the offscreen platform is enough). The
 // app writes them through its one file writer (app/io/OutputFile, app/io/ChartFile).
 QByteArray renderChart(QChart* chart, const QString& format, QSize size);
+// A chart drawn on a white background into target of painter (a clip's plots beside its
+// canvas); the same layout as renderChart at target's size.
+void paintChart(QChart* chart, QPainter& painter, const QRectF& target);
 
 // The series colours, shared with the app's legends.
 // 0 kinetic, 1 potential, 2 total, 3 work_nc, 4 drift, 5 correction.
