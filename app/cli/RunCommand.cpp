@@ -654,6 +654,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
                                    {"correction", e.correction},
                                    {"max_abs_drift", e.maxAbsDrift}}},
             {"diverged", diverged},
+            {"sleeping", world.sleepingBodies()},
             {"effects", effects},
             {"force_evaluations", static_cast<double>(world.forceEvaluations())},
         };

@@ -44,7 +44,8 @@ bool sameSimulation(const SimulationDesc& a, const SimulationDesc& b) {
     return a.integrator == b.integrator && a.dt == b.dt && a.substeps == b.substeps &&
            a.tolerance == b.tolerance && a.newtonIterations == b.newtonIterations &&
            a.duration == b.duration && a.solver == b.solver && a.contactModel == b.contactModel &&
-           a.contactStiffness == b.contactStiffness && a.contactDamping == b.contactDamping;
+           a.contactStiffness == b.contactStiffness && a.contactDamping == b.contactDamping &&
+           a.sleep == b.sleep;
 }
 
 // The one field in which two settings differ, or empty when they differ in several (or none).

@@ -371,9 +371,9 @@ bool Document::grab(const QString& id, const Point2& localPoint, const Point2& t
     const std::string name = id.toStdString();
     double mass = 0.0;
     for (const Particle& p : world_->particles())
-        if (p.id == name && p.dof >= 0) mass = p.mass;
+        if (p.id == name && !p.pinned) mass = p.mass;
     for (const Box& b : world_->boxes())
-        if (b.id == name && b.dof >= 0)
+        if (b.id == name && !b.isStatic)
             mass = MouseSpringEffect::effectiveMass(b.mass, b.inertia, vec(localPoint));
     if (!(mass > 0.0)) return false;
     grab_ = Grab{name, localPoint, target, mass * kGrabOmega * kGrabOmega};

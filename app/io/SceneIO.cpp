@@ -715,11 +715,6 @@ SceneLoadResult SceneIO::parse(const QByteArray& text, const QString& sourceName
     if (auto simulation =
             fields.object(key::simulation, schema::keysOf(schema::table<SimulationDesc>()))) {
         readFields(*simulation, scene.simulation);
-        // simulation.sleep (CONTRACT §6) is a boolean: any other value was accepted and
-        // ignored (issue #38). Sleeping is not simulated by this engine (every body is stepped,
-        // which is what sleep: false asks), so the value is checked, not kept.
-        bool sleep = false;
-        simulation->boolean("sleep", sleep);
     }
     if (auto effects = fields.object(key::effects, schema::effectKeys())) {
         schema::forEachEffect([&](const auto& table, auto member) {

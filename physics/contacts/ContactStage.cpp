@@ -35,7 +35,8 @@ void ContactStage::bind(const Bodies& bodies) {
     for (int i = 0; i < static_cast<int>(particles.size()); ++i) {
         const Particle& p = particles[i];
         if (p.radius > 0.0)
-            colliders_.push_back({Collider::Kind::Disk, i, p.dof, p.friction, p.restitution});
+            colliders_.push_back({Collider::Kind::Disk, i, p.dof, p.friction, p.restitution, false,
+                                  false, p.asleep, i});
     }
     const auto& boxes = bodies.boxes;
     for (int i = 0; i < static_cast<int>(boxes.size()); ++i) {
@@ -44,7 +45,13 @@ void ContactStage::bind(const Bodies& bodies) {
         const Collider::Kind kind = b.shape == RigidShape::Disk      ? Collider::Kind::Disk
                                     : b.shape == RigidShape::Polygon ? Collider::Kind::Polygon
                                                                      : Collider::Kind::Box;
-        colliders_.push_back({kind, i, b.dof, b.friction, b.restitution, true});
+        colliders_.push_back({kind, i, b.dof, b.friction, b.restitution, true, false, b.asleep,
+                              static_cast<int>(particles.size()) + i});
+    }
+    asleepColliders_ = awakeColliders_ = 0;
+    for (const Collider& c : colliders_) {
+        asleepColliders_ += c.asleep;
+        awakeColliders_ += c.dof >= 0;
     }
     // Two bodies a joint holds do not collide (CONTRACT §6).
     jointedPairs_.clear();
@@ -120,7 +127,44 @@ void ContactStage::bind(const Bodies& bodies) {
     }
     previous_.clear();
     heldCarried_ = false;
+    carried_ = false;
     solver_.constraints().clear();
+    asleep_.clear();
+    reached_.clear();
+}
+
+void ContactStage::rebind(const Bodies& bodies) {
+    // The contacts of the last collide() and those kept asleep, by the shape pair: a key names
+    // colliders, which stay where they are (only their dofs change).
+    std::vector<ContactConstraint> kept = std::move(solver_.constraints());
+    kept.insert(kept.end(), asleep_.begin(), asleep_.end());
+    bind(bodies);
+    const std::uint64_t count = colliders_.size();
+    const auto awake = [&](std::uint64_t c) { return c < count && colliders_[c].dof >= 0; };
+    for (ContactConstraint& c : kept)
+        (awake(c.key >> 32) || awake(c.key & 0xffffffffu) ? previous_ : asleep_)
+            .push_back(std::move(c));
+    sortByKey(previous_);
+    carried_ = true;
+}
+
+void ContactStage::reachSleeper(const Bodies& bodies, int i, int j, double margin) {
+    const Collider& a = colliders_[i];
+    const Collider& b = colliders_[j];
+    if (a.asleep == b.asleep) return;
+    const int awake = a.asleep ? j : i, sleeper = a.asleep ? i : j;
+    if (colliders_[awake].dof < 0) return;
+    Manifold m;
+    PairContact pair;
+    // A frame further than the contacts look: a body arriving is met by a pile already awake.
+    if (narrowPhase(bodies, i, j, margin + 2.0 * sweep_[awake], m, pair))
+        reached_.push_back(colliders_[sleeper].body);
+}
+
+void ContactStage::findReachedSleepers(const Bodies& bodies, const ContactSettings& settings) {
+    reached_.clear();
+    if (asleepColliders_ == 0) return;
+    for (const auto& [i, j] : pairs_) reachSleeper(bodies, i, j, settings.speculativeDistance);
 }
 
 int ContactStage::solverBodyFor(int collider, const Vec& q) {
@@ -212,6 +256,11 @@ void ContactStage::updateShapes(const Bodies& bodies, const Vec& q) {
 
 void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, const Vec& uNext,
                              double frameFraction, double dt, const ContactSettings& settings) {
+    // Nothing awake (every body asleep or static): no pair can change anything.
+    if (awakeColliders_ == 0) {
+        pairs_.clear();
+        return;
+    }
     // Shapes and bounds. A body's bounds grow by the distance it can travel in this step, so
     // that a fast body finds what lies ahead of it (the speculative contacts then stop it).
     updateShapes(bodies, q);
@@ -242,7 +291,9 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
                 motion.turn = reach(c.dof + 2) * 0.5 * bodies.boxes[c.object].size.x() * dt;
             sweep[i] = speed * dt + motion.turn;
         }
-        const Vec2 grow = Vec2::Constant(settings.speculativeDistance + sweep[i]);
+        // With bodies asleep an awake one looks two frames ahead (findReachedSleepers()).
+        const double reach = asleepColliders_ > 0 ? 2.0 * sweep[i] : sweep[i];
+        const Vec2 grow = Vec2::Constant(settings.speculativeDistance + reach);
         bounds_[i].lower -= grow;
         bounds_[i].upper += grow;
     }
@@ -341,13 +392,16 @@ void ContactStage::sortByKey(std::vector<ContactConstraint>& constraints) {
 void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u,
                            const Vec& uNext, double frameFraction, double dt,
                            const ContactSettings& settings) {
-    // Last step's constraints, with their accumulated impulses, for warm starting.
-    std::swap(previous_, solver_.constraints());
+    // Last step's constraints, with their accumulated impulses, for warm starting (or those
+    // rebind() carried over a change of islands).
+    if (!carried_) std::swap(previous_, solver_.constraints());
+    carried_ = false;
     solver_.constraints().clear();
     solver_.bodies().clear();
     std::fill(bodyOfCollider_.begin(), bodyOfCollider_.end(), -1);
 
     findPairs(bodies, q, u, uNext, frameFraction, dt, settings);
+    findReachedSleepers(bodies, settings);
     const int count = static_cast<int>(colliders_.size());
     const std::vector<double>& sweep = sweep_;
     Manifold m;

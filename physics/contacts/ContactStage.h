@@ -40,6 +40,10 @@ public:
 
     // Rebuilds the collider list after the world's objects changed.
     void bind(const Bodies& bodies);
+    // Rebuilds it after islands fell asleep or woke (World, simulation.sleep), keeping the
+    // contacts' impulses: those an awake body takes part in warm-start the next collide(), the
+    // others are kept aside until their island wakes, so that a woken pile holds as it held.
+    void rebind(const Bodies& bodies);
 
     // Finds the contacts of the state (q, u) for a frame of length dt. uNext is the velocity
     // after the frame's first smooth sub-step, which is frameFraction of the frame: bounds grow by
@@ -89,6 +93,27 @@ public:
     void addPushOut(Vec& q, double scale) const { solver_.addPushOut(q, scale); }
 
     const std::vector<ContactConstraint>& contacts() const { return solver_.constraints(); }
+
+    // Sleeping. A body asleep collides like a static one. The bodies asleep that an awake body
+    // could reach within two frames, found by the last collide() or findReachedSleepers() (a
+    // body index: particles first, then rigid bodies), are the ones to wake: a frame ahead of
+    // the contacts, so that a body arriving meets a pile that moves, not a wall.
+    void findReachedSleepers(const Bodies& bodies, const ContactSettings& settings);
+    const std::vector<int>& reachedSleepers() const { return reached_; }
+    // Calls fn(a, b) with the body indices of every pair in contact: the solver's contacts
+    // (fromSolver, the impulse model) or the last broad phase's pairs. Planes are left out.
+    template <class Fn>
+    void forEachTouchingPair(bool fromSolver, Fn&& fn) const {
+        const std::uint64_t count = colliders_.size();
+        if (fromSolver) {
+            for (const ContactConstraint& c : solver_.constraints()) {
+                const std::uint64_t a = c.key >> 32, b = c.key & 0xffffffffu;
+                if (a < count && b < count) fn(colliders_[a].body, colliders_[b].body);
+            }
+            return;
+        }
+        for (const auto& [i, j] : pairs_) fn(colliders_[i].body, colliders_[j].body);
+    }
     const ContactSolver& solver() const { return solver_; }
     int pointCount() const;
 
@@ -115,6 +140,8 @@ private:
         double restitution;
         bool rigid = false;    // object indexes the rigid bodies (boxes, rigid disks): it turns
         bool jointed = false;  // a joint holds it
+        bool asleep = false;   // its island sleeps: it collides as a static body
+        int body = -1;         // particle index, or particles + rigid body index
     };
 
     // A pair's narrow phase: a = the constraint's body A (a collider, or −1 − k for plane k),
@@ -155,6 +182,13 @@ private:
     std::vector<int> bodyOfCollider_;  // solver body index in this step, −1 none yet
     std::vector<ContactConstraint> previous_;
     bool heldCarried_ = false;
+    // Sleeping: previous_ was filled by rebind() (collide() keeps it), the contacts of islands
+    // asleep, the colliders asleep and awake, and the sleepers reached.
+    bool carried_ = false;
+    std::vector<ContactConstraint> asleep_;
+    int asleepColliders_ = 0, awakeColliders_ = 0;
+    std::vector<int> reached_;
+    void reachSleeper(const Bodies& bodies, int i, int j, double margin);
     // Sorts constraints by key (the pair), for matching them with previous_.
     void sortByKey(std::vector<ContactConstraint>& constraints);
     std::vector<std::pair<std::uint64_t, int>> keyOrder_;

@@ -4,7 +4,8 @@
 // object is in the world's flat vectors (q, u) at the record's `dof`.
 //
 // For a dynamic object the state is authoritative and the record's position/velocity are only
-// its setup values; for a pinned particle or a static box the record's fields are the truth.
+// its setup values; for a pinned particle, a static box or a body asleep the record's fields are
+// the truth.
 
 #include "physics/core/Types.h"
 
@@ -24,7 +25,9 @@ struct Particle {
     double friction = 0.2;
     double charge = 0.0;
     int cloth = -1;  // index of the cloth this node belongs to, or −1
-    int dof = -1;    // first state index, −1 when pinned
+    int dof = -1;    // first state index, −1 when pinned or asleep
+    // Its island sleeps (simulation.sleep): out of the state, the record holds its state.
+    bool asleep = false;
 };
 
 // A rigid body: x, y and an angle. The name is that of the first kind; CONTRACT §6 added disks
@@ -49,7 +52,9 @@ struct Box {
     bool isStatic = false;
     double friction = 0.6;
     double restitution = 0.0;
-    int dof = -1;  // first state index, −1 when static
+    int dof = -1;  // first state index, −1 when static or asleep
+    // Its island sleeps (simulation.sleep): out of the state, the record holds its state.
+    bool asleep = false;
 };
 
 struct Plane {

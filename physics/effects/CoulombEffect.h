@@ -27,6 +27,7 @@ public:
     double addForces(double t, const Vec& q, const Vec& u, Vec& force) override;
     void addJacobians(double t, const Vec& q, const Vec& u, ForceJacobians& jacobians) override;
     double potentialEnergy(const Vec& q) const override;
+    bool couplesBodies() const override { return true; }
     void bind(const EffectWorldView& view) override;
 
 private:

@@ -97,6 +97,15 @@ public:
 
     virtual bool hasNonConservativePart() const { return false; }
 
+    // Sleeping (simulation.sleep) freezes islands of bodies that touch or are held together.
+    // An effect whose force on a body depends on where other bodies are (mutual gravity,
+    // charges, a flock) ties every body it acts on into one island: a frozen body would stop
+    // pulling the others.
+    virtual bool couplesBodies() const { return false; }
+    // The first state index of a body the effect drives by hand (the mouse spring's), which
+    // may not fall asleep while it does; −1 for none.
+    virtual int drivenDof() const { return -1; }
+
     // The world's topology changed (objects added or removed): re-read what is needed.
     virtual void bind(const EffectWorldView& view) { view_ = view; }
 

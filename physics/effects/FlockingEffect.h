@@ -52,6 +52,7 @@ public:
     double addForces(double t, const Vec& q, const Vec& u, Vec& force) override;
     double nonConservativePower(double t, const Vec& q, const Vec& u) override;
     bool hasNonConservativePart() const override { return true; }
+    bool couplesBodies() const override { return true; }
     void bind(const EffectWorldView& view) override;
 
     const FlockingParameters& parameters() const { return parameters_; }

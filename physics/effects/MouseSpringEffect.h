@@ -46,6 +46,7 @@ public:
     double nonConservativePower(double t, const Vec& q, const Vec& u) override;
     void addJacobians(double t, const Vec& q, const Vec& u, ForceJacobians& jacobians) override;
     bool hasNonConservativePart() const override { return true; }
+    int drivenDof() const override { return point_.dof; }
     void bind(const EffectWorldView& view) override;
 
 private:

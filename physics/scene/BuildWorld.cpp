@@ -110,7 +110,7 @@ SimulationSettings simulationSettings(const SimulationDesc& sim) {
             sim.substeps,         sim.tolerance,
             sim.newtonIterations, contactSettings(sim.solver),
             sim.contactModel,     sim.contactStiffness.value_or(0.0),
-            sim.contactDamping};
+            sim.contactDamping,   sim.sleep};
 }
 
 ContactSettings contactSettings(const std::map<std::string, double>& solver) {

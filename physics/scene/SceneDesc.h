@@ -35,6 +35,8 @@ struct SimulationDesc {
     ContactModel contactModel = ContactModel::Impulse;
     std::optional<double> contactStiffness;
     double contactDamping = 0.0;
+    // Islands at rest sleep (CONTRACT §6): off unless the scene asks.
+    bool sleep = false;
 };
 
 struct GravityDesc {
@@ -246,7 +248,8 @@ struct SceneDesc {
     static constexpr int kFormatVersion = 2;
     int formatVersion() const {
         const bool contactModels = simulation.contactModel != ContactModel::Impulse ||
-                                   simulation.contactStiffness || simulation.contactDamping != 0.0;
+                                   simulation.contactStiffness ||
+                                   simulation.contactDamping != 0.0 || simulation.sleep;
         return disks.empty() && polygons.empty() && joints.empty() && !contactModels &&
                        instruments.empty()
                    ? 1

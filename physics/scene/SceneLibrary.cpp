@@ -299,6 +299,7 @@ const std::vector<NamedScene>& library() {
     static const std::vector<NamedScene> scenes{
         {"pyramid", "20-row box pyramid", [] { return pyramid(20); }},
         {"pyramid40", "40-row box pyramid", [] { return pyramid(40); }},
+        {"pyramid100", "100-row box pyramid (5,050 boxes)", [] { return pyramid(100); }},
         {"hexagons", "20-row pyramid of hexagons", [] { return hexagonPyramid(20); }},
         {"tower", "tower of 40 boxes", [] { return tower(40); }},
         {"heavy-on-light", "1, 20 and 400 kg boxes stacked",

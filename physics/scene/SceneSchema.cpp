@@ -82,6 +82,12 @@ const Field<SimulationDesc> kSimulation[] = {
      .label = "Contact damping",
      .description = "penalty damping per contact point",
      .present = [](const SimulationDesc& s) { return s.contactDamping != 0.0; }},
+    {.key = key::sleep,
+     .type = T::Bool,
+     .member = &SimulationDesc::sleep,
+     .label = "Sleep",
+     .description = "islands at rest for 0.5 s stop being stepped until something wakes them",
+     .present = [](const SimulationDesc& s) { return s.sleep; }},
 };
 
 const SolverSetting kSolverSettings[] = {

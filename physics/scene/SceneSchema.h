@@ -59,6 +59,7 @@ inline constexpr std::string_view solver = "solver";
 inline constexpr std::string_view contactModel = "contact_model";
 inline constexpr std::string_view contactStiffness = "contact_stiffness";
 inline constexpr std::string_view contactDamping = "contact_damping";
+inline constexpr std::string_view sleep = "sleep";
 inline constexpr std::string_view iterations = "iterations";
 inline constexpr std::string_view relaxIterations = "relax_iterations";
 inline constexpr std::string_view contactHertz = "contact_hertz";

@@ -14,9 +14,9 @@ struct DynamicIndex {
     explicit DynamicIndex(const World& world) {
         particles.reserve(world.particles().size());
         for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
-            if (world.particles()[i].dof >= 0) particles.emplace(world.particles()[i].id, i);
+            if (!world.particles()[i].pinned) particles.emplace(world.particles()[i].id, i);
         for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-            if (world.boxes()[i].dof >= 0) boxes.emplace(world.boxes()[i].id, i);
+            if (!world.boxes()[i].isStatic) boxes.emplace(world.boxes()[i].id, i);
     }
     static int find(const std::unordered_map<std::string_view, int>& map, std::string_view id) {
         const auto it = map.find(id);

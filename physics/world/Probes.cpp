@@ -309,6 +309,21 @@ SystemMotion systemMotion(const World& world) {
         add(i);
         s.angularMomentum += m[i + 2] * u[i + 2];
     }
+    if (world.sleepingBodies() == 0) return s;
+    // Bodies asleep are out of the state; their records hold their state.
+    const auto addAsleep = [&](const Vec2& x, const Vec2& v, double mass) {
+        s.momentum += mass * v;
+        s.massMoment += mass * x;
+        s.angularMomentum += mass * cross(x, v);
+        s.mass += mass;
+    };
+    for (const Particle& p : world.particles())
+        if (p.asleep) addAsleep(p.position, p.velocity, p.mass);
+    for (const Box& b : world.boxes()) {
+        if (!b.asleep) continue;
+        addAsleep(b.position, b.velocity, b.mass);
+        s.angularMomentum += b.inertia * b.angularVelocity;
+    }
     return s;
 }
 

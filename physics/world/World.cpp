@@ -84,13 +84,15 @@ void World::commit() {
     if (!layoutDirty_) return;
     const bool hadLayout = committed_;
     committed_ = true;
+    if (!sleepRelayout_) resetSleep();  // an edit wakes every island
 
     dynamicParticles_.clear();
     dynamicBoxes_.clear();
     for (int i = 0; i < static_cast<int>(bodies_.particles.size()); ++i)
-        if (!bodies_.particles[i].pinned) dynamicParticles_.push_back(i);
+        if (!bodies_.particles[i].pinned && !bodies_.particles[i].asleep)
+            dynamicParticles_.push_back(i);
     for (int i = 0; i < static_cast<int>(bodies_.boxes.size()); ++i)
-        if (!bodies_.boxes[i].isStatic) dynamicBoxes_.push_back(i);
+        if (!bodies_.boxes[i].isStatic && !bodies_.boxes[i].asleep) dynamicBoxes_.push_back(i);
     layout_.dynamicParticles = static_cast<int>(dynamicParticles_.size());
     layout_.dynamicBoxes = static_cast<int>(dynamicBoxes_.size());
 
@@ -131,9 +133,14 @@ void World::commit() {
     rebuildSpringEffect();
     bindEffects();
     if (ContactStage::needed(bodies_, particleCollisions_)) {
-        if (!contacts_)
-            contacts_ = std::make_unique<ContactStage>(particleCollisions_, particleRestitution_);
-        contacts_->bind(bodies_);
+        if (sleepRelayout_ && contacts_) {
+            contacts_->rebind(bodies_);
+        } else {
+            if (!contacts_)
+                contacts_ =
+                    std::make_unique<ContactStage>(particleCollisions_, particleRestitution_);
+            contacts_->bind(bodies_);
+        }
     } else {
         contacts_.reset();
     }
@@ -322,6 +329,7 @@ void World::setSettings(const SimulationSettings& settings) {
     if (!(settings.contactDamping >= 0.0) || !std::isfinite(settings.contactDamping))
         throw std::invalid_argument("contact_damping must be >= 0");
     const bool newMethod = settings.integrator != settings_.integrator;
+    const bool newModel = settings.contactModel != settings_.contactModel;
     if (settings.dt != settings_.dt) {
         clock_.timeBase = clock_.time;
         clock_.stepsSinceTimeBase = 0;
@@ -333,6 +341,9 @@ void World::setSettings(const SimulationSettings& settings) {
     }
     integrator_->setSettings(
         {settings_.tolerance, settings_.newtonIterations, 1.0 / std::max(1, settings_.substeps)});
+    // A switch of method or contact model wakes every island (CONTRACT §6), and so does
+    // switching sleeping off.
+    if (newMethod || newModel || !settings_.sleep) wakeAll();
     // A switch of contact model keeps the state: only the response changes. The penalty's
     // potential of the overlaps there are comes or goes with it, which is not integration error.
     if (committed_ && !layoutDirty_ && contacts_) {
@@ -546,6 +557,7 @@ bool World::step() {
     timer.start(StepStage::Guard);
     const bool good = guard(summary);
     checkInvariants(StepStage::Guard);
+    if (good && settings_.sleep) updateSleep();  // timed with the guard
     return good;
 }
 
@@ -564,9 +576,12 @@ StateSummary World::closeLedger(const StateSummary* summed) {
     const Vec& q = q_[current_];
     const StateSummary summary =
         summed ? *summed : summarizeState(pairedDofs(), mass_, q, u_[current_]);
-    if (summary.finite)
-        ledger_.close(summary, phasebox::potentialEnergy(effects_, q, summary.massMoment) +
-                                   contactPotential(q));
+    if (summary.finite) {
+        StateSummary all = summary;  // with what the bodies asleep hold
+        all.kinetic += sleepingKinetic_;
+        ledger_.close(all, phasebox::potentialEnergy(effects_, q, summary.massMoment) +
+                               contactPotential(q) + sleepingPotential_);
+    }
     return summary;
 }
 
@@ -631,14 +646,15 @@ void World::restore(const DivergenceGuard::Checkpoint& c, bool fromOtherBuffer) 
 }
 
 double World::kineticEnergy() const {
-    return summarizeState(pairedDofs(), mass_, q_[current_], u_[current_]).kinetic;
+    return summarizeState(pairedDofs(), mass_, q_[current_], u_[current_]).kinetic +
+           sleepingKinetic_;
 }
 
 double World::potentialEnergy() const {
     const Vec& q = q_[current_];
     return phasebox::potentialEnergy(
                effects_, q, summarizeState(pairedDofs(), mass_, q, u_[current_]).massMoment) +
-           contactPotential(q);
+           contactPotential(q) + sleepingPotential_;
 }
 
 double World::mechanicalEnergy(const Vec& q, const Vec& u) const {

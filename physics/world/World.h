@@ -19,6 +19,7 @@
 #include "physics/world/DivergenceGuard.h"
 #include "physics/world/EnergyLedger.h"
 #include "physics/world/ErrorEstimate.h"
+#include "physics/world/Islands.h"
 #include "physics/world/StepProfile.h"
 
 #include <memory>
@@ -44,6 +45,8 @@ struct SimulationSettings {
     ContactModel contactModel = ContactModel::Impulse;
     double contactStiffness = 0.0;
     double contactDamping = 0.0;
+    // simulation.sleep (CONTRACT §6): islands at rest leave the step until woken.
+    bool sleep = false;
 };
 
 struct EffectCost {
@@ -144,6 +147,26 @@ public:
     long long stepCount() const { return clock_.stepCount; }
     long long forceEvaluations() const { return forceEvaluations_; }
 
+    // ---- sleeping (simulation.sleep, CONTRACT §6; WorldSleep.cpp) ---------------------
+    // An island of bodies tied by contacts, springs or joints whose every body has stayed below
+    // kSleepSpeed and kSleepTurnRate for kSleepSeconds falls asleep: its bodies leave the state
+    // (dof −1, Particle::asleep, Box::asleep) with their positions and velocities kept in their
+    // records, so nothing steps them, no effect or contact solve sees them, and their energy is
+    // held as it was (the ledger books nothing for them). Contacts see them as static bodies.
+    // The island wakes, exactly as it fell asleep, when an awake body comes within reach
+    // (ContactStage::reachedSleepers), on an edit of the world (objects, effects) and when the
+    // method or the contact model is switched. An island held by a joint stays awake.
+    static constexpr double kSleepSpeed = 0.01;                                     // m/s
+    static constexpr double kSleepTurnRate = 2.0 * 3.14159265358979323846 / 180.0;  // rad/s
+    static constexpr double kSleepSeconds = 0.5;
+    // The bodies asleep now (0 with sleeping off).
+    int sleepingBodies() const { return sleepingBodies_; }
+    // Wakes every island asleep.
+    void wakeAll();
+    // Wakes the island of one body (rigid: a Box record, else a particle); false when it was
+    // awake.
+    bool wakeBody(bool rigid, int index);
+
     // ---- diagnostics ------------------------------------------------------------------
     // Step doubling at the current state: one sub-step of h = dt/substeps against two of h/2
     // with the current method, smooth forces only (contacts are events, not a smooth error).
@@ -195,6 +218,13 @@ public:
     double potentialEnergy() const;
 
 private:
+    // Sleeping (WorldSleep.cpp): the timers after a good step, islands that fall asleep, sleepers
+    // reached; the state rebuilt around them with the ledger and the contacts carried over.
+    void updateSleep();
+    bool fallAsleep();
+    bool wakeIsland(int island);
+    void relayoutForSleep();
+    void resetSleep();
     void ensureLayout() {
         if (layoutDirty_) commit();
     }
@@ -302,6 +332,23 @@ private:
     DivergenceGuard guard_;
     std::optional<Divergence> divergence_;
     StepProfile profile_;
+
+    // Sleeping, per body (particles, then boxes): seconds below the thresholds, the island it
+    // sleeps in (−1 awake); per island root in fallAsleep(): the least of those seconds, and
+    // whether a joint holds it.
+    std::vector<double> restingSeconds_;
+    std::vector<int> sleepingIsland_;
+    std::vector<double> islandRest_;
+    std::vector<unsigned char> islandHeld_;
+    std::vector<int> islandId_;
+    Islands islands_;
+    int sleepingBodies_ = 0;
+    int nextIsland_ = 0;
+    // What the bodies asleep hold of the ledger's kinetic and potential energy: constant while
+    // they sleep, taken when the state was rebuilt around them.
+    double sleepingKinetic_ = 0.0, sleepingPotential_ = 0.0;
+    bool sleepRelayout_ = false;  // commit() rebuilds for a change of islands, not an edit
+    std::vector<double> keptEffectSeconds_;
 };
 
 }  // namespace phasebox

@@ -98,6 +98,7 @@ void World::findPenaltyPairs() {
     penaltyVelocity_ = 2.0 * u - penaltyVelocity_;
     contacts_->findPairs(bodies_, q_[current_], u, penaltyVelocity_, 1.0, settings_.dt,
                          settings_.contacts);
+    if (sleepingBodies_ > 0) contacts_->findReachedSleepers(bodies_, settings_.contacts);
     penaltyVelocity_ = u;
     effectSeconds_.back() += secondsSince(start);
 }
@@ -107,6 +108,7 @@ void World::collide(int next, int substeps) {
     if (settings_.contactModel == ContactModel::Kinematic) {
         contacts_->findPairs(bodies_, q_[current_], u_[current_], u_[next], 1.0 / substeps,
                              settings_.dt, settings_.contacts);
+        if (sleepingBodies_ > 0) contacts_->findReachedSleepers(bodies_, settings_.contacts);
         kinematicImpulse_.setZero(layout_.dimension());  // summed over the frame's sub-steps
     } else {
         contacts_->collide(bodies_, invMass_, q_[current_], u_[current_], u_[next], 1.0 / substeps,

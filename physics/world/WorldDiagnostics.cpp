@@ -114,9 +114,9 @@ void World::checkInvariants([[maybe_unused]] StepStage after) const {
         // Recomputed term by term, without the mass-moment shortcut.
         const Vec& q = q_[current_];
         const Vec& u = u_[current_];
-        double kinetic = 0.0;
+        double kinetic = sleepingKinetic_;  // the bodies asleep hold theirs
         for (int i = 0; i < n; ++i) kinetic += 0.5 * mass_[i] * u[i] * u[i];
-        double potential = 0.0;
+        double potential = sleepingPotential_;
         for (const auto& e : effects_) potential += e->potentialEnergy(q);
         potential += contactPotential(q);
         const double drift =

@@ -41,10 +41,15 @@ struct Options {
     bool json = false;
     bool breakdown = false;
     bool quick = false;
+    std::vector<std::string_view> flags;  // the other extra flags given
+    bool has(std::string_view flag) const {
+        return std::find(flags.begin(), flags.end(), flag) != flags.end();
+    }
 };
 
 // Accepts --steps N, --repeat N, --json and the flags the caller lists in extraFlags
-// (currently "--breakdown" and "--quick"). Exits with a usage message on anything else.
+// ("--breakdown" and "--quick" set their fields, the others are kept in flags). Exits with a usage
+// message on anything else.
 inline Options parseOptions(int argc, char** argv, std::string_view usage,
                             std::vector<std::string_view> extraFlags = {}) {
     Options options;
@@ -75,6 +80,8 @@ inline Options parseOptions(int argc, char** argv, std::string_view usage,
             options.breakdown = true;
         else if (extra && arg == "--quick")
             options.quick = true;
+        else if (extra)
+            options.flags.push_back(arg);
         else if (arg == "--help" || arg == "-h")
             fail("");
         else

@@ -218,21 +218,28 @@ QPolygonF boxPolygon(const Frame& f, int i) {
 
 void drawBoxes(const Frame& f) {
     QPainter& p = f.painter;
-    // Static boxes first, then dynamic ones over them: one pen and brush per pass.
-    for (const bool isStatic : {true, false}) {
-        const QColor fill = isStatic ? f.o.colors.staticBox : f.o.colors.dynamicBox;
-        p.setPen(f.pen(fill.darker(isStatic ? 150 : 165), 1.0));
+    // Static boxes first, then the dynamic ones asleep (dimmed), then those awake over them:
+    // one pen and brush per pass.
+    enum Pass { Static, Asleep, Awake };
+    const auto passOf = [](const Box& box) {
+        return box.isStatic ? Static : box.asleep ? Asleep : Awake;
+    };
+    for (const Pass pass : {Static, Asleep, Awake}) {
+        const QColor fill = pass == Static   ? f.o.colors.staticBox
+                            : pass == Asleep ? f.o.colors.sleepingBox
+                                             : f.o.colors.dynamicBox;
+        p.setPen(f.pen(fill.darker(pass == Static ? 150 : pass == Asleep ? 130 : 165), 1.0));
         p.setBrush(fill);
         for (int i = 0; i < static_cast<int>(f.world.boxes().size()); ++i) {
             const Box& box = f.world.boxes()[i];
             const double reach = f.view.toPixels(0.5 * box.size.norm());
-            if (box.isStatic == isStatic && f.visible(f.screen(f.world.boxPosition(i)), reach))
+            if (passOf(box) == pass && f.visible(f.screen(f.world.boxPosition(i)), reach))
                 p.drawPolygon(boxPolygon(f, i));
         }
         // A disk's spoke, from its centre along its angle, shows it turning.
         for (int i = 0; i < static_cast<int>(f.world.boxes().size()); ++i) {
             const Box& box = f.world.boxes()[i];
-            if (box.shape != RigidShape::Disk || box.isStatic != isStatic) continue;
+            if (box.shape != RigidShape::Disk || passOf(box) != pass) continue;
             const Vec2 c = f.world.boxPosition(i);
             const double a = f.world.boxAngle(i);
             p.drawLine(f.screen(c), f.screen(c + box.radius * Vec2(std::cos(a), std::sin(a))));
@@ -500,7 +507,7 @@ void drawDiscs(const Frame& f, const std::vector<Disc>& discs, const QColor& col
 void drawParticles(const Frame& f) {
     const double ppm = f.view.pixelsPerMetre();
     const auto& particles = f.world.particles();
-    std::vector<Disc> free, pinned;
+    std::vector<Disc> free, pinned, asleep;
     free.reserve(particles.size());
     QPainterPath anchors;
     int candidates = 0;
@@ -514,7 +521,7 @@ void drawParticles(const Frame& f) {
         const double r = disc ? SceneRenderer::drawnRadius(particle, ppm) : 0.0;
         if (!f.visible(c, r + 12.0 * f.lw)) continue;
         if (particle.pinned) addAnchor(anchors, c - QPointF(0, r), (disc ? 8.0 : 5.0) * f.lw);
-        if (disc) (particle.pinned ? pinned : free).push_back({c, r});
+        if (disc) (particle.pinned ? pinned : particle.asleep ? asleep : free).push_back({c, r});
     }
     // The count of drawable discs, not of visible ones, picks the path: panning must not
     // switch the look back and forth.
@@ -522,6 +529,7 @@ void drawParticles(const Frame& f) {
     f.painter.setPen(Qt::NoPen);
     f.painter.setBrush(f.o.colors.anchor);
     f.painter.drawPath(anchors);
+    drawDiscs(f, asleep, f.o.colors.sleepingParticle, useSprites);
     drawDiscs(f, free, f.o.colors.particle, useSprites);
     drawDiscs(f, pinned, f.o.colors.pinnedParticle, useSprites);
 }

@@ -168,13 +168,13 @@ QRectF CanvasPresenter::motionExtent() const {
     double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
     const auto sample = [&] {
         for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
-            if (world.particles()[i].dof >= 0)
+            if (!world.particles()[i].pinned)
                 for (int k = 0; k < 2; ++k) {
                     lo[k] = std::min(lo[k], world.particlePosition(i)[k]);
                     hi[k] = std::max(hi[k], world.particlePosition(i)[k]);
                 }
         for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-            if (world.boxes()[i].dof >= 0)
+            if (!world.boxes()[i].isStatic)
                 for (int k = 0; k < 2; ++k) {
                     const double reach = 0.5 * world.boxes()[i].size.norm();
                     lo[k] = std::min(lo[k], world.boxPosition(i)[k] - reach);
@@ -208,11 +208,11 @@ void CanvasPresenter::followNow() {
     };
     for (int i = 0; i < static_cast<int>(world.particles().size()); ++i) {
         const Particle& p = world.particles()[i];
-        if (wanted(p.id, p.dof >= 0)) include(world.particlePosition(i), p.radius);
+        if (wanted(p.id, !p.pinned)) include(world.particlePosition(i), p.radius);
     }
     for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i) {
         const Box& b = world.boxes()[i];
-        if (wanted(b.id, b.dof >= 0)) include(world.boxPosition(i), 0.5 * b.size.norm());
+        if (wanted(b.id, !b.isStatic)) include(world.boxPosition(i), 0.5 * b.size.norm());
     }
     if (!(lo[0] <= hi[0])) return;
     ui::ViewTransform v = view_.view();
