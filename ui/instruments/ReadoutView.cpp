@@ -6,6 +6,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QMenu>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -21,7 +22,10 @@ QString joined(const QVector<double>& values) {
     if (values.size() == 1) return formatReading(values.front());
     QStringList parts;
     for (const double v : values) parts << formatReading(v);
-    return QLatin1Char('(') + parts.join(QStringLiteral(", ")) + QLatin1Char(')');
+    // A decimal comma needs another separator between the numbers of a pair.
+    const QString separator = QLocale().decimalPoint() == QLatin1String(",") ? QStringLiteral("; ")
+                                                                             : QStringLiteral(", ");
+    return QLatin1Char('(') + parts.join(separator) + QLatin1Char(')');
 }
 }  // namespace
 
