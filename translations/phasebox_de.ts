@@ -17,7 +17,7 @@
     </message>
     <message>
         <source>work_nc</source>
-        <translation>Arbeit_nk</translation>
+        <translation>W_nk</translation>
     </message>
     <message>
         <source>drift</source>

@@ -17,7 +17,7 @@
     </message>
     <message>
         <source>work_nc</source>
-        <translation>trabajo_nc</translation>
+        <translation>W_nc</translation>
     </message>
     <message>
         <source>drift</source>
@@ -25,7 +25,7 @@
     </message>
     <message>
         <source>correction</source>
-        <translation>corrección</translation>
+        <translation>correc.</translation>
     </message>
     <message>
         <source>time [s]</source>
