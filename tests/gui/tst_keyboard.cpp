@@ -13,6 +13,7 @@
 #include <QApplication>
 #include <QRegularExpression>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTest>
 
@@ -54,6 +55,7 @@ class TestKeyboard : public QObject {
 private slots:
     void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
     void buildRunAndReadWithTheKeyboardAlone();
+    void everyDrawingToolPlacesAtTheCursor();
 };
 
 void TestKeyboard::buildRunAndReadWithTheKeyboardAlone() {
@@ -121,6 +123,52 @@ void TestKeyboard::buildRunAndReadWithTheKeyboardAlone() {
     QVERIFY2(std::abs(readY - expectedY) < 0.05,
              qPrintable(QStringLiteral("%1 against %2").arg(position).arg(expectedY)));
     QVERIFY(window.canvas()->accessibleDescription().contains(QStringLiteral("velocity")));
+}
+
+// Each drawing tool's key, then Enter: its object appears at the keyboard cursor (a spring and a
+// joint from the selected particle to the cursor).
+void TestKeyboard::everyDrawingToolPlacesAtTheCursor() {
+    MainWindow window;
+    window.resize(1024, 700);
+    window.show();
+    QApplication::setActiveWindow(&window);
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    QTest::keySequence(&window, QKeySequence::New);
+    QVERIFY(tabToCanvas(window));
+    const auto count = [&window] {
+        const SceneDesc& s = window.document().setup();
+        return s.particles.size() + s.boxes.size() + s.disks.size() + s.polygons.size() +
+               s.planes.size() + s.springs.size() + s.cloths.size() + s.joints.size();
+    };
+    press(Qt::Key_2);  // a particle to hang things from, then select it
+    press(Qt::Key_Return);
+    QCOMPARE(window.document().setup().particles.size(), std::size_t(1));
+    const std::string& id = window.document().setup().particles[0].id;
+    const QString particle = id.empty() ? QStringLiteral("p0") : QString::fromStdString(id);
+    // Tool keys 5 box, 6 disk, 7 polygon, 4 cloth, then 3 spring and 0 joint from the particle
+    // (selected again: a placed object becomes the selection) to the cursor, and 8 a plane last
+    // (its edge runs through the cursor's height); the cursor moves 1.5 m right before each so
+    // that no two objects overlap.
+    for (const int key :
+         {Qt::Key_5, Qt::Key_6, Qt::Key_7, Qt::Key_4, Qt::Key_3, Qt::Key_0, Qt::Key_8}) {
+        if (key == Qt::Key_3 || key == Qt::Key_0) window.document().setSelection({particle});
+        press(key);
+        QCOMPARE(QApplication::focusWidget(), window.canvas());
+        for (int i = 0; i < 15; ++i) press(Qt::Key_Right);
+        const std::size_t before = count();
+        press(Qt::Key_Return);
+        QVERIFY2(count() == before + 1, qPrintable(QStringLiteral("tool key %1: %2")
+                                                       .arg(key)
+                                                       .arg(window.statusBar()->currentMessage())));
+    }
+    const SceneDesc& s = window.document().setup();
+    QCOMPARE(s.boxes.size(), std::size_t(1));
+    QCOMPARE(s.disks.size(), std::size_t(1));
+    QCOMPARE(s.polygons.size(), std::size_t(1));
+    QCOMPARE(s.planes.size(), std::size_t(2));  // the new scene's ground and this one
+    QCOMPARE(s.cloths.size(), std::size_t(1));
+    QCOMPARE(s.springs.size(), std::size_t(1));
+    QCOMPARE(s.joints.size(), std::size_t(1));
 }
 
 QTEST_MAIN(TestKeyboard)
