@@ -2604,12 +2604,12 @@ dx %2  dy %3</translation>
 <context>
     <name>phasebox::PlotsPresenter</name>
     <message>
-        <source>Energy (%1, dt %2 s)</source>
-        <translation>Energie (%1, dt %2 s)</translation>
+        <source>Energy (%1, dt %L2 s)</source>
+        <translation>Energie (%1, dt %L2 s)</translation>
     </message>
     <message>
-        <source>Local error per step (%1, dt %2 s)</source>
-        <translation>Lokaler Fehler pro Schritt (%1, dt %2 s)</translation>
+        <source>Local error per step (%1, dt %L2 s)</source>
+        <translation>Lokaler Fehler pro Schritt (%1, dt %L2 s)</translation>
     </message>
     <message>
         <source>The live error estimate is off (View menu).</source>

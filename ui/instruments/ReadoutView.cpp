@@ -81,8 +81,9 @@ void ReadoutView::setReadout(const QString& subject, const QString& state, bool 
     table_->show();
     subject_->setText(subject);
     state_->setText(state);
-    // Live values in green, the setup in grey: a glance tells which is shown.
-    state_->setStyleSheet(live ? QStringLiteral("QLabel { color: white; background: #2ca02c; "
+    // Live values in (Okabe–Ito) bluish green, the setup in grey, each also named in its text:
+    // a glance tells which is shown, whatever colours one sees.
+    state_->setStyleSheet(live ? QStringLiteral("QLabel { color: white; background: #007a5a; "
                                                 "border-radius: 3px; padding: 1px 6px; }")
                                : QStringLiteral("QLabel { color: white; background: #7f7f7f; "
                                                 "border-radius: 3px; padding: 1px 6px; }"));
