@@ -3,8 +3,11 @@
 
 PHASEBOX_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # libav*-dev and libgif-dev encode clips (MP4 and GIF); ffmpeg gives the tests ffprobe.
+# qt6-l10n-tools and qt6-tools-dev: lupdate, lrelease and CMake's LinguistTools (the
+# translations); qt6-translations-l10n: Qt's own strings (standard buttons) in those languages.
 PHASEBOX_PACKAGES=(cmake ninja-build g++ qt6-base-dev libqt6opengl6-dev qt6-charts-dev
-                   qt6-svg-dev libeigen3-dev libgl1-mesa-dev xvfb xauth pkg-config
+                   qt6-svg-dev qt6-l10n-tools qt6-tools-dev qt6-translations-l10n libeigen3-dev
+                   libgl1-mesa-dev xvfb xauth pkg-config
                    libavcodec-dev libavformat-dev libswscale-dev libavutil-dev libgif-dev ffmpeg)
 
 phasebox_log() { printf '[phasebox] %s\n' "$*" >&2; }

@@ -8,6 +8,7 @@
 #include "app/io/OutputFile.h"
 #include "app/io/SceneIO.h"
 #include "physics/integrators/Integrator.h"
+#include "ui/panels/BuiltinText.h"
 #include "ui/plots/Charts.h"
 #include "ui/plots/WorkPrecisionChart.h"
 
@@ -60,9 +61,7 @@ AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
     // Choices: which methods, which steps, how long.
     integrators_ = new QListWidget(this);
     for (const IntegratorInfo& info : integratorRegistry()) {
-        auto* item = new QListWidgetItem(
-            QString::fromUtf8(info.label.data(), static_cast<int>(info.label.size())),
-            integrators_);
+        auto* item = new QListWidgetItem(ui::integratorText(info.label), integrators_);
         item->setData(Qt::UserRole,
                       QString::fromUtf8(info.name.data(), static_cast<int>(info.name.size())));
         item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
@@ -263,7 +262,7 @@ void AccuracyDialog::setScene(const SceneDesc& scene) {
     duration_->setText(QString::number(std::min(scene.simulation.duration, 5.0), 'g', 6));
     summary_->setText(tr("Scene: %1. Press Run: every checked method runs the scene at every dt "
                          "on a copy; the open scene is not touched.")
-                          .arg(QString::fromStdString(scene.name).toHtmlEscaped()));
+                          .arg(ui::sceneText(scene.name).toHtmlEscaped()));
 }
 
 bool AccuracyDialog::run() {
@@ -334,7 +333,7 @@ void AccuracyDialog::onFinished() {
     QChart* old = chart_->chart();
     chart_->setChart(ui::createWorkPrecisionChart(points,
                                                   tr("%1: error at t = %2 s against CPU time")
-                                                      .arg(QString::fromStdString(scene_.name))
+                                                      .arg(ui::sceneText(scene_.name))
                                                       .arg(result.endTime),
                                                   chartFont()));
     delete old;
@@ -531,7 +530,7 @@ bool AccuracyDialog::exportTo(const QString& path, QString* error) const {
             {QString::fromStdString(r.integrator), r.cpuSeconds, r.positionError,
              r.tolerance ? QStringLiteral("tol %1").arg(*r.tolerance, 0, 'g', 1) : formatDt(r.dt)});
     std::unique_ptr<QChart> chart(ui::createWorkPrecisionChart(
-        points, tr("%1: error against CPU time").arg(QString::fromStdString(scene_.name))));
+        points, tr("%1: error against CPU time").arg(ui::sceneText(scene_.name))));
     return writeChart(chart.get(), path, QSize(1400, 900), error);
 }
 

@@ -243,6 +243,67 @@ void CanvasTools::pressed(QPointF world, Qt::MouseButton button, Qt::KeyboardMod
     }
 }
 
+void CanvasTools::placeAt(QPointF cursor) {
+    QPointF start = cursor, end = cursor;
+    switch (tool_) {
+        case Tool::Select:
+            return;
+        case Tool::Particle:
+        case Tool::Disk:
+        case Tool::Pin:
+            break;  // a click
+        case Tool::Polygon:
+            end = cursor + QPointF(0.4, 0.0);  // from the centre to a corner
+            break;
+        case Tool::Box:
+            start = cursor - QPointF(0.5, 0.3);
+            end = cursor + QPointF(0.5, 0.3);
+            break;
+        case Tool::Cloth:
+            start = cursor + QPointF(-0.6, 0.5);
+            end = cursor + QPointF(0.6, -0.5);
+            break;
+        case Tool::Plane:  // solid below: the drag runs to the right
+            start = cursor - QPointF(1.0, 0.0);
+            end = cursor + QPointF(1.0, 0.0);
+            break;
+        case Tool::Spring:
+        case Tool::Joint:
+        case Tool::Ruler:
+        case Tool::Protractor: {
+            const QStringList selection = document_.selection();
+            const ObjectRef ref = selection.isEmpty() ? ObjectRef{}
+                                                      : findObject(document_.setup(),
+                                                                   selection.first().toStdString());
+            if (const auto keys = positionKeys(ref.kind)) {
+                const QString id = QString::fromStdString(objectId(document_.setup(), ref));
+                const auto x = propertyValue(document_.setup(), id, keys->first);
+                const auto y = propertyValue(document_.setup(), id, keys->second);
+                if (x && y) start = QPointF(*x, *y);
+            }
+            break;
+        }
+    }
+    pressed(start, Qt::LeftButton, {});
+    if (end != start) moved(end, Qt::LeftButton, {});
+    released(end, Qt::LeftButton, {});
+}
+
+void CanvasTools::nudgeSelection(QPointF delta) {
+    const SceneDesc& setup = document_.setup();
+    for (const QString& selected : document_.selection()) {
+        const ObjectRef ref = findObject(setup, selected.toStdString());
+        const auto keys = positionKeys(ref.kind);
+        if (!keys) continue;
+        const QString id = QString::fromStdString(objectId(setup, ref));
+        const auto x = propertyValue(setup, id, keys->first);
+        const auto y = propertyValue(setup, id, keys->second);
+        if (!x || !y) continue;
+        QString error;
+        report(document_.moveObject(id, {*x + delta.x(), *y + delta.y()}, &error), error);
+    }
+}
+
 void CanvasTools::moved(QPointF world, Qt::MouseButtons buttons, Qt::KeyboardModifiers) {
     if (!outline_.isEmpty()) {
         showOutline(world);  // the outline follows the cursor; a drag adds no corner

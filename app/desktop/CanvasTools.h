@@ -85,6 +85,12 @@ public:
     JointType jointType() const { return jointType_; }
     void setJointType(JointType type) { jointType_ = type; }
     void setPolygonSides(int sides);
+    // The keyboard's way to draw: the current tool's gesture with its default size at the
+    // keyboard cursor (a particle, disk or pin there; a box, cloth or polygon centred on it; a
+    // plane along it; a spring, joint or ruler from the first selected object to it).
+    void placeAt(QPointF cursor);
+    // Moves every selected object that can move by delta metres (one undo step per object).
+    void nudgeSelection(QPointF delta);
     // The corners clicked so far with the polygon tool (world coordinates).
     const QList<QPointF>& outline() const { return outline_; }
     // Closes the clicked outline into a polygon (Enter); false, with a message, when refused.

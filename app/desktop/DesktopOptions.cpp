@@ -2,8 +2,10 @@
 
 #include "app/desktop/MainWindow.h"
 #include "app/desktop/MeasureTools.h"
+#include "app/desktop/presenters/AppearancePresenter.h"
 #include "app/desktop/presenters/InstrumentsPresenter.h"
 #include "app/document/Document.h"
+#include "app/i18n/Language.h"
 #include "app/io/OutputFile.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
@@ -67,8 +69,25 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
         QStringLiteral("size"),
         QStringLiteral("Open the window W×H pixels large, e.g. 1024x700 (for --screenshot)."),
         QStringLiteral("WxH"));
+    const QCommandLineOption language(
+        QStringLiteral("language"),
+        QStringLiteral("Show the app in LANG (%1) instead of the language chosen in View > "
+                       "Language or the system's; nothing is stored.")
+            .arg(i18n::languages().join(QStringLiteral(", "))),
+        QStringLiteral("LANG"));
+    const QCommandLineOption highContrast(
+        QStringLiteral("high-contrast"),
+        QStringLiteral("Use the high-contrast theme (View > High Contrast) for this run."));
+    const QCommandLineOption lineScale(
+        QStringLiteral("line-scale"),
+        QStringLiteral("Scale the canvas's and the plots' lines by F (0.5 to 4)."),
+        QStringLiteral("F"));
+    const QCommandLineOption textScale(
+        QStringLiteral("text-scale"),
+        QStringLiteral("Scale the canvas's and the plots' text by F (0.5 to 4)."),
+        QStringLiteral("F"));
     parser.addOptions({screenshot, runFor, canvas, presentation, select, probe, ruler, protractor,
-                       freeBody, size});
+                       freeBody, size, language, highContrast, lineScale, textScale});
     parser.addPositionalArgument(QStringLiteral("scene"),
                                  QStringLiteral("Scene file to open (default: the demo)."));
     if (!parser.parse(arguments)) {
@@ -109,6 +128,24 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
             return false;
         }
         options.size = QSize(w, h);
+    }
+    options.highContrast = parser.isSet(highContrast);
+    for (const auto& [option, value] :
+         {std::pair{&lineScale, &options.lineScale}, std::pair{&textScale, &options.textScale}}) {
+        if (!parser.isSet(*option)) continue;
+        bool scaleOk = false;
+        *value = parser.value(*option).toDouble(&scaleOk);
+        if (!scaleOk || !(*value >= 0.5 && *value <= 4.0)) {
+            *error = QStringLiteral("--%1: expected a number from 0.5 to 4, got \"%2\"")
+                         .arg(option->names().constFirst(), parser.value(*option));
+            return false;
+        }
+    }
+    options.language = parser.value(language).toLower();
+    if (parser.isSet(language) && !i18n::languages().contains(options.language)) {
+        *error = QStringLiteral("--language: expected one of %1, got \"%2\"")
+                     .arg(i18n::languages().join(QStringLiteral(", ")), parser.value(language));
+        return false;
     }
     const QStringList positional = parser.positionalArguments();
     if (positional.size() > 1) {
@@ -166,6 +203,9 @@ int runDesktop(QApplication& app) {
         err << "phasebox: error: --screenshot: " << error << "\n";
         return 2;
     }
+    // Before the window: its texts are translated as they are made.
+    i18n::install(i18n::resolve(options.language.isEmpty() ? MainWindow::storedLanguage()
+                                                           : options.language));
     MainWindow window;
     const ui::CanvasBackend backend =
         options.canvas == QLatin1String("raster")   ? ui::CanvasBackend::Raster
@@ -173,6 +213,13 @@ int runDesktop(QApplication& app) {
                                                     : ui::CanvasBackend::Auto;
     window.canvas()->setBackend(backend);
     if (options.size.isValid()) window.resize(options.size);
+    if (options.highContrast || options.lineScale > 0.0 || options.textScale > 0.0) {
+        ui::Appearance look = window.appearance()->appearance();
+        look.highContrast = look.highContrast || options.highContrast;
+        if (options.lineScale > 0.0) look.lineScale = options.lineScale;
+        if (options.textScale > 0.0) look.textScale = options.textScale;
+        window.appearance()->setAppearance(look);
+    }
     const QString scene = options.scene.isEmpty() ? kDemoScene : options.scene;
     const bool headless = !options.screenshot.isEmpty();
     if (!window.openFile(scene, headless, &error)) {

@@ -18,12 +18,16 @@ struct DesktopOptions {
     double runFor = 0.0;  // simulated seconds before the picture
     QString canvas;       // "auto", "raster" or "opengl"
     bool presentation = false;
-    QString select;           // an object to select at start (its phase space is plotted)
-    QStringList probes;       // probes to graph at start, one graph each (the Instruments dock)
-    QStringList rulers;       // "A,B": a ruler between two objects or X:Y points
-    QStringList protractors;  // "A,B,C": a protractor with its vertex at B
-    bool freeBody = false;    // the free-body view on (of the --select object)
-    QSize size;               // valid: the window's size in pixels (--size WxH)
+    QString select;             // an object to select at start (its phase space is plotted)
+    QStringList probes;         // probes to graph at start, one graph each (the Instruments dock)
+    QStringList rulers;         // "A,B": a ruler between two objects or X:Y points
+    QStringList protractors;    // "A,B,C": a protractor with its vertex at B
+    bool freeBody = false;      // the free-body view on (of the --select object)
+    QSize size;                 // valid: the window's size in pixels (--size WxH)
+    bool highContrast = false;  // --high-contrast
+    double lineScale = 0.0;     // --line-scale; 0 = the stored one
+    double textScale = 0.0;     // --text-scale; 0 = the stored one
+    QString language;  // --language: en, de, es, fr; empty = the stored choice or the system's
 };
 
 inline const QString kDemoScene = QStringLiteral(":/scenes/demo.phasebox.json");

@@ -7,6 +7,7 @@
 #include "app/desktop/MeasureTools.h"
 #include "app/desktop/SceneFiles.h"
 #include "app/desktop/SceneLibraryMenu.h"
+#include "app/desktop/presenters/AppearancePresenter.h"
 #include "app/desktop/presenters/CanvasPresenter.h"
 #include "app/desktop/presenters/EffectsPresenter.h"
 #include "app/desktop/presenters/ExactPresenter.h"
@@ -18,15 +19,20 @@
 #include "app/desktop/presenters/SceneBrowserPresenter.h"
 #include "app/desktop/presenters/StatusPresenter.h"
 #include "app/document/Autosave.h"
+#include "app/i18n/Language.h"
 #include "ui/canvas/SceneView.h"
 #include "ui/instruments/InstrumentsPanel.h"
+#include "ui/panels/AccessibleNames.h"
+#include "ui/panels/BuiltinText.h"
 #include "ui/panels/DisplayText.h"
 #include "ui/panels/EffectsPanel.h"
 #include "ui/panels/ParametersPanel.h"
 #include "ui/panels/PropertiesPanel.h"
 #include "ui/panels/SceneBrowser.h"
 
+#include <QAbstractItemView>
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QDockWidget>
 #include <QFileInfo>
@@ -34,7 +40,9 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QSettings>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTextBrowser>
 #include <QTimer>
 
@@ -95,9 +103,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), controller_(docum
         status_->showMessage(tr("Autosave failed: %1").arg(message));
     });
     document_.newScene();
+    prepareForKeyboard();
 }
 
 MainWindow::~MainWindow() = default;
+
+// Tab moves between controls everywhere: lists and tables keep the arrow keys for their rows,
+// the notes their scrolling keys. The canvas is named for screen readers, and every control
+// without a name gets the one its label or tooltip gives it (ui/panels/AccessibleNames.h).
+void MainWindow::prepareForKeyboard() {
+    for (auto* view : findChildren<QAbstractItemView*>()) view->setTabKeyNavigation(false);
+    notes_->setTabChangesFocus(true);
+    canvas_->setAccessibleName(tr("Scene canvas"));
+    ui::nameControls(this);
+}
 
 QAction* MainWindow::action(const QString& name) const {
     return findChild<QAction*>(name, Qt::FindDirectChildrenOnly);
@@ -197,7 +216,9 @@ void MainWindow::createMenus() {
     for (QDockWidget* dock : docks_) view->addAction(dock->toggleViewAction());
     addNamedActions(view, *this,
                     {"", "fit", "follow", "trails", "velocityArrows", "forceArrows", "freeBody",
-                     "labels", "viewExact", "grid", "errorEstimate", "presentation"});
+                     "labels", "viewExact", "grid", "errorEstimate", "presentation", ""});
+    appearance_->addToMenu(*view);
+    createLanguageMenu(*view->addMenu(tr("&Language")));
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     addNamedActions(help, *this, {"userGuide", "keyboardShortcuts", ""});
     help->addAction(tr("&About Phasebox"), this, [this] {
@@ -207,6 +228,38 @@ void MainWindow::createMenus() {
                               "integrator while it runs, and watch what accuracy costs.</p>")
                                .arg(QStringLiteral(PHASEBOX_VERSION)));
     });
+}
+
+// The language is chosen here and stored; it applies from the next start, since every text of
+// the window is translated once, when it is made.
+void MainWindow::createLanguageMenu(QMenu& menu) {
+    menu.setObjectName(QStringLiteral("languageMenu"));
+    auto* group = new QActionGroup(&menu);
+    const QString stored = storedLanguage();
+    QStringList codes{QString()};
+    codes << i18n::languages();
+    for (const QString& code : std::as_const(codes)) {
+        QAction* a =
+            menu.addAction(code.isEmpty() ? tr("&System Language") : i18n::nativeName(code));
+        a->setCheckable(true);
+        a->setChecked(code == stored);
+        a->setData(code);
+        a->setObjectName(QStringLiteral("language_") +
+                         (code.isEmpty() ? QStringLiteral("system") : code));
+        group->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code] {
+            QSettings settings;
+            i18n::storeLanguage(settings, code);
+            const QString next = i18n::resolve(code);
+            if (next == i18n::installedLanguage()) return;
+            const QString message =
+                tr("Phasebox will speak %1 from its next start.").arg(i18n::nativeName(next));
+            if (QGuiApplication::platformName() == QLatin1String("offscreen"))
+                status_->showMessage(message);
+            else
+                QMessageBox::information(this, tr("Language"), message);
+        });
+    }
 }
 
 void MainWindow::createToolBar() {
@@ -285,6 +338,19 @@ void MainWindow::createDockWindows() {
     addPresenter(canvasPresenter_ =
                      new CanvasPresenter(*canvas_, *tools_, document_, controller_, this));
     canvasPresenter_->createActions(*this);
+    connect(canvasPresenter_, &CanvasPresenter::propertiesWanted, this, [this, pr] {
+        pr->show();
+        pr->raise();
+        for (QWidget* w : properties_->findChildren<QWidget*>())
+            if (w->isVisible() && w->isEnabled() && (w->focusPolicy() & Qt::TabFocus)) {
+                w->setFocus(Qt::TabFocusReason);
+                break;
+            }
+    });
+    addPresenter(appearance_ = new AppearancePresenter(*canvasPresenter_, this));
+    appearance_->createActions(*this);
+    connect(appearance_, &AppearancePresenter::changed, this, &MainWindow::refreshNow,
+            Qt::QueuedConnection);
     addPresenter(measure_ = new MeasureTools(document_, *tools_, *canvas_, controller_, this));
     measure_->createActions(*this);
     addPresenter(parametersPresenter_ =
@@ -328,7 +394,7 @@ void MainWindow::refreshNow() {
 void MainWindow::updateTitle() {
     const QString path = document_.filePath();
     const QString name = path.isEmpty() || path.startsWith(QLatin1Char(':'))
-                             ? QString::fromStdString(document_.setup().name)
+                             ? ui::sceneText(document_.setup().name)
                              : QFileInfo(path).fileName();
     setWindowTitle((name.isEmpty() ? tr("Untitled") : ui::shownText(name)) +
                    QStringLiteral("[*] — Phasebox"));
@@ -337,6 +403,12 @@ void MainWindow::updateTitle() {
 
 void MainWindow::showEvent(QShowEvent* event) {
     QMainWindow::showEvent(event);
+    // Tabbed docks show their whole titles, with scroll buttons when they do not fit, rather
+    // than cut to "Eig…" (German and French titles are longer than the English ones).
+    for (QTabBar* bar : findChildren<QTabBar*>()) {
+        bar->setElideMode(Qt::ElideNone);
+        bar->setUsesScrollButtons(true);
+    }
     // The columns' widths set while the window was built were clamped to a default-sized
     // window's; the first show gives them theirs, unless the settings brought the user's own.
     if (std::exchange(shownOnce_, true) || layoutRestored_ || !leftDock_ || !rightDock_) return;

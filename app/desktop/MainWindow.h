@@ -23,6 +23,7 @@ class QAction;
 class QDialog;
 class QMessageBox;
 class QDockWidget;
+class QMenu;
 class QTextBrowser;
 QT_END_NAMESPACE
 
@@ -44,6 +45,7 @@ class AnimationExport;
 class Autosave;
 class Presenter;
 class SceneFiles;
+class AppearancePresenter;
 class CanvasPresenter;
 class ParametersPresenter;
 class ExactPresenter;
@@ -75,6 +77,8 @@ public:
     ui::InstrumentsPanel* instrumentsPanel() const { return instruments_; }
     InstrumentsPresenter* instruments() const { return instrumentsPresenter_; }
     ExactPresenter* exactSolution() const { return exactPresenter_; }
+    // High contrast, line width and text size (View menu).
+    AppearancePresenter* appearance() const { return appearance_; }
     QAction* action(const QString& name) const;
 
     // Opens a scene file; a bad file shows the loader's message (in a dialog unless quiet) and
@@ -102,6 +106,10 @@ public:
     // action of the window that has a key, listed from the actions themselves.
     void showUserGuide();
     void showKeyboardShortcuts();
+    // The language chosen in View > Language ("" = follow the system), read before the window
+    // is made (its texts are translated as they are created); "" when the settings files may
+    // not be read as they are (readSettings() repairs them and says so).
+    static QString storedLanguage();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -113,6 +121,8 @@ protected:
 private:
     void createActions();
     void createMenus();
+    void createLanguageMenu(QMenu& menu);
+    void prepareForKeyboard();
     void createToolBar();
     void createDockWindows();
     QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name,
@@ -156,6 +166,7 @@ private:
 
     QList<Presenter*> presenters_;  // every view's, for refreshNow()
     CanvasPresenter* canvasPresenter_ = nullptr;
+    AppearancePresenter* appearance_ = nullptr;
     ParametersPresenter* parametersPresenter_ = nullptr;
     PlotsPresenter* plotsPresenter_ = nullptr;
     ExactPresenter* exactPresenter_ = nullptr;

@@ -4,12 +4,14 @@
 
 #include "app/desktop/MeasureTools.h"
 #include "app/desktop/SceneFiles.h"
+#include "app/desktop/presenters/AppearancePresenter.h"
 #include "app/desktop/presenters/CanvasPresenter.h"
 #include "app/desktop/presenters/InstrumentsPresenter.h"
 #include "app/desktop/presenters/ParametersPresenter.h"
 #include "app/desktop/presenters/PlotsPresenter.h"
 #include "app/desktop/presenters/StatusPresenter.h"
 #include "app/document/Autosave.h"
+#include "app/i18n/Language.h"
 #include "app/io/InputFile.h"
 #include "ui/canvas/SceneView.h"
 
@@ -145,8 +147,9 @@ namespace {
 // the generic config folder) are checked without being opened: one that is not a regular file
 // is removed (a link, not its target), and one larger than 1 MiB (ours hold a few kilobytes)
 // is moved aside as NAME.too-large. Says what was done in *problems, one line each; false when
-// a file that must not be read is still there (then no QSettings may be made).
-bool guardSettingsFiles(QStringList* problems) {
+// a file that must not be read is still there (then no QSettings may be made). With repair
+// false nothing is changed: the answer is only whether the files may be read as they are.
+bool guardSettingsFiles(QStringList* problems, bool repair = true) {
     bool safe = true;
     if (QSettings::defaultFormat() != QSettings::NativeFormat &&
         QSettings::defaultFormat() != QSettings::IniFormat)
@@ -163,6 +166,13 @@ bool guardSettingsFiles(QStringList* problems) {
                       QStringLiteral(".conf"));
     constexpr qint64 kMaxSettingsBytes = 1024 * 1024;
     for (const QString& path : std::as_const(paths)) {
+        if (!repair) {
+            const QFileInfo info(path);
+            if (!inputfile::irregularKind(path).isEmpty() ||
+                (info.isFile() && info.size() > kMaxSettingsBytes))
+                return false;
+            continue;
+        }
         if (const QString kind = inputfile::irregularKind(path); !kind.isEmpty()) {
             const bool removed = QFileInfo(path).isDir() ? QDir().rmdir(path) : QFile::remove(path);
             safe = safe && removed;
@@ -187,6 +197,13 @@ bool guardSettingsFiles(QStringList* problems) {
 }
 }  // namespace
 
+QString MainWindow::storedLanguage() {
+    QStringList problems;
+    if (!guardSettingsFiles(&problems, false)) return {};  // readSettings() repairs and says so
+    const QSettings settings;
+    return i18n::storedLanguage(settings);
+}
+
 void MainWindow::readSettings() {
     QStringList problems;
     const bool safe = guardSettingsFiles(&problems);
@@ -210,6 +227,7 @@ void MainWindow::readSettings() {
     files_->readSettings(settings);
     parametersPresenter_->readSettings(settings);
     canvasPresenter_->readSettings(settings);
+    appearance_->readSettings(settings);
 }
 
 void MainWindow::writeSettings() {
@@ -219,6 +237,7 @@ void MainWindow::writeSettings() {
     files_->writeSettings(settings);
     parametersPresenter_->writeSettings(settings);
     canvasPresenter_->writeSettings(settings);
+    appearance_->writeSettings(settings);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

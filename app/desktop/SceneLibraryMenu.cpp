@@ -1,6 +1,7 @@
 #include "app/desktop/SceneLibraryMenu.h"
 
 #include "app/io/SceneIO.h"
+#include "ui/panels/BuiltinText.h"
 #include "ui/panels/DisplayText.h"
 
 #include <QAction>
@@ -24,11 +25,11 @@ void fillSceneLibraryMenu(QMenu& menu, const QString& folder,
     for (const QString& path : builtInScenes(folder)) {
         const SceneLoadResult loaded = SceneIO::load(path);
         const QString title = loaded.ok() && !loaded.scene->name.empty()
-                                  ? ui::shownText(QString::fromStdString(loaded.scene->name))
+                                  ? ui::shownText(ui::sceneText(loaded.scene->name))
                                   : QFileInfo(path).completeBaseName();
         QAction* a = menu.addAction(title, &menu, [open, path] { open(path); });
         if (loaded.ok())
-            a->setToolTip(ui::shownDescription(QString::fromStdString(loaded.scene->description)));
+            a->setToolTip(ui::shownDescription(ui::sceneText(loaded.scene->description)));
         a->setData(path);
     }
     menu.setToolTipsVisible(true);

@@ -9,6 +9,7 @@
 #include "physics/scene/SceneSchema.h"
 #include "physics/scene/StateTransfer.h"
 #include "physics/world/World.h"
+#include "ui/panels/BuiltinText.h"
 
 #include <QFileInfo>
 #include <QtGlobal>
@@ -223,9 +224,7 @@ bool Document::addDrawnObject(const ObjectDesc& object, QString* error, QString*
     if (switched && notice) {
         const auto label = [](const std::string& name) {
             const IntegratorInfo* info = findIntegrator(name);
-            return info ? QString::fromUtf8(info->label.data(),
-                                            static_cast<qsizetype>(info->label.size()))
-                        : QString::fromStdString(name);
+            return info ? ui::integratorText(info->label) : QString::fromStdString(name);
         };
         *notice = tr("Switched to %1 so the %2 stays stable; Undo to go back to %3")
                       .arg(label(method), objectKindName(objectKind(object)), label(before));

@@ -1,6 +1,7 @@
 #include "app/document/PropertyTable.h"
 
 #include "physics/scene/SceneSchema.h"
+#include "ui/panels/BuiltinText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +33,10 @@ PropertyRow tiltRow(const PlaneDesc& d) {
             false};
 }
 
+QString pairText(const char* english) {
+    return QCoreApplication::translate(ui::kSchemaTextContext, english);
+}
+
 // The names of a pair's two rows: keys "size.w", labels "Width".
 struct PairNames {
     const char* suffix[2];
@@ -39,17 +44,24 @@ struct PairNames {
 };
 template <typename D>
 PairNames pairNames(const schema::Field<D>& f) {
-    const QString label = text(f.label);
+    const QString label = ui::schemaText(f.label);
     switch (f.type) {
         case schema::Type::Size:
-            return {{".w", ".h"}, {QStringLiteral("Width"), QStringLiteral("Height")}};
+            return {{".w", ".h"},
+                    {pairText(QT_TRANSLATE_NOOP("Schema", "Width")),
+                     pairText(QT_TRANSLATE_NOOP("Schema", "Height"))}};
         case schema::Type::Grid:
-            return {{".x", ".y"}, {QStringLiteral("Columns"), QStringLiteral("Rows")}};
+            return {{".x", ".y"},
+                    {pairText(QT_TRANSLATE_NOOP("Schema", "Columns")),
+                     pairText(QT_TRANSLATE_NOOP("Schema", "Rows"))}};
         case schema::Type::Interval:
             return {{".lower", ".upper"},
-                    {label + QStringLiteral(" lower"), label + QStringLiteral(" upper")}};
+                    {pairText(QT_TRANSLATE_NOOP("Schema", "%1 lower")).arg(label),
+                     pairText(QT_TRANSLATE_NOOP("Schema", "%1 upper")).arg(label)}};
         default:
-            return {{".x", ".y"}, {label + QStringLiteral(" x"), label + QStringLiteral(" y")}};
+            return {{".x", ".y"},
+                    {pairText(QT_TRANSLATE_NOOP("Schema", "%1 x")).arg(label),
+                     pairText(QT_TRANSLATE_NOOP("Schema", "%1 y")).arg(label)}};
     }
 }
 
@@ -84,12 +96,12 @@ void forEachProperty(D& d, Fn&& fn, const QString& prefix = {}) {
                 } else if (e.decimals < 0) {
                     return;
                 } else if constexpr (std::is_same_v<V, double>) {
-                    fn(row(fieldKey, text(field.label), v), e, [&v](double x) { v = x; });
+                    fn(row(fieldKey, ui::schemaText(field.label), v), e, [&v](double x) { v = x; });
                 } else if constexpr (std::is_same_v<V, std::optional<double>>) {
-                    fn(row(fieldKey, text(field.label), v.value_or(0.0)), e,
+                    fn(row(fieldKey, ui::schemaText(field.label), v.value_or(0.0)), e,
                        [&v](double x) { v = x; });
                 } else if constexpr (std::is_same_v<V, bool>) {
-                    fn(row(fieldKey, text(field.label), v ? 1.0 : 0.0), e,
+                    fn(row(fieldKey, ui::schemaText(field.label), v ? 1.0 : 0.0), e,
                        [&v](double x) { v = x != 0.0; });
                 } else if constexpr (std::is_same_v<V, Point2> ||
                                      std::is_same_v<V, std::optional<Point2>> ||
@@ -282,27 +294,37 @@ void setObjectDesc(SceneDesc& scene, ObjectRef ref, const ObjectDesc& object) {
 }
 
 QString objectKindName(ObjectKind kind) {
+    const char* name = "object";
     switch (kind) {
         case ObjectKind::Particle:
-            return QStringLiteral("particle");
+            name = QT_TRANSLATE_NOOP("ObjectKind", "particle");
+            break;
         case ObjectKind::Box:
-            return QStringLiteral("box");
+            name = QT_TRANSLATE_NOOP("ObjectKind", "box");
+            break;
         case ObjectKind::Disk:
-            return QStringLiteral("disk");
+            name = QT_TRANSLATE_NOOP("ObjectKind", "disk");
+            break;
         case ObjectKind::Polygon:
-            return QStringLiteral("polygon");
+            name = QT_TRANSLATE_NOOP("ObjectKind", "polygon");
+            break;
         case ObjectKind::Plane:
-            return QStringLiteral("plane");
+            name = QT_TRANSLATE_NOOP("ObjectKind", "plane");
+            break;
         case ObjectKind::Spring:
-            return QStringLiteral("spring");
+            name = QT_TRANSLATE_NOOP("ObjectKind", "spring");
+            break;
         case ObjectKind::Cloth:
-            return QStringLiteral("cloth");
+            name = QT_TRANSLATE_NOOP("ObjectKind", "cloth");
+            break;
         case ObjectKind::Joint:
-            return QStringLiteral("joint");
+            name = QT_TRANSLATE_NOOP("ObjectKind", "joint");
+            break;
         case ObjectKind::None:
+            name = QT_TRANSLATE_NOOP("ObjectKind", "object");
             break;
     }
-    return QStringLiteral("object");
+    return QCoreApplication::translate("ObjectKind", name);
 }
 
 std::vector<std::string> objectIds(const SceneDesc& scene) {

@@ -46,7 +46,8 @@ std::vector<JointDesc>& arrayOf(SceneDesc& scene, const JointDesc&);
 ObjectDesc objectDesc(const SceneDesc& scene, ObjectRef ref);
 // Replaces the object at ref; the kinds must match (else nothing happens).
 void setObjectDesc(SceneDesc& scene, ObjectRef ref, const ObjectDesc& object);
-// "particle", "box", "disk", "polygon", "plane", "spring", "cloth", "joint".
+// "particle", "box", "disk", "polygon", "plane", "spring", "cloth", "joint", in the app's
+// language.
 QString objectKindName(ObjectKind kind);
 
 // Every id in the scene (defaults included), without cloth nodes: ids of the form ID[i,j]

@@ -2,6 +2,7 @@
 
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/world/World.h"
+#include "ui/panels/BuiltinText.h"
 
 #include <QCoreApplication>
 #include <QStringList>
@@ -12,9 +13,10 @@
 namespace phasebox {
 
 namespace {
-QString tr(const char* text) {
-    return QCoreApplication::translate("DivergenceReport", text);
-}
+// The report's words, in the context lupdate gives them.
+struct DivergenceText {
+    Q_DECLARE_TR_FUNCTIONS(DivergenceText)
+};
 
 QString seconds(double t) {
     return QString::number(t, 'g', 3) + QStringLiteral(" s");
@@ -23,18 +25,19 @@ QString seconds(double t) {
 // The engine's "what" (DivergenceGuard) in a user's words.
 QString whatHappened(const std::string& what) {
     if (what.find("non-finite") != std::string::npos)
-        return tr("a position or speed grew so large that it is no longer a number");
+        return DivergenceText::tr(
+            "a position or speed grew so large that it is no longer a number");
     if (what.find("energy growing") != std::string::npos)
-        return tr("its energy grew without bound");
+        return DivergenceText::tr("its energy grew without bound");
     if (what.find("tolerance") != std::string::npos)
-        return tr("the adaptive method could not keep its error small enough");
+        return DivergenceText::tr("the adaptive method could not keep its error small enough");
     return QString::fromStdString(what);
 }
 
 QString label(std::string_view name) {
     const IntegratorInfo* info = findIntegrator(name);
-    const std::string_view text = info ? info->label : name;
-    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+    if (info) return ui::integratorText(info->label);
+    return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
 }
 }  // namespace
 
@@ -46,24 +49,25 @@ QString describeObject(const World& world, const QString& id) {
             const Cloth& cloth = world.cloths()[static_cast<std::size_t>(p.cloth)];
             const int node = static_cast<int>(&p - world.particles().data()) - cloth.firstParticle;
             const int column = node % cloth.nx, row = node / cloth.nx;
-            return tr("cloth '%1', the node in row %2 from the top, column %3 from the left")
+            return DivergenceText::tr(
+                       "cloth '%1', the node in row %2 from the top, column %3 from the left")
                 .arg(QString::fromStdString(cloth.id))
                 .arg(row + 1)
                 .arg(column + 1);
         }
-        return tr("particle '%1'").arg(id);
+        return DivergenceText::tr("particle '%1'").arg(id);
     }
     for (const Box& b : world.boxes()) {
         if (b.id != key) continue;
         switch (b.shape) {
             case RigidShape::Disk:
-                return tr("disk '%1'").arg(id);
+                return DivergenceText::tr("disk '%1'").arg(id);
             case RigidShape::Polygon:
-                return tr("polygon '%1'").arg(id);
+                return DivergenceText::tr("polygon '%1'").arg(id);
             case RigidShape::Rectangle:
                 break;
         }
-        return tr("box '%1'").arg(id);
+        return DivergenceText::tr("box '%1'").arg(id);
     }
     return id.isEmpty() ? QString() : QStringLiteral("'%1'").arg(id);
 }
@@ -72,18 +76,19 @@ DivergenceReport describeDivergence(World& world) {
     DivergenceReport report;
     const SimulationSettings& settings = world.settings();
     if (!world.divergence()) {
-        report.text =
-            tr("The simulation became unstable. Try a smaller time step, more sub-steps "
-               "or Implicit Euler.");
+        report.text = DivergenceText::tr(
+            "The simulation became unstable. Try a smaller time step, more sub-steps "
+            "or Implicit Euler.");
         return report;
     }
     const Divergence& d = *world.divergence();
     QStringList lines;
-    lines << tr("The simulation became unstable at t = %1: %2. It was paused and put back to "
-                "t = %3.")
+    lines << DivergenceText::tr(
+                 "The simulation became unstable at t = %1: %2. It was paused and put back to "
+                 "t = %3.")
                  .arg(seconds(d.time), whatHappened(d.what), seconds(d.restoredTime));
     const QString where = describeObject(world, QString::fromStdString(d.objectId));
-    if (!where.isEmpty()) lines << tr("It started at %1.").arg(where);
+    if (!where.isEmpty()) lines << DivergenceText::tr("It started at %1.").arg(where);
 
     // What to try, from the stability advisor at the restored state: the step this method
     // needs, the sub-steps that give it, a method stable at this step, softer springs.
@@ -96,25 +101,30 @@ DivergenceReport describeDivergence(World& world) {
         // A margin below the limit: a step right at it is barely stable.
         const double target = 0.8 * maxDt;
         const int substeps = static_cast<int>(std::ceil(settings.dt / target));
-        tries << tr("a smaller time step: dt below %1").arg(seconds(target))
-              << tr("%1 sub-steps per step (same dt, each step cut into %1 pieces)").arg(substeps);
+        tries << DivergenceText::tr("a smaller time step: dt below %1").arg(seconds(target))
+              << DivergenceText::tr("%1 sub-steps per step (same dt, each step cut into %1 pieces)")
+                     .arg(substeps);
     } else {
-        tries << tr("a smaller time step (half of dt = %1)").arg(seconds(settings.dt))
-              << tr("%1 sub-steps per step").arg(std::max(2, 2 * settings.substeps));
+        tries
+            << DivergenceText::tr("a smaller time step (half of dt = %1)").arg(seconds(settings.dt))
+            << DivergenceText::tr("%1 sub-steps per step").arg(std::max(2, 2 * settings.substeps));
     }
     if (settings.integrator != "implicit_euler")
-        tries << tr("%1, which stays stable at any time step (it damps fast motion)")
+        tries << DivergenceText::tr(
+                     "%1, which stays stable at any time step (it damps fast motion)")
                      .arg(label("implicit_euler"));
-    if (!world.springs().empty()) tries << tr("softer springs or cloth (a lower stiffness)");
+    if (!world.springs().empty())
+        tries << DivergenceText::tr("softer springs or cloth (a lower stiffness)");
     if (settings.contactModel == ContactModel::Penalty)
-        tries << tr("impulse contacts instead of penalty contacts");
-    lines << QString() << tr("What to try:");
+        tries << DivergenceText::tr("impulse contacts instead of penalty contacts");
+    lines << QString() << DivergenceText::tr("What to try:");
     for (const QString& t : std::as_const(tries)) lines << QStringLiteral("• ") + t;
     report.text = lines.join(QLatin1Char('\n'));
 
     QStringList details{QString::fromStdString(d.message())};
     if (!advice.message.empty())
-        details << tr("Stability advisor: %1").arg(QString::fromStdString(advice.message));
+        details << DivergenceText::tr("Stability advisor: %1")
+                       .arg(QString::fromStdString(advice.message));
     report.details = details.join(QLatin1Char('\n'));
     return report;
 }

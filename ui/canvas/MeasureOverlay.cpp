@@ -1,5 +1,6 @@
 #include "ui/canvas/MeasureOverlay.h"
 
+#include <QCoreApplication>
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
@@ -11,9 +12,13 @@
 namespace phasebox::ui {
 
 namespace {
+// The overlay's words in the app's language (pictures the command line draws stay English).
+QString overlayText(const char* english) {
+    return QCoreApplication::translate("MeasureOverlay", english);
+}
 
 const QColor kRulerColor{0x00, 0x6d, 0x77};
-const QColor kMomentumColor{0x1e, 0x8c, 0x3a};
+const QColor kMomentumColor{0xcc, 0x79, 0xa7};  // Okabe–Ito reddish purple, dashed
 
 struct Painter {
     QPainter& p;
@@ -54,7 +59,7 @@ struct Painter {
         }
         placed.push_back(box);
         p.setPen(Qt::NoPen);
-        p.setBrush(QColor(255, 255, 255, 225));
+        p.setBrush(o.colors.backdrop);
         p.drawRoundedRect(box, 3.0, 3.0);
         p.setPen(colour);
         p.drawText(box, Qt::AlignCenter, text);
@@ -162,14 +167,29 @@ void drawProtractor(const Painter& g, const MeasureOverlay::Protractor& r) {
 
 QString forceName(const BodyForce& f) {
     switch (f.source) {
-        case BodyForce::Source::Effect:
-            return QString::fromStdString(f.name).replace(QLatin1Char('_'), QLatin1Char(' '));
+        case BodyForce::Source::Effect: {
+            // The effects' names as lupdate sees them; another name is shown as it is.
+            [[maybe_unused]] static const char* const kEffectNames[] = {
+                QT_TRANSLATE_NOOP("MeasureOverlay", "gravity"),
+                QT_TRANSLATE_NOOP("MeasureOverlay", "drag"),
+                QT_TRANSLATE_NOOP("MeasureOverlay", "newtonian gravity"),
+                QT_TRANSLATE_NOOP("MeasureOverlay", "buoyancy"),
+                QT_TRANSLATE_NOOP("MeasureOverlay", "wind"),
+                QT_TRANSLATE_NOOP("MeasureOverlay", "flocking"),
+                QT_TRANSLATE_NOOP("MeasureOverlay", "coulomb"),
+                QT_TRANSLATE_NOOP("MeasureOverlay", "penalty contacts")};
+            const QByteArray name =
+                QString::fromStdString(f.name).replace(QLatin1Char('_'), QLatin1Char(' ')).toUtf8();
+            return overlayText(name.constData());
+        }
         case BodyForce::Source::Spring:
-            return QStringLiteral("spring %1").arg(QString::fromStdString(f.name));
+            return overlayText(QT_TRANSLATE_NOOP("MeasureOverlay", "spring %1"))
+                .arg(QString::fromStdString(f.name));
         case BodyForce::Source::Contact:
-            return QStringLiteral("contact");
+            return overlayText(QT_TRANSLATE_NOOP("MeasureOverlay", "contact"));
         case BodyForce::Source::Joint:
-            return QStringLiteral("joint %1").arg(QString::fromStdString(f.name));
+            return overlayText(QT_TRANSLATE_NOOP("MeasureOverlay", "joint %1"))
+                .arg(QString::fromStdString(f.name));
     }
     return {};
 }
@@ -224,20 +244,24 @@ void drawFreeBody(const Painter& g, const MeasureOverlay& o, QSize viewport) {
         place(momentum, momentumPerPixel,
               QStringLiteral("p %1 kg·m/s").arg(MeasureRenderer::number(momentum.norm())),
               kMomentumColor);
-        legend << QStringLiteral("Free body: %1, m = %2 kg")
+        legend << overlayText(QT_TRANSLATE_NOOP("MeasureOverlay", "Free body: %1, m = %2 kg"))
                       .arg(o.freeBodyName, MeasureRenderer::number(body.mass))
-               << QStringLiteral("forces: 1 px = %1 N, net %2 N")
+               << overlayText(QT_TRANSLATE_NOOP("MeasureOverlay", "forces: 1 px = %1 N, net %2 N"))
                       .arg(newtonsPerPixel, 0, 'g', 3)
                       .arg(MeasureRenderer::number(body.net().norm()))
-               << (momentum == Vec2::Zero() ? QStringLiteral("momentum 0")
-                                            : QStringLiteral("momentum: 1 px = %1 kg·m/s")
-                                                  .arg(momentumPerPixel, 0, 'g', 3));
+               << (momentum == Vec2::Zero()
+                       ? overlayText(QT_TRANSLATE_NOOP("MeasureOverlay", "momentum 0"))
+                       : overlayText(
+                             QT_TRANSLATE_NOOP("MeasureOverlay", "momentum: 1 px = %1 kg·m/s"))
+                             .arg(momentumPerPixel, 0, 'g', 3));
     } else {
-        legend << QStringLiteral("Free body: select a moving body");
+        legend << overlayText(
+            QT_TRANSLATE_NOOP("MeasureOverlay", "Free body: select a moving body"));
     }
     if (o.centreOfMass) {
         drawCentreOfMass(g, *o.centreOfMass);
-        legend << QStringLiteral("system: p = (%1, %2) kg·m/s, CM ◑")
+        legend << overlayText(
+                      QT_TRANSLATE_NOOP("MeasureOverlay", "system: p = (%1, %2) kg·m/s, CM ◑"))
                       .arg(MeasureRenderer::number(o.systemMomentum.x()),
                            MeasureRenderer::number(o.systemMomentum.y()));
     }
@@ -251,7 +275,7 @@ void drawFreeBody(const Painter& g, const MeasureOverlay& o, QSize viewport) {
                              viewport.height() - size.height() - 8.0),
                      size);
     g.p.setPen(Qt::NoPen);
-    g.p.setBrush(QColor(255, 255, 255, 225));
+    g.p.setBrush(g.o.colors.backdrop);
     g.p.drawRoundedRect(box, 4.0, 4.0);
     g.p.setPen(g.o.colors.text);
     g.p.drawText(box.adjusted(6, 4, -6, -4), Qt::AlignLeft | Qt::AlignVCenter, text);
@@ -280,11 +304,11 @@ QColor MeasureRenderer::forceColor(BodyForce::Source source) {
         case BodyForce::Source::Effect:
             return {0x7b, 0x3f, 0xb5};
         case BodyForce::Source::Spring:
-            return {0xc0, 0x1c, 0x28};
+            return {0xd5, 0x5e, 0x00};  // Okabe–Ito vermillion
         case BodyForce::Source::Contact:
-            return {0x21, 0x66, 0xac};
+            return {0x00, 0x72, 0xb2};  // blue
         case BodyForce::Source::Joint:
-            return {0xb8, 0x5c, 0x00};
+            return {0x00, 0x9e, 0x73};  // bluish green
     }
     return Qt::black;
 }

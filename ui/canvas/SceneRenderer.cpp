@@ -127,7 +127,7 @@ void drawScaleBar(QPainter& p, const ViewTransform& view, QSize size, const Rend
     const QRectF backdrop(x0 - 6.0 * lw, y - textHeight - 10.0 * lw, pixels + 12.0 * lw,
                           textHeight + 16.0 * lw);
     p.setRenderHint(QPainter::Antialiasing, false);
-    p.fillRect(backdrop, QColor(255, 255, 255, 200));
+    p.fillRect(backdrop, o.colors.backdrop);
     p.setPen(QPen(o.colors.text, 2.0 * lw, Qt::SolidLine, Qt::FlatCap));
     p.drawLine(QPointF(x0, y), QPointF(x0 + pixels, y));
     p.drawLine(QPointF(x0, y - 5.0 * lw), QPointF(x0, y + 3.0 * lw));

@@ -27,31 +27,35 @@ namespace phasebox::ui {
 
 // Chosen to stay readable on a light background and apart from one another: the blue of a
 // particle never reads as the blue of a compressed spring because springs are thin lines.
+// The default, light theme: Okabe–Ito hues (Appearance.h) where two things must be told apart
+// (compressed blue against stretched vermillion springs, bluish-green velocity against purple
+// force arrows), so that no pair differs in red against green alone.
 struct SceneColors {
     QColor grid{0xe4, 0xe4, 0xe0};
     QColor axis{0xc4, 0xc4, 0xbe};
-    QColor particle{0x2f, 0x6f, 0xbf};
+    QColor particle{0x00, 0x72, 0xb2};
     QColor pinnedParticle{0x44, 0x44, 0x4c};
-    QColor dynamicBox{0xf0, 0xa2, 0x3c};
+    QColor dynamicBox{0xe6, 0x9f, 0x00};
     QColor staticBox{0xa6, 0xa6, 0xa6};
     // Bodies asleep (simulation.sleep) are drawn dimmed: their colours half-way to white.
     QColor sleepingParticle{0x97, 0xb7, 0xdf};
     QColor sleepingBox{0xf7, 0xd0, 0x9d};
     QColor plane{0xd9, 0xd2, 0xc3};
     QColor planeBorder{0x6e, 0x64, 0x55};
-    QColor springCompressed{0x21, 0x66, 0xac};
+    QColor springCompressed{0x00, 0x72, 0xb2};
     QColor springRest{0x80, 0x80, 0x80};
-    QColor springStretched{0xc0, 0x1c, 0x28};
+    QColor springStretched{0xd5, 0x5e, 0x00};
     QColor cloth{0x4a, 0x5a, 0x70};
     QColor anchor{0x30, 0x30, 0x30};
     QColor joint{0x3a, 0x3a, 0x44};
     QColor rope{0x8a, 0x5a, 0x2b};
     QColor track{0x5f, 0x7f, 0x9f};
-    QColor velocity{0x1e, 0x8c, 0x3a};
+    QColor velocity{0x00, 0x9e, 0x73};
     QColor force{0x7b, 0x3f, 0xb5};
     QColor selection{0xe0, 0x20, 0x90};
     QColor hover{0xf0, 0x80, 0xc8};
     QColor text{0x20, 0x20, 0x20};
+    QColor backdrop{0xff, 0xff, 0xff, 0xd2};  // behind labels drawn over the scene
 };
 
 struct RenderOptions {

@@ -159,7 +159,7 @@ void drawOverlay(QPainter& p, const ViewTransform& view, const ToolOverlay& over
         QRectF box(b + QPointF(10.0 * lw, -10.0 * lw - bounds.height()),
                    bounds.size() + QSizeF(8.0, 4.0));
         p.setPen(Qt::NoPen);
-        p.setBrush(QColor(255, 255, 255, 220));
+        p.setBrush(options.colors.backdrop);
         p.drawRoundedRect(box, 3.0, 3.0);
         p.setPen(options.colors.text);
         p.drawText(box, Qt::AlignCenter, overlay.text);
@@ -178,7 +178,7 @@ void drawHud(QPainter& p, const QString& text, const RenderOptions& options) {
     const QRectF box(QPointF(8.0, 8.0), bounds.size() + QSizeF(12.0, 6.0));
     p.setRenderHint(QPainter::Antialiasing, true);
     p.setPen(Qt::NoPen);
-    p.setBrush(QColor(255, 255, 255, 210));
+    p.setBrush(options.colors.backdrop);
     p.drawRoundedRect(box, 4.0, 4.0);
     p.setPen(options.colors.text);
     p.drawText(box, Qt::AlignCenter, text);
@@ -256,6 +256,7 @@ void SceneView::paintSurface(QPainter& painter, QSize size) {
     MeasureRenderer::paint(painter, view_, size, measurements_, options_);
     drawOverlay(painter, view_, overlay_, options_);
     drawHud(painter, hudText_, options_);
+    drawKeyboardCursor(painter);
 }
 
 // ---- the view ---------------------------------------------------------------------------------
@@ -536,6 +537,7 @@ void SceneView::wheelEvent(QWheelEvent* event) {
 }
 
 void SceneView::keyPressEvent(QKeyEvent* event) {
+    if (handleKeyboardEditing(event)) return;
     switch (event->key()) {
         case Qt::Key_Plus:
         case Qt::Key_Equal:  // + without Shift on most layouts

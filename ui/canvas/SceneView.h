@@ -18,6 +18,7 @@
 #include <QList>
 #include <QPointF>
 #include <QString>
+#include <QStringList>
 #include <QWidget>
 
 namespace phasebox::ui {
@@ -87,6 +88,19 @@ public:
     TrailHistory& trails() { return trails_; }
 
     void setOverlay(const ToolOverlay& overlay);
+
+    // ---- the keyboard (SceneViewKeyboard.cpp) ----
+    // The objects Tab and Shift+Tab walk, in order; past either end the focus leaves the canvas.
+    void setKeyboardTargets(const QStringList& ids);
+    // Where the tools place an object from the keyboard (Enter); the arrow keys move it unless
+    // they move the selection. Drawn as a cross while the canvas has the focus.
+    QPointF keyboardCursor() const { return keyboardCursor_; }
+    void setKeyboardCursor(QPointF world);
+    // Whether the arrow keys move the selection (the Select tool) or the cursor (the others).
+    void setArrowsMoveSelection(bool on) { arrowsMoveSelection_ = on; }
+    // One arrow key's step in metres, and Shift's fine one.
+    static constexpr double kKeyboardStep = 0.1;
+    static constexpr double kKeyboardFineStep = 0.01;
     // The scene's exact solution beside the simulation (empty: none drawn).
     void setReferenceOverlay(const ReferenceOverlay& overlay);
     const ReferenceOverlay& referenceOverlay() const { return reference_; }
@@ -118,6 +132,12 @@ signals:
     // A right click that did not become a pan: the place for a context menu.
     void worldContextMenuRequested(QPointF world, QPoint globalPosition);
     void viewChanged();
+    // The keyboard: Tab chose an object; an arrow key asks to move the selection by delta
+    // (metres); Enter was pressed with the cursor at cursor (the selection's properties, or the
+    // current tool's object placed there).
+    void keyboardSelected(const QString& id);
+    void keyboardNudged(QPointF delta);
+    void keyboardActivated(QPointF cursor);
 
 protected:
     void mousePressEvent(QMouseEvent* event) override;
@@ -128,6 +148,8 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
     void keyReleaseEvent(QKeyEvent* event) override;
     void focusOutEvent(QFocusEvent* event) override;
+    void focusInEvent(QFocusEvent* event) override;
+    bool focusNextPrevChild(bool next) override;
     void resizeEvent(QResizeEvent* event) override;
 
 private:
@@ -141,6 +163,8 @@ private:
     void startPan(Qt::MouseButton button, QPointF position);
     void endPan();
     void updatePanCursor();
+    bool handleKeyboardEditing(QKeyEvent* event);
+    void drawKeyboardCursor(QPainter& painter) const;
 
     const World* world_ = nullptr;
     QWidget* surface_ = nullptr;
@@ -163,6 +187,9 @@ private:
     ReferenceOverlay reference_;
     MeasureOverlay measurements_;
     QString hudText_;
+    QStringList keyboardTargets_;
+    QPointF keyboardCursor_{0.0, 0.0};
+    bool arrowsMoveSelection_ = true;
 
     Qt::MouseButton panButton_ = Qt::NoButton;
     QPointF lastPanPosition_;

@@ -1,5 +1,7 @@
 #include "ui/instruments/ProbeFormat.h"
 
+#include <QLocale>
+
 #include <cmath>
 
 namespace phasebox::ui {
@@ -53,14 +55,17 @@ QString formatReading(double value) {
     if (std::isnan(value)) return QStringLiteral("—");
     if (std::isinf(value)) return value > 0 ? QStringLiteral("∞") : QStringLiteral("−∞");
     const double size = std::abs(value);
+    // In the app's locale (a decimal comma in German and French); files never use this.
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
     QString text;
     if (size < 1e-12) {
         text = QStringLiteral("0");
     } else if (size >= 1e-3 && size < 1e6) {
         const int decimals = std::max(0, 4 - static_cast<int>(std::floor(std::log10(size))));
-        text = QString::number(value, 'f', decimals);
+        text = locale.toString(value, 'f', decimals);
     } else {
-        text = QString::number(value, 'e', 4);
+        text = locale.toString(value, 'e', 4);
     }
     text.replace(QLatin1Char('-'), QChar(0x2212));
     return text;

@@ -6,6 +6,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QMenu>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -21,7 +22,10 @@ QString joined(const QVector<double>& values) {
     if (values.size() == 1) return formatReading(values.front());
     QStringList parts;
     for (const double v : values) parts << formatReading(v);
-    return QLatin1Char('(') + parts.join(QStringLiteral(", ")) + QLatin1Char(')');
+    // A decimal comma needs another separator between the numbers of a pair.
+    const QString separator = QLocale().decimalPoint() == QLatin1String(",") ? QStringLiteral("; ")
+                                                                             : QStringLiteral(", ");
+    return QLatin1Char('(') + parts.join(separator) + QLatin1Char(')');
 }
 }  // namespace
 
@@ -77,8 +81,9 @@ void ReadoutView::setReadout(const QString& subject, const QString& state, bool 
     table_->show();
     subject_->setText(subject);
     state_->setText(state);
-    // Live values in green, the setup in grey: a glance tells which is shown.
-    state_->setStyleSheet(live ? QStringLiteral("QLabel { color: white; background: #2ca02c; "
+    // Live values in (Okabe–Ito) bluish green, the setup in grey, each also named in its text:
+    // a glance tells which is shown, whatever colours one sees.
+    state_->setStyleSheet(live ? QStringLiteral("QLabel { color: white; background: #007a5a; "
                                                 "border-radius: 3px; padding: 1px 6px; }")
                                : QStringLiteral("QLabel { color: white; background: #7f7f7f; "
                                                 "border-radius: 3px; padding: 1px 6px; }"));

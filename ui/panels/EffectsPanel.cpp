@@ -2,6 +2,7 @@
 
 #include "physics/core/EffectNames.h"
 #include "physics/scene/SceneSchema.h"
+#include "ui/panels/BuiltinText.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -29,7 +30,7 @@ QString text(std::string_view s) {
 // What each row does, for tooltips: the effects' force laws from the scene schema, and the
 // stages the world runs by itself.
 QString describe(const QString& name) {
-    static const QHash<QString, QString> descriptions = [] {
+    const QHash<QString, QString> descriptions = [] {
         QHash<QString, QString> out{
             {text(effectName::springs),
              EffectsPanel::tr("Spring forces; runs because the scene holds springs")},
@@ -41,7 +42,7 @@ QString describe(const QString& name) {
                               "contacts")},
         };
         schema::forEachEffect([&](const auto& table, auto) {
-            if (!table.implied) out.insert(text(table.key), text(table.description));
+            if (!table.implied) out.insert(text(table.key), schemaText(table.description));
         });
         return out;
     }();
@@ -62,7 +63,27 @@ const QStringList& EffectsPanel::contractEffects() {
 }
 
 QString EffectsPanel::displayName(const QString& name) {
-    if (name == text(schema::key::newtonianGravity)) return tr("Newtonian gravity");
+    const QHash<QString, QString> names{
+        {text(schema::key::gravity), tr("Gravity")},
+        {text(schema::key::drag), tr("Drag")},
+        {text(schema::key::newtonianGravity), tr("Newtonian gravity")},
+        {text(schema::key::buoyancy), tr("Buoyancy")},
+        {text(schema::key::wind), tr("Wind")},
+        {text(schema::key::flocking), tr("Flocking")},
+        {text(schema::key::particleCollisions), tr("Particle collisions")},
+        {text(schema::key::coulomb), tr("Coulomb")},
+        {text(effectName::springs), tr("Springs")},
+        {QStringLiteral("contacts"), tr("Contacts")},
+        {kIntegratorRow, tr("Integrator")},
+        // The step's stages (StepProfile::kStageNames).
+        {QStringLiteral("integrate"), tr("Integrate")},
+        {QStringLiteral("collide"), tr("Collide")},
+        {QStringLiteral("solve contacts"), tr("Solve contacts")},
+        {QStringLiteral("solve joints"), tr("Solve joints")},
+        {QStringLiteral("ledger"), tr("Ledger")},
+        {QStringLiteral("guard"), tr("Guard")},
+    };
+    if (const auto found = names.find(name); found != names.end()) return *found;
     QString label = name;
     label.replace(QLatin1Char('_'), QLatin1Char(' '));
     if (!label.isEmpty()) label[0] = label[0].toUpper();

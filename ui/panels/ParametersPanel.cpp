@@ -1,6 +1,7 @@
 #include "ui/panels/ParametersPanel.h"
 
 #include "physics/integrators/Integrator.h"
+#include "ui/panels/BuiltinText.h"
 #include "ui/panels/PropertiesPanel.h"  // ScientificSpinBox
 
 #include <QAction>
@@ -33,6 +34,13 @@ QString qs(std::string_view text) {
     return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
 }
 
+// A contact model's name in the app's language (CONTRACT §6 keeps the file's names English).
+QString contactModelText(std::size_t index, const QString& name) {
+    const QString shown[] = {ParametersPanel::tr("Impulse"), ParametersPanel::tr("Penalty"),
+                             ParametersPanel::tr("Kinematic")};
+    return index < std::size(shown) ? shown[index] : name.left(1).toUpper() + name.mid(1);
+}
+
 QString integratorToolTip(const IntegratorInfo& info) {
     const QString kind =
         info.implicit ? ParametersPanel::tr("implicit") : ParametersPanel::tr("explicit");
@@ -41,7 +49,8 @@ QString integratorToolTip(const IntegratorInfo& info) {
     QString facts = ParametersPanel::tr("order %1 · %2 · %3").arg(info.order).arg(kind, symplectic);
     if (info.adaptive) facts += ParametersPanel::tr(" · adaptive step");
     return ParametersPanel::tr("%1 (%2)\n%3\nforce evaluations per step: %4\n%5")
-        .arg(qs(info.label), qs(info.name), facts, qs(info.evaluations), qs(info.summary));
+        .arg(integratorText(info.label), qs(info.name), facts, integratorText(info.evaluations),
+             integratorText(info.summary));
 }
 
 // "1/60 s", or the number itself when it is not the reciprocal of a whole number.
@@ -94,7 +103,7 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     integratorBox_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     integratorBox_->setMinimumContentsLength(14);
     for (const IntegratorInfo& info : integratorRegistry()) {
-        integratorBox_->addItem(qs(info.label), qs(info.name));
+        integratorBox_->addItem(integratorText(info.label), qs(info.name));
         integratorBox_->setItemData(integratorBox_->count() - 1, integratorToolTip(info),
                                     Qt::ToolTipRole);
     }
@@ -176,7 +185,7 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     for (std::size_t i = 0; i < kContactModelNames.size(); ++i) {
         const QString name = QString::fromLatin1(
             kContactModelNames[i].data(), static_cast<qsizetype>(kContactModelNames[i].size()));
-        contactModelBox_->addItem(name.left(1).toUpper() + name.mid(1), name);
+        contactModelBox_->addItem(contactModelText(i, name), name);
         contactModelBox_->setItemData(static_cast<int>(i), modelTips.at(static_cast<qsizetype>(i)),
                                       Qt::ToolTipRole);
     }

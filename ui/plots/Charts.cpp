@@ -1,7 +1,11 @@
 #include "ui/plots/Charts.h"
 
+#include "ui/canvas/Appearance.h"
+
+#include <QAbstractAxis>
 #include <QBuffer>
 #include <QChart>
+#include <QCoreApplication>
 #include <QGraphicsScene>
 #include <QImage>
 #include <QLegend>
@@ -11,6 +15,7 @@
 #include <QPen>
 #include <QSvgGenerator>
 #include <QValueAxis>
+#include <QXYSeries>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +24,11 @@
 namespace phasebox::ui {
 
 namespace {
+// The charts' words in the app's language; the command line installs no translation, so the
+// plots it writes stay English.
+QString chartText(const char* english) {
+    return QCoreApplication::translate("Charts", english);
+}
 // Time runs exactly over the samples: padding or rounding it out would show times that never were.
 void fitTimeAxis(QValueAxis* axis, double lo, double hi) {
     if (!(hi > lo)) hi = lo + 1.0;
@@ -75,12 +85,59 @@ QChart* newChart(const QString& title) {
 }  // namespace
 
 QColor energyColor(int series) {
-    // Correction is orange beside drift's red: both are a solver's, not physics', and the
-    // dash keeps them apart where they overlap.
-    static const QColor colors[] = {QColor(0x1f, 0x77, 0xb4), QColor(0x2c, 0xa0, 0x2c),
-                                    QColor(0x20, 0x20, 0x20), QColor(0x94, 0x67, 0xbd),
-                                    QColor(0xd6, 0x27, 0x28), QColor(0xff, 0x7f, 0x0e)};
+    // Okabe–Ito hues (ui/canvas/Appearance.h): kinetic blue against potential orange, drift
+    // vermillion against correction's bluish green, which is dashed as well, and work_nc's
+    // reddish purple dash-dotted: no two lines differ in red against green alone. On the
+    // high-contrast theme's black the total is white and drift yellow.
+    const bool dark = chartAppearance().highContrast;
+    const QColor colors[] = {dark ? okabeIto::skyBlue : okabeIto::blue,
+                             okabeIto::orange,
+                             dark ? QColor(0xff, 0xff, 0xff) : QColor(0x20, 0x20, 0x20),
+                             okabeIto::reddishPurple,
+                             dark ? okabeIto::yellow : okabeIto::vermillion,
+                             okabeIto::bluishGreen};
     return colors[std::clamp(series, 0, 5)];
+}
+
+void applyChartAppearance(QChart* chart) {
+    const Appearance& a = chartAppearance();
+    if (a == Appearance{} || !chart) return;
+    const auto scaled = [&](QFont font) {
+        font.setPointSizeF(font.pointSizeF() * a.textScale);
+        return font;
+    };
+    const QColor ink = a.highContrast ? QColor(0xff, 0xff, 0xff) : QColor(0x20, 0x20, 0x20);
+    if (a.highContrast) {
+        chart->setBackgroundBrush(QColor(0x00, 0x00, 0x00));
+        chart->setPlotAreaBackgroundVisible(false);
+        chart->setTitleBrush(ink);
+        chart->legend()->setLabelColor(ink);
+    }
+    chart->setTitleFont(scaled(chart->titleFont()));
+    chart->legend()->setFont(scaled(chart->legend()->font()));
+    for (QAbstractAxis* axis : chart->axes()) {
+        axis->setLabelsFont(scaled(axis->labelsFont()));
+        axis->setTitleFont(scaled(axis->titleFont()));
+        if (a.highContrast) {
+            axis->setLabelsColor(ink);
+            axis->setTitleBrush(ink);
+            axis->setLinePenColor(QColor(0xc0, 0xc0, 0xc0));
+            axis->setGridLineColor(QColor(0x48, 0x48, 0x48));
+            axis->setMinorGridLineColor(QColor(0x30, 0x30, 0x30));
+        }
+    }
+    for (QAbstractSeries* s : chart->series()) {
+        auto* line = qobject_cast<QXYSeries*>(s);
+        if (!line) continue;
+        QPen pen = line->pen();
+        pen.setWidthF(pen.widthF() * a.lineScale);
+        // Dark strokes (the total, markers) turn light on black.
+        if (a.highContrast && pen.color().lightnessF() < 0.35)
+            pen.setColor(QColor::fromHslF(pen.color().hslHueF(), pen.color().hslSaturationF(),
+                                          1.0 - pen.color().lightnessF()));
+        line->setPen(pen);
+        line->setMarkerSize(line->markerSize() * a.lineScale);
+    }
 }
 
 QVector<QPointF> decimate(const QVector<QPointF>& points, int maxPoints) {
@@ -115,13 +172,18 @@ QChart* createEnergyChart(std::span<const EnergySample> samples,
         Qt::PenStyle style;
     };
     static constexpr Line lines[] = {
-        {"kinetic", [](const EnergySample& e) { return e.kinetic; }, 1.8, Qt::SolidLine},
-        {"potential", [](const EnergySample& e) { return e.potential; }, 1.8, Qt::SolidLine},
-        {"total", [](const EnergySample& e) { return e.kinetic + e.potential; }, 2.5,
+        {QT_TRANSLATE_NOOP("Charts", "kinetic"), [](const EnergySample& e) { return e.kinetic; },
+         1.8, Qt::SolidLine},
+        {QT_TRANSLATE_NOOP("Charts", "potential"),
+         [](const EnergySample& e) { return e.potential; }, 1.8, Qt::SolidLine},
+        {QT_TRANSLATE_NOOP("Charts", "total"),
+         [](const EnergySample& e) { return e.kinetic + e.potential; }, 2.5, Qt::SolidLine},
+        {QT_TRANSLATE_NOOP("Charts", "work_nc"), [](const EnergySample& e) { return e.workNc; },
+         1.8, Qt::DashDotLine},
+        {QT_TRANSLATE_NOOP("Charts", "drift"), [](const EnergySample& e) { return e.drift; }, 1.8,
          Qt::SolidLine},
-        {"work_nc", [](const EnergySample& e) { return e.workNc; }, 1.8, Qt::SolidLine},
-        {"drift", [](const EnergySample& e) { return e.drift; }, 1.8, Qt::SolidLine},
-        {"correction", [](const EnergySample& e) { return e.correction; }, 2.0, Qt::DashLine},
+        {QT_TRANSLATE_NOOP("Charts", "correction"),
+         [](const EnergySample& e) { return e.correction; }, 2.0, Qt::DashLine},
     };
     constexpr int kLines = static_cast<int>(std::size(lines));
     QChart* chart = newChart(title);
@@ -144,20 +206,21 @@ QChart* createEnergyChart(std::span<const EnergySample> samples,
         tMax = samples.back().t;
     }
     for (int k = 0; k < kLines; ++k)
-        addSeries(chart, series[k], QString::fromLatin1(lines[k].name), energyColor(k),
-                  lines[k].width, lines[k].style);
+        addSeries(chart, series[k], chartText(lines[k].name), energyColor(k), lines[k].width,
+                  lines[k].style);
     // The legend draws each line's own pen, so correction is dashed there too.
     chart->legend()->setMarkerShape(QLegend::MarkerShapeFromSeries);
     auto* x = new QValueAxis;
-    x->setTitleText(QStringLiteral("time [s]"));
+    x->setTitleText(chartText(QT_TRANSLATE_NOOP("Charts", "time [s]")));
     auto* y = new QValueAxis;
-    y->setTitleText(QStringLiteral("energy [J]"));
+    y->setTitleText(chartText(QT_TRANSLATE_NOOP("Charts", "energy [J]")));
     fitTimeAxis(x, tMin, tMax);
     fitAxis(y, lo, hi);
     for (const PlotMarker& m : markers)
         addSeries(chart, {{m.t, y->min()}, {m.t, y->max()}}, m.label, QColor(0x80, 0x80, 0x80), 1.2,
                   Qt::DashLine);
     attach(chart, x, y);
+    applyChartAppearance(chart);
     return chart;
 }
 
@@ -175,13 +238,14 @@ QChart* createErrorChart(std::span<const QPointF> samples, const QString& title)
         ehi = std::max(ehi, p.y());
     }
     auto* series =
-        addSeries(chart, points, QStringLiteral("local error per step"), energyColor(4), 1.6);
+        addSeries(chart, points, chartText(QT_TRANSLATE_NOOP("Charts", "local error per step")),
+                  energyColor(4), 1.6);
     chart->legend()->setVisible(false);
     auto* t = new QValueAxis;
-    t->setTitleText(QStringLiteral("time [s]"));
+    t->setTitleText(chartText(QT_TRANSLATE_NOOP("Charts", "time [s]")));
     fitTimeAxis(t, std::isfinite(tlo) ? tlo : 0.0, std::isfinite(thi) ? thi : 1.0);
     auto* e = new QLogValueAxis;
-    e->setTitleText(QStringLiteral("error [m]"));
+    e->setTitleText(chartText(QT_TRANSLATE_NOOP("Charts", "error [m]")));
     e->setBase(10.0);
     e->setLabelFormat(QStringLiteral("%.0e"));
     if (!std::isfinite(elo)) elo = ehi = 1e-6;
@@ -192,6 +256,7 @@ QChart* createErrorChart(std::span<const QPointF> samples, const QString& title)
     chart->addAxis(e, Qt::AlignLeft);
     series->attachAxis(t);
     series->attachAxis(e);
+    applyChartAppearance(chart);
     return chart;
 }
 
@@ -225,7 +290,7 @@ QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& co
     auto* series = new QLineSeries(chart);
     // The axes name the coordinates; the legend says which curve is which.
     series->setName(exact.empty() ? coordinateName + QStringLiteral(" – ") + velocityName
-                                  : QStringLiteral("simulation"));
+                                  : chartText(QT_TRANSLATE_NOOP("Charts", "simulation")));
     series->replace(points);
     QPen pen(energyColor(0));
     pen.setWidthF(1.8);
@@ -233,7 +298,7 @@ QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& co
     chart->addSeries(series);
     if (!points.isEmpty()) {
         auto* start = new QLineSeries(chart);
-        start->setName(QStringLiteral("start"));
+        start->setName(chartText(QT_TRANSLATE_NOOP("Charts", "start")));
         start->append(points.front());
         start->setPointsVisible(true);
         start->setMarkerSize(9);
@@ -261,6 +326,7 @@ QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& co
     fitAxis(x, xlo, xhi);
     fitAxis(y, ylo, yhi);
     attach(chart, x, y);
+    applyChartAppearance(chart);
     return chart;
 }
 

@@ -70,6 +70,10 @@ QByteArray renderChart(QChart* chart, const QString& format, QSize size);
 // canvas); the same layout as renderChart at target's size.
 void paintChart(QChart* chart, QPainter& painter, const QRectF& target);
 
+// Gives a finished chart the app's appearance (ui/canvas/Appearance.h: high contrast, line and
+// text scales); nothing with the default appearance, which the command line keeps.
+void applyChartAppearance(QChart* chart);
+
 // The series colours, shared with the app's legends.
 // 0 kinetic, 1 potential, 2 total, 3 work_nc, 4 drift, 5 correction.
 QColor energyColor(int series);

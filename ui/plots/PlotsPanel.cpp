@@ -9,12 +9,14 @@
 #include <QLabel>
 #include <QLegend>
 #include <QLegendMarker>
+#include <QLocale>
 #include <QMenu>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <utility>
 
 namespace phasebox::ui {
@@ -51,7 +53,25 @@ void fitLegend(QChartView* view) {
             row += metrics.horizontalAdvance(marker->label()) + 4.0 * metrics.height();
     }
     const qreal margins = 4.0 * metrics.height();  // the chart's and the legend's own
-    legend->setAlignment(row + margins <= view->width() ? Qt::AlignBottom : Qt::AlignRight);
+    if (row + margins <= view->width()) {
+        legend->setAlignment(Qt::AlignBottom);
+        return;
+    }
+    legend->setAlignment(Qt::AlignRight);
+    // Down the side Qt gives the legend only about a quarter of a narrow chart's width, marker
+    // included: a smaller type keeps the longest name whole rather than cut to
+    // "poten…" (German, Spanish and French names are longer than English ones).
+    QFont font = legend->font();
+    for (int shrink = 0; shrink < 10 && font.pointSizeF() > 6.0; ++shrink) {
+        const QFontMetricsF m(font);
+        qreal widest = 0.0;
+        for (const QLegendMarker* marker : legend->markers())
+            if (marker->isVisible())
+                widest = std::max(widest, m.horizontalAdvance(marker->label()));
+        if (widest <= 0.25 * view->width() - 2.5 * m.height()) break;
+        font.setPointSizeF(font.pointSizeF() * 0.9);
+    }
+    legend->setFont(font);
 }
 }  // namespace
 
@@ -124,6 +144,9 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
     errorHint_->hide();
     errorLayout->addWidget(errorHint_);
     errorLayout->addWidget(errorView_, 1);
+    energyView_->setAccessibleName(tr("Energy plot"));
+    phaseView_->setAccessibleName(tr("Phase space plot"));
+    errorView_->setAccessibleName(tr("Local error plot"));
     for (QChartView* view : {energyView_, phaseView_, errorView_}) {
         styleChart(view);
         view->installEventFilter(this);
@@ -155,6 +178,16 @@ bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
 
 void PlotsPanel::setEnergy(std::span<const EnergySample> samples,
                            std::span<const PlotMarker> markers, const QString& title) {
+    // A screen reader reads the latest values, paused or not: a chart's curves are pixels.
+    if (!samples.empty()) {
+        const EnergySample& e = samples.back();
+        const QLocale l;
+        const auto n = [&l](double v) { return l.toString(v, 'g', 4); };
+        energyView_->setAccessibleDescription(
+            tr("At t = %1 s: kinetic %2 J, potential %3 J, total %4 J, work_nc %5 J, drift %6 J")
+                .arg(n(e.t), n(e.kinetic), n(e.potential), n(e.kinetic + e.potential), n(e.workNc),
+                     n(e.drift)));
+    }
     if (paused_) return;
     replaceChart(energyView_, createEnergyChart(samples, markers, title));
     styleChart(energyView_);
@@ -166,6 +199,13 @@ void PlotsPanel::setPhase(std::span<const PhaseSample> samples, const QString& c
                             ? tr("Click an object on the canvas to plot its phase space.")
                             : QString());
     phaseView_->setVisible(!coordinateName.isEmpty());
+    if (!samples.empty()) {
+        const QLocale l;
+        phaseView_->setAccessibleDescription(
+            tr("Latest: %1 = %2, %3 = %4")
+                .arg(coordinateName, l.toString(samples.back().coordinate, 'g', 4), velocityName,
+                     l.toString(samples.back().velocity, 'g', 4)));
+    }
     if (paused_) return;
     replaceChart(phaseView_, createPhaseChart(samples, coordinateName, velocityName, title,
                                               phaseReference_, phaseReferenceName_));

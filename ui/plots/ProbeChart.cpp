@@ -138,6 +138,7 @@ QChart* createProbeChart(const QVector<QPointF>& points, const QString& xTitle,
     chart->addAxis(y, Qt::AlignLeft);
     series->attachAxis(x);
     series->attachAxis(y);
+    applyChartAppearance(chart);
     return chart;
 }
 

@@ -2,6 +2,8 @@
 
 #include "physics/integrators/Integrator.h"
 
+#include "ui/plots/Charts.h"
+
 #include <QChart>
 #include <QFont>
 #include <QGraphicsLayout>
@@ -225,6 +227,7 @@ QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, con
 
     new DtLabels(chart, std::move(labels));
     setWorkPrecisionFont(chart, font);
+    applyChartAppearance(chart);
     return chart;
 }
 

@@ -17,6 +17,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileDialog>
+#include <QLocale>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSpinBox>
@@ -45,6 +46,61 @@ CanvasPresenter::CanvasPresenter(ui::SceneView& view, CanvasTools& tools, Docume
     connect(&document_, &Document::selectionChanged, this, &CanvasPresenter::showSelection);
     connect(&controller, &SimulationController::stepped, this, &CanvasPresenter::refresh);
     connect(&tools_, &CanvasTools::message, this, &Presenter::message);
+    connectKeyboard();
+}
+
+void CanvasPresenter::connectKeyboard() {
+    const auto updateTargets = [this] {
+        QStringList ids;
+        for (const std::string& id : objectIds(document_.setup()))
+            ids << QString::fromStdString(id);
+        view_.setKeyboardTargets(ids);
+    };
+    connect(&document_, &Document::sceneReset, this, updateTargets);
+    connect(&document_, &Document::sceneEdited, this, updateTargets);
+    connect(&view_, &ui::SceneView::keyboardSelected, this,
+            [this](const QString& id) { document_.setSelection({id}); });
+    connect(&view_, &ui::SceneView::keyboardNudged, &tools_, &CanvasTools::nudgeSelection);
+    connect(&view_, &ui::SceneView::keyboardActivated, this, [this](QPointF cursor) {
+        if (tools_.tool() != CanvasTools::Tool::Select)
+            tools_.placeAt(cursor);
+        else if (!document_.selection().isEmpty())
+            emit propertiesWanted();
+    });
+    connect(&tools_, &CanvasTools::toolChanged, this, [this](CanvasTools::Tool tool) {
+        view_.setArrowsMoveSelection(tool == CanvasTools::Tool::Select);
+    });
+}
+
+QString CanvasPresenter::describeSelection() const {
+    const QStringList selection = document_.selection();
+    if (selection.isEmpty())
+        return tr(
+            "Nothing selected. Tab walks the objects; with a drawing tool, the arrow keys "
+            "move the cursor and Enter places the object there.");
+    const SceneDesc& setup = document_.setup();
+    const ObjectRef ref = findObject(setup, selection.first().toStdString());
+    QString text = tr("Selected: %1 %2.").arg(objectKindName(ref.kind), selection.first());
+    const World& world = document_.world();
+    const std::string id = selection.first().toStdString();
+    for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
+        if (world.particles()[static_cast<std::size_t>(i)].id == id) {
+            const Vec2 x = world.particlePosition(i), v = world.particleVelocity(i);
+            text += QLatin1Char(' ') +
+                    tr("Position %1, %2 m; velocity %3, %4 m/s.")
+                        .arg(QLocale().toString(x.x(), 'f', 2), QLocale().toString(x.y(), 'f', 2),
+                             QLocale().toString(v.x(), 'f', 2), QLocale().toString(v.y(), 'f', 2));
+        }
+    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
+        if (world.boxes()[static_cast<std::size_t>(i)].id == id) {
+            const Vec2 x = world.boxPosition(i), v = world.boxVelocity(i);
+            text += QLatin1Char(' ') +
+                    tr("Position %1, %2 m; velocity %3, %4 m/s.")
+                        .arg(QLocale().toString(x.x(), 'f', 2), QLocale().toString(x.y(), 'f', 2),
+                             QLocale().toString(v.x(), 'f', 2), QLocale().toString(v.y(), 'f', 2));
+        }
+    return text + QLatin1Char(' ') +
+           tr("Arrows move it (Shift: finely), Enter opens its properties.");
 }
 
 void CanvasPresenter::createActions(QWidget& window) {
@@ -81,10 +137,11 @@ void CanvasPresenter::createActions(QWidget& window) {
     polygonSides_ = sides;
     auto* joints = new QComboBox(&window);
     joints->setObjectName(QStringLiteral("jointType"));
-    for (const JointType type : {JointType::Hinge, JointType::Rod, JointType::Rope, JointType::Weld,
-                                 JointType::Pulley, JointType::Track})
-        joints->addItem(QString::fromUtf8(schema::kJointTypeNames[static_cast<int>(type)].data()),
-                        static_cast<int>(type));
+    for (const auto& [type, name] :
+         {std::pair{JointType::Hinge, tr("hinge")}, std::pair{JointType::Rod, tr("rod")},
+          std::pair{JointType::Rope, tr("rope")}, std::pair{JointType::Weld, tr("weld")},
+          std::pair{JointType::Pulley, tr("pulley")}, std::pair{JointType::Track, tr("track")}})
+        joints->addItem(name, static_cast<int>(type));
     joints->setToolTip(tr("The kind of joint the Add joint tool makes"));
     connect(joints, &QComboBox::currentIndexChanged, this, [this, joints](int) {
         tools_.setJointType(static_cast<JointType>(joints->currentData().toInt()));
@@ -144,12 +201,26 @@ void CanvasPresenter::writeSettings(QSettings& settings) const {
 }
 
 void CanvasPresenter::setPresentation(bool on) {
+    presentation_ = on;
     ui::RenderOptions options = view_.renderOptions();
-    options.lineWidthScale = on ? 2.0 : 1.0;
-    options.fontScale = on ? 1.8 : 1.0;
     for (const ViewOption& option : options_)
         if (option.member == &ui::RenderOptions::labels)
             options.labels = on || option.action->isChecked();
+    view_.setRenderOptions(options);
+    applyLook();
+}
+
+void CanvasPresenter::setAppearance(const ui::Appearance& appearance) {
+    appearance_ = appearance;
+    applyLook();
+}
+
+void CanvasPresenter::applyLook() {
+    ui::RenderOptions options = view_.renderOptions();
+    options.lineWidthScale = (presentation_ ? 2.0 : 1.0) * appearance_.lineScale;
+    options.fontScale = (presentation_ ? 1.8 : 1.0) * appearance_.textScale;
+    options.colors = ui::sceneColors(appearance_.highContrast);
+    options.background = ui::canvasBackground(appearance_.highContrast);
     view_.setRenderOptions(options);
 }
 
@@ -224,10 +295,11 @@ void CanvasPresenter::refresh() {
     if (following_) followNow();
     tools_.refreshGrabOverlay();
     const SimulationDesc& s = document_.setup().simulation;
-    view_.setHudText(tr("t = %1 s   %2, dt %3 s")
+    view_.setHudText(tr("t = %L1 s   %2, dt %L3 s")
                          .arg(document_.world().time(), 0, 'f', 2)
                          .arg(QString::fromStdString(s.integrator))
                          .arg(s.dt, 0, 'g', 4));
+    view_.setAccessibleDescription(describeSelection());
     view_.update();
 }
 
@@ -236,6 +308,7 @@ void CanvasPresenter::showSelection() {
     options.selectedIds.clear();
     for (const QString& id : document_.selection()) options.selectedIds.insert(id.toStdString());
     view_.setRenderOptions(options);
+    view_.setAccessibleDescription(describeSelection());
 }
 
 bool CanvasPresenter::exportPicture(const QString& path, QString* error) const {

@@ -3,6 +3,7 @@
 // a line of what runs (time, integrator, dt). The mouse's tools are CanvasTools'.
 
 #include "app/desktop/presenters/Presenter.h"
+#include "ui/canvas/Appearance.h"
 #include "ui/canvas/SceneRenderer.h"
 
 #include <QList>
@@ -41,13 +42,22 @@ public:
     QWidget* jointTypeBox() const { return jointType_; }
     // Thicker lines and larger labels for a projector.
     void setPresentation(bool on);
+    // The theme's colours and the user's line and text scales (AppearancePresenter), which
+    // multiply presentation mode's.
+    void setAppearance(const ui::Appearance& appearance);
     // The drawing options are the user's, not the scene's: they outlive the session.
     void readSettings(const QSettings& settings);
     void writeSettings(QSettings& settings) const;
+    // What the canvas's accessible description says of the selection, live.
+    QString describeSelection() const;
     // A PNG of the scene, at least 800 × 600 pixels.
     bool exportPicture(const QString& path, QString* error) const;
     // Asks for a file name, then exports.
     void exportInteractively();
+
+signals:
+    // Enter on the canvas with the Select tool and a selection: its properties, please.
+    void propertiesWanted();
 
 private:
     struct ViewOption {
@@ -57,6 +67,8 @@ private:
     };
 
     void showSelection();
+    void connectKeyboard();
+    void applyLook();
     void setOption(bool ui::RenderOptions::*member, bool on);
     // Follow mode (View > Follow): the selection, or every moving object, stays in view.
     void followNow();
@@ -72,6 +84,8 @@ private:
     QWidget* polygonSides_ = nullptr;
     QWidget* jointType_ = nullptr;
     std::vector<ViewOption> options_;
+    bool presentation_ = false;
+    ui::Appearance appearance_;
 };
 
 }  // namespace phasebox

@@ -12,6 +12,7 @@
 #include "ui/instruments/ProbeTableView.h"
 #include "ui/instruments/ReadoutView.h"
 #include "ui/instruments/TimerView.h"
+#include "ui/panels/BuiltinText.h"
 #include "ui/panels/DisplayText.h"
 #include "ui/plots/ProbeChart.h"
 
@@ -622,10 +623,9 @@ bool InstrumentsPresenter::exportGraph(int index, const QString& path, QString* 
     const SceneDesc& setup = document_.setup();
     const QString title =
         tr("%1 against %2 — %3 (%4, dt %5 s)")
-            .arg(
-                graph.y, graph.x.isEmpty() ? tr("time") : graph.x,
-                ui::shownText(QString::fromStdString(setup.name.empty() ? "Untitled" : setup.name)),
-                QString::fromStdString(setup.simulation.integrator))
+            .arg(graph.y, graph.x.isEmpty() ? tr("time") : graph.x,
+                 setup.name.empty() ? tr("Untitled") : ui::shownText(ui::sceneText(setup.name)),
+                 QString::fromStdString(setup.simulation.integrator))
             .arg(setup.simulation.dt, 0, 'g', 4);
     std::unique_ptr<QChart> chart(ui::createProbeChart(
         graphPoints(graph), axisTitle(graph.x), axisTitle(graph.y), title, graph.x.isEmpty()));

@@ -1,6 +1,7 @@
 #include "app/desktop/presenters/NotesPresenter.h"
 
 #include "app/document/Document.h"
+#include "ui/panels/BuiltinText.h"
 #include "ui/panels/DisplayText.h"
 
 #include <QTextBrowser>
@@ -23,8 +24,8 @@ void NotesPresenter::refresh() {
     const SceneDesc& scene = document_.setup();
     notes_.setHtml(
         QStringLiteral("<h3>%1</h3><p>%2</p>")
-            .arg(ui::shownText(QString::fromStdString(scene.name)).toHtmlEscaped(),
-                 ui::shownDescription(QString::fromStdString(scene.description)).toHtmlEscaped()));
+            .arg(ui::shownText(ui::sceneText(scene.name)).toHtmlEscaped(),
+                 ui::shownDescription(ui::sceneText(scene.description)).toHtmlEscaped()));
 }
 
 }  // namespace phasebox

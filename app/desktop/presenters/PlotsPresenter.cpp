@@ -55,14 +55,14 @@ PlotsPresenter::PlotsPresenter(ui::PlotsPanel& panel, Document& document,
 
 QString PlotsPresenter::energyTitle() const {
     const SimulationDesc& s = document_.setup().simulation;
-    return tr("Energy (%1, dt %2 s)")
+    return tr("Energy (%1, dt %L2 s)")
         .arg(QString::fromStdString(s.integrator))
         .arg(s.dt, 0, 'g', 4);
 }
 
 QString PlotsPresenter::errorTitle() const {
     const SimulationDesc& s = document_.setup().simulation;
-    return tr("Local error per step (%1, dt %2 s)")
+    return tr("Local error per step (%1, dt %L2 s)")
         .arg(QString::fromStdString(s.integrator))
         .arg(s.dt / s.substeps, 0, 'g', 4);
 }

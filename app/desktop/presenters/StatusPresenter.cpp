@@ -64,14 +64,14 @@ void StatusPresenter::reportUnsupportedEffects() {
 
 void StatusPresenter::refresh() {
     const double error = controller_.lastErrorEstimate();
-    error_->setText(std::isfinite(error) ? tr("local error ≈ %1 m").arg(error, 0, 'g', 2)
+    error_->setText(std::isfinite(error) ? tr("local error ≈ %L1 m").arg(error, 0, 'g', 2)
                                          : QString());
-    time_->setText(tr("t = %1 s").arg(document_.world().time(), 0, 'g', 4));
-    speed_->setText(controller_.isRunning() ? tr("real-time factor %1 (speed %2×)")
+    time_->setText(tr("t = %L1 s").arg(document_.world().time(), 0, 'g', 4));
+    speed_->setText(controller_.isRunning() ? tr("real-time factor %L1 (speed %L2×)")
                                                   .arg(controller_.realTimeFactor(), 0, 'f', 2)
                                                   .arg(controller_.speed())
-                                            : tr("paused (speed %1×)").arg(controller_.speed()));
-    cost_->setText(tr("%1 ms per step").arg(controller_.msPerStep(), 0, 'g', 3));
+                                            : tr("paused (speed %L1×)").arg(controller_.speed()));
+    cost_->setText(tr("%L1 ms per step").arg(controller_.msPerStep(), 0, 'g', 3));
 }
 
 }  // namespace phasebox
