@@ -1395,6 +1395,18 @@
         <extracomment>schema: line.direction</extracomment>
         <translation>Richtung</translation>
     </message>
+    <message>
+        <source>Sleep</source>
+        <extracomment>schema: simulation.sleep</extracomment>
+        <translation>Schlafen</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox</name>
+    <message>
+        <source>the clip</source>
+        <translation>der Clip</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::AccuracyDialog</name>
@@ -1629,6 +1641,128 @@
     <message>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::AnimationExport</name>
+    <message>
+        <source>%1: unknown clip format; known: %2</source>
+        <translation>%1: unbekanntes Clip-Format; bekannt: %2</translation>
+    </message>
+    <message>
+        <source>Exporting %1…</source>
+        <translation>%1 wird exportiert…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Wrote %1 (%2 frames)</source>
+        <translation>%1 geschrieben (%2 Bilder)</translation>
+    </message>
+    <message>
+        <source>Wrote %1; the run diverged: %2</source>
+        <translation>%1 geschrieben; die Simulation divergierte: %2</translation>
+    </message>
+    <message>
+        <source>Export cancelled; nothing was written</source>
+        <translation>Export abgebrochen; nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::AnimationExportDialog</name>
+    <message>
+        <source>Export Animation</source>
+        <translation>Animation exportieren</translation>
+    </message>
+    <message>
+        <source>Clip file</source>
+        <translation>Clip-Datei</translation>
+    </message>
+    <message>
+        <source>A .mp4 file (H.264 video) or a .gif file (animated GIF)</source>
+        <translation>Eine .mp4-Datei (H.264-Video) oder eine .gif-Datei (animiertes GIF)</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>&amp;Datei:</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Start time</source>
+        <translation>Startzeit</translation>
+    </message>
+    <message>
+        <source>Simulated time of the first frame</source>
+        <translation>Simulierte Zeit des ersten Bildes</translation>
+    </message>
+    <message>
+        <source>Fro&amp;m:</source>
+        <translation>&amp;Ab:</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <source>Simulated seconds the clip shows</source>
+        <translation>Simulierte Sekunden, die der Clip zeigt</translation>
+    </message>
+    <message>
+        <source>&amp;Duration:</source>
+        <translation>D&amp;auer:</translation>
+    </message>
+    <message>
+        <source>Frames per second</source>
+        <translation>Bilder pro Sekunde</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <source>Frame &amp;rate:</source>
+        <translation>Bild&amp;rate:</translation>
+    </message>
+    <message>
+        <source>Width in pixels</source>
+        <translation>Breite in Pixeln</translation>
+    </message>
+    <message>
+        <source>Height in pixels</source>
+        <translation>Höhe in Pixeln</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>&amp;Size:</source>
+        <translation>&amp;Größe:</translation>
+    </message>
+    <message>
+        <source>&amp;Plots beside the canvas (energy and phase space)</source>
+        <translation>&amp;Diagramme neben der Zeichenfläche (Energie und Phasenraum)</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4);;Animated GIF (*.gif)</source>
+        <translation>MP4-Video (*.mp4);;Animiertes GIF (*.gif)</translation>
     </message>
 </context>
 <context>
@@ -2026,6 +2160,29 @@
     <message>
         <source>dashed: exact solution (%1) until t = %2 s, where a contact begins or ends</source>
         <translation>gestrichelt: exakte Lösung (%1) bis t = %2 s, wo ein Kontakt beginnt oder endet</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::FramePainter</name>
+    <message>
+        <source>%1, dt %2 s</source>
+        <translation>%1, dt %2 s</translation>
+    </message>
+    <message>
+        <source>t = %1 s   %2</source>
+        <translation>t = %1 s   %2</translation>
+    </message>
+    <message>
+        <source>Energy (%1)</source>
+        <translation>Energie (%1)</translation>
+    </message>
+    <message>
+        <source>Phase space</source>
+        <translation>Phasenraum</translation>
+    </message>
+    <message>
+        <source>Phase space of %1</source>
+        <translation>Phasenraum von %1</translation>
     </message>
 </context>
 <context>
@@ -2451,6 +2608,14 @@
     <message>
         <source>Scene canvas</source>
         <translation>Zeichenfläche der Szene</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation…</source>
+        <translation>&amp;Animation exportieren…</translation>
+    </message>
+    <message>
+        <source>The run as an MP4 or animated GIF clip, optionally with the plots</source>
+        <translation>Der Lauf als MP4- oder animierter GIF-Clip, wahlweise mit den Diagrammen</translation>
     </message>
 </context>
 <context>

@@ -1395,6 +1395,18 @@
         <extracomment>schema: line.direction</extracomment>
         <translation>Dirección</translation>
     </message>
+    <message>
+        <source>Sleep</source>
+        <extracomment>schema: simulation.sleep</extracomment>
+        <translation>Reposo</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox</name>
+    <message>
+        <source>the clip</source>
+        <translation>el clip</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::AccuracyDialog</name>
@@ -1629,6 +1641,128 @@
     <message>
         <source>Export failed</source>
         <translation>Falló la exportación</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::AnimationExport</name>
+    <message>
+        <source>%1: unknown clip format; known: %2</source>
+        <translation>%1: formato de clip desconocido; conocidos: %2</translation>
+    </message>
+    <message>
+        <source>Exporting %1…</source>
+        <translation>Exportando %1…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Wrote %1 (%2 frames)</source>
+        <translation>%1 escrito (%2 fotogramas)</translation>
+    </message>
+    <message>
+        <source>Wrote %1; the run diverged: %2</source>
+        <translation>%1 escrito; la simulación divergió: %2</translation>
+    </message>
+    <message>
+        <source>Export cancelled; nothing was written</source>
+        <translation>Exportación cancelada; no se escribió nada</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>La exportación falló</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::AnimationExportDialog</name>
+    <message>
+        <source>Export Animation</source>
+        <translation>Exportar animación</translation>
+    </message>
+    <message>
+        <source>Clip file</source>
+        <translation>Archivo del clip</translation>
+    </message>
+    <message>
+        <source>A .mp4 file (H.264 video) or a .gif file (animated GIF)</source>
+        <translation>Un archivo .mp4 (vídeo H.264) o .gif (GIF animado)</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Examinar…</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>&amp;Archivo:</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Start time</source>
+        <translation>Instante inicial</translation>
+    </message>
+    <message>
+        <source>Simulated time of the first frame</source>
+        <translation>Tiempo simulado del primer fotograma</translation>
+    </message>
+    <message>
+        <source>Fro&amp;m:</source>
+        <translation>&amp;Desde:</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Duración</translation>
+    </message>
+    <message>
+        <source>Simulated seconds the clip shows</source>
+        <translation>Segundos simulados que muestra el clip</translation>
+    </message>
+    <message>
+        <source>&amp;Duration:</source>
+        <translation>D&amp;uración:</translation>
+    </message>
+    <message>
+        <source>Frames per second</source>
+        <translation>Fotogramas por segundo</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> fps</translation>
+    </message>
+    <message>
+        <source>Frame &amp;rate:</source>
+        <translation>Frecuencia de &amp;fotogramas:</translation>
+    </message>
+    <message>
+        <source>Width in pixels</source>
+        <translation>Ancho en píxeles</translation>
+    </message>
+    <message>
+        <source>Height in pixels</source>
+        <translation>Alto en píxeles</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>&amp;Size:</source>
+        <translation>&amp;Tamaño:</translation>
+    </message>
+    <message>
+        <source>&amp;Plots beside the canvas (energy and phase space)</source>
+        <translation>&amp;Gráficas junto al lienzo (energía y espacio de fases)</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportar</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4);;Animated GIF (*.gif)</source>
+        <translation>Vídeo MP4 (*.mp4);;GIF animado (*.gif)</translation>
     </message>
 </context>
 <context>
@@ -2026,6 +2160,29 @@
     <message>
         <source>dashed: exact solution (%1) until t = %2 s, where a contact begins or ends</source>
         <translation>a trazos: solución exacta (%1) hasta t = %2 s, donde empieza o termina un contacto</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::FramePainter</name>
+    <message>
+        <source>%1, dt %2 s</source>
+        <translation>%1, dt %2 s</translation>
+    </message>
+    <message>
+        <source>t = %1 s   %2</source>
+        <translation>t = %1 s   %2</translation>
+    </message>
+    <message>
+        <source>Energy (%1)</source>
+        <translation>Energía (%1)</translation>
+    </message>
+    <message>
+        <source>Phase space</source>
+        <translation>Espacio de fases</translation>
+    </message>
+    <message>
+        <source>Phase space of %1</source>
+        <translation>Espacio de fases de %1</translation>
     </message>
 </context>
 <context>
@@ -2451,6 +2608,14 @@
     <message>
         <source>Scene canvas</source>
         <translation>Lienzo de la escena</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation…</source>
+        <translation>Exportar &amp;animación…</translation>
+    </message>
+    <message>
+        <source>The run as an MP4 or animated GIF clip, optionally with the plots</source>
+        <translation>La simulación como clip MP4 o GIF animado, con las gráficas si se desea</translation>
     </message>
 </context>
 <context>

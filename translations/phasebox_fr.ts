@@ -1395,6 +1395,18 @@
         <extracomment>schema: line.direction</extracomment>
         <translation>Direction</translation>
     </message>
+    <message>
+        <source>Sleep</source>
+        <extracomment>schema: simulation.sleep</extracomment>
+        <translation>Sommeil</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox</name>
+    <message>
+        <source>the clip</source>
+        <translation>le clip</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::AccuracyDialog</name>
@@ -1629,6 +1641,128 @@
     <message>
         <source>Export failed</source>
         <translation>Échec de l’export</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::AnimationExport</name>
+    <message>
+        <source>%1: unknown clip format; known: %2</source>
+        <translation>%1 : format de clip inconnu ; connus : %2</translation>
+    </message>
+    <message>
+        <source>Exporting %1…</source>
+        <translation>Exportation de %1…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Wrote %1 (%2 frames)</source>
+        <translation>%1 écrit (%2 images)</translation>
+    </message>
+    <message>
+        <source>Wrote %1; the run diverged: %2</source>
+        <translation>%1 écrit ; la simulation a divergé : %2</translation>
+    </message>
+    <message>
+        <source>Export cancelled; nothing was written</source>
+        <translation>Exportation annulée ; rien n’a été écrit</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Échec de l’exportation</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::AnimationExportDialog</name>
+    <message>
+        <source>Export Animation</source>
+        <translation>Exporter l’animation</translation>
+    </message>
+    <message>
+        <source>Clip file</source>
+        <translation>Fichier du clip</translation>
+    </message>
+    <message>
+        <source>A .mp4 file (H.264 video) or a .gif file (animated GIF)</source>
+        <translation>Un fichier .mp4 (vidéo H.264) ou .gif (GIF animé)</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Parcourir…</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>&amp;Fichier :</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Start time</source>
+        <translation>Instant de début</translation>
+    </message>
+    <message>
+        <source>Simulated time of the first frame</source>
+        <translation>Temps simulé de la première image</translation>
+    </message>
+    <message>
+        <source>Fro&amp;m:</source>
+        <translation>&amp;De :</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Durée</translation>
+    </message>
+    <message>
+        <source>Simulated seconds the clip shows</source>
+        <translation>Secondes simulées que montre le clip</translation>
+    </message>
+    <message>
+        <source>&amp;Duration:</source>
+        <translation>D&amp;urée :</translation>
+    </message>
+    <message>
+        <source>Frames per second</source>
+        <translation>Images par seconde</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> i/s</translation>
+    </message>
+    <message>
+        <source>Frame &amp;rate:</source>
+        <translation>&amp;Fréquence d’images :</translation>
+    </message>
+    <message>
+        <source>Width in pixels</source>
+        <translation>Largeur en pixels</translation>
+    </message>
+    <message>
+        <source>Height in pixels</source>
+        <translation>Hauteur en pixels</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>&amp;Size:</source>
+        <translation>&amp;Taille :</translation>
+    </message>
+    <message>
+        <source>&amp;Plots beside the canvas (energy and phase space)</source>
+        <translation>&amp;Graphiques à côté du canevas (énergie et espace des phases)</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exporter</translation>
+    </message>
+    <message>
+        <source>MP4 video (*.mp4);;Animated GIF (*.gif)</source>
+        <translation>Vidéo MP4 (*.mp4);;GIF animé (*.gif)</translation>
     </message>
 </context>
 <context>
@@ -2026,6 +2160,29 @@
     <message>
         <source>dashed: exact solution (%1) until t = %2 s, where a contact begins or ends</source>
         <translation>tirets : solution exacte (%1) jusqu’à t = %2 s, où un contact commence ou finit</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::FramePainter</name>
+    <message>
+        <source>%1, dt %2 s</source>
+        <translation>%1, dt %2 s</translation>
+    </message>
+    <message>
+        <source>t = %1 s   %2</source>
+        <translation>t = %1 s   %2</translation>
+    </message>
+    <message>
+        <source>Energy (%1)</source>
+        <translation>Énergie (%1)</translation>
+    </message>
+    <message>
+        <source>Phase space</source>
+        <translation>Espace des phases</translation>
+    </message>
+    <message>
+        <source>Phase space of %1</source>
+        <translation>Espace des phases de %1</translation>
     </message>
 </context>
 <context>
@@ -2451,6 +2608,14 @@
     <message>
         <source>Scene canvas</source>
         <translation>Canevas de la scène</translation>
+    </message>
+    <message>
+        <source>Export &amp;Animation…</source>
+        <translation>Exporter l’&amp;animation…</translation>
+    </message>
+    <message>
+        <source>The run as an MP4 or animated GIF clip, optionally with the plots</source>
+        <translation>La simulation en clip MP4 ou GIF animé, avec les graphiques si souhaité</translation>
     </message>
 </context>
 <context>
