@@ -2769,14 +2769,6 @@ dx %2  dy %3</translation>
 <context>
     <name>phasebox::PlotsPresenter</name>
     <message>
-        <source>Energy (%1, dt %L2 s)</source>
-        <translation>Energie (%1, dt %L2 s)</translation>
-    </message>
-    <message>
-        <source>Local error per step (%1, dt %L2 s)</source>
-        <translation>Lokaler Fehler pro Schritt (%1, dt %L2 s)</translation>
-    </message>
-    <message>
         <source>The live error estimate is off (View menu).</source>
         <translation>Die Live-Fehlerschätzung ist aus (Menü Ansicht).</translation>
     </message>
@@ -2839,6 +2831,14 @@ dx %2  dy %3</translation>
     <message>
         <source>Wrote %1</source>
         <translation>%1 geschrieben</translation>
+    </message>
+    <message>
+        <source>Energy&lt;br&gt;%1, dt %L2 s</source>
+        <translation>Energie&lt;br&gt;%1, dt %L2 s</translation>
+    </message>
+    <message>
+        <source>Local error per step&lt;br&gt;%1, dt %L2 s</source>
+        <translation>Lokaler Fehler pro Schritt&lt;br&gt;%1, dt %L2 s</translation>
     </message>
 </context>
 <context>

@@ -2769,14 +2769,6 @@ dx %2  dy %3</translation>
 <context>
     <name>phasebox::PlotsPresenter</name>
     <message>
-        <source>Energy (%1, dt %L2 s)</source>
-        <translation>Energía (%1, dt %L2 s)</translation>
-    </message>
-    <message>
-        <source>Local error per step (%1, dt %L2 s)</source>
-        <translation>Error local por paso (%1, dt %L2 s)</translation>
-    </message>
-    <message>
         <source>The live error estimate is off (View menu).</source>
         <translation>La estimación del error en vivo está desactivada (menú Ver).</translation>
     </message>
@@ -2839,6 +2831,14 @@ dx %2  dy %3</translation>
     <message>
         <source>Wrote %1</source>
         <translation>Escrito %1</translation>
+    </message>
+    <message>
+        <source>Energy&lt;br&gt;%1, dt %L2 s</source>
+        <translation>Energía&lt;br&gt;%1, dt %L2 s</translation>
+    </message>
+    <message>
+        <source>Local error per step&lt;br&gt;%1, dt %L2 s</source>
+        <translation>Error local por paso&lt;br&gt;%1, dt %L2 s</translation>
     </message>
 </context>
 <context>

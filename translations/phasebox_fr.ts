@@ -2769,14 +2769,6 @@ dx %2  dy %3</translation>
 <context>
     <name>phasebox::PlotsPresenter</name>
     <message>
-        <source>Energy (%1, dt %L2 s)</source>
-        <translation>Énergie (%1, dt %L2 s)</translation>
-    </message>
-    <message>
-        <source>Local error per step (%1, dt %L2 s)</source>
-        <translation>Erreur locale par pas (%1, dt %L2 s)</translation>
-    </message>
-    <message>
         <source>The live error estimate is off (View menu).</source>
         <translation>L’estimation de l’erreur en direct est désactivée (menu Affichage).</translation>
     </message>
@@ -2839,6 +2831,14 @@ dx %2  dy %3</translation>
     <message>
         <source>Wrote %1</source>
         <translation>%1 écrit</translation>
+    </message>
+    <message>
+        <source>Energy&lt;br&gt;%1, dt %L2 s</source>
+        <translation>Énergie&lt;br&gt;%1, dt %L2 s</translation>
+    </message>
+    <message>
+        <source>Local error per step&lt;br&gt;%1, dt %L2 s</source>
+        <translation>Erreur locale par pas&lt;br&gt;%1, dt %L2 s</translation>
     </message>
 </context>
 <context>

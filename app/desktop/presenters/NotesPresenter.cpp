@@ -22,10 +22,13 @@ NotesPresenter::NotesPresenter(QTextBrowser& notes, Document& document, QObject*
 
 void NotesPresenter::refresh() {
     const SceneDesc& scene = document_.setup();
-    notes_.setHtml(
+    const QString html =
         QStringLiteral("<h3>%1</h3><p>%2</p>")
             .arg(ui::shownText(ui::sceneText(scene.name)).toHtmlEscaped(),
-                 ui::shownDescription(ui::sceneText(scene.description)).toHtmlEscaped()));
+                 ui::shownDescription(ui::sceneText(scene.description)).toHtmlEscaped());
+    if (html == shown_) return;  // only this presenter writes the notes
+    notes_.setHtml(html);
+    shown_ = html;
 }
 
 }  // namespace phasebox

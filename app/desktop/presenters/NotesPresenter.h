@@ -26,6 +26,7 @@ signals:
 private:
     QTextBrowser& notes_;
     Document& document_;
+    QString shown_;  // the HTML last set: laying out long notes again costs a visible pause
 };
 
 }  // namespace phasebox

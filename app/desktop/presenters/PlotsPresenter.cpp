@@ -53,16 +53,18 @@ PlotsPresenter::PlotsPresenter(ui::PlotsPanel& panel, Document& document,
     sinceRefresh_.start();
 }
 
+// Two lines: the quantity, then the method and step, so that neither is cut in a narrow dock
+// (chart titles are rich text).
 QString PlotsPresenter::energyTitle() const {
     const SimulationDesc& s = document_.setup().simulation;
-    return tr("Energy (%1, dt %L2 s)")
+    return tr("Energy<br>%1, dt %L2 s")
         .arg(QString::fromStdString(s.integrator))
         .arg(s.dt, 0, 'g', 4);
 }
 
 QString PlotsPresenter::errorTitle() const {
     const SimulationDesc& s = document_.setup().simulation;
-    return tr("Local error per step (%1, dt %L2 s)")
+    return tr("Local error per step<br>%1, dt %L2 s")
         .arg(QString::fromStdString(s.integrator))
         .arg(s.dt / s.substeps, 0, 'g', 4);
 }
