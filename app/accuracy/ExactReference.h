@@ -80,8 +80,8 @@ struct PendulumMotion {
     double angle(double t) const;
     Vec2 at(double t) const;
 };
-// A ball moving straight along a plane's normal under gravity and penalty contact (CONTRACT §6,
-// issue 18's closed forms): flights with s'' = −g and contacts in which the overlap
+// A ball moving straight along a plane's normal under gravity and penalty contact (CONTRACT §6):
+// flights with s'' = −g and contacts in which the overlap
 // d = r − s obeys m·d'' = m·g − k·d − c·d' (F = k·d + c·ḋ, not clamped while d > 0), each phase
 // a LinearMotion of the height s of the centre above the plane, joined where s crosses r. A
 // contact lasts π·√(m/k)/√(1 − ζ²) without gravity; with it, slightly longer.

@@ -148,7 +148,7 @@ QString parseOptions(const QStringList& args, AccuracyCliOptions& o) {
             if (d.size() != 1)
                 return QStringLiteral("--duration takes one number (got \"%1\")").arg(v);
             // The scene's own bound, named as the option's: the study would otherwise refuse
-            // it as the scene's simulation.duration (issue #38).
+            // it as the scene's simulation.duration, an option the user never gave.
             static_assert(SceneLimits::kMaxDuration == 1e6);
             if (d.front() > SceneLimits::kMaxDuration)
                 return QStringLiteral("--duration: must be > 0 and <= 1e6 (got %1)").arg(v);
@@ -315,7 +315,7 @@ int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err)
     if (!loaded.ok()) return fail(err, loaded.errorText());
     const SceneDesc& scene = *loaded.scene;
     const QString sceneName = scene.name.empty() ? o.scene : QString::fromStdString(scene.name);
-    // Each dt's run is refused as `run` refuses it (issue #38: --dt 1e-10 ran unbounded). The
+    // Each dt's run is refused as `run` refuses it: a tiny --dt would otherwise run unbounded. The
     // default list is the scene's dt, which `run` takes, and smaller by at most 32.
     const double duration = o.study.duration > 0.0 ? o.study.duration : scene.simulation.duration;
     for (const double dt : o.study.dts)

@@ -353,7 +353,8 @@ QString jsonPair(const Vec2& v) {
 
 // The --json report, with "objects" last and written object by object: a million cloth
 // nodes held as one QJsonObject, then as its text, then as that text in a QString, cost
-// several times the memory of the run itself (issue #20 allows --json 1.5 times at most).
+// several times the memory of the run itself; streamed, --json adds little to the run's own
+// (docs/robustness.md gives the bound the tests pin).
 void writeJsonReport(QTextStream& out, const QJsonObject& report, const World& world) {
     QByteArray head = QJsonDocument(report).toJson(QJsonDocument::Indented);
     head.truncate(head.lastIndexOf('}'));

@@ -20,8 +20,8 @@ namespace {
 constexpr int kMotorIterations = 4;
 // A motor turns b against a, and each end must take its torque: a rigid body, the world or a
 // fixed point. A free particle has no angle: a motor on one turned the other body alone, an
-// external torque booked as motor work (issue #38; the validation refuses such a motor, and
-// one left here does nothing).
+// external torque booked as motor work (the validation refuses such a motor, and one left
+// here does nothing).
 bool takesTorque(const joints::End& e) {
     return e.rigid || e.dof < 0;
 }
