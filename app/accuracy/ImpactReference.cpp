@@ -209,16 +209,16 @@ std::optional<ExactReference> findImpactReference(const SceneDesc& scene, const 
                                                      std::abs(relative2.dot(tangent)) > 1e-9 * -vn))
         return std::nullopt;
 
-    ExactReference ref;
-    ref.dimension_ = world.dimension();
-    ref.kind_ = "impact";
+    ExactReference::Parts ref;
+    ref.dimension = world.dimension();
+    ref.kind = "impact";
     for (const auto& [m0, m1] : {std::pair{a, a2}, std::pair{b, b2}})
-        ref.flights_.push_back(
+        ref.flights.push_back(
             {m0.dof,
              m0.rigid,
              g,
              {{0.0, m0.x, m0.v, m0.angle, m0.omega}, {tc, m1.x, m1.v, m1.angle, m1.omega}}});
-    const ExactReference::Flight &fa = ref.flights_[0], &fb = ref.flights_[1];
+    const ExactReference::Flight &fa = ref.flights[0], &fb = ref.flights[1];
 
     // They must not meet again, and neither may come within reach of anything fixed.
     constexpr double kMargin = 0.02;  // m, the contact stage's speculative distance
