@@ -31,9 +31,9 @@ std::optional<ExactReference> findSupportedReferences(const SceneDesc& scene, co
     const Vec& u = world.velocities();
     const auto& boxes = world.boxes();
 
-    ExactReference ref;
-    ref.dimension_ = world.dimension();
-    ref.kind_ = "rolling and sliding";
+    ExactReference::Parts ref;
+    ref.dimension = world.dimension();
+    ref.kind = "rolling and sliding";
     double until = endTime;
     constexpr double kMargin = 0.02;  // m, the contact stage's speculative distance
     constexpr double kTouch = 1e-5;   // m: a body placed on a face to this
@@ -150,11 +150,11 @@ std::optional<ExactReference> findSupportedReferences(const SceneDesc& scene, co
         }
         if (!clear || leaves < 10.0 * scene.simulation.dt) continue;
         until = std::min(until, leaves);
-        ref.bounces_.push_back({body.dof, c0, t, motion});
-        ref.coordinates_.push_back({body.dof + 2, LinearMotion{0.0, 0.0, alpha, angle0, 0.0}});
+        ref.bounces.push_back({body.dof, c0, t, motion});
+        ref.coordinates.push_back({body.dof + 2, LinearMotion{0.0, 0.0, alpha, angle0, 0.0}});
     }
-    if (ref.bounces_.empty()) return std::nullopt;
-    if (until < endTime) ref.validUntil_ = until;
+    if (ref.bounces.empty()) return std::nullopt;
+    if (until < endTime) ref.validUntil = until;
     return ref;
 }
 
@@ -218,9 +218,9 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
             candidates.push_back({b.dof, x, u.segment<2>(b.dof), b.radius, b.mass, b.restitution});
     }
 
-    ExactReference ref;
-    ref.dimension_ = world.dimension();
-    ref.kind_ = penalty ? "penalty bounce" : "bounce";
+    ExactReference::Parts ref;
+    ref.dimension = world.dimension();
+    ref.kind = penalty ? "penalty bounce" : "bounce";
     constexpr double kMargin = 0.02;  // m, the contact stage's speculative distance
     constexpr int kSamples = 2000;
     for (const Candidate& body : candidates) {
@@ -268,9 +268,9 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
             if ((centre - (bottom + along * up)).norm() < body.radius + reach + kMargin)
                 clear = false;
         }
-        if (clear) ref.bounces_.push_back({body.dof, base, up, motion});
+        if (clear) ref.bounces.push_back({body.dof, base, up, motion});
     }
-    if (ref.bounces_.empty()) return std::nullopt;
+    if (ref.bounces.empty()) return std::nullopt;
     return ref;
 }
 

@@ -20,6 +20,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace phasebox {
@@ -80,8 +81,8 @@ struct PendulumMotion {
     double angle(double t) const;
     Vec2 at(double t) const;
 };
-// A ball moving straight along a plane's normal under gravity and penalty contact (CONTRACT §6,
-// issue 18's closed forms): flights with s'' = −g and contacts in which the overlap
+// A ball moving straight along a plane's normal under gravity and penalty contact (CONTRACT §6):
+// flights with s'' = −g and contacts in which the overlap
 // d = r − s obeys m·d'' = m·g − k·d − c·d' (F = k·d + c·ḋ, not clamped while d > 0), each phase
 // a LinearMotion of the height s of the centre above the plane, joined where s crosses r. A
 // contact lasts π·√(m/k)/√(1 − ζ²) without gravity; with it, slightly longer.
@@ -104,28 +105,10 @@ struct PenaltyBounceMotion {
 
 class ExactReference {
 public:
-    // What the reference is, for people: "harmonic oscillator", "Kepler orbit", ….
-    const std::string& kind() const { return kind_; }
-    // Every position coordinate of the world's state (its layout) at time t.
-    Vec positions(double t) const;
-    // One position coordinate at time t, without the others (the phase plot's one curve).
-    double position(int dof, double t) const;
-    // Its rate, by a central difference of the closed form (relative error about 1e-10).
-    double velocity(int dof, double t) const;
-    // Whether the closed form gives this coordinate (findBodyReferences covers only some).
-    bool covers(int dof) const;
-    // The periods of the periodic motions in it (undamped oscillators, pendulums, elliptic
-    // orbits); empty when nothing repeats.
-    std::vector<double> periods() const;
-    // The closed form holds up to this time (the first contact that can happen along it);
-    // +∞ when it holds throughout (findDisplayReference alone answers shorter ones).
-    double validUntil() const { return validUntil_; }
-
-private:
-    friend std::optional<ExactReference> findExactReference(const SceneDesc&, const World&, double);
-    // The closed form as if no contact ever happened; findExactReference checks that none does.
-    static std::optional<ExactReference> ignoringContacts(const SceneDesc& scene,
-                                                          const World& world, double endTime);
+    // The motions a closed form is made of, each giving some coordinates of the world's state.
+    // A recogniser (findExactReference and the others below) fills a Parts and hands it over
+    // whole; nothing reaches into an ExactReference afterwards, so no recogniser needs its
+    // privates.
     struct Coordinate {
         int dof;
         LinearMotion motion;
@@ -163,21 +146,6 @@ private:
         Vec2 base, normal;
         PenaltyBounceMotion motion;
     };
-    friend std::optional<ExactReference> findBodyReferences(const SceneDesc&, const World&, double);
-    friend std::optional<ExactReference> findDisplayReference(const SceneDesc&, const World&,
-                                                              double);
-    friend std::optional<ExactReference> findSupportedReferences(const SceneDesc&, const World&,
-                                                                 double);
-    std::string kind_;
-    double validUntil_ = std::numeric_limits<double>::infinity();
-    int dimension_ = 0;
-    std::vector<Coordinate> coordinates_;
-    std::vector<AxisMotion> axes_;
-    std::vector<Orbit> orbits_;
-    std::vector<Pendulum> pendulums_;
-    std::vector<RigidPendulum> rigidPendulums_;
-    friend std::optional<RigidPendulum> rigidPendulum(const World&, int, const Vec2&);
-    std::vector<Bounce> bounces_;
     // Particles on a line joined by springs to each other and to fixed points: x_i = origin +
     // s_i·axis with M·s'' = −K·s + f, so s(t) = s* + Σ_k φ_k·(a_k·cos ω_k t + b_k·sin ω_k t/ω_k)
     // over the normal modes K·φ = ω²·M·φ (φᵀ·M·φ = 1).
@@ -188,8 +156,6 @@ private:
         Eigen::MatrixXd shapes;  // column k: φ_k
         double along(std::size_t i, double t) const;
     };
-    std::vector<Modes> modes_;
-    friend std::optional<ExactReference> coupledOnALine(const World&, double);
     // A free body (no force but uniform gravity) moving in flights joined where an impulse
     // changes its velocity and spin: x = x_k + v_k·τ + ½·g·τ², angle = θ_k + ω_k·τ, τ = t − t_k.
     struct Flight {
@@ -206,9 +172,43 @@ private:
         Vec2 position(double t) const;
         double angle(double t) const;
     };
-    std::vector<Flight> flights_;
-    friend std::optional<ExactReference> findImpactReference(const SceneDesc&, const World&,
-                                                             double);
+    struct Parts {
+        std::string kind;
+        double validUntil = std::numeric_limits<double>::infinity();
+        int dimension = 0;
+        std::vector<Coordinate> coordinates;
+        std::vector<AxisMotion> axes;
+        std::vector<Orbit> orbits;
+        std::vector<Pendulum> pendulums;
+        std::vector<RigidPendulum> rigidPendulums;
+        std::vector<Bounce> bounces;
+        std::vector<Modes> modes;
+        std::vector<Flight> flights;
+    };
+    // Implicit, so that a recogniser returns its Parts as an std::optional<ExactReference>.
+    ExactReference(Parts parts)
+        : parts_(std::move(parts)) {}  // NOLINT(google-explicit-constructor)
+    const Parts& parts() const { return parts_; }
+
+    // What the reference is, for people: "harmonic oscillator", "Kepler orbit", ….
+    const std::string& kind() const { return parts_.kind; }
+    // Every position coordinate of the world's state (its layout) at time t.
+    Vec positions(double t) const;
+    // One position coordinate at time t, without the others (the phase plot's one curve).
+    double position(int dof, double t) const;
+    // Its rate, by a central difference of the closed form (relative error about 1e-10).
+    double velocity(int dof, double t) const;
+    // Whether the closed form gives this coordinate (findBodyReferences covers only some).
+    bool covers(int dof) const;
+    // The periods of the periodic motions in it (undamped oscillators, pendulums, elliptic
+    // orbits); empty when nothing repeats.
+    std::vector<double> periods() const;
+    // The closed form holds up to this time (the first contact that can happen along it);
+    // +∞ when it holds throughout (findDisplayReference alone answers shorter ones).
+    double validUntil() const { return parts_.validUntil; }
+
+private:
+    Parts parts_;
 };
 
 // The closed form of the scene's motion up to endTime, or nullopt when there is none that is

@@ -78,30 +78,19 @@ double gap(const Mover& a, const Vec2& x, double angle, const Vec2& c, double r,
     return (length > 0.0 ? length : -std::min(depthX, depthY)) - r;
 }
 
-}  // namespace
-
-std::optional<ExactReference> findImpactReference(const SceneDesc& scene, const World& world,
-                                                  double endTime) {
-    if (!world.contacts() || world.settings().contactModel != ContactModel::Impulse ||
-        !world.springs().empty() || !world.joints().empty() || !(endTime > 0.0))
-        return std::nullopt;
-    for (const auto& effect : world.effects())
-        if (effect->name() != effectName::gravity && effect->name() != effectName::springs)
-            return std::nullopt;
-    const Vec2 g = scene.effects.gravity
-                       ? Vec2(scene.effects.gravity->g[0], scene.effects.gravity->g[1])
-                       : Vec2(0.0, 0.0);
+// The bodies of the world: the moving ones, and the fixed ones they must keep away from.
+// False when a moving body is a polygon (no closed form here).
+struct ImpactBodies {
+    std::vector<Mover> movers;
+    std::vector<std::pair<Vec2, double>> fixedCircles;  // pinned particles, static disks, polygons
+    std::vector<const Box*> fixedBoxes;
+};
+bool collectBodies(const World& world, ImpactBodies& out) {
     const Vec& q = world.positions();
     const Vec& u = world.velocities();
-
-    // Exactly two moving bodies; everything else is fixed and must stay out of their reach.
-    std::vector<Mover> movers;
-    std::vector<std::pair<Vec2, double>>
-        fixedCircles;  // pinned particles, static disks and polygons
-    std::vector<const Box*> fixedBoxes;
     for (const Particle& p : world.particles()) {
         if (p.dof < 0) {
-            fixedCircles.emplace_back(p.position, p.radius);
+            out.fixedCircles.emplace_back(p.position, p.radius);
             continue;
         }
         Mover m;
@@ -112,18 +101,18 @@ std::optional<ExactReference> findImpactReference(const SceneDesc& scene, const 
         m.restitution = p.restitution;
         m.x = q.segment<2>(p.dof);
         m.v = u.segment<2>(p.dof);
-        movers.push_back(m);
+        out.movers.push_back(m);
     }
     for (const Box& b : world.boxes()) {
         if (b.dof < 0) {
             if (b.shape == RigidShape::Rectangle)
-                fixedBoxes.push_back(&b);
+                out.fixedBoxes.push_back(&b);
             else
-                fixedCircles.emplace_back(
+                out.fixedCircles.emplace_back(
                     b.position, b.shape == RigidShape::Disk ? b.radius : 0.5 * b.size.norm());
             continue;
         }
-        if (b.shape == RigidShape::Polygon) return std::nullopt;
+        if (b.shape == RigidShape::Polygon) return false;
         Mover m;
         m.dof = b.dof;
         m.rigid = true;
@@ -138,8 +127,55 @@ std::optional<ExactReference> findImpactReference(const SceneDesc& scene, const 
         m.v = u.segment<2>(b.dof);
         m.angle = q[b.dof + 2];
         m.omega = u[b.dof + 2];
-        movers.push_back(m);
+        out.movers.push_back(m);
     }
+    return true;
+}
+
+// The first time gapAt(t) reaches 0 in [0, endTime], or nullopt when it never does. gapAt is the
+// gap between a point moving uniformly relative to a convex shape and that shape: convex in
+// time, so its least value is found by golden sections, then the first touch before it by
+// bisection.
+template <typename Gap>
+std::optional<double> firstTouch(const Gap& gapAt, double endTime) {
+    double lo = 0.0, hi = endTime;
+    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+    for (int i = 0; i < 200 && hi - lo > 1e-15 * endTime; ++i) {
+        const double m1 = hi - ratio * (hi - lo), m2 = lo + ratio * (hi - lo);
+        if (gapAt(m1) < gapAt(m2))
+            hi = m2;
+        else
+            lo = m1;
+    }
+    if (gapAt(lo) > 0.0) return std::nullopt;
+    double apart = 0.0, touching = lo;
+    for (int i = 0; i < 200 && touching - apart > 1e-15 * endTime; ++i) {
+        const double mid = 0.5 * (apart + touching);
+        (gapAt(mid) > 0.0 ? apart : touching) = mid;
+    }
+    return touching;
+}
+
+}  // namespace
+
+std::optional<ExactReference> findImpactReference(const SceneDesc& scene, const World& world,
+                                                  double endTime) {
+    if (!world.contacts() || world.settings().contactModel != ContactModel::Impulse ||
+        !world.springs().empty() || !world.joints().empty() || !(endTime > 0.0))
+        return std::nullopt;
+    for (const auto& effect : world.effects())
+        if (effect->name() != effectName::gravity && effect->name() != effectName::springs)
+            return std::nullopt;
+    const Vec2 g = scene.effects.gravity
+                       ? Vec2(scene.effects.gravity->g[0], scene.effects.gravity->g[1])
+                       : Vec2(0.0, 0.0);
+
+    // Exactly two moving bodies; everything else is fixed and must stay out of their reach.
+    ImpactBodies bodies;
+    if (!collectBodies(world, bodies)) return std::nullopt;
+    std::vector<Mover>& movers = bodies.movers;
+    const auto& fixedCircles = bodies.fixedCircles;
+    const auto& fixedBoxes = bodies.fixedBoxes;
     if (movers.size() != 2) return std::nullopt;
     // A is the shape, B the circle that hits it. Two particles meet only with
     // particle_collisions, an effect left out above; a rectangle's gap is a convex function of
@@ -155,24 +191,9 @@ std::optional<ExactReference> findImpactReference(const SceneDesc& scene, const 
         return gap(a, flight(a, t), a.angle, flight(b, t), b.radius, nullptr, nullptr);
     };
     if (!(gapAt(0.0) > 0.0)) return std::nullopt;
-    // The distance from a point moving uniformly relative to a convex shape is convex in time:
-    // its least value by golden sections, then the first touch before it by bisection.
-    double lo = 0.0, hi = endTime;
-    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-    for (int i = 0; i < 200 && hi - lo > 1e-15 * endTime; ++i) {
-        const double m1 = hi - ratio * (hi - lo), m2 = lo + ratio * (hi - lo);
-        if (gapAt(m1) < gapAt(m2))
-            hi = m2;
-        else
-            lo = m1;
-    }
-    if (gapAt(lo) > 0.0) return std::nullopt;  // they never meet: ignoringContacts' case
-    double apart = 0.0, touching = lo;
-    for (int i = 0; i < 200 && touching - apart > 1e-15 * endTime; ++i) {
-        const double mid = 0.5 * (apart + touching);
-        (gapAt(mid) > 0.0 ? apart : touching) = mid;
-    }
-    const double tc = touching;
+    const std::optional<double> touch = firstTouch(gapAt, endTime);
+    if (!touch) return std::nullopt;  // they never meet: ignoringContacts' case
+    const double tc = *touch;
 
     // The impulse (ContactStage: e = max(e₁, e₂), μ = √(μ₁·μ₂); ContactBounce: no bounce
     // below the threshold·(1 − e)).
@@ -209,16 +230,16 @@ std::optional<ExactReference> findImpactReference(const SceneDesc& scene, const 
                                                      std::abs(relative2.dot(tangent)) > 1e-9 * -vn))
         return std::nullopt;
 
-    ExactReference ref;
-    ref.dimension_ = world.dimension();
-    ref.kind_ = "impact";
+    ExactReference::Parts ref;
+    ref.dimension = world.dimension();
+    ref.kind = "impact";
     for (const auto& [m0, m1] : {std::pair{a, a2}, std::pair{b, b2}})
-        ref.flights_.push_back(
+        ref.flights.push_back(
             {m0.dof,
              m0.rigid,
              g,
              {{0.0, m0.x, m0.v, m0.angle, m0.omega}, {tc, m1.x, m1.v, m1.angle, m1.omega}}});
-    const ExactReference::Flight &fa = ref.flights_[0], &fb = ref.flights_[1];
+    const ExactReference::Flight &fa = ref.flights[0], &fb = ref.flights[1];
 
     // They must not meet again, and neither may come within reach of anything fixed.
     constexpr double kMargin = 0.02;  // m, the contact stage's speculative distance

@@ -39,39 +39,11 @@ struct Pair {
     PairKind kind;
 };
 
-OrderAssessment assessOne(const AccuracyResult& result, const std::string& name) {
-    OrderAssessment a;
-    a.integrator = name;
-    const IntegratorInfo* info = findIntegrator(name);
-    a.theory = info ? info->order : 0;
-
-    std::vector<const AccuracyRecord*> runs;
-    for (const AccuracyRecord& r : result.records)
-        if (r.integrator == name && !r.tolerance) runs.push_back(&r);
-    if (info && info->adaptive) {
-        a.note = "adaptive: order not measured";
-        a.explanation =
-            "This method chooses its own steps to meet a tolerance, so there is no "
-            "single step size to measure an order against; compare its points in the "
-            "diagram instead.";
-        return a;
-    }
-    if (result.contacts) {
-        a.note = "contacts: order not measured";
-        a.explanation =
-            "In a scene with contacts the moment of each impact is caught only to "
-            "within a step, which makes every method about first order. Compare the "
-            "errors and the cost, not orders.";
-        return a;
-    }
-    if (!result.error.empty() || !std::any_of(runs.begin(), runs.end(), [](const auto* r) {
-            return !std::isnan(r->positionError);
-        })) {
-        a.note = "no reference: order not measured";
-        a.explanation = "Without a reference solution there is no error to measure.";
-        return a;
-    }
-
+// The order over the runs of one method: sorted coarsest step first, each pair of neighbouring
+// steps gives a slope; the slopes are sorted into unstable, round-off floor and in range, and
+// the asymptotic range at the fine end gives the measured order.
+void measureOrder(OrderAssessment& a, std::vector<const AccuracyRecord*>& runs,
+                  const AccuracyResult& result) {
     // Coarsest step first; a diverged run is unstable at its step.
     std::sort(runs.begin(), runs.end(),
               [](const AccuracyRecord* x, const AccuracyRecord* y) { return x->dt > y->dt; });
@@ -132,8 +104,10 @@ OrderAssessment assessOne(const AccuracyResult& result, const std::string& name)
     }
     a.pairsInRange = static_cast<int>(inRange.size());
     if (!inRange.empty()) a.measured = median(inRange);
+}
 
-    // The notes: what the measured number is, then what was left out and why.
+// The notes: what the measured number is, then what was left out and why.
+void explain(OrderAssessment& a, const AccuracyResult& result, std::size_t runCount) {
     std::ostringstream note, why;
     const std::string theory = std::to_string(a.theory);
     if (a.measured) {
@@ -170,7 +144,7 @@ OrderAssessment assessOne(const AccuracyResult& result, const std::string& name)
         a.kind = OrderAssessment::Kind::Unstable;
         note << "unstable at every dt studied";
         why << "At every step studied the method is unstable: "
-            << (a.diverged == static_cast<int>(runs.size())
+            << (a.diverged == static_cast<int>(runCount)
                     ? "every run blew up (diverged)"
                     : "the error does not shrink as dt shrinks, or the run blew up")
             << ", so no order can be measured. Try much smaller steps or an implicit method.";
@@ -208,6 +182,44 @@ OrderAssessment assessOne(const AccuracyResult& result, const std::string& name)
     }
     a.note = note.str();
     a.explanation = why.str();
+}
+
+OrderAssessment assessOne(const AccuracyResult& result, const std::string& name) {
+    OrderAssessment a;
+    a.integrator = name;
+    const IntegratorInfo* info = findIntegrator(name);
+    a.theory = info ? info->order : 0;
+
+    std::vector<const AccuracyRecord*> runs;
+    for (const AccuracyRecord& r : result.records)
+        if (r.integrator == name && !r.tolerance) runs.push_back(&r);
+    if (info && info->adaptive) {
+        a.note = "adaptive: order not measured";
+        a.explanation =
+            "This method chooses its own steps to meet a tolerance, so there is no "
+            "single step size to measure an order against; compare its points in the "
+            "diagram instead.";
+        return a;
+    }
+    if (result.contacts) {
+        a.note = "contacts: order not measured";
+        a.explanation =
+            "In a scene with contacts the moment of each impact is caught only to "
+            "within a step, which makes every method about first order. Compare the "
+            "errors and the cost, not orders.";
+        return a;
+    }
+    if (!result.error.empty() || !std::any_of(runs.begin(), runs.end(), [](const auto* r) {
+            return !std::isnan(r->positionError);
+        })) {
+        a.note = "no reference: order not measured";
+        a.explanation = "Without a reference solution there is no error to measure.";
+        return a;
+    }
+
+    measureOrder(a, runs, result);
+    explain(a, result, runs.size());
+
     return a;
 }
 

@@ -2,6 +2,7 @@
 
 #include "app/accuracy/AccuracyStudy.h"
 #include "app/cli/Cli.h"
+#include "app/cli/CommandLine.h"
 #include "app/cli/Interrupt.h"
 #include "app/io/ChartFile.h"
 #include "app/io/NumberFormat.h"
@@ -98,26 +99,21 @@ QString parseNumbers(const QString& option, const QString& text, double upper,
 }
 
 QString parseOptions(const QStringList& args, AccuracyCliOptions& o) {
-    static const QStringList withValue{"--integrators", "--dt",  "--duration",
-                                       "--tolerances",  "--csv", "--plot"};
+    CommandLine line;
+    if (const QString error = parseCommandLine(
+            QStringLiteral("accuracy"),
+            {{"json", 0}, {"integrators"}, {"dt"}, {"duration"}, {"tolerances"}, {"csv"}, {"plot"}},
+            args, line);
+        !error.isEmpty())
+        return error;
     QStringList outputsSeen;
-    for (int i = 0; i < args.size(); ++i) {
-        const QString& a = args[i];
-        if (!a.startsWith(QLatin1String("--")) || a == QLatin1String("-")) {
-            if (!o.scene.isEmpty())
-                return QStringLiteral("unexpected argument \"%1\" (the scene is \"%2\")")
-                    .arg(a, o.scene);
-            o.scene = a;
-            continue;
-        }
-        if (a == QLatin1String("--json")) {
+    for (const GivenOption& option : line.options) {
+        if (option.is("--json")) {
             o.json = true;
             continue;
         }
-        if (!withValue.contains(a))
-            return QStringLiteral("unknown option \"%1\"; see phasebox-cli accuracy --help").arg(a);
-        if (i + 1 >= args.size()) return QStringLiteral("%1 needs a value").arg(a);
-        const QString v = args[++i];
+        const QString& a = option.name;
+        const QString& v = option.value();
         QString error;
         if (a == QLatin1String("--integrators")) {
             o.study.integrators.clear();
@@ -148,7 +144,7 @@ QString parseOptions(const QStringList& args, AccuracyCliOptions& o) {
             if (d.size() != 1)
                 return QStringLiteral("--duration takes one number (got \"%1\")").arg(v);
             // The scene's own bound, named as the option's: the study would otherwise refuse
-            // it as the scene's simulation.duration (issue #38).
+            // it as the scene's simulation.duration, an option the user never gave.
             static_assert(SceneLimits::kMaxDuration == 1e6);
             if (d.front() > SceneLimits::kMaxDuration)
                 return QStringLiteral("--duration: must be > 0 and <= 1e6 (got %1)").arg(v);
@@ -164,7 +160,8 @@ QString parseOptions(const QStringList& args, AccuracyCliOptions& o) {
             o.plot = v;
         }
     }
-    if (o.scene.isEmpty()) return QStringLiteral("accuracy needs a SCENE file");
+    if (QString error = takeScene(QStringLiteral("accuracy"), line, o.scene); !error.isEmpty())
+        return error;
     return {};
 }
 
@@ -299,23 +296,23 @@ bool stderrIsTerminal() {
 }  // namespace
 
 int accuracyCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
-    if (args.contains(QStringLiteral("--help")) || args.contains(QStringLiteral("-h"))) {
+    if (asksForHelp(args)) {
         out << kAccuracyUsage;
         return kSuccess;
     }
     AccuracyCliOptions o;
     if (const QString error = parseOptions(args, o); !error.isEmpty()) return fail(err, error);
-    if (const QString error = checkOutputs(
-            o.scene, {{QStringLiteral("--json"), o.json ? QStringLiteral("-") : QString()},
-                      {QStringLiteral("--csv"), o.csv},
-                      {QStringLiteral("--plot"), o.plot}});
+    if (const QString error =
+            checkOutputs(o.scene, {{"--json", o.json ? QStringLiteral("-") : QString()},
+                                   {"--csv", o.csv},
+                                   {"--plot", o.plot}});
         !error.isEmpty())
         return fail(err, error);
     const SceneLoadResult loaded = SceneIO::load(o.scene);
     if (!loaded.ok()) return fail(err, loaded.errorText());
     const SceneDesc& scene = *loaded.scene;
     const QString sceneName = scene.name.empty() ? o.scene : QString::fromStdString(scene.name);
-    // Each dt's run is refused as `run` refuses it (issue #38: --dt 1e-10 ran unbounded). The
+    // Each dt's run is refused as `run` refuses it: a tiny --dt would otherwise run unbounded. The
     // default list is the scene's dt, which `run` takes, and smaller by at most 32.
     const double duration = o.study.duration > 0.0 ? o.study.duration : scene.simulation.duration;
     for (const double dt : o.study.dts)

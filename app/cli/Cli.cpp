@@ -5,6 +5,9 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QRegularExpression>
+
+#include <algorithm>
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
@@ -123,9 +126,10 @@ QString checkOutputs(const QString& scene, const QList<QPair<QString, QString>>&
 bool needsGui(const QStringList& arguments) {
     // A clip is drawn by the canvas and Qt Charts, which draw through widgets.
     if (!arguments.isEmpty() && arguments.first() == QLatin1String("render")) return true;
-    return arguments.contains(QStringLiteral("--plot-energy")) ||
-           arguments.contains(QStringLiteral("--plot-phase")) ||
-           arguments.contains(QStringLiteral("--plot"));
+    // The plot options in every spelling the parser takes: --plot F, --plot=F, -plot F.
+    static const QRegularExpression plot(QStringLiteral("^--?plot(-energy|-phase)?(=|$)"));
+    return std::any_of(arguments.begin(), arguments.end(),
+                       [](const QString& a) { return plot.match(a).hasMatch(); });
 }
 
 int run(const QStringList& arguments, QTextStream& out, QTextStream& err) {

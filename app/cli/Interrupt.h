@@ -3,7 +3,8 @@
 // the results so far are written, and the exit status is 130.
 //
 // installInterruptHandlers() is the first thing main() does, so a signal that comes while the
-// scene loads is not lost (it was, in the first ~100 ms, before issue #38). The first signal only
+// scene loads is not lost (installed later, a Ctrl-C while loading would kill the program with
+// nothing written). The first signal only
 // sets a flag that the commands read (after loading, after building, between steps); a second
 // one half a second or more later ends the program at once. The handlers are installed without
 // SA_RESTART, so a write blocked on a full pipe returns EINTR and the output layer

@@ -2,6 +2,7 @@
 // (CONTRACT.md §8), frame by frame with the canvas's own drawing code (app/clips).
 
 #include "app/cli/Cli.h"
+#include "app/cli/CommandLine.h"
 #include "app/cli/Interrupt.h"
 #include "app/clips/ClipRenderer.h"
 #include "app/io/NumberFormat.h"
@@ -43,33 +44,28 @@ struct RenderOptions {
 };
 
 QString parseRenderOptions(const QStringList& args, RenderOptions& o) {
+    CommandLine line;
+    if (const QString error = parseCommandLine(
+            QStringLiteral("render"),
+            {{"plots", 0}, {"out"}, {"from"}, {"duration"}, {"fps"}, {"size"}}, args, line);
+        !error.isEmpty())
+        return error;
     QStringList outputsSeen;
-    for (int i = 0; i < args.size(); ++i) {
-        const QString& a = args[i];
-        if (!a.startsWith(QLatin1String("--"))) {
-            if (!o.scene.isEmpty())
-                return QStringLiteral("unexpected argument \"%1\" (the scene is \"%2\")")
-                    .arg(a, o.scene);
-            o.scene = a;
-            continue;
-        }
-        if (a == QLatin1String("--plots")) {
+    for (const GivenOption& option : line.options) {
+        if (option.is("--plots")) {
             o.plots = true;
             continue;
         }
-        static const QStringList known{"--out", "--from", "--duration", "--fps", "--size"};
-        if (!known.contains(a))
-            return QStringLiteral("unknown option \"%1\"; see phasebox-cli render --help").arg(a);
-        if (i + 1 >= args.size()) return QStringLiteral("%1 needs a value").arg(a);
-        const QString v = args[++i];
+        const QString& a = option.name;
+        const QString& v = option.value();
         bool ok = false;
-        if (a == QLatin1String("--out")) {
+        if (option.is("--out")) {
             if (QString error = noteOutputOption(a, v, outputsSeen); !error.isEmpty()) return error;
             o.out = v;
-        } else if (a == QLatin1String("--fps")) {
+        } else if (option.is("--fps")) {
             o.fps = v.toInt(&ok);
             if (!ok) return QStringLiteral("--fps: must be an integer (got \"%1\")").arg(v);
-        } else if (a == QLatin1String("--size")) {
+        } else if (option.is("--size")) {
             static const QRegularExpression pattern(QStringLiteral("^(\\d{1,5})[xX](\\d{1,5})$"));
             const QRegularExpressionMatch m = pattern.match(v);
             if (!m.hasMatch())
@@ -80,10 +76,11 @@ QString parseRenderOptions(const QStringList& args, RenderOptions& o) {
             const double d = v.toDouble(&ok);
             if (!ok || !std::isfinite(d))
                 return QStringLiteral("%1: must be a number (got \"%2\")").arg(a, v);
-            (a == QLatin1String("--from") ? o.from : o.duration) = d;
+            (option.is("--from") ? o.from : o.duration) = d;
         }
     }
-    if (o.scene.isEmpty()) return QStringLiteral("render needs a SCENE file");
+    if (QString error = takeScene(QStringLiteral("render"), line, o.scene); !error.isEmpty())
+        return error;
     if (o.out.isEmpty()) return QStringLiteral("render needs --out FILE.mp4 or --out FILE.gif");
     return {};
 }
@@ -91,7 +88,7 @@ QString parseRenderOptions(const QStringList& args, RenderOptions& o) {
 }  // namespace
 
 int renderCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
-    if (args.contains(QStringLiteral("--help")) || args.contains(QStringLiteral("-h"))) {
+    if (asksForHelp(args)) {
         out << kRenderUsage;
         return kSuccess;
     }
@@ -102,8 +99,7 @@ int renderCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     if (!format)
         return fail(err, QStringLiteral("--out %1: unknown clip format; known: %2")
                              .arg(o.out, clipFormatList()));
-    if (const QString error = checkOutputs(o.scene, {{QStringLiteral("--out"), o.out}});
-        !error.isEmpty())
+    if (const QString error = checkOutputs(o.scene, {{"--out", o.out}}); !error.isEmpty())
         return fail(err, error);
 
     SceneLoadResult loaded = SceneIO::load(o.scene);

@@ -1,6 +1,7 @@
 // phasebox-cli run: simulate a scene and report (CONTRACT.md §4).
 
 #include "app/cli/Cli.h"
+#include "app/cli/CommandLine.h"
 #include "app/cli/Interrupt.h"
 #include "app/io/ChartFile.h"
 #include "app/io/NumberFormat.h"
@@ -105,32 +106,33 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
         if (!ok) return QStringLiteral("%1: must be an integer (got \"%2\")").arg(option, text);
         return {};
     };
+    CommandLine line;
+    if (const QString error =
+            parseCommandLine(QStringLiteral("run"),
+                             {{"json", 0},
+                              {"integrator"},
+                              {"dt"},
+                              {"duration"},
+                              {"tolerance"},
+                              {"substeps"},
+                              {"every"},
+                              {"csv"},
+                              {"track"},
+                              {"plot-energy"},
+                              {"plot-phase", 2, "--plot-phase needs ID.COORD and FILE"},
+                              {"probe"},
+                              {"contact-model"}},
+                             args, line);
+        !error.isEmpty())
+        return error;
     QStringList outputsSeen;
-    for (int i = 0; i < args.size(); ++i) {
-        const QString& a = args[i];
-        if (!a.startsWith(QLatin1String("--"))) {
-            if (!o.scene.isEmpty())
-                return QStringLiteral("unexpected argument \"%1\" (the scene is \"%2\")")
-                    .arg(a, o.scene);
-            o.scene = a;
-            continue;
-        }
-        if (a == QLatin1String("--json")) {
+    for (const GivenOption& option : line.options) {
+        if (option.is("--json")) {
             o.json = true;
             continue;
         }
-        static const QStringList known{"--integrator", "--dt",       "--duration",
-                                       "--tolerance",  "--substeps", "--every",
-                                       "--csv",        "--track",    "--plot-energy",
-                                       "--plot-phase", "--probe",    "--contact-model"};
-        if (!known.contains(a))
-            return QStringLiteral("unknown option \"%1\"; see phasebox-cli run --help").arg(a);
-        const int values = a == QLatin1String("--plot-phase") ? 2 : 1;
-        if (i + values >= args.size())
-            return QStringLiteral("%1 needs %2")
-                .arg(a,
-                     values == 2 ? QStringLiteral("ID.COORD and FILE") : QStringLiteral("a value"));
-        const QString v = args[++i];
+        const QString& a = option.name;
+        const QString& v = option.value();
         QString error;
         double d = 0.0;
         int n = 0;
@@ -188,14 +190,13 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
             o.plotEnergy = v;
         } else if (a == QLatin1String("--plot-phase")) {
             o.phaseTarget = v;
-            o.plotPhase = args[++i];
+            o.plotPhase = option.values[1];
             if (!(error = noteOutputOption(a, o.plotPhase, outputsSeen)).isEmpty()) return error;
             if (!isChartPath(o.plotPhase, &error)) return error;
-        } else {
-            return QStringLiteral("unknown option \"%1\"; see phasebox-cli run --help").arg(a);
         }
     }
-    if (o.scene.isEmpty()) return QStringLiteral("run needs a SCENE file");
+    if (QString error = takeScene(QStringLiteral("run"), line, o.scene); !error.isEmpty())
+        return error;
     return {};
 }
 
@@ -353,7 +354,8 @@ QString jsonPair(const Vec2& v) {
 
 // The --json report, with "objects" last and written object by object: a million cloth
 // nodes held as one QJsonObject, then as its text, then as that text in a QString, cost
-// several times the memory of the run itself (issue #20 allows --json 1.5 times at most).
+// several times the memory of the run itself; streamed, --json adds little to the run's own
+// (docs/robustness.md gives the bound the tests pin).
 void writeJsonReport(QTextStream& out, const QJsonObject& report, const World& world) {
     QByteArray head = QJsonDocument(report).toJson(QJsonDocument::Indented);
     head.truncate(head.lastIndexOf('}'));
@@ -401,20 +403,310 @@ bool writePlot(QChart* chart, const QString& path, QTextStream& err) {
     return false;
 }
 
+// The probes of a run (CONTRACT §7): each sampled at every step for its statistics, whatever
+// --every thins the CSV to.
+struct ProbeSet {
+    QStringList names;  // as given, the scene's saved instruments first
+    std::vector<Probe> probes;
+    std::vector<PeriodTracker> stats;
+    std::vector<double> values;
+    void sample(const World& world) {
+        for (std::size_t i = 0; i < probes.size(); ++i) {
+            values[i] = evaluateProbe(world, probes[i]);
+            stats[i].add(world.time(), values[i]);
+        }
+    }
+};
+
+// What the step loop measured, for the report and the summary.
+struct RunRecord {
+    long long steps = 0;  // asked for
+    long long done = 0;   // of the state shown
+    bool diverged = false, interrupted = false;
+    double wallSeconds = 0.0;
+    double initialEnergy = 0.0;
+    // Mean and max over every step; the median over an evenly thinned sample once a run passes
+    // 2^21 steps (exact below that).
+    BoundedSeries<double> stepMs{std::size_t(1) << 20};
+    double stepMsSum = 0.0, stepMsMax = 0.0;
+    long long stepsTimed = 0;
+    // The joints' largest errors over the run, at the end of every step (CONTRACT §6).
+    JointErrors worstJoint;
+};
+
+// The --json report but its "objects" (writeJsonReport adds them).
+QJsonObject jsonReport(const World& world, const SimulationDesc& sim, double dt, const RunRecord& r,
+                       const ProbeSet& probes) {
+    const EnergyLedger& e = world.energy();
+    const double stepsRun = static_cast<double>(std::max<long long>(1, r.stepsTimed));
+    QJsonArray effects;
+    for (const EffectCost& cost : world.effectCosts())
+        effects.append(QJsonObject{{"name", QString::fromStdString(cost.name)},
+                                   {"ms_per_step", cost.seconds * 1000.0 / stepsRun}});
+    // The named stages of the step in the order they run (CONTRACT.md §7); a stage the
+    // scene never needs (collide, with nothing to touch) is left out.
+    QJsonArray stages;
+    const StepProfile& profile = world.stepProfile();
+    for (int i = 0; i < StepProfile::kStageCount; ++i)
+        if (profile.ran(i))
+            stages.append(
+                QJsonObject{{"name", stageName(i)}, {"ms_per_step", profile.msPerStep(i)}});
+    const double mean = r.stepsTimed == 0 ? 0.0 : r.stepMsSum / static_cast<double>(r.stepsTimed);
+    QJsonObject report{
+        {"integrator", QString::fromStdString(sim.integrator)},
+        {"dt", dt},
+        {"substeps", sim.substeps},
+        {"steps", static_cast<double>(r.done)},
+        {"sim_time", world.time()},
+        {"wall_seconds", r.wallSeconds},
+        {"step_ms",
+         QJsonObject{{"median", median(r.stepMs.values())}, {"mean", mean}, {"max", r.stepMsMax}}},
+        {"stages", stages},
+        {"energy", QJsonObject{{"initial", r.initialEnergy},
+                               {"kinetic", e.kinetic},
+                               {"potential", e.potential},
+                               {"work_nc", e.workNc},
+                               {"drift", e.drift},
+                               {"correction", e.correction},
+                               {"max_abs_drift", e.maxAbsDrift}}},
+        {"diverged", r.diverged},
+        {"sleeping", world.sleepingBodies()},
+        {"effects", effects},
+        {"force_evaluations", static_cast<double>(world.forceEvaluations())},
+    };
+    if (!probes.probes.empty()) {
+        // final is the probe in the state the report shows (after a divergence, the
+        // restored one, as `objects`); the rest are over every step that ran.
+        QJsonObject measured;
+        for (std::size_t i = 0; i < probes.probes.size(); ++i) {
+            const ProbeSummary st = probes.stats[i].summary();
+            measured.insert(probes.names[i],
+                            QJsonObject{{"final", evaluateProbe(world, probes.probes[i])},
+                                        {"min", st.min},
+                                        {"max", st.max},
+                                        {"mean", st.mean},
+                                        {"period", st.period ? QJsonValue(*st.period)
+                                                             : QJsonValue(QJsonValue::Null)}});
+        }
+        report.insert("probes", measured);
+    }
+    if (world.jointSolver())
+        report.insert("constraints", QJsonObject{{"max_error", r.worstJoint.position},
+                                                 {"final_error", world.jointErrors().position},
+                                                 {"max_angle_error", r.worstJoint.angle}});
+    if (world.integrator().info().implicit) {
+        // The implicit solve's work: Newton iterations, linear solves and (for large systems)
+        // conjugate-gradient iterations per step, and the last relative residual.
+        const IntegratorStats& st = world.integrator().stats();
+        report.insert(
+            "implicit_solver",
+            QJsonObject{
+                {"last_newton_iterations", st.lastNewtonIterations},
+                {"linear_solves_per_step", static_cast<double>(st.linearSolves) / stepsRun},
+                {"cg_iterations_per_step", static_cast<double>(st.linearIterations) / stepsRun},
+                {"last_cg_iterations", st.lastLinearIterations},
+                {"last_cg_residual", st.lastLinearResidual}});
+    }
+    if (r.diverged) {
+        const Divergence& d = *world.divergence();
+        report.insert("divergence", QJsonObject{{"time", d.time},
+                                                {"object", QString::fromStdString(d.objectId)},
+                                                {"what", QString::fromStdString(d.what)},
+                                                {"restored_time", d.restoredTime},
+                                                {"message", QString::fromStdString(d.message())}});
+    }
+    if (r.interrupted) report.insert("interrupted", true);
+    return report;
+}
+
+// The summary on standard output when no output took it (CONTRACT §4).
+void writeSummary(QTextStream& out, const QString& sceneName, const World& world,
+                  const SimulationDesc& sim, double dt, const RunRecord& r, const ProbeSet& probes,
+                  const std::vector<Tracked>& tracked) {
+    const EnergyLedger& e = world.energy();
+    const double stepsRun = static_cast<double>(std::max<long long>(1, r.stepsTimed));
+    out << "scene:      " << sceneName << "\n"
+        << "integrator: " << QString::fromStdString(sim.integrator) << ", dt = " << formatNumber(dt)
+        << " s, " << sim.substeps << " sub-step(s)\n"
+        << "ran:        " << r.done << " steps to t = " << formatNumber(world.time()) << " s in "
+        << QString::number(r.wallSeconds, 'f', 3) << " s ("
+        << QString::number(median(r.stepMs.values()), 'g', 3) << " ms per step, median)\n"
+        << "energy:     initial " << QString::number(r.initialEnergy, 'g', 6) << " J; now kinetic "
+        << QString::number(e.kinetic, 'g', 6) << ", potential "
+        << QString::number(e.potential, 'g', 6) << ", work_nc " << QString::number(e.workNc, 'g', 6)
+        << ", correction " << QString::number(e.correction, 'g', 6) << " J\n"
+        << "drift:      " << QString::number(e.drift, 'g', 3) << " J (largest |drift| "
+        << QString::number(e.maxAbsDrift, 'g', 3) << " J)\n";
+    if (world.jointSolver())
+        out << "joints:     largest error " << QString::number(r.worstJoint.position, 'g', 3)
+            << " m, " << QString::number(r.worstJoint.angle, 'g', 3) << " rad; at the end "
+            << QString::number(world.jointErrors().position, 'g', 3) << " m\n";
+    out << "effects:   ";
+    if (world.effectCosts().empty()) out << " none";
+    for (const EffectCost& cost : world.effectCosts())
+        out << " " << QString::fromStdString(cost.name) << " "
+            << QString::number(cost.seconds * 1000.0 / stepsRun, 'g', 3) << " ms/step;";
+    out << "\nstages:    ";
+    const StepProfile& profile = world.stepProfile();
+    for (int i = 0; i < StepProfile::kStageCount; ++i)
+        if (profile.ran(i))
+            out << " " << stageName(i) << " " << QString::number(profile.msPerStep(i), 'g', 3)
+                << " ms/step;";
+    out << "\n";
+    for (std::size_t i = 0; i < probes.probes.size(); ++i) {
+        const ProbeSummary st = probes.stats[i].summary();
+        out << "probe " << probes.names[i] << ": final "
+            << QString::number(evaluateProbe(world, probes.probes[i]), 'g', 6) << ", min "
+            << QString::number(st.min, 'g', 6) << ", max " << QString::number(st.max, 'g', 6)
+            << ", mean " << QString::number(st.mean, 'g', 6) << ", period "
+            << (st.period ? QString::number(*st.period, 'g', 6) + QStringLiteral(" s")
+                          : QStringLiteral("none"))
+            << "\n";
+    }
+    for (const Tracked& t : tracked) {
+        const ui::PhaseSample x = phaseOf(world, t, 0), y = phaseOf(world, t, 1);
+        out << "  " << t.id << ": position (" << QString::number(x.coordinate, 'g', 6) << ", "
+            << QString::number(y.coordinate, 'g', 6) << "), velocity ("
+            << QString::number(x.velocity, 'g', 6) << ", " << QString::number(y.velocity, 'g', 6)
+            << ")\n";
+    }
+}
+
+// The objects of the CSV: --track's, else every particle not in a cloth and every rigid body.
+QString trackedObjects(const World& world, const RunOptions& o, std::vector<Tracked>& tracked) {
+    if (o.track) {
+        for (const QString& id : *o.track) {
+            const auto t = findObject(world, id);
+            if (!t) return QStringLiteral("--track: unknown object id \"%1\"").arg(id);
+            tracked.push_back(*t);
+        }
+    } else {
+        for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
+            if (world.particles()[i].cloth < 0)
+                tracked.push_back({QString::fromStdString(world.particles()[i].id), false, i});
+        for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
+            tracked.push_back({QString::fromStdString(world.boxes()[i].id), true, i});
+    }
+    return {};
+}
+
+// The series the plots draw, sampled as the run goes.
+struct PlotSamples {
+    bool energyPlot = false;
+    std::optional<Tracked> phaseObject;
+    int phaseCoordinate = 0;  // 0 x, 1 y, 2 angle
+    // The charts decimate to a few thousand points, so 2·2^16 samples lose nothing visible.
+    BoundedSeries<ui::EnergySample> energy{std::size_t(1) << 16};
+    BoundedSeries<ui::PhaseSample> phase{std::size_t(1) << 16};
+    bool any() const { return energyPlot || phaseObject; }
+    void sample(const World& world) {
+        if (energyPlot) {
+            const EnergyLedger& e = world.energy();
+            energy.push({world.time(), e.kinetic, e.potential, e.workNc, e.drift, e.correction});
+        }
+        if (phaseObject) phase.push(phaseOf(world, *phaseObject, phaseCoordinate));
+    }
+};
+
+// --plot-phase's ID.COORD: the object and its coordinate, or the message refusing it.
+QString phaseTarget(const World& world, const RunOptions& o, PlotSamples& plots) {
+    const qsizetype dot = o.phaseTarget.lastIndexOf(QLatin1Char('.'));
+    const QString id = o.phaseTarget.left(dot), coord = o.phaseTarget.mid(dot + 1);
+    plots.phaseObject = dot > 0 ? findObject(world, id) : std::nullopt;
+    if (!plots.phaseObject)
+        return QStringLiteral(
+                   "--plot-phase: unknown object \"%1\" (expected ID.COORD, e.g. ball.x)")
+            .arg(o.phaseTarget);
+    if (coord == QLatin1String("x"))
+        plots.phaseCoordinate = 0;
+    else if (coord == QLatin1String("y"))
+        plots.phaseCoordinate = 1;
+    else if (coord == QLatin1String("angle") && plots.phaseObject->isBox)
+        plots.phaseCoordinate = 2;
+    else
+        return QStringLiteral("--plot-phase: unknown coordinate \"%1\"; known: x, y%2")
+            .arg(coord, plots.phaseObject->isBox ? QStringLiteral(", angle") : QString());
+    return {};
+}
+
+// The probes, refused before anything runs or is written. The lesson's saved instruments come
+// first, as if given with --probe (one given again is not repeated).
+QString parseProbes(const World& world, const SceneDesc& scene, const QStringList& given,
+                    ProbeSet& probes) {
+    for (const std::string& text : scene.instruments.readProbes())
+        probes.names << QString::fromStdString(text);
+    for (const QString& text : given)
+        if (!probes.names.contains(text)) probes.names << text;
+    for (const QString& text : std::as_const(probes.names)) {
+        ProbeParse parsed = parseProbe(world, text.toStdString());
+        if (!parsed) return QString::fromStdString(parsed.error);
+        probes.probes.push_back(std::move(*parsed.probe));
+    }
+    probes.stats.resize(probes.probes.size());
+    probes.values.resize(probes.probes.size());
+    return {};
+}
+
+// Steps the world r.steps times, or until it diverges, a CSV write fails (a disk that filled, a
+// reader gone: exit 3, not at the end of the run) or a signal comes. The CSV (when csv is not
+// null) gets a row every `every` steps and at the last; an interrupted run's last row is its
+// final state, as at the end of a full one.
+void runSteps(World& world, RunRecord& r, ProbeSet& probes, PlotSamples& plots, CsvOutput* csv,
+              int every, const std::vector<Tracked>& tracked) {
+    r.initialEnergy = world.energy().initial;
+    world.resetProfile();
+    using Clock = std::chrono::steady_clock;
+    const auto wallStart = Clock::now();
+    for (long long k = 1; k <= r.steps; ++k) {
+        const auto start = Clock::now();
+        const bool ok = world.step();
+        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        if (r.stepMs.due(k)) r.stepMs.push(ms);
+        r.stepMsSum += ms;
+        r.stepMsMax = std::max(r.stepMsMax, ms);
+        ++r.stepsTimed;
+        if (!ok) {
+            r.diverged = true;
+            break;
+        }
+        r.done = k;
+        probes.sample(world);
+        if (world.jointSolver()) {
+            const JointErrors now = world.jointErrors();
+            r.worstJoint.position = std::max(r.worstJoint.position, now.position);
+            r.worstJoint.angle = std::max(r.worstJoint.angle, now.angle);
+        }
+        r.interrupted = k < r.steps && cli::interrupted();
+        const bool last = k == r.steps || r.interrupted;
+        if (csv && (k % every == 0 || last)) {
+            writeCsvRow(csv->stream(), world, tracked, probes.values);
+            if (csv->failed()) break;
+        }
+        if (plots.any() && (plots.energy.due(k) || last)) plots.sample(world);
+        if (r.interrupted) break;
+    }
+    // A signal that came during the write that ended the loop.
+    if (!r.diverged && r.done < r.steps && cli::interrupted()) r.interrupted = true;
+    r.wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
+    // A runaway is confirmed a few steps after it began and the world goes back to where it
+    // began: report the steps of the state that is shown, as sim_time does.
+    if (r.diverged) r.done = world.stepCount();
+}
+
 }  // namespace
 
 int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
-    if (args.contains(QStringLiteral("--help")) || args.contains(QStringLiteral("-h"))) {
+    if (asksForHelp(args)) {
         out << kRunUsage;
         return kSuccess;
     }
     RunOptions o;
     if (const QString error = parseOptions(args, o); !error.isEmpty()) return fail(err, error);
-    if (const QString error = checkOutputs(
-            o.scene, {{QStringLiteral("--json"), o.json ? QStringLiteral("-") : QString()},
-                      {QStringLiteral("--csv"), o.csv},
-                      {QStringLiteral("--plot-energy"), o.plotEnergy},
-                      {QStringLiteral("--plot-phase"), o.plotPhase}});
+    if (const QString error =
+            checkOutputs(o.scene, {{"--json", o.json ? QStringLiteral("-") : QString()},
+                                   {"--csv", o.csv},
+                                   {"--plot-energy", o.plotEnergy},
+                                   {"--plot-phase", o.plotPhase}});
         !error.isEmpty())
         return fail(err, error);
 
@@ -450,68 +742,18 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     if (const std::string warning = contactModelWarning(world); !warning.empty())
         err << "phasebox-cli: warning: " << QString::fromStdString(warning) << "\n";
 
-    // What to record.
     std::vector<Tracked> tracked;
-    if (o.track) {
-        for (const QString& id : *o.track) {
-            const auto t = findObject(world, id);
-            if (!t) return fail(err, QStringLiteral("--track: unknown object id \"%1\"").arg(id));
-            tracked.push_back(*t);
-        }
-    } else {
-        for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
-            if (world.particles()[i].cloth < 0)
-                tracked.push_back({QString::fromStdString(world.particles()[i].id), false, i});
-        for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-            tracked.push_back({QString::fromStdString(world.boxes()[i].id), true, i});
-    }
-    std::optional<Tracked> phaseObject;
-    int phaseCoordinate = 0;
-    if (!o.plotPhase.isEmpty()) {
-        const qsizetype dot = o.phaseTarget.lastIndexOf(QLatin1Char('.'));
-        const QString id = o.phaseTarget.left(dot), coord = o.phaseTarget.mid(dot + 1);
-        phaseObject = dot > 0 ? findObject(world, id) : std::nullopt;
-        if (!phaseObject)
-            return fail(err,
-                        QStringLiteral(
-                            "--plot-phase: unknown object \"%1\" (expected ID.COORD, e.g. ball.x)")
-                            .arg(o.phaseTarget));
-        if (coord == QLatin1String("x"))
-            phaseCoordinate = 0;
-        else if (coord == QLatin1String("y"))
-            phaseCoordinate = 1;
-        else if (coord == QLatin1String("angle") && phaseObject->isBox)
-            phaseCoordinate = 2;
-        else
-            return fail(
-                err, QStringLiteral("--plot-phase: unknown coordinate \"%1\"; known: x, y%2")
-                         .arg(coord, phaseObject->isBox ? QStringLiteral(", angle") : QString()));
-    }
-
-    // Probes (CONTRACT §7), refused before anything runs or is written. Each is sampled at every
-    // step for its statistics, whatever --every thins the CSV to. The lesson's saved instruments
-    // come first, as if given with --probe (one given again is not repeated).
-    QStringList savedProbes;
-    for (const std::string& text : scene.instruments.readProbes())
-        savedProbes << QString::fromStdString(text);
-    for (const QString& text : std::as_const(o.probes))
-        if (!savedProbes.contains(text)) savedProbes << text;
-    o.probes = savedProbes;
-    std::vector<Probe> probes;
-    for (const QString& text : o.probes) {
-        ProbeParse parsed = parseProbe(world, text.toStdString());
-        if (!parsed) return fail(err, QString::fromStdString(parsed.error));
-        probes.push_back(std::move(*parsed.probe));
-    }
-    std::vector<PeriodTracker> probeStats(probes.size());
-    std::vector<double> probeValues(probes.size());
-    auto sampleProbes = [&] {
-        for (std::size_t i = 0; i < probes.size(); ++i) {
-            probeValues[i] = evaluateProbe(world, probes[i]);
-            probeStats[i].add(world.time(), probeValues[i]);
-        }
-    };
-    sampleProbes();
+    if (const QString error = trackedObjects(world, o, tracked); !error.isEmpty())
+        return fail(err, error);
+    PlotSamples plots;
+    plots.energyPlot = !o.plotEnergy.isEmpty();
+    if (!o.plotPhase.isEmpty())
+        if (const QString error = phaseTarget(world, o, plots); !error.isEmpty())
+            return fail(err, error);
+    ProbeSet probes;
+    if (const QString error = parseProbes(world, scene, o.probes, probes); !error.isEmpty())
+        return fail(err, error);
+    probes.sample(world);
 
     // A Ctrl-C, SIGTERM or SIGHUP while the scene loaded (the handlers are installed first
     // thing in main): nothing was computed, so nothing is written.
@@ -521,78 +763,17 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     if (!o.csv.isEmpty()) {
         QString error;
         if (!csv.open(o.csv, out, &error)) return failWrite(err, error);
-        writeCsvHeader(csv.stream(), tracked, o.probes);
-        writeCsvRow(csv.stream(), world, tracked, probeValues);
+        writeCsvHeader(csv.stream(), tracked, probes.names);
+        writeCsvRow(csv.stream(), world, tracked, probes.values);
     }
 
     const double dt = sim.dt;
     if (const QString problem = runLengthProblem(sim.duration, dt); !problem.isEmpty())
         return fail(err, problem);
-    const double stepCount = std::ceil(sim.duration / dt - 1e-9);
-    const long long steps = std::max<long long>(1, static_cast<long long>(stepCount));
-    const bool plotting = !o.plotEnergy.isEmpty() || phaseObject;
-    // The charts decimate to a few thousand points, so 2·2^16 samples lose nothing visible.
-    BoundedSeries<ui::EnergySample> energy(std::size_t(1) << 16);
-    BoundedSeries<ui::PhaseSample> phase(std::size_t(1) << 16);
-    auto sample = [&] {
-        if (!o.plotEnergy.isEmpty()) {
-            const EnergyLedger& e = world.energy();
-            energy.push({world.time(), e.kinetic, e.potential, e.workNc, e.drift, e.correction});
-        }
-        if (phaseObject) phase.push(phaseOf(world, *phaseObject, phaseCoordinate));
-    };
-    if (plotting) sample();
-
-    const double initialEnergy = world.energy().initial;
-    // Mean and max over every step; the median over an evenly thinned sample once a run passes
-    // 2^21 steps (exact below that).
-    BoundedSeries<double> stepMs(std::size_t(1) << 20);
-    double stepMsSum = 0.0, stepMsMax = 0.0;
-    long long stepsTimed = 0;
-    world.resetProfile();
-    using Clock = std::chrono::steady_clock;
-    const auto wallStart = Clock::now();
-    long long done = 0;
-    bool diverged = false, interrupted = false;
-    // The joints' largest errors over the run, at the end of every step (CONTRACT §6).
-    JointErrors worstJoint;
-    for (long long k = 1; k <= steps; ++k) {
-        const auto start = Clock::now();
-        const bool ok = world.step();
-        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        if (stepMs.due(k)) stepMs.push(ms);
-        stepMsSum += ms;
-        stepMsMax = std::max(stepMsMax, ms);
-        ++stepsTimed;
-        if (!ok) {
-            diverged = true;
-            break;
-        }
-        done = k;
-        sampleProbes();
-        if (world.jointSolver()) {
-            const JointErrors now = world.jointErrors();
-            worstJoint.position = std::max(worstJoint.position, now.position);
-            worstJoint.angle = std::max(worstJoint.angle, now.angle);
-        }
-        // The last row of an interrupted run is its final state, as at the end of a full one.
-        interrupted = k < steps && cli::interrupted();
-        const bool last = k == steps || interrupted;
-        if (!o.csv.isEmpty() && (k % o.every == 0 || last)) {
-            writeCsvRow(csv.stream(), world, tracked, probeValues);
-            // A write that failed (a disk that filled, a reader gone) ends the run now, not
-            // at its end: exit 3 (or 130 for a write a signal abandoned).
-            if (csv.failed()) break;
-        }
-        if (plotting && (energy.due(k) || last)) sample();
-        if (interrupted) break;
-    }
-    // A signal that came during the write that ended the loop.
-    if (!diverged && done < steps && cli::interrupted()) interrupted = true;
-    const double wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
-    // A runaway is confirmed a few steps after it began and the world goes back to where it
-    // began: report the steps of the state that is shown, as sim_time does.
-    if (diverged) done = world.stepCount();
+    RunRecord r;
+    r.steps = std::max<long long>(1, static_cast<long long>(std::ceil(sim.duration / dt - 1e-9)));
+    if (plots.any()) plots.sample(world);
+    runSteps(world, r, probes, plots, o.csv.isEmpty() ? nullptr : &csv, o.every, tracked);
 
     int status = kSuccess;
     if (!o.csv.isEmpty()) {
@@ -607,161 +788,36 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
             .arg(scene.name.empty() ? o.scene : QString::fromStdString(scene.name),
                  QString::fromStdString(sim.integrator), QString::number(dt, 'g', 4));
     if (!o.plotEnergy.isEmpty() &&
-        !writePlot(ui::createEnergyChart(energy.values(), {}, title), o.plotEnergy, err))
+        !writePlot(ui::createEnergyChart(plots.energy.values(), {}, title), o.plotEnergy, err))
         status = kWriteFailed;
-    if (phaseObject) {
+    if (plots.phaseObject) {
         static const char* names[3][2] = {
             {"x [m]", "vx [m/s]"}, {"y [m]", "vy [m/s]"}, {"angle [rad]", "omega [rad/s]"}};
-        const QString who = phaseObject->id + QLatin1Char(' ');
+        const QString who = plots.phaseObject->id + QLatin1Char(' ');
         if (!writePlot(
-                ui::createPhaseChart(phase.values(), who + QLatin1String(names[phaseCoordinate][0]),
-                                     who + QLatin1String(names[phaseCoordinate][1]), title),
+                ui::createPhaseChart(plots.phase.values(),
+                                     who + QLatin1String(names[plots.phaseCoordinate][0]),
+                                     who + QLatin1String(names[plots.phaseCoordinate][1]), title),
                 o.plotPhase, err))
             status = kWriteFailed;
     }
 
-    const EnergyLedger& e = world.energy();
-    const double stepsRun = static_cast<double>(std::max<long long>(1, stepsTimed));
     if (o.json) {
-        QJsonArray effects;
-        for (const EffectCost& cost : world.effectCosts())
-            effects.append(QJsonObject{{"name", QString::fromStdString(cost.name)},
-                                       {"ms_per_step", cost.seconds * 1000.0 / stepsRun}});
-        // The named stages of the step in the order they run (CONTRACT.md §7); a stage the
-        // scene never needs (collide, with nothing to touch) is left out.
-        QJsonArray stages;
-        const StepProfile& profile = world.stepProfile();
-        for (int i = 0; i < StepProfile::kStageCount; ++i)
-            if (profile.ran(i))
-                stages.append(
-                    QJsonObject{{"name", stageName(i)}, {"ms_per_step", profile.msPerStep(i)}});
-        const double mean = stepsTimed == 0 ? 0.0 : stepMsSum / static_cast<double>(stepsTimed);
-        QJsonObject report{
-            {"integrator", QString::fromStdString(sim.integrator)},
-            {"dt", dt},
-            {"substeps", sim.substeps},
-            {"steps", static_cast<double>(done)},
-            {"sim_time", world.time()},
-            {"wall_seconds", wallSeconds},
-            {"step_ms",
-             QJsonObject{{"median", median(stepMs.values())}, {"mean", mean}, {"max", stepMsMax}}},
-            {"stages", stages},
-            {"energy", QJsonObject{{"initial", initialEnergy},
-                                   {"kinetic", e.kinetic},
-                                   {"potential", e.potential},
-                                   {"work_nc", e.workNc},
-                                   {"drift", e.drift},
-                                   {"correction", e.correction},
-                                   {"max_abs_drift", e.maxAbsDrift}}},
-            {"diverged", diverged},
-            {"sleeping", world.sleepingBodies()},
-            {"effects", effects},
-            {"force_evaluations", static_cast<double>(world.forceEvaluations())},
-        };
-        if (!probes.empty()) {
-            // final is the probe in the state the report shows (after a divergence, the
-            // restored one, as `objects`); the rest are over every step that ran.
-            QJsonObject measured;
-            for (std::size_t i = 0; i < probes.size(); ++i) {
-                const ProbeSummary st = probeStats[i].summary();
-                measured.insert(o.probes[i],
-                                QJsonObject{{"final", evaluateProbe(world, probes[i])},
-                                            {"min", st.min},
-                                            {"max", st.max},
-                                            {"mean", st.mean},
-                                            {"period", st.period ? QJsonValue(*st.period)
-                                                                 : QJsonValue(QJsonValue::Null)}});
-            }
-            report.insert("probes", measured);
-        }
-        if (world.jointSolver())
-            report.insert("constraints", QJsonObject{{"max_error", worstJoint.position},
-                                                     {"final_error", world.jointErrors().position},
-                                                     {"max_angle_error", worstJoint.angle}});
-        if (world.integrator().info().implicit) {
-            // The implicit solve's work: Newton iterations, linear solves and (for large systems)
-            // conjugate-gradient iterations per step, and the last relative residual.
-            const IntegratorStats& st = world.integrator().stats();
-            report.insert(
-                "implicit_solver",
-                QJsonObject{
-                    {"last_newton_iterations", st.lastNewtonIterations},
-                    {"linear_solves_per_step", static_cast<double>(st.linearSolves) / stepsRun},
-                    {"cg_iterations_per_step", static_cast<double>(st.linearIterations) / stepsRun},
-                    {"last_cg_iterations", st.lastLinearIterations},
-                    {"last_cg_residual", st.lastLinearResidual}});
-        }
-        if (diverged) {
-            const Divergence& d = *world.divergence();
-            report.insert("divergence",
-                          QJsonObject{{"time", d.time},
-                                      {"object", QString::fromStdString(d.objectId)},
-                                      {"what", QString::fromStdString(d.what)},
-                                      {"restored_time", d.restoredTime},
-                                      {"message", QString::fromStdString(d.message())}});
-        }
-        if (interrupted) report.insert("interrupted", true);
-        writeJsonReport(out, report, world);
+        writeJsonReport(out, jsonReport(world, sim, dt, r, probes), world);
     } else if (!OutputFile::isStandardOutput(o.csv) &&
                !OutputFile::isStandardOutput(o.plotEnergy) &&
                !OutputFile::isStandardOutput(o.plotPhase)) {
-        // The summary only when no output took standard output (CONTRACT §4).
-        out << "scene:      " << (scene.name.empty() ? o.scene : QString::fromStdString(scene.name))
-            << "\n"
-            << "integrator: " << QString::fromStdString(sim.integrator)
-            << ", dt = " << formatNumber(dt) << " s, " << sim.substeps << " sub-step(s)\n"
-            << "ran:        " << done << " steps to t = " << formatNumber(world.time()) << " s in "
-            << QString::number(wallSeconds, 'f', 3) << " s ("
-            << QString::number(median(stepMs.values()), 'g', 3) << " ms per step, median)\n"
-            << "energy:     initial " << QString::number(initialEnergy, 'g', 6)
-            << " J; now kinetic " << QString::number(e.kinetic, 'g', 6) << ", potential "
-            << QString::number(e.potential, 'g', 6) << ", work_nc "
-            << QString::number(e.workNc, 'g', 6) << ", correction "
-            << QString::number(e.correction, 'g', 6) << " J\n"
-            << "drift:      " << QString::number(e.drift, 'g', 3) << " J (largest |drift| "
-            << QString::number(e.maxAbsDrift, 'g', 3) << " J)\n";
-        if (world.jointSolver())
-            out << "joints:     largest error " << QString::number(worstJoint.position, 'g', 3)
-                << " m, " << QString::number(worstJoint.angle, 'g', 3) << " rad; at the end "
-                << QString::number(world.jointErrors().position, 'g', 3) << " m\n";
-        out << "effects:   ";
-        if (world.effectCosts().empty()) out << " none";
-        for (const EffectCost& cost : world.effectCosts())
-            out << " " << QString::fromStdString(cost.name) << " "
-                << QString::number(cost.seconds * 1000.0 / stepsRun, 'g', 3) << " ms/step;";
-        out << "\nstages:    ";
-        const StepProfile& profile = world.stepProfile();
-        for (int i = 0; i < StepProfile::kStageCount; ++i)
-            if (profile.ran(i))
-                out << " " << stageName(i) << " " << QString::number(profile.msPerStep(i), 'g', 3)
-                    << " ms/step;";
-        out << "\n";
-        for (std::size_t i = 0; i < probes.size(); ++i) {
-            const ProbeSummary st = probeStats[i].summary();
-            out << "probe " << o.probes[i] << ": final "
-                << QString::number(evaluateProbe(world, probes[i]), 'g', 6) << ", min "
-                << QString::number(st.min, 'g', 6) << ", max " << QString::number(st.max, 'g', 6)
-                << ", mean " << QString::number(st.mean, 'g', 6) << ", period "
-                << (st.period ? QString::number(*st.period, 'g', 6) + QStringLiteral(" s")
-                              : QStringLiteral("none"))
-                << "\n";
-        }
-        for (const Tracked& t : tracked) {
-            const ui::PhaseSample x = phaseOf(world, t, 0), y = phaseOf(world, t, 1);
-            out << "  " << t.id << ": position (" << QString::number(x.coordinate, 'g', 6) << ", "
-                << QString::number(y.coordinate, 'g', 6) << "), velocity ("
-                << QString::number(x.velocity, 'g', 6) << ", "
-                << QString::number(y.velocity, 'g', 6) << ")\n";
-        }
+        writeSummary(out, scene.name.empty() ? o.scene : QString::fromStdString(scene.name), world,
+                     sim, dt, r, probes, tracked);
     }
     out.flush();
-    if (interrupted) {
+    if (r.interrupted) {
         err << "phasebox-cli: interrupted at t = " << formatNumber(world.time()) << " s after "
-            << done << " of " << steps << " steps; the results so far are written\n";
+            << r.done << " of " << r.steps << " steps; the results so far are written\n";
         err.flush();
         return status == kSuccess ? kInterrupted : status;
     }
-    if (diverged) {
+    if (r.diverged) {
         err << "phasebox-cli: diverged: " << QString::fromStdString(world.divergence()->message());
         // The advisor at the restored state: which step this method needs (the largest stable
         // dt from the stiffest mode, penalty contacts included).

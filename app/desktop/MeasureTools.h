@@ -1,5 +1,5 @@
 #pragma once
-// The canvas instruments: rulers, protractors and the free-body view (issue #19).
+// The canvas instruments: rulers, protractors and the free-body view.
 //
 //   Ruler       drag from one point to another; the label reads the distance (m) with dx, dy
 //   Protractor  drag from the vertex along the first arm, release, then click the second arm;

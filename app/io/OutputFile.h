@@ -40,7 +40,7 @@ public:
     // Standard output: "-", "/dev/stdout", and any path that leads to the very file, pipe or
     // socket standard output is (/proc/self/fd/1, a link to it, the file `> out.csv` opened).
     // Opened again by name, such a path would write from offset 0 and the summary would
-    // overwrite the CSV's head (issue #38).
+    // overwrite the CSV's head.
     static bool isStandardOutput(const QString& path);
     // Why path cannot be written at all (a loop of symbolic links), or an empty string.
     static QString unusablePath(const QString& path);

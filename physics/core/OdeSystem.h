@@ -116,9 +116,9 @@ public:
     virtual int dimension() const = 0;
     virtual const Vec& inverseMass() const = 0;
     virtual const Vec& mass() const = 0;
-    // DOFs [0, pairedDofs()) are the (x, y) pairs of points, which a multigrid solver
+    // DOFs [0, pointDofs()) are the (x, y) pairs of points, which a multigrid solver
     // aggregates together; 0 when the system does not say.
-    virtual int pairedDofs() const { return 0; }
+    virtual int pointDofs() const { return 0; }
     // One evaluation's cost in the units of core/WorkUnits.h; by default one a coordinate.
     virtual double workUnits() const { return dimension(); }
 

@@ -21,24 +21,24 @@ struct StateSummary {
     bool finite = true;              // every coordinate and velocity is finite
 };
 
-// Sums the whole state: points [0, pairedDofs) in pairs, rigid bodies after them in triples.
+// Sums the whole state: points [0, pointDofs) in pairs, rigid bodies after them in triples.
 // point(i, x, v) yields the (x, y) position and velocity of the point at DOF i (an integrator's
 // fused pass computes and stores them there, and hands them over in registers); body(k) is
 // called before the rigid body at DOF k is read from (q, u).
 template <typename Point, typename Body>
-StateSummary sweepState(int pairedDofs, const Vec& mass, const Vec& q, const Vec& u, Point&& point,
+StateSummary sweepState(int pointDofs, const Vec& mass, const Vec& q, const Vec& u, Point&& point,
                         Body&& body) {
     using A2 = Eigen::Array2d;
     const double* m = mass.data();
     const double* qp = q.data();
     const double* up = u.data();
     const int n = static_cast<int>(q.size());
-    assert(pairedDofs % 2 == 0 && (n - pairedDofs) % 3 == 0);
+    assert(pointDofs % 2 == 0 && (n - pointDofs) % 3 == 0);
     // The point range is [x y x y …], so 2-lane accumulators keep x and y apart, and two of
     // each let the adds overlap.
     A2 ke0 = A2::Zero(), ke1 = A2::Zero(), mom0 = A2::Zero(), mom1 = A2::Zero();
     int i = 0;
-    for (; i + 4 <= pairedDofs; i += 4) {
+    for (; i + 4 <= pointDofs; i += 4) {
         A2 x0, v0, x1, v1;
         point(i, x0, v0);
         point(i + 2, x1, v1);
@@ -48,7 +48,7 @@ StateSummary sweepState(int pairedDofs, const Vec& mass, const Vec& q, const Vec
         mom0 += m0 * x0;
         mom1 += m1 * x1;
     }
-    for (; i < pairedDofs; i += 2) {
+    for (; i < pointDofs; i += 2) {
         A2 x0, v0;
         point(i, x0, v0);
         const A2 m0 = Eigen::Map<const A2>(m + i);
@@ -56,7 +56,7 @@ StateSummary sweepState(int pairedDofs, const Vec& mass, const Vec& q, const Vec
         mom0 += m0 * x0;
     }
     double angularKinetic = 0.0, angles = 0.0;
-    for (int k = pairedDofs; k < n; k += 3) {
+    for (int k = pointDofs; k < n; k += 3) {
         body(k);
         const A2 mb = Eigen::Map<const A2>(m + k), ub = Eigen::Map<const A2>(up + k);
         ke0 += mb * ub * ub;
@@ -73,11 +73,11 @@ StateSummary sweepState(int pairedDofs, const Vec& mass, const Vec& q, const Vec
     return summary;
 }
 
-inline StateSummary summarizeState(int pairedDofs, const Vec& mass, const Vec& q, const Vec& u) {
+inline StateSummary summarizeState(int pointDofs, const Vec& mass, const Vec& q, const Vec& u) {
     const double* qp = q.data();
     const double* up = u.data();
     return sweepState(
-        pairedDofs, mass, q, u,
+        pointDofs, mass, q, u,
         [=](int i, Eigen::Array2d& x, Eigen::Array2d& v) {
             x = Eigen::Map<const Eigen::Array2d>(qp + i);
             v = Eigen::Map<const Eigen::Array2d>(up + i);

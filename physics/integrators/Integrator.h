@@ -84,7 +84,7 @@ public:
         summarized_ = false;
         const bool ok = advance(system, t, h, q0, u0, q, u, workNc);
         if (ok && summary && !summarized_)
-            *summary = summarizeState(system.pairedDofs(), system.mass(), q, u);
+            *summary = summarizeState(system.pointDofs(), system.mass(), q, u);
         summary_ = nullptr;
         return ok;
     }

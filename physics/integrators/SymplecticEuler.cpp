@@ -76,7 +76,7 @@ private:
                 qp[i] = q0p[i] + h * v;
             }
         };
-        const int paired = sys.pairedDofs();
+        const int paired = sys.pointDofs();
         if (StateSummary* summary = requestedSummary()) {
             *summary = sweepState(paired, sys.mass(), q, u, point, body);
             markSummarized();

@@ -20,10 +20,43 @@ namespace {
 constexpr int kMotorIterations = 4;
 // A motor turns b against a, and each end must take its torque: a rigid body, the world or a
 // fixed point. A free particle has no angle: a motor on one turned the other body alone, an
-// external torque booked as motor work (issue #38; the validation refuses such a motor, and
-// one left here does nothing).
+// external torque booked as motor work (the validation refuses such a motor, and one left
+// here does nothing).
 bool takesTorque(const joints::End& e) {
     return e.rigid || e.dof < 0;
+}
+// Where a joint's end is: a dynamic body's coordinates (and, for a rigid body, its point in the
+// body's frame), or a fixed point in the world.
+joints::End resolveEnd(const Bodies& bodies, const JointBody& body) {
+    joints::End e;
+    switch (body.kind) {
+        case JointBody::Kind::Particle: {
+            const Particle& p = bodies.particles[body.index];
+            if (p.dof >= 0)
+                e.dof = p.dof;
+            else
+                e.fixed = p.position;
+            break;
+        }
+        case JointBody::Kind::Rigid: {
+            const Box& b = bodies.boxes[body.index];
+            e.rigid = true;
+            if (b.dof >= 0) {
+                e.dof = b.dof;
+                e.turns = true;
+                e.local = body.point;
+            } else {
+                e.fixed = b.position + rotation(b.angle) * body.point;
+                e.angle0 = b.angle;
+            }
+            break;
+        }
+        case JointBody::Kind::World:
+            e.rigid = true;  // the world has an angle: 0
+            e.fixed = body.point;
+            break;
+    }
+    return e;
 }
 }  // namespace
 
@@ -32,37 +65,6 @@ bool takesTorque(const joints::End& e) {
 void JointSolver::bind(const Bodies& bodies) {
     joints_ = bodies.joints;
     const int m = static_cast<int>(joints_.size());
-    const auto resolve = [&](const JointBody& body) {
-        End e;
-        switch (body.kind) {
-            case JointBody::Kind::Particle: {
-                const Particle& p = bodies.particles[body.index];
-                if (p.dof >= 0)
-                    e.dof = p.dof;
-                else
-                    e.fixed = p.position;
-                break;
-            }
-            case JointBody::Kind::Rigid: {
-                const Box& b = bodies.boxes[body.index];
-                e.rigid = true;
-                if (b.dof >= 0) {
-                    e.dof = b.dof;
-                    e.turns = true;
-                    e.local = body.point;
-                } else {
-                    e.fixed = b.position + rotation(b.angle) * body.point;
-                    e.angle0 = b.angle;
-                }
-                break;
-            }
-            case JointBody::Kind::World:
-                e.rigid = true;  // the world has an angle: 0
-                e.fixed = body.point;
-                break;
-        }
-        return e;
-    };
     endA_.clear();
     endB_.clear();
     hasMotors_ = hasInequalities_ = false;
@@ -77,8 +79,8 @@ void JointSolver::bind(const Bodies& bodies) {
         return e;
     };
     for (const Joint& j : joints_) {
-        endA_.push_back(withSlot(resolve(j.a)));
-        endB_.push_back(withSlot(resolve(j.b)));
+        endA_.push_back(withSlot(resolveEnd(bodies, j.a)));
+        endB_.push_back(withSlot(resolveEnd(bodies, j.b)));
         hasMotors_ =
             hasMotors_ || (j.hasMotor && takesTorque(endA_.back()) && takesTorque(endB_.back()));
         hasInequalities_ = hasInequalities_ || j.hasLimits || j.type == Joint::Type::Rope ||

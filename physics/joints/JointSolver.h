@@ -131,11 +131,9 @@ public:
     // is poor where it turns: SHAKE's directions of the start are far from the end's (it goes
     // on along the end's, shake()), and the velocity projection keeps about cos(φ/2) of the
     // speed of a link that turned by φ. A 1 m pendulum at 90° needs 1 up to dt 1/45; a chain's
-    // whip needs a few to a dozen. At 0.3 rad the 100-link whip took 1.06 G instructions for
-    // its 600 steps instead of 1.51 G (as the passes cost then), but the ragdoll example's fall
-    // down its stairs then booked 163 J of correction in 5 s instead of 4 J (0.2 rad: 139 J):
-    // its contacts and joints trade energy over the longer steps (docs/architecture.md,
-    // Joints).
+    // whip needs a few to a dozen. A larger bound saves sub-steps on a whip but lets contacts
+    // and joints trade energy over the longer steps, which books far more correction on a
+    // ragdoll falling down stairs; the figures are in docs/performance.md ("Joint sub-steps").
     int substepsFor(double h, const Vec& q, const Vec& u) const;
     static constexpr double kMaxTurnPerStep = 0.1;  // rad
     static constexpr int kMaxSubsteps = 64;

@@ -82,8 +82,8 @@ blocks::Rows rowsOf(const std::vector<int>& outer, const std::vector<int>& diago
 
 }  // namespace
 
-void AggregationMultigrid::setup(const SparseMatrix& a, int pairedDofs, bool patternChanged) {
-    if (patternChanged || levels_.empty() || levels_[0].n != a.rows()) build(a, pairedDofs);
+void AggregationMultigrid::setup(const SparseMatrix& a, int pointDofs, bool patternChanged) {
+    if (patternChanged || levels_.empty() || levels_[0].n != a.rows()) build(a, pointDofs);
     fillFine(a);
     refresh();
 }
@@ -94,9 +94,9 @@ int AggregationMultigrid::fineOffset(int row, int col) const {
     return findBlock(fine.outer, fine.inner, row / B, col / B) * B * B + (row % B) * B + col % B;
 }
 
-void AggregationMultigrid::build(const SparseMatrix& a, int pairedDofs) {
+void AggregationMultigrid::build(const SparseMatrix& a, int pointDofs) {
     const int n = static_cast<int>(a.rows());
-    block_ = (pairedDofs == n && n % 2 == 0) ? 2 : 1;
+    block_ = (pointDofs == n && n % 2 == 0) ? 2 : 1;
     const int B = block_;
     levels_.clear();
     Level& fine = levels_.emplace_back();

@@ -32,8 +32,8 @@ namespace phasebox {
 class AggregationMultigrid {
 public:
     // Builds the hierarchy for the symmetric matrix a (its compressed columns are read as
-    // rows; its values weigh the couplings). DOFs [0, pairedDofs) are (x, y) pairs of points.
-    void build(const SparseMatrix& a, int pairedDofs);
+    // rows; its values weigh the couplings). DOFs [0, pointDofs) are (x, y) pairs of points.
+    void build(const SparseMatrix& a, int pointDofs);
     // The fine matrix's values, to be filled in place between build() and refresh(): entry
     // (row, col) lives at fineValues()[fineOffset(row, col)], and (row, col + 1) right after
     // it whenever both are in the pattern.
@@ -47,7 +47,7 @@ public:
     // than the error it removes); the caller checks that conjugate gradients still converge.
     void refresh(bool coarse = true);
     // build + copying a's values + refresh, for callers that keep their own matrix.
-    void setup(const SparseMatrix& a, int pairedDofs, bool patternChanged);
+    void setup(const SparseMatrix& a, int pointDofs, bool patternChanged);
 
     // y = A·x with the fine matrix in its blocked form.
     void multiply(const Vec& x, Vec& y) const;

@@ -165,7 +165,7 @@ bool NewtonVelocitySolver::assembleIterative(OdeSystem& sys, double c, bool refr
     // the hierarchy on it, and record where each contribution goes in its blocked copy.
     assemble(sys, c);
     const int n = static_cast<int>(mass.size());
-    multigrid_.build(matrix_, sys.pairedDofs());
+    multigrid_.build(matrix_, sys.pointDofs());
     iterative_.rowMajor = true;
     recordSlots(n, c, iterative_,
                 [this](int row, int col) { return multigrid_.fineOffset(row, col); });

@@ -134,22 +134,13 @@ ContactSettings contactSettings(const std::map<std::string, double>& solver) {
 SceneError::SceneError(std::vector<SceneIssue> issues)
     : std::runtime_error(summarize(issues)), issues_(std::move(issues)) {}
 
-BuildResult buildWorld(const SceneDesc& setup) {
-    if (auto issues = validateScene(setup); !issues.empty()) throw SceneError(std::move(issues));
-    // A polygon's state is its centroid's: a description not read from a file (a test's, the
-    // library's) may not be centred yet.
-    SceneDesc centred;
-    if (!setup.polygons.empty()) {
-        centred = setup;
-        recentrePolygons(centred);
-    }
-    const SceneDesc& scene = setup.polygons.empty() ? setup : centred;
+namespace {
 
-    BuildResult result;
-    result.world = std::make_unique<World>();
-    World& world = *result.world;
+// Where an object id is, for the springs and joints that name it.
+using EndsById = std::unordered_map<std::string, SpringEnd>;
 
-    // Effects the scene lists, in the contract's order.
+// Effects the scene lists, in the contract's order.
+void addEffects(World& world, const SceneDesc& scene) {
     const EffectsDesc& fx = scene.effects;
     if (fx.gravity) world.addEffect(std::make_unique<GravityEffect>(vec(fx.gravity->g)));
     if (fx.drag)
@@ -183,9 +174,9 @@ BuildResult buildWorld(const SceneDesc& setup) {
     }
     if (fx.particleCollisions)
         world.setParticleCollisions(true, fx.particleCollisions->restitution);
+}
 
-    // Objects. Ids map to particle or box indices for the springs.
-    std::unordered_map<std::string, SpringEnd> ends;
+void addParticles(World& world, const SceneDesc& scene, EndsById& ends) {
     for (std::size_t i = 0; i < scene.particles.size(); ++i) {
         const ParticleDesc& d = scene.particles[i];
         Particle p;
@@ -200,6 +191,10 @@ BuildResult buildWorld(const SceneDesc& setup) {
         p.charge = d.charge;
         ends[p.id] = {SpringEnd::Kind::Particle, world.addParticle(p), Vec2::Zero()};
     }
+}
+
+// Boxes, polygons and disks, in that order: the rigid bodies share one array in the world.
+void addRigidBodies(World& world, const SceneDesc& scene, EndsById& ends) {
     // A rigid body (box or disk) from what every rigid kind's description holds.
     const auto rigid = [&](const auto& d, std::string id) {
         Box b;
@@ -253,6 +248,9 @@ BuildResult buildWorld(const SceneDesc& setup) {
         b.size = Vec2::Constant(2.0 * b.radius);
         addRigid(b);
     }
+}
+
+void addPlanes(World& world, const SceneDesc& scene) {
     for (std::size_t i = 0; i < scene.planes.size(); ++i) {
         const PlaneDesc& d = scene.planes[i];
         Plane p;
@@ -263,6 +261,10 @@ BuildResult buildWorld(const SceneDesc& setup) {
         p.restitution = d.restitution;
         world.addPlane(p);
     }
+}
+
+// Each cloth's nodes as particles (row by row), then its springs.
+void addCloths(World& world, const SceneDesc& scene, EndsById& ends) {
     for (const ClothDesc& d : scene.cloths) {
         Cloth cloth;
         cloth.id = d.id;
@@ -289,6 +291,10 @@ BuildResult buildWorld(const SceneDesc& setup) {
         cloth.springCount = static_cast<int>(world.springs().size()) - cloth.firstSpring;
         world.addCloth(cloth);
     }
+}
+
+// A spring without a rest length rests at its ends' distance in the scene.
+void addSprings(World& world, const SceneDesc& scene, const EndsById& ends) {
     for (std::size_t i = 0; i < scene.springs.size(); ++i) {
         const SpringDesc& d = scene.springs[i];
         Spring s;
@@ -308,7 +314,9 @@ BuildResult buildWorld(const SceneDesc& setup) {
                            : (world.springEndPosition(s.a) - world.springEndPosition(s.b)).norm();
         world.addSpring(s);
     }
+}
 
+void addJoints(World& world, const SceneDesc& scene, const EndsById& ends) {
     // Joints: their points are resolved against the bodies where the scene sets them.
     const auto position = [&](const JointBody& body) -> Vec2 {
         switch (body.kind) {
@@ -402,6 +410,34 @@ BuildResult buildWorld(const SceneDesc& setup) {
         }
         world.addJoint(j);
     }
+}
+
+}  // namespace
+
+BuildResult buildWorld(const SceneDesc& setup) {
+    if (auto issues = validateScene(setup); !issues.empty()) throw SceneError(std::move(issues));
+    // A polygon's state is its centroid's: a description not read from a file (a test's, the
+    // library's) may not be centred yet.
+    SceneDesc centred;
+    if (!setup.polygons.empty()) {
+        centred = setup;
+        recentrePolygons(centred);
+    }
+    const SceneDesc& scene = setup.polygons.empty() ? setup : centred;
+
+    BuildResult result;
+    result.world = std::make_unique<World>();
+    World& world = *result.world;
+
+    addEffects(world, scene);
+    // Objects. Ids map to particle or box indices for the springs and joints.
+    EndsById ends;
+    addParticles(world, scene, ends);
+    addRigidBodies(world, scene, ends);
+    addPlanes(world, scene);
+    addCloths(world, scene, ends);
+    addSprings(world, scene, ends);
+    addJoints(world, scene, ends);
 
     world.setSettings(simulationSettings(scene.simulation));
     world.commit();

@@ -134,7 +134,7 @@ void checkJoints(Checker& check, const SceneDesc& scene, const ClaimId& claim,
                 if (!j.anchor) check.fail(here(key::anchor), "is required");
                 // The joint angle is θb − θa: with no body that turns it never changes. A free
                 // particle has no angle and takes no torque: a motor or a limit against one would
-                // turn the other body alone, an external torque out of nowhere (issue #38).
+                // turn the other body alone, an external torque out of nowhere.
                 if (const char* why =
                         !endsKnown ? nullptr
                         : !a->turns() && !(b && b->turns())

@@ -323,13 +323,12 @@ struct SceneLimits {
     static constexpr long long kMaxJoints = 250'000;
     static constexpr int kMaxSubsteps = 10'000;
     // Sub-steps times the scene's size (stepWorkUnits): a step's cost grows with both, and the
-    // largest scenes take seconds for one sub-step (a chain of 250,000 rods 2.5 s), so a scene
-    // may not ask for both at once. The units are a time estimate: a particle, spring or cloth
-    // node or spring is one (73 ns a sub-step in a 64 x 64 cloth under symplectic Euler), a
-    // rigid body or joint kCostlyWorkUnits (a joint of that chain took 5 µs). 64,000,000 is
-    // about 5 s a step: 3 sub-steps of the largest chain, 564 of the largest cloth, and 2,283 of
-    // a 64 x 64 one, whose stability the advisor gives at 159 to 185 (issue #38: counted alike
-    // at 2,000,000, 71 were allowed, and the advisor's remedy was refused).
+    // largest scenes take seconds for one sub-step, so a scene may not ask for both at once. The
+    // units estimate time: a particle, spring or cloth node is one, a rigid body or joint
+    // kCostlyWorkUnits. The bound is set so that the sub-steps the stability advisor asks for on
+    // a mid-sized cloth are allowed; a bound on sub-steps alone would refuse the advisor's own
+    // remedy or let the largest scenes run for minutes a step. The measured costs behind the
+    // figure are in docs/robustness.md ("sizes and work bounds") and docs/performance.md.
     static constexpr long long kMaxSubstepWork = kMaxStepWork;
     static constexpr long long kCostlyWorkUnits = phasebox::kCostlyWorkUnits;
     static constexpr int kMaxNewtonIterations = 100;

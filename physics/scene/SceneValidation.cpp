@@ -289,26 +289,15 @@ std::vector<SceneIssue> validatePolygonVertices(const std::vector<Point2>& verti
     return issues;
 }
 
-std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
-    namespace key = schema::key;
-    std::vector<SceneIssue> issues;
-    Checker check(issues);
+namespace {
 
-    // Every field against its range in the schema; what ties fields together follows.
-    const SimulationDesc& sim = scene.simulation;
-    checkFields(check, std::string(key::simulation), sim);
+// Sizes: past these limits a scene is refused rather than allowed to exhaust memory or hang (the
+// limits are documented in docs/scene-format.md). Returns whether the scene has more particles
+// (cloth nodes included) than allowed, when checking the rest object by object is pointless.
+bool checkSizes(Checker& check, const SceneDesc& scene) {
+    namespace key = schema::key;
     const EffectsDesc& fx = scene.effects;
     const std::string effects(key::effects);
-    schema::forEachEffect([&](const auto& table, auto member) {
-        const auto& effect = fx.*member;
-        if (!effect) return;
-        checkFields(check, join(effects, table.key), *effect);
-        if constexpr (std::is_same_v<std::decay_t<decltype(*effect)>, BuoyancyDesc>)
-            if (!fx.gravity) check.fail(join(effects, table.key), "needs the gravity effect");
-    });
-
-    // Sizes: past these limits a scene is refused rather than allowed to exhaust memory or
-    // hang (the limits are documented in docs/scene-format.md).
     long long clothNodes = 0;
     bool tooManyClothNodes = false;
     for (std::size_t i = 0; i < scene.cloths.size(); ++i) {
@@ -374,8 +363,52 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
     if (static_cast<long long>(scene.joints.size()) > SceneLimits::kMaxJoints)
         check.fail(std::string(key::joints),
                    "at most " + std::to_string(SceneLimits::kMaxJoints) + " joints are allowed");
-    if (!issues.empty() && (particleCount > SceneLimits::kMaxParticles || tooManyClothNodes))
-        return issues;
+    return particleCount > SceneLimits::kMaxParticles || tooManyClothNodes;
+}
+
+// A cloth's pinned nodes: a known mode, or nodes inside its grid.
+void checkClothPinning(Checker& check, const std::string& path, const ClothDesc& cl) {
+    namespace key = schema::key;
+    const std::string pinned = join(path, key::pinned);
+    if (const auto* mode = std::get_if<std::string>(&cl.pinned)) {
+        if (*mode != "top" && *mode != "top_corners" && *mode != "left" && *mode != "none")
+            check.fail(pinned, "unknown pinning " + quoted(*mode) +
+                                   "; known: top, top_corners, left, none");
+    } else {
+        const auto& nodes = std::get<std::vector<std::array<int, 2>>>(cl.pinned);
+        for (std::size_t k = 0; k < nodes.size(); ++k) {
+            const auto [i, j] = nodes[k];
+            if (i < 0 || i >= cl.resolution[0] || j < 0 || j >= cl.resolution[1])
+                check.fail(at(pinned, k), "node [" + std::to_string(i) + "," + std::to_string(j) +
+                                              "] is outside the " +
+                                              std::to_string(cl.resolution[0]) + "x" +
+                                              std::to_string(cl.resolution[1]) + " grid");
+        }
+    }
+}
+
+}  // namespace
+
+std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
+    namespace key = schema::key;
+    std::vector<SceneIssue> issues;
+    Checker check(issues);
+
+    // Every field against its range in the schema; what ties fields together follows.
+    const SimulationDesc& sim = scene.simulation;
+    checkFields(check, std::string(key::simulation), sim);
+    const EffectsDesc& fx = scene.effects;
+    const std::string effects(key::effects);
+    schema::forEachEffect([&](const auto& table, auto member) {
+        const auto& effect = fx.*member;
+        if (!effect) return;
+        checkFields(check, join(effects, table.key), *effect);
+        if constexpr (std::is_same_v<std::decay_t<decltype(*effect)>, BuoyancyDesc>)
+            if (!fx.gravity) check.fail(join(effects, table.key), "needs the gravity effect");
+    });
+
+    // Past the size limits, the rest would check (and name) a million objects one by one.
+    if (checkSizes(check, scene) && !issues.empty()) return issues;
 
     // ids: unique across the scene (cloth node ids included); springs and joints may refer to
     // particles, boxes, disks, polygons and cloth nodes. Each id remembers who holds it, for the
@@ -417,22 +450,7 @@ std::vector<SceneIssue> validateScene(const SceneDesc& scene) {
         else
             claim(path, cl.id, false, false);
         checkFields(check, path, cl);
-        const std::string pinned = join(path, key::pinned);
-        if (const auto* mode = std::get_if<std::string>(&cl.pinned)) {
-            if (*mode != "top" && *mode != "top_corners" && *mode != "left" && *mode != "none")
-                check.fail(pinned, "unknown pinning " + quoted(*mode) +
-                                       "; known: top, top_corners, left, none");
-        } else {
-            const auto& nodes = std::get<std::vector<std::array<int, 2>>>(cl.pinned);
-            for (std::size_t k = 0; k < nodes.size(); ++k) {
-                const auto [i, j] = nodes[k];
-                if (i < 0 || i >= cl.resolution[0] || j < 0 || j >= cl.resolution[1])
-                    check.fail(at(pinned, k), "node [" + std::to_string(i) + "," +
-                                                  std::to_string(j) + "] is outside the " +
-                                                  std::to_string(cl.resolution[0]) + "x" +
-                                                  std::to_string(cl.resolution[1]) + " grid");
-            }
-        }
+        checkClothPinning(check, path, cl);
         if (!cl.id.empty() && cl.resolution[0] >= 2 && cl.resolution[1] >= 2)
             for (int j = 0; j < cl.resolution[1]; ++j)
                 for (int i = 0; i < cl.resolution[0]; ++i)

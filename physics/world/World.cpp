@@ -575,7 +575,7 @@ bool World::integrate(double t, double h, int next, StateSummary* summary) {
 StateSummary World::closeLedger(const StateSummary* summed) {
     const Vec& q = q_[current_];
     const StateSummary summary =
-        summed ? *summed : summarizeState(pairedDofs(), mass_, q, u_[current_]);
+        summed ? *summed : summarizeState(pointDofs(), mass_, q, u_[current_]);
     if (summary.finite) {
         StateSummary all = summary;  // with what the bodies asleep hold
         all.kinetic += sleepingKinetic_;
@@ -646,19 +646,19 @@ void World::restore(const DivergenceGuard::Checkpoint& c, bool fromOtherBuffer) 
 }
 
 double World::kineticEnergy() const {
-    return summarizeState(pairedDofs(), mass_, q_[current_], u_[current_]).kinetic +
+    return summarizeState(pointDofs(), mass_, q_[current_], u_[current_]).kinetic +
            sleepingKinetic_;
 }
 
 double World::potentialEnergy() const {
     const Vec& q = q_[current_];
     return phasebox::potentialEnergy(
-               effects_, q, summarizeState(pairedDofs(), mass_, q, u_[current_]).massMoment) +
+               effects_, q, summarizeState(pointDofs(), mass_, q, u_[current_]).massMoment) +
            contactPotential(q) + sleepingPotential_;
 }
 
 double World::mechanicalEnergy(const Vec& q, const Vec& u) const {
-    const StateSummary summary = summarizeState(pairedDofs(), mass_, q, u);
+    const StateSummary summary = summarizeState(pointDofs(), mass_, q, u);
     return summary.kinetic + phasebox::potentialEnergy(effects_, q, summary.massMoment) +
            contactPotential(q);
 }

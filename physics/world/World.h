@@ -199,7 +199,7 @@ public:
     int dimension() const override { return layout_.dimension(); }
     const Vec& inverseMass() const override { return invMass_; }
     const Vec& mass() const override { return mass_; }
-    int pairedDofs() const override { return layout_.boxBase(); }
+    int pointDofs() const override { return layout_.boxBase(); }
     // The scene's units of work (core/WorkUnits.h), as the validation counts them.
     double workUnits() const override {
         return static_cast<double>(bodies_.particles.size() + bodies_.springs.size()) +

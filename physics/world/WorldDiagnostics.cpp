@@ -41,7 +41,7 @@ void World::resetEnergyBaseline() {
     // The scale against which drift is judged: every energy in the scene, and a floor of each
     // body moving at 1 m/s so that a scene at rest at the origin still has a scale.
     double bodyMass = 0.0;  // Σm over bodies: each point's mass sits on two DOFs, a box's too
-    for (int i = 0; i < layout_.dimension(); i += i < pairedDofs() ? 2 : 3) bodyMass += mass_[i];
+    for (int i = 0; i < layout_.dimension(); i += i < pointDofs() ? 2 : 3) bodyMass += mass_[i];
     double scale = ledger_.kinetic + 0.5 * bodyMass;
     for (const auto& e : effects_) scale += std::abs(e->potentialEnergy(q_[current_]));
     guard_.setEnergyScale(scale);

@@ -22,7 +22,7 @@ namespace {
 // A = M − h²·K of an n × n cloth (1 kg, structural stiffness 2·10⁴) hanging from its top
 // edge, after a few implicit steps so that the springs are stretched: the system the first
 // Newton iteration of implicit Euler solves.
-SparseMatrix clothMatrix(int n, int& pairedDofs) {
+SparseMatrix clothMatrix(int n, int& pointDofs) {
     auto world = buildWorld(scenes::cloth(n, 2e4)).world;
     for (int k = 0; k < 5; ++k) world->step();
     const double h = world->settings().dt;
@@ -37,7 +37,7 @@ SparseMatrix clothMatrix(int n, int& pairedDofs) {
     SparseMatrix a(world->dimension(), world->dimension());
     a.setFromTriplets(triplets.begin(), triplets.end());
     a.makeCompressed();
-    pairedDofs = world->pairedDofs();
+    pointDofs = world->pointDofs();
     return a;
 }
 
