@@ -195,6 +195,8 @@ public:
     double potentialEnergy() const;
 
 private:
+    friend class WorldSnapshot;  // saves and restores the whole state (WorldSnapshot.h)
+
     void ensureLayout() {
         if (layoutDirty_) commit();
     }
