@@ -94,6 +94,10 @@ WorldSnapshot WorldSnapshot::take(const World& world) {
     return s;
 }
 
+bool WorldSnapshot::hasSettingsOf(const World& world) const {
+    return sameSettings(world.settings(), settings_);
+}
+
 bool WorldSnapshot::restoreInto(World& world) const {
     if (world.layoutDirty_ || world.layout_.dimension() != dimension_ ||
         (world.contacts_ != nullptr) != (contacts_ != nullptr) ||

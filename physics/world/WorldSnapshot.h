@@ -56,6 +56,10 @@ public:
     // the frame is of other objects.
     static bool show(World& world, const FrameState& frame);
 
+    // Whether the world runs with the settings the snapshot holds (a recording takes a new
+    // keyframe where they change, so that re-simulation never crosses a switch of method).
+    bool hasSettingsOf(const World& world) const;
+
     double time() const { return clock_.time; }
     long long stepCount() const { return clock_.stepCount; }
     // Bytes held, for a recording's memory budget (an estimate: vectors by their sizes).
