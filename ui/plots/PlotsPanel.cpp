@@ -9,12 +9,17 @@
 #include <QLabel>
 #include <QLegend>
 #include <QLegendMarker>
+#include <QLineSeries>
 #include <QMenu>
+#include <QPen>
+#include <QScatterSeries>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <QValueAxis>
 
+#include <cmath>
 #include <utility>
 
 namespace phasebox::ui {
@@ -153,10 +158,47 @@ bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
     return QWidget::eventFilter(watched, event);
 }
 
+namespace {
+
+// The shown moment: a series named "cursor" on the chart's own axes.
+void addCursor(QChart* chart, QXYSeries* cursor, const QList<QPointF>& points) {
+    const QList<QAbstractAxis*> x = chart->axes(Qt::Horizontal);
+    const QList<QAbstractAxis*> y = chart->axes(Qt::Vertical);
+    if (x.isEmpty() || y.isEmpty()) {
+        delete cursor;
+        return;
+    }
+    cursor->setName(QStringLiteral("cursor"));
+    cursor->append(points);
+    chart->addSeries(cursor);
+    cursor->attachAxis(x.first());
+    cursor->attachAxis(y.first());
+    // The legend names what was computed, not where the timeline is.
+    if (QLegend* legend = chart->legend())
+        for (QLegendMarker* m : legend->markers(cursor)) m->setVisible(false);
+}
+
+}  // namespace
+
+void PlotsPanel::setTimeCursor(double t, std::optional<PhaseSample> phase) {
+    cursorTime_ = t;
+    cursorPhase_ = std::isfinite(t) ? phase : std::nullopt;
+}
+
 void PlotsPanel::setEnergy(std::span<const EnergySample> samples,
                            std::span<const PlotMarker> markers, const QString& title) {
     if (paused_) return;
-    replaceChart(energyView_, createEnergyChart(samples, markers, title));
+    QChart* chart = createEnergyChart(samples, markers, title);
+    if (std::isfinite(cursorTime_)) {
+        const auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).value(0));
+        auto* line = new QLineSeries;
+        line->setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
+        if (y)
+            addCursor(chart, line, {{cursorTime_, y->min()}, {cursorTime_, y->max()}});
+        else
+            delete line;
+    }
+    replaceChart(energyView_, chart);
     styleChart(energyView_);
 }
 
@@ -167,8 +209,15 @@ void PlotsPanel::setPhase(std::span<const PhaseSample> samples, const QString& c
                             : QString());
     phaseView_->setVisible(!coordinateName.isEmpty());
     if (paused_) return;
-    replaceChart(phaseView_, createPhaseChart(samples, coordinateName, velocityName, title,
-                                              phaseReference_, phaseReferenceName_));
+    QChart* chart = createPhaseChart(samples, coordinateName, velocityName, title, phaseReference_,
+                                     phaseReferenceName_);
+    if (cursorPhase_) {
+        auto* dot = new QScatterSeries;
+        dot->setMarkerSize(11.0);
+        dot->setColor(palette().color(QPalette::Highlight));
+        addCursor(chart, dot, {{cursorPhase_->coordinate, cursorPhase_->velocity}});
+    }
+    replaceChart(phaseView_, chart);
     styleChart(phaseView_);
 }
 
