@@ -1,8 +1,9 @@
 // The timeline under the canvas (CONTRACT §8): scrubbing to a recorded time shows the state the
 // run had then, bit for bit, in the world the canvas draws, the canvas picture, the status
-// readout and the plots' cursor; stepping back and then forward frame by frame returns the same
-// frames; Play from an earlier moment goes on exactly as the run went on, and drops the later
-// frames as one undoable step (Undo brings them back).
+// readout, the Instruments readouts of the selection and the plots' cursors (energy and phase);
+// stepping back and then forward frame by frame returns the same frames; Play from an earlier
+// moment goes on exactly as the run went on, and drops the later frames as one undoable step (Undo
+// brings them back).
 
 #include "app/desktop/MainWindow.h"
 #include "app/document/Document.h"
@@ -10,6 +11,7 @@
 #include "physics/scene/SceneLibrary.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
+#include "ui/instruments/ReadoutView.h"
 #include "ui/plots/PlotsPanel.h"
 
 #include <QAction>
@@ -62,10 +64,38 @@ double energyCursor(MainWindow& w) {
     return std::numeric_limits<double>::quiet_NaN();
 }
 
+// The phase plot's cursor dot, NaN when there is none.
+QPointF phaseCursor(MainWindow& w) {
+    const QChart* chart = w.plotsPanel()->phaseView()->chart();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (!chart) return {nan, nan};
+    for (QAbstractSeries* s : chart->series())
+        if (s->name() == QStringLiteral("cursor")) {
+            const auto* dot = static_cast<QXYSeries*>(s);
+            if (dot->count() > 0) return dot->at(0);
+        }
+    return {nan, nan};
+}
+
+// What the Instruments dock reads out for the selection.
+QStringList readouts(MainWindow& w) {
+    const auto* view = w.findChild<ui::ReadoutView*>();
+    if (!view) return {};
+    QStringList out{view->subject(), view->state()};
+    // Every row that the state, clock and ledger give (contact force reads the contact solver's
+    // impulses, which a shown frame does not carry: see the user guide).
+    for (const char* label :
+         {"position (x, y)", "velocity (vx, vy)", "speed", "angle", "angular velocity ω",
+          "kinetic energy", "momentum (px, py)", "angular momentum L"})
+        out << view->valueText(QString::fromUtf8(label));
+    return out;
+}
+
 struct Moment {
     std::vector<std::uint64_t> bits;
     QImage canvas;
     QString status;
+    QStringList readouts;
 };
 
 class Run {
@@ -74,7 +104,8 @@ public:
     Moment now() {
         w_.refreshNow();
         QCoreApplication::processEvents();
-        return {bitsOf(w_.document().world()), w_.canvas()->grab().toImage(), statusTime(w_)};
+        return {bitsOf(w_.document().world()), w_.canvas()->grab().toImage(), statusTime(w_),
+                readouts(w_)};
     }
     // Steps the run one step at a time, keeping every moment.
     void steps(int n) {
@@ -108,9 +139,19 @@ private slots:
 
     void scrubShowsTheRecordedMoment() {
         MainWindow& w = *window_;
+        // A box of the second row: its phase plot (y against vy) and its readouts.
+        w.document().setSelection({QStringLiteral("r1c2")});
+        w.action("showInstruments")->trigger();
+        QCoreApplication::processEvents();
+        int box = -1;
+        for (std::size_t i = 0; i < w.document().world().boxes().size(); ++i)
+            if (w.document().world().boxes()[i].id == "r1c2") box = static_cast<int>(i);
+        QVERIFY(box >= 0);
         Run run(w);
         run.moments.push_back(run.now());
         run.steps(90);
+        QVERIFY(run.moments.back().readouts.size() > 2);
+        QVERIFY(!run.moments.back().readouts[2].isEmpty());
         auto* slider = w.findChild<QSlider*>(QStringLiteral("timelineSlider"));
         QVERIFY(slider);
         QCOMPARE(slider->maximum(), 90);
@@ -122,6 +163,10 @@ private slots:
             const Moment& then = run.moments[static_cast<std::size_t>(frame)];
             QVERIFY2(shown.bits == then.bits, qPrintable(QStringLiteral("frame %1").arg(frame)));
             QCOMPARE(shown.status, then.status);
+            QCOMPARE(shown.readouts, then.readouts);
+            const World& world = w.document().world();
+            QCOMPARE(phaseCursor(w),
+                     QPointF(world.boxPosition(box).y(), world.boxVelocity(box).y()));
             QVERIFY2(shown.canvas == then.canvas,
                      qPrintable(QStringLiteral("canvas at frame %1").arg(frame)));
             QCOMPARE(energyCursor(w), w.document().world().time());

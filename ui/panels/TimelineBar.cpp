@@ -18,6 +18,9 @@ constexpr std::size_t kMiB = std::size_t{1} << 20;
 
 TimelineBar::TimelineBar(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("timeline"));
+    // The canvas above decides the width: the bar must not widen the central area beyond what
+    // the docks leave it in a small window (its slider takes what is left).
+    setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     auto* row = new QHBoxLayout(this);
     row->setContentsMargins(4, 2, 4, 2);
     const auto button = [this, row](const char* name, QStyle::StandardPixmap icon,

@@ -25,10 +25,6 @@ TimelinePresenter::TimelinePresenter(ui::TimelineBar& bar, SimulationController&
     refresh();
 }
 
-TimelinePresenter::~TimelinePresenter() {
-    controller_.setRunRecording(nullptr);
-}
-
 void TimelinePresenter::createActions(QWidget& window) {
     const auto add = [&](const char* name, const QString& text, const QKeySequence& key,
                          auto slot) {

@@ -2,7 +2,8 @@
 // The timeline under the canvas: it owns the run's recording (RunRecording), hands it to the
 // controller, and moves the shown moment when the user drags the slider, steps a frame (, and .)
 // or jumps to the start (Home). The controller puts the world in that moment's state, so the
-// canvas, plots, readouts and instruments follow by their own signals.
+// canvas, plots, readouts and instruments follow by their own signals. The controller is the
+// window's member and goes before its child presenters, so this one never detaches from it.
 
 #include "app/desktop/presenters/Presenter.h"
 #include "app/sim/RunRecording.h"
@@ -18,7 +19,6 @@ class TimelinePresenter : public Presenter {
 public:
     TimelinePresenter(ui::TimelineBar& bar, SimulationController& controller,
                       QObject* parent = nullptr);
-    ~TimelinePresenter() override;
 
     void refresh() override;
     // "One Frame Back" (,), "One Frame Forward" (.), "Jump to Start" (Home).
