@@ -70,7 +70,8 @@ void RunRecording::thinFrames() {
 
 void RunRecording::thinKeyframes() {
     while (keyframes_.size() > 2 && keyframeBytes_ > budget_ / 4) {
-        const std::size_t olderHalf = keyframes_.size() / 2;
+        const std::size_t before = keyframes_.size();
+        const std::size_t olderHalf = (keyframes_.size() + 1) / 2;
         std::deque<std::pair<long long, WorldSnapshot>> kept;
         for (std::size_t i = 0; i < keyframes_.size(); ++i) {
             if (i > 0 && i < olderHalf && i % 2 == 1)
@@ -79,6 +80,7 @@ void RunRecording::thinKeyframes() {
                 kept.push_back(std::move(keyframes_[i]));
         }
         keyframes_ = std::move(kept);
+        if (keyframes_.size() == before) break;  // the first and the last stay
     }
 }
 

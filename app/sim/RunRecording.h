@@ -62,7 +62,7 @@ public:
     Tail truncateAfter(long long stepCount);
     void append(Tail&& tail);
 
-    static constexpr std::size_t kDefaultBudgetBytes = std::size_t{500} << 20;
+    static constexpr std::size_t kDefaultBudgetBytes = std::size_t{400} << 20;
     static constexpr long long kDefaultKeyframeInterval = 120;
 
 private:

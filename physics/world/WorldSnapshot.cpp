@@ -83,13 +83,17 @@ WorldSnapshot WorldSnapshot::take(const World& world) {
     s.pulledSince_ = world.pulledSince_;
     s.integratorCarried_ = world.integrator_->carriedState();
     s.integratorStats_ = world.integrator_->stats();
-    // The contact stage and the joints' solver are counted by their state vectors' share of
-    // the whole: a box's worth of contact records per body, as an upper estimate.
+    // The contact stage and the joints' solver are estimated, not walked: the contact stage
+    // keeps its constraints several times over (this step's, the previous step's for warm
+    // starting, a sorted copy, the solver's own), and per collider a few records of about a
+    // state's size; the joints' solver its rows and factorisation, a few states' worth.
     const std::size_t perState = vectorBytes(world.q_[0]);
-    s.bytes_ = sizeof(WorldSnapshot) + 5 * perState + perState + vectorBytes(s.penaltyVelocity_) +
+    const std::size_t constraints =
+        s.contacts_ ? s.contacts_->contacts().size() * sizeof(ContactConstraint) : 0;
+    s.bytes_ = sizeof(WorldSnapshot) + 6 * perState + vectorBytes(s.penaltyVelocity_) +
                vectorBytes(s.kinematicImpulse_) + vectorBytes(s.heldForce_) +
                vectorBytes(s.unappliedJointForce_) +
-               (s.contacts_ ? sizeof(ContactStage) + 24 * perState : 0) +
+               (s.contacts_ ? sizeof(ContactStage) + 4 * constraints + 24 * perState : 0) +
                (s.joints_ ? sizeof(JointSolver) + 8 * perState : 0);
     return s;
 }
