@@ -18,6 +18,7 @@
 #include "app/desktop/presenters/PropertiesPresenter.h"
 #include "app/desktop/presenters/SceneBrowserPresenter.h"
 #include "app/desktop/presenters/StatusPresenter.h"
+#include "app/desktop/presenters/TimelinePresenter.h"
 #include "app/document/Autosave.h"
 #include "app/i18n/Language.h"
 #include "ui/canvas/SceneView.h"
@@ -29,6 +30,7 @@
 #include "ui/panels/ParametersPanel.h"
 #include "ui/panels/PropertiesPanel.h"
 #include "ui/panels/SceneBrowser.h"
+#include "ui/panels/TimelineBar.h"
 
 #include <QAbstractItemView>
 #include <QAction>
@@ -48,6 +50,7 @@
 
 #include <QToolBar>
 #include <QUndoStack>
+#include <QVBoxLayout>
 #include <utility>
 
 #include <algorithm>
@@ -73,9 +76,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), controller_(docum
     setAcceptDrops(true);
     controller_.setRecorder(&recorder_);
     controller_.setProbeRecorder(&probes_);
-    canvas_ = new ui::SceneView(this);
+    // The canvas over its timeline.
+    auto* centre = new QWidget(this);
+    auto* column = new QVBoxLayout(centre);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(0);
+    canvas_ = new ui::SceneView(centre);
     canvas_->setObjectName(QStringLiteral("canvas"));
-    setCentralWidget(canvas_);
+    column->addWidget(canvas_, 1);
+    timeline_ = new ui::TimelineBar(centre);
+    column->addWidget(timeline_);
+    setCentralWidget(centre);
     tools_ = new CanvasTools(document_, *canvas_, this);
 
     createActions();
@@ -205,8 +216,9 @@ void MainWindow::createMenus() {
     addNamedActions(menuBar()->addMenu(tr("&Edit")), *this,
                     {"undo", "redo", "", "cut", "copy", "paste", "delete"});
     addNamedActions(menuBar()->addMenu(tr("&Simulation")), *this,
-                    {"play", "step", "reset", "", "nextIntegrator", "previousIntegrator",
-                     "doubleDt", "halveDt", "moreSubsteps", "fewerSubsteps", "faster", "slower"});
+                    {"play", "step", "reset", "", "frameBack", "frameForward", "jumpToStart", "",
+                     "nextIntegrator", "previousIntegrator", "doubleDt", "halveDt", "moreSubsteps",
+                     "fewerSubsteps", "faster", "slower"});
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     tools->addActions(canvasPresenter_->toolActions());
     addNamedActions(tools, *this,
@@ -366,6 +378,8 @@ void MainWindow::createDockWindows() {
     addPresenter(browserPresenter_ = new SceneBrowserPresenter(*browser_, document_, this));
     connect(addPresenter(new NotesPresenter(*notes_, document_, this)),
             &NotesPresenter::notesToRead, notes, &QDockWidget::raise);
+    addPresenter(timelinePresenter_ = new TimelinePresenter(*timeline_, controller_, this));
+    timelinePresenter_->createActions(*this);
     addPresenter(plotsPresenter_ =
                      new PlotsPresenter(*plots_, document_, controller_, recorder_, this));
     addPresenter(exactPresenter_ = new ExactPresenter(*canvas_, *plots_, document_, controller_,

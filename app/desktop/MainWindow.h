@@ -31,6 +31,7 @@ namespace phasebox {
 
 namespace ui {
 class SceneView;
+class TimelineBar;
 class ParametersPanel;
 class EffectsPanel;
 class PropertiesPanel;
@@ -39,6 +40,7 @@ class InstrumentsPanel;
 }  // namespace ui
 
 class CanvasTools;
+class TimelinePresenter;
 class MeasureTools;
 class AccuracyDialog;
 class AnimationExport;
@@ -153,6 +155,7 @@ private:
     SimulationController controller_;
 
     ui::SceneView* canvas_ = nullptr;
+    ui::TimelineBar* timeline_ = nullptr;  // under the canvas
     CanvasTools* tools_ = nullptr;
     MeasureTools* measure_ = nullptr;
     ui::ParametersPanel* parameters_ = nullptr;
@@ -173,6 +176,7 @@ private:
     InstrumentsPresenter* instrumentsPresenter_ = nullptr;
     SceneBrowserPresenter* browserPresenter_ = nullptr;
     StatusPresenter* status_ = nullptr;
+    TimelinePresenter* timelinePresenter_ = nullptr;
 
     AccuracyDialog* accuracy_ = nullptr;
     AnimationExport* animationExport_ = nullptr;  // File > Export Animation

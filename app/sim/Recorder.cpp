@@ -7,6 +7,7 @@
 #include <QTextStream>
 
 #include <algorithm>
+#include <iterator>
 
 namespace phasebox {
 
@@ -118,6 +119,57 @@ void Recorder::flush() {
     if (!pending_) return;
     pending_ = false;
     emit samplesAdded();
+}
+
+namespace {
+
+// Moves the elements of series after index first into tail (in order).
+template <typename T>
+void moveTail(std::vector<T>& series, std::size_t first, std::vector<T>& tail) {
+    first = std::min(first, series.size());
+    tail.assign(std::make_move_iterator(series.begin() + static_cast<std::ptrdiff_t>(first)),
+                std::make_move_iterator(series.end()));
+    series.resize(first);
+}
+
+template <typename T, typename Time>
+std::size_t firstAfter(const std::vector<T>& series, double t, Time time) {
+    return static_cast<std::size_t>(
+        std::find_if(series.begin(), series.end(), [&](const T& s) { return time(s) > t; }) -
+        series.begin());
+}
+
+}  // namespace
+
+Recorder::Tail Recorder::takeAfter(double t) {
+    Tail tail;
+    tail.lastTime = lastTime_;
+    moveTail(energy_, firstAfter(energy_, t, [](const ui::EnergySample& s) { return s.t; }),
+             tail.energy);
+    moveTail(markers_, firstAfter(markers_, t, [](const ui::PlotMarker& m) { return m.t; }),
+             tail.markers);
+    const std::size_t phaseFirst = firstAfter(phaseTimes_, t, [](double s) { return s; });
+    moveTail(phase_, phaseFirst, tail.phase);
+    moveTail(phaseTimes_, phaseFirst, tail.phaseTimes);
+    moveTail(errors_, firstAfter(errors_, t, [](const QPointF& p) { return p.x(); }), tail.errors);
+    lastTime_ = std::min(lastTime_, t);
+    pending_ = true;
+    return tail;
+}
+
+void Recorder::putBack(Tail&& tail) {
+    const auto append = [](auto& series, auto& more) {
+        series.insert(series.end(), std::make_move_iterator(more.begin()),
+                      std::make_move_iterator(more.end()));
+    };
+    append(energy_, tail.energy);
+    append(markers_, tail.markers);
+    append(phase_, tail.phase);
+    append(phaseTimes_, tail.phaseTimes);
+    append(errors_, tail.errors);
+    lastTime_ = std::max(lastTime_, tail.lastTime);
+    tail = {};
+    pending_ = true;
 }
 
 void Recorder::halve() {

@@ -54,6 +54,19 @@ public:
     // "vx", "vy" or "omega": the velocity paired with the coordinate.
     QString phaseVelocityName() const;
 
+    // The samples after t, taken out when a run goes on from an earlier moment, and put back
+    // when that is undone (SimulationController::resumeFromShownFrame).
+    struct Tail {
+        std::vector<ui::EnergySample> energy;
+        std::vector<ui::PlotMarker> markers;
+        std::vector<ui::PhaseSample> phase;
+        std::vector<double> phaseTimes;
+        std::vector<QPointF> errors;
+        double lastTime = -1.0;
+    };
+    Tail takeAfter(double t);
+    void putBack(Tail&& tail);
+
     void setMaxSamples(std::size_t maxSamples);
     std::size_t maxSamples() const { return maxSamples_; }
     // Steps per recorded sample (1 until the first halving).

@@ -4,7 +4,10 @@
 #include "app/sim/DivergenceReport.h"
 #include "app/sim/ProbeRecorder.h"
 #include "app/sim/Recorder.h"
+#include "app/sim/RewindCommand.h"
+#include "app/sim/RunRecording.h"
 #include "physics/world/World.h"
+#include "physics/world/WorldSnapshot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,6 +33,8 @@ SimulationController::SimulationController(Document& document, QObject* parent)
     connect(&timer_, &QTimer::timeout, this, &SimulationController::tick);
     // A new scene (load, new, reset) starts paused, with none of the last scene's figures.
     connect(&document_, &Document::sceneReset, this, &SimulationController::forgetScene);
+    // An edit makes another run: the recording starts over from the edited state.
+    connect(&document_, &Document::sceneEdited, this, &SimulationController::forgetRecording);
     clock_.start();
 }
 
@@ -42,6 +47,7 @@ void SimulationController::setSpeed(double speed) {
 
 void SimulationController::play() {
     if (isRunning()) return;
+    resumeFromShownFrame();
     backlog_ = 0.0;
     recentTicks_.clear();
     sinceTick_.start();
@@ -61,6 +67,7 @@ void SimulationController::pause() {
 
 void SimulationController::forgetScene() {
     pause();
+    forgetRecording();
     lastError_ = std::numeric_limits<double>::quiet_NaN();
     msPerStep_ = 0.0;
     realTimeFactor_ = 0.0;
@@ -73,6 +80,7 @@ void SimulationController::togglePlay() {
 
 void SimulationController::singleStep() {
     pause();
+    resumeFromShownFrame();
     const bool ok = stepOnce();
     flushRecorders();
     if (ok) emit stepped();
@@ -84,6 +92,7 @@ void SimulationController::reset() {
 }
 
 bool SimulationController::advance(double simSeconds) {
+    resumeFromShownFrame();
     const double target = document_.world().time() + simSeconds;
     bool ok = true, moved = false;
     // One estimate per 1/60 s of simulated time, as many as playing at 1× would make.
@@ -154,6 +163,7 @@ void SimulationController::estimateError() {
 
 bool SimulationController::stepOnce() {
     World& world = document_.world();
+    recordFrame();  // the setup's frame, before the first step of a run
     QElapsedTimer timer;
     timer.start();
     const bool ok = world.step();
@@ -165,7 +175,101 @@ bool SimulationController::stepOnce() {
     }
     if (recorder_) recorder_->record(world);
     if (probes_) probes_->record(world);
+    recordFrame();
     return true;
+}
+
+// ---- the recording behind the timeline ---------------------------------------------------------
+
+void SimulationController::setRunRecording(RunRecording* recording) {
+    forgetRecording();
+    runRecording_ = recording;
+}
+
+void SimulationController::forgetRecording() {
+    if (runRecording_) runRecording_->clear();
+    shownFrame_ = -1;
+    liveEnd_.reset();
+    ++runGeneration_;
+    emit frameShown(-1);
+}
+
+void SimulationController::recordFrame() {
+    if (!runRecording_) return;
+    const World& world = document_.world();
+    const int n = runRecording_->frameCount();
+    if (n > 0 && runRecording_->frame(n - 1).stepCount == world.stepCount() &&
+        runRecording_->frame(n - 1).time == world.time())
+        return;
+    if (n > 0 && runRecording_->frame(n - 1).stepCount >= world.stepCount()) ++runGeneration_;
+    runRecording_->record(world);
+}
+
+bool SimulationController::showFrame(int index) {
+    if (!runRecording_ || index < 0 || index >= runRecording_->frameCount()) return false;
+    pause();
+    World& world = document_.world();
+    const int last = runRecording_->frameCount() - 1;
+    if (shownFrame_ < 0) {
+        if (index == last) return true;  // already there
+        liveEnd_ = std::make_shared<WorldSnapshot>(WorldSnapshot::take(world));
+    }
+    if (index == last) {
+        liveEnd_->restoreInto(world);
+        liveEnd_.reset();
+        shownFrame_ = -1;
+    } else {
+        if (!runRecording_->show(world, index)) return false;
+        shownFrame_ = index;
+    }
+    emit frameShown(shownFrame_);
+    emit stepped();
+    return true;
+}
+
+void SimulationController::resumeFromShownFrame() {
+    if (shownFrame_ < 0 || !runRecording_) return;
+    World& world = document_.world();
+    const FrameState& frame = runRecording_->frame(shownFrame_);
+    Branch dropped;
+    dropped.generation = runGeneration_;
+    dropped.step = frame.stepCount;
+    dropped.time = frame.time;
+    dropped.end = std::move(liveEnd_);
+    const int shownIndex = shownFrame_;
+    shownFrame_ = -1;
+    // A run the user steered (a drag, an edit while paused) cannot be re-simulated from its
+    // keyframe; it then goes on from the frame's recorded state with what the world carries now.
+    if (!runRecording_->restore(world, dropped.step)) runRecording_->show(world, shownIndex);
+    dropped.frames = runRecording_->truncateAfter(dropped.step);
+    if (recorder_) dropped.samples = recorder_->takeAfter(dropped.time);
+    document_.undoStack()->push(new RewindCommand(*this, std::move(dropped)));
+    emit frameShown(-1);
+}
+
+void SimulationController::swapBranch(Branch& branch) {
+    if (!runRecording_ || branch.generation != runGeneration_ || !branch.end) return;
+    pause();
+    World& world = document_.world();
+    if (shownFrame_ >= 0 && liveEnd_) liveEnd_->restoreInto(world);
+    shownFrame_ = -1;
+    liveEnd_.reset();
+    Branch current;
+    current.generation = branch.generation;
+    current.step = branch.step;
+    current.time = branch.time;
+    current.end = std::make_shared<WorldSnapshot>(WorldSnapshot::take(world));
+    if (!branch.end->restoreInto(world)) return;
+    current.frames = runRecording_->truncateAfter(branch.step);
+    runRecording_->append(std::move(branch.frames));
+    if (recorder_) {
+        current.samples = recorder_->takeAfter(branch.time);
+        recorder_->putBack(std::move(branch.samples));
+    }
+    branch = std::move(current);
+    flushRecorders();
+    emit frameShown(-1);
+    emit stepped();
 }
 
 void SimulationController::reportDivergence() {

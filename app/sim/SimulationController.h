@@ -16,12 +16,15 @@
 
 #include <deque>
 #include <limits>
+#include <memory>
 
 namespace phasebox {
 
 class Document;
 class ProbeRecorder;
 class Recorder;
+class RunRecording;
+class WorldSnapshot;
 
 class SimulationController : public QObject {
     Q_OBJECT
@@ -43,6 +46,28 @@ public:
     void setRecorder(Recorder* recorder) { recorder_ = recorder; }
     // The instruments' probes, fed and flushed like the recorder.
     void setProbeRecorder(ProbeRecorder* probes) { probes_ = probes; }
+
+    // The run's recording behind the timeline (RunRecording): a frame after every step, the
+    // setup's frame before the first. nullptr to stop.
+    void setRunRecording(RunRecording* recording);
+    RunRecording* runRecording() const { return runRecording_; }
+    // Shows a recorded frame (and pauses): the world takes that frame's state, clock and ledger,
+    // so the canvas, plots, readouts and instruments show that moment. The last frame is the
+    // run's live end, put back whole. False for an index out of range.
+    bool showFrame(int index);
+    // The frame shown, -1 at the live end.
+    int shownFrame() const { return shownFrame_; }
+    // Play and Step from a shown frame go on from its whole state (the recording's keyframe
+    // before it, re-simulated) and drop the later frames and plot samples, as one step on the
+    // document's undo stack; undoing it brings the dropped branch back. A run steered by hand
+    // between the keyframe and the frame cannot be re-simulated: it then goes on from the
+    // frame's recorded state.
+    void resumeFromShownFrame();
+
+    // One branch of a run after a step: what a rewind drops, what its undo puts back.
+    struct Branch;
+    // Swaps the recording, plot samples and world after the branch's step with the branch's.
+    void swapBranch(Branch& branch);
 
     // Runs synchronously until the world's clock has advanced by simSeconds (to within half a
     // step), without the timer or the frame budget: for tests, the command line and
@@ -83,6 +108,9 @@ signals:
     // The message says in plain words when, in which object and what to try (DivergenceReport);
     // details hold the engine's technical message and the stability advisor's.
     void diverged(const QString& message, const QString& details);
+    // The timeline's frame changed: showFrame() (-1 back at the live end), or the recording
+    // grew or was cut.
+    void frameShown(int index);
 
 private:
     void tick();
@@ -92,8 +120,17 @@ private:
     void updateRealTimeFactor(double wallSeconds, double simSeconds);
     void estimateError();
     void flushRecorders();
+    void recordFrame();
+    void forgetRecording();
 
     Document& document_;
+    RunRecording* runRecording_ = nullptr;
+    int shownFrame_ = -1;
+    // The world's whole state at the live end while an earlier frame is shown.
+    std::shared_ptr<WorldSnapshot> liveEnd_;
+    // Which run the recording is of: a new scene or an edit starts another, and a branch kept
+    // by an undo command for an older one is not swapped in.
+    long long runGeneration_ = 0;
     Recorder* recorder_ = nullptr;
     ProbeRecorder* probes_ = nullptr;
     QTimer timer_;

@@ -80,6 +80,11 @@ public:
         return true;
     }
 
+    std::vector<double> carriedState() const override { return {stepper_.suggested()}; }
+    void restoreCarriedState(const std::vector<double>& carried) override {
+        stepper_.setSuggested(carried.empty() ? 0.0 : carried.front());
+    }
+
 private:
     AdaptiveStepper stepper_;
     Vec a0_, ah_, qFull_, uFull_, qHalf_, uHalf_;

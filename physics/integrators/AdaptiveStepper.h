@@ -12,6 +12,9 @@ class AdaptiveStepper {
 public:
     // Forget the history: the next call starts with the caller's whole step.
     void reset() { suggested_ = 0.0; }
+    // The size carried to the next call (0: none yet), for a snapshot of the world.
+    double suggested() const { return suggested_; }
+    void setSuggested(double h) { suggested_ = h; }
 
     // The size of the next internal step, given what remains of the caller's step. A
     // remainder that would leave a sliver of less than 1e-10 of the step is taken at once.

@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace phasebox {
 
@@ -88,6 +89,13 @@ public:
         summary_ = nullptr;
         return ok;
     }
+
+    // What the method carries from one step to the next besides the state (an adaptive
+    // method's suggested step size), as numbers: a snapshot of the world saves it so that a
+    // restored run goes on with the same bits. Scratch memory is not carried.
+    virtual std::vector<double> carriedState() const { return {}; }
+    virtual void restoreCarriedState(const std::vector<double>& carried) { (void)carried; }
+    void restoreStats(const IntegratorStats& stats) { stats_ = stats; }
 
     void setSettings(const IntegratorSettings& settings) { settings_ = settings; }
     const IntegratorSettings& settings() const { return settings_; }

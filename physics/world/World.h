@@ -218,6 +218,8 @@ public:
     double potentialEnergy() const;
 
 private:
+    friend class WorldSnapshot;  // saves and restores the whole state (WorldSnapshot.h)
+
     // Sleeping (WorldSleep.cpp): the timers after a good step, islands that fall asleep, sleepers
     // reached; the state rebuilt around them with the ledger and the contacts carried over.
     void updateSleep();

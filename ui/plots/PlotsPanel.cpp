@@ -9,14 +9,19 @@
 #include <QLabel>
 #include <QLegend>
 #include <QLegendMarker>
+#include <QLineSeries>
 #include <QLocale>
 #include <QMenu>
+#include <QPen>
+#include <QScatterSeries>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <QValueAxis>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace phasebox::ui {
@@ -176,6 +181,33 @@ bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
     return QWidget::eventFilter(watched, event);
 }
 
+namespace {
+
+// The shown moment: a series named "cursor" on the chart's own axes.
+void addCursor(QChart* chart, QXYSeries* cursor, const QList<QPointF>& points) {
+    const QList<QAbstractAxis*> x = chart->axes(Qt::Horizontal);
+    const QList<QAbstractAxis*> y = chart->axes(Qt::Vertical);
+    if (x.isEmpty() || y.isEmpty()) {
+        delete cursor;
+        return;
+    }
+    cursor->setName(QStringLiteral("cursor"));
+    cursor->append(points);
+    chart->addSeries(cursor);
+    cursor->attachAxis(x.first());
+    cursor->attachAxis(y.first());
+    // The legend names what was computed, not where the timeline is.
+    if (QLegend* legend = chart->legend())
+        for (QLegendMarker* m : legend->markers(cursor)) m->setVisible(false);
+}
+
+}  // namespace
+
+void PlotsPanel::setTimeCursor(double t, std::optional<PhaseSample> phase) {
+    cursorTime_ = t;
+    cursorPhase_ = std::isfinite(t) ? phase : std::nullopt;
+}
+
 void PlotsPanel::setEnergy(std::span<const EnergySample> samples,
                            std::span<const PlotMarker> markers, const QString& title) {
     // A screen reader reads the latest values, paused or not: a chart's curves are pixels.
@@ -189,7 +221,17 @@ void PlotsPanel::setEnergy(std::span<const EnergySample> samples,
                      n(e.drift)));
     }
     if (paused_) return;
-    replaceChart(energyView_, createEnergyChart(samples, markers, title));
+    QChart* chart = createEnergyChart(samples, markers, title);
+    if (std::isfinite(cursorTime_)) {
+        const auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).value(0));
+        auto* line = new QLineSeries;
+        line->setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
+        if (y)
+            addCursor(chart, line, {{cursorTime_, y->min()}, {cursorTime_, y->max()}});
+        else
+            delete line;
+    }
+    replaceChart(energyView_, chart);
     styleChart(energyView_);
 }
 
@@ -207,8 +249,15 @@ void PlotsPanel::setPhase(std::span<const PhaseSample> samples, const QString& c
                      l.toString(samples.back().velocity, 'g', 4)));
     }
     if (paused_) return;
-    replaceChart(phaseView_, createPhaseChart(samples, coordinateName, velocityName, title,
-                                              phaseReference_, phaseReferenceName_));
+    QChart* chart = createPhaseChart(samples, coordinateName, velocityName, title, phaseReference_,
+                                     phaseReferenceName_);
+    if (cursorPhase_) {
+        auto* dot = new QScatterSeries;
+        dot->setMarkerSize(11.0);
+        dot->setColor(palette().color(QPalette::Highlight));
+        addCursor(chart, dot, {{cursorPhase_->coordinate, cursorPhase_->velocity}});
+    }
+    replaceChart(phaseView_, chart);
     styleChart(phaseView_);
 }
 

@@ -11,6 +11,8 @@
 
 #include <QWidget>
 
+#include <limits>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -47,6 +49,12 @@ public:
 
     // The live error estimate; an empty series shows why there is none (text).
     void setError(std::span<const QPointF> samples, const QString& title, const QString& emptyText);
+
+    // The moment the timeline shows, marked in the plots from their next update: a vertical
+    // line at time t in the energy plot (NaN: none, the live end) and the state then in the
+    // phase plot (none when phase is empty).
+    void setTimeCursor(double t, std::optional<PhaseSample> phase);
+    double timeCursor() const { return cursorTime_; }
 
     // The plot shown below the energy plot (Phase or Error), and showing one there.
     Plot lowerPlot() const;
@@ -89,6 +97,8 @@ private:
     bool presentation_ = false;
     std::vector<PhaseSample> phaseReference_;
     QString phaseReferenceName_;
+    double cursorTime_ = std::numeric_limits<double>::quiet_NaN();
+    std::optional<PhaseSample> cursorPhase_;
 };
 
 }  // namespace phasebox::ui

@@ -73,8 +73,8 @@ void ParametersPresenter::createActions(QWidget& window) {
         [this] { cycleIntegrator(1); });
     add("previousIntegrator", tr("Previous Integrator"), Qt::Key_BracketLeft,
         [this] { cycleIntegrator(-1); });
-    add("doubleDt", tr("Double dt"), Qt::Key_Period, [this] { scaleDt(2.0); });
-    add("halveDt", tr("Halve dt"), Qt::Key_Comma, [this] { scaleDt(0.5); });
+    add("doubleDt", tr("Double dt"), Qt::CTRL | Qt::Key_Period, [this] { scaleDt(2.0); });
+    add("halveDt", tr("Halve dt"), Qt::CTRL | Qt::Key_Comma, [this] { scaleDt(0.5); });
     add("moreSubsteps", tr("More Sub-steps"), Qt::ALT | Qt::Key_Up, [this] { changeSubsteps(1); });
     add("fewerSubsteps", tr("Fewer Sub-steps"), Qt::ALT | Qt::Key_Down,
         [this] { changeSubsteps(-1); });

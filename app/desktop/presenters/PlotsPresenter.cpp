@@ -14,8 +14,11 @@
 #include <QMessageBox>
 #include <QStandardPaths>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <utility>
 
 namespace phasebox {
@@ -40,6 +43,7 @@ PlotsPresenter::PlotsPresenter(ui::PlotsPanel& panel, Document& document,
         refresh();
     });
     connect(&document_, &Document::selectionChanged, this, &PlotsPresenter::followSelection);
+    connect(&controller_, &SimulationController::frameShown, this, &PlotsPresenter::refresh);
     connect(&controller_, &SimulationController::stepped, this, [this] {
         if (sinceRefresh_.elapsed() >= kPlotIntervalMs) refresh();
     });
@@ -80,6 +84,19 @@ QString PlotsPresenter::errorNote() const {
 
 void PlotsPresenter::refresh() {
     sinceRefresh_.restart();
+    // The timeline's moment: the world shows it (SimulationController::showFrame), and the phase
+    // sample recorded at that very time marks it in the phase plot.
+    if (controller_.shownFrame() >= 0) {
+        const double t = document_.world().time();
+        const std::vector<double>& times = recorder_.phaseTimes();
+        const auto at = std::lower_bound(times.begin(), times.end(), t);
+        std::optional<ui::PhaseSample> phase;
+        if (at != times.end() && *at == t)
+            phase = recorder_.phaseSamples()[static_cast<std::size_t>(at - times.begin())];
+        panel_.setTimeCursor(t, phase);
+    } else {
+        panel_.setTimeCursor(std::numeric_limits<double>::quiet_NaN(), std::nullopt);
+    }
     panel_.setEnergy(recorder_.energySamples(), recorder_.markers(), energyTitle());
     panel_.setError(recorder_.errorSamples(), errorTitle(), errorNote());
     const QString object = recorder_.phaseObject();
@@ -104,7 +121,9 @@ void PlotsPresenter::followSelection() {
         const QString coordinate = defaultPhaseCoordinate(first);
         recorder_.setPhaseTarget(first, coordinate);
         panel_.setPhaseCoordinate(coordinate);
-        recorder_.record(document_.world());
+        // At an earlier moment of the timeline the world's clock is behind the series: recording
+        // it would read as a new run and clear them.
+        if (controller_.shownFrame() < 0) recorder_.record(document_.world());
     }
     refresh();
 }
@@ -138,7 +157,7 @@ void PlotsPresenter::choosePhaseCoordinate(const QString& coordinate) {
         return;
     }
     recorder_.setPhaseTarget(object, coordinate);
-    recorder_.record(document_.world());
+    if (controller_.shownFrame() < 0) recorder_.record(document_.world());
     refresh();
 }
 

@@ -1,0 +1,13 @@
+#include "app/sim/RewindCommand.h"
+
+#include <QCoreApplication>
+
+namespace phasebox {
+
+RewindCommand::RewindCommand(SimulationController& controller, SimulationController::Branch dropped)
+    : QUndoCommand(QCoreApplication::translate("RewindCommand", "Play from t = %1 s")
+                       .arg(dropped.time, 0, 'f', 3)),
+      controller_(controller),
+      other_(std::move(dropped)) {}
+
+}  // namespace phasebox

@@ -1,0 +1,94 @@
+#pragma once
+// The whole state of a World at one moment, saved and restored: what a recording keeps as a
+// keyframe (CONTRACT §8). Restoring it and stepping on gives the same bits as the run that was
+// never interrupted, so the snapshot holds everything a step reads from the steps before it:
+// both state buffers, the clock, the energy ledger, the divergence guard's checkpoints, the
+// contact stage (its warm-start impulses and broad-phase order), the joints' solver (its
+// factorisation and held stiffness), the sub-step choices the world holds, and what the
+// integrator carries (an adaptive method's step size).
+//
+// A snapshot belongs to the world it was taken from and to that world's objects: it is not a
+// scene description. The settings (method, dt, contact model) are part of the state and come
+// back with it; an edit that adds or removes objects makes the earlier snapshots of that world
+// meaningless, and restoring one refuses (returns false). So does a world with
+// simulation.sleep on: the islands asleep and their timers are not in a snapshot yet.
+
+#include "physics/contacts/ContactStage.h"
+#include "physics/joints/JointSolver.h"
+#include "physics/world/World.h"
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace phasebox {
+
+// What a recording keeps of every frame: enough to draw the world and to show its readouts
+// (the state, the clock and the ledger), not enough to step on from it.
+struct FrameState {
+    Vec q, u;
+    double time = 0.0;
+    long long stepCount = 0;
+    EnergyLedger ledger;
+
+    static FrameState of(const World& world);
+    std::size_t bytes() const {
+        return sizeof(FrameState) + static_cast<std::size_t>(q.size() + u.size()) * sizeof(double);
+    }
+};
+
+class WorldSnapshot {
+public:
+    WorldSnapshot();
+    ~WorldSnapshot();
+    WorldSnapshot(WorldSnapshot&&) noexcept;
+    WorldSnapshot& operator=(WorldSnapshot&&) noexcept;
+
+    // Copies the world's whole state (allocates: take it between steps, not inside one).
+    static WorldSnapshot take(const World& world);
+    // Puts the world back into the saved state, its settings included. False (and the world
+    // untouched) when the world's objects are not the ones the snapshot was taken with.
+    bool restoreInto(World& world) const;
+
+    // Shows a recorded frame: the world's state, clock and ledger become the frame's, so that
+    // drawing and every probe read that moment. What else the world carries (warm starts, the
+    // method's step size) stays as it was: restore a snapshot before stepping on. False when
+    // the frame is of other objects.
+    static bool show(World& world, const FrameState& frame);
+
+    // Whether the world runs with the settings the snapshot holds (a recording takes a new
+    // keyframe where they change, so that re-simulation never crosses a switch of method).
+    bool hasSettingsOf(const World& world) const;
+
+    double time() const { return clock_.time; }
+    long long stepCount() const { return clock_.stepCount; }
+    // Bytes held, for a recording's memory budget (an estimate: vectors by their sizes).
+    std::size_t bytes() const { return bytes_; }
+
+private:
+    int dimension_ = 0;
+    SimulationSettings settings_;
+    Vec q_[2], u_[2];
+    int current_ = 0;
+    Vec force_;
+    SimulationClock clock_;
+    long long forceEvaluations_ = 0;
+    EnergyLedger ledger_;
+    DivergenceGuard guard_;
+    std::optional<Divergence> divergence_;
+    std::unique_ptr<ContactStage> contacts_;
+    std::unique_ptr<JointSolver> joints_;
+    Vec penaltyVelocity_, kinematicImpulse_, heldForce_, unappliedJointForce_;
+    double heldWork_ = 0.0;
+    bool holding_ = false, heldValid_ = false, penaltyPairsStale_ = true;
+    int jointSubsteps_ = 1;
+    double jointSubstepsSince_ = 0.0;
+    int pulledSubsteps_ = 1, pulledPeak_ = 1;
+    double pulledSince_ = 0.0;
+    std::vector<double> integratorCarried_;
+    IntegratorStats integratorStats_;
+    std::size_t bytes_ = 0;
+};
+
+}  // namespace phasebox

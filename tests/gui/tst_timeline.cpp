@@ -1,0 +1,241 @@
+// The timeline under the canvas (CONTRACT §8): scrubbing to a recorded time shows the state the
+// run had then, bit for bit, in the world the canvas draws, the canvas picture, the status
+// readout, the Instruments readouts of the selection and the plots' cursors (energy and phase);
+// stepping back and then forward frame by frame returns the same frames; Play from an earlier
+// moment goes on exactly as the run went on, and drops the later frames as one undoable step (Undo
+// brings them back).
+
+#include "app/desktop/MainWindow.h"
+#include "app/document/Document.h"
+#include "app/sim/SimulationController.h"
+#include "physics/scene/SceneLibrary.h"
+#include "physics/world/World.h"
+#include "ui/canvas/SceneView.h"
+#include "ui/instruments/ReadoutView.h"
+#include "ui/plots/PlotsPanel.h"
+
+#include <QAction>
+#include <QChart>
+#include <QChartView>
+#include <QLabel>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTest>
+#include <QUndoStack>
+#include <QXYSeries>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <vector>
+
+using namespace phasebox;
+
+namespace {
+
+std::vector<std::uint64_t> bitsOf(const World& w) {
+    std::vector<std::uint64_t> bits;
+    for (const Vec* v : {&w.positions(), &w.velocities()})
+        for (Eigen::Index i = 0; i < v->size(); ++i)
+            bits.push_back(std::bit_cast<std::uint64_t>((*v)[i]));
+    const EnergyLedger& e = w.energy();
+    for (double v : {w.time(), e.kinetic, e.potential, e.workNc, e.drift, e.correction})
+        bits.push_back(std::bit_cast<std::uint64_t>(v));
+    return bits;
+}
+
+QString statusTime(MainWindow& w) {
+    for (const QLabel* l : w.statusBar()->findChildren<QLabel*>())
+        if (l->text().startsWith(QStringLiteral("t = "))) return l->text();
+    return {};
+}
+
+// The x of the energy plot's cursor line, NaN when there is none.
+double energyCursor(MainWindow& w) {
+    const QChart* chart = w.plotsPanel()->energyView()->chart();
+    for (QAbstractSeries* s : chart->series())
+        if (s->name() == QStringLiteral("cursor")) {
+            const auto* line = static_cast<QXYSeries*>(s);
+            if (line->count() > 0) return line->at(0).x();
+        }
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+// The phase plot's cursor dot, NaN when there is none.
+QPointF phaseCursor(MainWindow& w) {
+    const QChart* chart = w.plotsPanel()->phaseView()->chart();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (!chart) return {nan, nan};
+    for (QAbstractSeries* s : chart->series())
+        if (s->name() == QStringLiteral("cursor")) {
+            const auto* dot = static_cast<QXYSeries*>(s);
+            if (dot->count() > 0) return dot->at(0);
+        }
+    return {nan, nan};
+}
+
+// What the Instruments dock reads out for the selection.
+QStringList readouts(MainWindow& w) {
+    const auto* view = w.findChild<ui::ReadoutView*>();
+    if (!view) return {};
+    QStringList out{view->subject(), view->state()};
+    // Every row that the state, clock and ledger give (contact force reads the contact solver's
+    // impulses, which a shown frame does not carry: see the user guide).
+    for (const char* label :
+         {"position (x, y)", "velocity (vx, vy)", "speed", "angle", "angular velocity ω",
+          "kinetic energy", "momentum (px, py)", "angular momentum L"})
+        out << view->valueText(QString::fromUtf8(label));
+    return out;
+}
+
+struct Moment {
+    std::vector<std::uint64_t> bits;
+    QImage canvas;
+    QString status;
+    QStringList readouts;
+};
+
+class Run {
+public:
+    explicit Run(MainWindow& w) : w_(w) {}
+    Moment now() {
+        w_.refreshNow();
+        QCoreApplication::processEvents();
+        return {bitsOf(w_.document().world()), w_.canvas()->grab().toImage(), statusTime(w_),
+                readouts(w_)};
+    }
+    // Steps the run one step at a time, keeping every moment.
+    void steps(int n) {
+        for (int i = 0; i < n; ++i) {
+            QVERIFY(w_.controller().advance(w_.document().world().settings().dt));
+            moments.push_back(now());
+        }
+    }
+    std::vector<Moment> moments;
+
+private:
+    MainWindow& w_;
+};
+
+}  // namespace
+
+class TestTimeline : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QStandardPaths::setTestModeEnabled(true); }
+
+    void init() {
+        window_ = std::make_unique<MainWindow>();
+        window_->resize(1024, 700);
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        QVERIFY(window_->document().loadFromDesc(scenes::pyramid(5)));
+    }
+    void cleanup() { window_.reset(); }
+
+    void scrubShowsTheRecordedMoment() {
+        MainWindow& w = *window_;
+        // A box of the second row: its phase plot (y against vy) and its readouts.
+        w.document().setSelection({QStringLiteral("r1c2")});
+        w.action("showInstruments")->trigger();
+        QCoreApplication::processEvents();
+        int box = -1;
+        for (std::size_t i = 0; i < w.document().world().boxes().size(); ++i)
+            if (w.document().world().boxes()[i].id == "r1c2") box = static_cast<int>(i);
+        QVERIFY(box >= 0);
+        Run run(w);
+        run.moments.push_back(run.now());
+        run.steps(90);
+        QVERIFY(run.moments.back().readouts.size() > 2);
+        QVERIFY(!run.moments.back().readouts[2].isEmpty());
+        auto* slider = w.findChild<QSlider*>(QStringLiteral("timelineSlider"));
+        QVERIFY(slider);
+        QCOMPARE(slider->maximum(), 90);
+        QCOMPARE(slider->value(), 90);
+        QVERIFY(std::isnan(energyCursor(w)));
+        for (int frame : {37, 3, 88, 0, 61}) {
+            slider->setValue(frame);  // as a drag does
+            const Moment shown = run.now();
+            const Moment& then = run.moments[static_cast<std::size_t>(frame)];
+            QVERIFY2(shown.bits == then.bits, qPrintable(QStringLiteral("frame %1").arg(frame)));
+            QCOMPARE(shown.status, then.status);
+            QCOMPARE(shown.readouts, then.readouts);
+            const World& world = w.document().world();
+            QCOMPARE(phaseCursor(w),
+                     QPointF(world.boxPosition(box).y(), world.boxVelocity(box).y()));
+            QVERIFY2(shown.canvas == then.canvas,
+                     qPrintable(QStringLiteral("canvas at frame %1").arg(frame)));
+            QCOMPARE(energyCursor(w), w.document().world().time());
+            QCOMPARE(w.controller().shownFrame(), frame);
+        }
+        // The live end again: the run's state, no cursor.
+        slider->setValue(90);
+        QVERIFY(run.now().bits == run.moments.back().bits);
+        QCOMPARE(w.controller().shownFrame(), -1);
+        QVERIFY(std::isnan(energyCursor(w)));
+    }
+
+    void stepBackThenForwardReturnsTheSameFrames() {
+        MainWindow& w = *window_;
+        Run run(w);
+        run.moments.push_back(run.now());
+        run.steps(40);
+        w.action("jumpToStart")->trigger();
+        QVERIFY(run.now().bits == run.moments[0].bits);
+        w.findChild<QSlider*>(QStringLiteral("timelineSlider"))->setValue(30);
+        for (int k = 1; k <= 6; ++k) {
+            w.action("frameBack")->trigger();
+            QVERIFY(run.now().bits == run.moments[static_cast<std::size_t>(30 - k)].bits);
+        }
+        for (int k = 1; k <= 6; ++k) {
+            w.action("frameForward")->trigger();
+            QVERIFY(run.now().bits == run.moments[static_cast<std::size_t>(24 + k)].bits);
+        }
+        QCOMPARE(w.controller().shownFrame(), 30);
+    }
+
+    void playFromAnEarlierMomentIsOneUndoableStep() {
+        MainWindow& w = *window_;
+        Run run(w);
+        run.moments.push_back(run.now());
+        run.steps(150);  // keyframes every 120 steps: the resume below re-simulates from one
+        const int commands = w.document().undoStack()->count();
+        w.findChild<QSlider*>(QStringLiteral("timelineSlider"))->setValue(130);
+        w.controller().singleStep();
+        // The run went on from frame 130 exactly as it did the first time.
+        QVERIFY(run.now().bits == run.moments[131].bits);
+        QCOMPARE(w.controller().shownFrame(), -1);
+        auto* slider = w.findChild<QSlider*>(QStringLiteral("timelineSlider"));
+        QCOMPARE(slider->maximum(), 131);
+        QCOMPARE(w.document().undoStack()->count(), commands + 1);
+        w.document().undoStack()->undo();
+        QCOMPARE(slider->maximum(), 150);
+        QVERIFY(run.now().bits == run.moments[150].bits);
+        w.document().undoStack()->redo();
+        QCOMPARE(slider->maximum(), 131);
+        QVERIFY(run.now().bits == run.moments[131].bits);
+    }
+
+    // The timeline fits under the canvas in a small window and shows the recording's memory.
+    void fitsAndShowsItsBudget() {
+        MainWindow& w = *window_;
+        auto* timeline = w.findChild<QWidget*>(QStringLiteral("timeline"));
+        QVERIFY(timeline && timeline->isVisible());
+        QVERIFY(timeline->geometry().bottom() <= w.centralWidget()->height());
+        QVERIFY(w.canvas()->height() > 200);
+        w.controller().advance(0.5);
+        w.refreshNow();
+        const auto* memory = w.findChild<QLabel*>(QStringLiteral("timelineMemory"));
+        QVERIFY(memory && memory->text().endsWith(QStringLiteral("MB of")));
+    }
+
+private:
+    std::unique_ptr<MainWindow> window_;
+};
+
+QTEST_MAIN(TestTimeline)
+#include "tst_timeline.moc"
