@@ -529,6 +529,13 @@
     </message>
 </context>
 <context>
+    <name>RewindCommand</name>
+    <message>
+        <source>Play from t = %1 s</source>
+        <translation>Ab t = %1 s abspielen</translation>
+    </message>
+</context>
+<context>
     <name>SceneTexts</name>
     <message>
         <source>Bouncing balls: restitution</source>
@@ -2996,6 +3003,21 @@ Die Datei auf der Festplatte (falls vorhanden) ist unverändert.</translation>
     </message>
 </context>
 <context>
+    <name>phasebox::TimelinePresenter</name>
+    <message>
+        <source>One Frame Back</source>
+        <translation>Ein Bild zurück</translation>
+    </message>
+    <message>
+        <source>One Frame Forward</source>
+        <translation>Ein Bild vor</translation>
+    </message>
+    <message>
+        <source>Jump to Start</source>
+        <translation>Zum Anfang springen</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::ui::EffectsPanel</name>
     <message>
         <source>Spring forces; runs because the scene holds springs</source>
@@ -3759,6 +3781,53 @@ die Pfeile ändern sie um den Faktor zehn</translation>
     <message>
         <source>must be ≤ %1</source>
         <translation>muss ≤ %1 sein</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ui::TimelineBar</name>
+    <message>
+        <source>Jump to the start (Home)</source>
+        <translation>Zum Anfang springen (Pos1)</translation>
+    </message>
+    <message>
+        <source>One frame back (,)</source>
+        <translation>Ein Bild zurück (,)</translation>
+    </message>
+    <message>
+        <source>One frame forward (.)</source>
+        <translation>Ein Bild vor (.)</translation>
+    </message>
+    <message>
+        <source>Recorded time</source>
+        <translation>Aufgezeichnete Zeit</translation>
+    </message>
+    <message>
+        <source>Drag to any recorded moment; Play goes on from there</source>
+        <translation>Zu jedem aufgezeichneten Moment ziehen; Start macht von dort weiter</translation>
+    </message>
+    <message>
+        <source>Memory the recording holds, of its budget</source>
+        <translation>Speicher der Aufzeichnung, von ihrem Budget</translation>
+    </message>
+    <message>
+        <source>Recording budget</source>
+        <translation>Aufzeichnungsbudget</translation>
+    </message>
+    <message>
+        <source>The recording&apos;s memory budget: beyond it older frames are thinned</source>
+        <translation>Das Speicherbudget der Aufzeichnung: darüber hinaus werden ältere Bilder ausgedünnt</translation>
+    </message>
+    <message>
+        <source> MB</source>
+        <translation> MB</translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 s</translation>
+    </message>
+    <message>
+        <source>%1 MB of</source>
+        <translation>%1 MB von</translation>
     </message>
 </context>
 <context>

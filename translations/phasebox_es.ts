@@ -529,6 +529,13 @@
     </message>
 </context>
 <context>
+    <name>RewindCommand</name>
+    <message>
+        <source>Play from t = %1 s</source>
+        <translation>Reproducir desde t = %1 s</translation>
+    </message>
+</context>
+<context>
     <name>SceneTexts</name>
     <message>
         <source>Bouncing balls: restitution</source>
@@ -2996,6 +3003,21 @@ El archivo en disco (si lo hay) no ha cambiado.</translation>
     </message>
 </context>
 <context>
+    <name>phasebox::TimelinePresenter</name>
+    <message>
+        <source>One Frame Back</source>
+        <translation>Un fotograma atrás</translation>
+    </message>
+    <message>
+        <source>One Frame Forward</source>
+        <translation>Un fotograma adelante</translation>
+    </message>
+    <message>
+        <source>Jump to Start</source>
+        <translation>Saltar al inicio</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::ui::EffectsPanel</name>
     <message>
         <source>Spring forces; runs because the scene holds springs</source>
@@ -3759,6 +3781,53 @@ las flechas la cambian en un factor diez</translation>
     <message>
         <source>must be ≤ %1</source>
         <translation>debe ser ≤ %1</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ui::TimelineBar</name>
+    <message>
+        <source>Jump to the start (Home)</source>
+        <translation>Saltar al inicio (Inicio)</translation>
+    </message>
+    <message>
+        <source>One frame back (,)</source>
+        <translation>Un fotograma atrás (,)</translation>
+    </message>
+    <message>
+        <source>One frame forward (.)</source>
+        <translation>Un fotograma adelante (.)</translation>
+    </message>
+    <message>
+        <source>Recorded time</source>
+        <translation>Tiempo grabado</translation>
+    </message>
+    <message>
+        <source>Drag to any recorded moment; Play goes on from there</source>
+        <translation>Arrastre a cualquier momento grabado; Iniciar sigue desde allí</translation>
+    </message>
+    <message>
+        <source>Memory the recording holds, of its budget</source>
+        <translation>Memoria que ocupa la grabación, de su límite</translation>
+    </message>
+    <message>
+        <source>Recording budget</source>
+        <translation>Límite de la grabación</translation>
+    </message>
+    <message>
+        <source>The recording&apos;s memory budget: beyond it older frames are thinned</source>
+        <translation>El límite de memoria de la grabación: por encima se aclaran los fotogramas antiguos</translation>
+    </message>
+    <message>
+        <source> MB</source>
+        <translation> MB</translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 s</translation>
+    </message>
+    <message>
+        <source>%1 MB of</source>
+        <translation>%1 MB de</translation>
     </message>
 </context>
 <context>

@@ -529,6 +529,13 @@
     </message>
 </context>
 <context>
+    <name>RewindCommand</name>
+    <message>
+        <source>Play from t = %1 s</source>
+        <translation>Lecture depuis t = %1 s</translation>
+    </message>
+</context>
+<context>
     <name>SceneTexts</name>
     <message>
         <source>Bouncing balls: restitution</source>
@@ -2996,6 +3003,21 @@ Le fichier sur le disque (s’il existe) n’a pas changé.</translation>
     </message>
 </context>
 <context>
+    <name>phasebox::TimelinePresenter</name>
+    <message>
+        <source>One Frame Back</source>
+        <translation>Une image en arrière</translation>
+    </message>
+    <message>
+        <source>One Frame Forward</source>
+        <translation>Une image en avant</translation>
+    </message>
+    <message>
+        <source>Jump to Start</source>
+        <translation>Aller au début</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::ui::EffectsPanel</name>
     <message>
         <source>Spring forces; runs because the scene holds springs</source>
@@ -3759,6 +3781,53 @@ les flèches la changent d’un facteur dix</translation>
     <message>
         <source>must be ≤ %1</source>
         <translation>doit être ≤ %1</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ui::TimelineBar</name>
+    <message>
+        <source>Jump to the start (Home)</source>
+        <translation>Aller au début (Origine)</translation>
+    </message>
+    <message>
+        <source>One frame back (,)</source>
+        <translation>Une image en arrière (,)</translation>
+    </message>
+    <message>
+        <source>One frame forward (.)</source>
+        <translation>Une image en avant (.)</translation>
+    </message>
+    <message>
+        <source>Recorded time</source>
+        <translation>Temps enregistré</translation>
+    </message>
+    <message>
+        <source>Drag to any recorded moment; Play goes on from there</source>
+        <translation>Faites glisser vers tout moment enregistré ; Lecture reprend de là</translation>
+    </message>
+    <message>
+        <source>Memory the recording holds, of its budget</source>
+        <translation>Mémoire occupée par l’enregistrement, sur son budget</translation>
+    </message>
+    <message>
+        <source>Recording budget</source>
+        <translation>Budget de l’enregistrement</translation>
+    </message>
+    <message>
+        <source>The recording&apos;s memory budget: beyond it older frames are thinned</source>
+        <translation>Le budget mémoire de l’enregistrement : au-delà, les images anciennes sont éclaircies</translation>
+    </message>
+    <message>
+        <source> MB</source>
+        <translation> Mo</translation>
+    </message>
+    <message>
+        <source>%1 / %2 s</source>
+        <translation>%1 / %2 s</translation>
+    </message>
+    <message>
+        <source>%1 MB of</source>
+        <translation>%1 Mo sur</translation>
     </message>
 </context>
 <context>
