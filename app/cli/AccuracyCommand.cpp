@@ -39,6 +39,7 @@ constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 const char* kAccuracyUsage =
     "usage: phasebox-cli accuracy SCENE [--integrators LIST|all] [--dt LIST] [--duration S]\n"
     "                                   [--tolerances LIST] [--csv FILE] [--plot FILE] [--json]\n"
+    "                                   [--threads N]\n"
     "\n"
     "Runs the scene to its end time with each integrator at each dt, compares the positions\n"
     "at the end with a reference (the exact solution for oscillators, free fall and Kepler\n"
@@ -57,6 +58,7 @@ const char* kAccuracyUsage =
     "                      energy_drift,order,tolerance,diverged; '-' = stdout\n"
     "  --json              one JSON object: scene, reference, contacts, note, records\n"
     "  --plot FILE         the work-precision diagram (.png or .svg)\n"
+    "  --threads N         workers, 1 to 1024 (the same records for every N)\n"
     "\n"
     "order = ln(error_prev/error) / ln(dt_prev/dt) against the previous dt of the same\n"
     "integrator; empty for adaptive methods and for scenes with contacts (contact events make\n"
@@ -100,10 +102,16 @@ QString parseNumbers(const QString& option, const QString& text, double upper,
 
 QString parseOptions(const QStringList& args, AccuracyCliOptions& o) {
     CommandLine line;
-    if (const QString error = parseCommandLine(
-            QStringLiteral("accuracy"),
-            {{"json", 0}, {"integrators"}, {"dt"}, {"duration"}, {"tolerances"}, {"csv"}, {"plot"}},
-            args, line);
+    if (const QString error = parseCommandLine(QStringLiteral("accuracy"),
+                                               {{"json", 0},
+                                                {"integrators"},
+                                                {"dt"},
+                                                {"duration"},
+                                                {"tolerances"},
+                                                {"csv"},
+                                                {"plot"},
+                                                {"threads"}},
+                                               args, line);
         !error.isEmpty())
         return error;
     QStringList outputsSeen;
@@ -115,7 +123,9 @@ QString parseOptions(const QStringList& args, AccuracyCliOptions& o) {
         const QString& a = option.name;
         const QString& v = option.value();
         QString error;
-        if (a == QLatin1String("--integrators")) {
+        if (a == QLatin1String("--threads")) {
+            if (!(error = threadsProblem(v)).isEmpty()) return error;
+        } else if (a == QLatin1String("--integrators")) {
             o.study.integrators.clear();
             if (v.trimmed() == QLatin1String("all")) continue;
             const QStringList names = splitList(v);

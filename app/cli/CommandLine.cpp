@@ -126,4 +126,13 @@ QString parseCommandLine(const QString& command, const QList<OptionSpec>& specs,
     return {};
 }
 
+QString threadsProblem(const QString& value) {
+    bool ok = false;
+    const int n = value.toInt(&ok);
+    if (!ok) return QStringLiteral("--threads: must be an integer (got \"%1\")").arg(value);
+    if (n < 1 || n > kMaxThreads)
+        return QStringLiteral("--threads: must be >= 1 and <= %1 (got %2)").arg(kMaxThreads).arg(n);
+    return {};
+}
+
 }  // namespace phasebox::cli

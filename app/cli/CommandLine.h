@@ -49,6 +49,13 @@ QString parseCommandLine(const QString& command, const QList<OptionSpec>& specs,
 // file`), else an empty string.
 QString takeScene(const QString& command, const CommandLine& line, QString& scene);
 
+// `--threads N` (CONTRACT §4), taken by run, accuracy and render: the number of workers, an
+// integer from 1 to kMaxThreads. Every output but the timings is the same for every N; the
+// step runs on one worker in this version, so N changes nothing yet. An error message, or
+// an empty string.
+inline constexpr int kMaxThreads = 1024;
+QString threadsProblem(const QString& value);
+
 // Whether the arguments ask for --help or -h (anywhere: the help wins over every fault).
 bool asksForHelp(const QStringList& arguments);
 

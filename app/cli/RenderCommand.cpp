@@ -21,7 +21,7 @@ namespace {
 
 const char* kRenderUsage =
     "usage: phasebox-cli render SCENE --out FILE.mp4|FILE.gif [--from S] [--duration S]\n"
-    "                                 [--fps N] [--size WxH] [--plots]\n"
+    "                                 [--fps N] [--size WxH] [--plots] [--threads N]\n"
     "\n"
     "Draws the run offscreen, as the app's canvas draws it, and writes a clip:\n"
     "  --out FILE      .mp4 (H.264 video) or .gif (animated GIF, looping)\n"
@@ -30,6 +30,7 @@ const char* kRenderUsage =
     "  --fps N         frames per second (1 to 120; a GIF at most 50); default 30\n"
     "  --size WxH      pixels of each frame (even for MP4); default 1280x720\n"
     "  --plots         the energy and phase plots beside the canvas\n"
+    "  --threads N     workers, 1 to 1024 (the same frames for every N)\n"
     "\n"
     "The clip has round(duration*fps) frames at t = from + k/fps, each showing the last step\n"
     "at or before t; a GIF's delays (hundredths of a second) add up to the duration. A write\n"
@@ -47,7 +48,8 @@ QString parseRenderOptions(const QStringList& args, RenderOptions& o) {
     CommandLine line;
     if (const QString error = parseCommandLine(
             QStringLiteral("render"),
-            {{"plots", 0}, {"out"}, {"from"}, {"duration"}, {"fps"}, {"size"}}, args, line);
+            {{"plots", 0}, {"out"}, {"from"}, {"duration"}, {"fps"}, {"size"}, {"threads"}}, args,
+            line);
         !error.isEmpty())
         return error;
     QStringList outputsSeen;
@@ -59,7 +61,9 @@ QString parseRenderOptions(const QStringList& args, RenderOptions& o) {
         const QString& a = option.name;
         const QString& v = option.value();
         bool ok = false;
-        if (option.is("--out")) {
+        if (option.is("--threads")) {
+            if (QString error = threadsProblem(v); !error.isEmpty()) return error;
+        } else if (option.is("--out")) {
             if (QString error = noteOutputOption(a, v, outputsSeen); !error.isEmpty()) return error;
             o.out = v;
         } else if (option.is("--fps")) {

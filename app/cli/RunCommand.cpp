@@ -38,7 +38,7 @@ const char* kRunUsage =
     "usage: phasebox-cli run SCENE [--integrator NAME] [--dt S] [--substeps N] [--duration S]\n"
     "                              [--tolerance T] [--csv FILE] [--every K] [--track ID,ID...]\n"
     "                              [--json] [--plot-energy FILE] [--plot-phase ID.COORD FILE]\n"
-    "                              [--probe EXPR]... [--contact-model NAME]\n"
+    "                              [--probe EXPR]... [--contact-model NAME] [--threads N]\n"
     "\n"
     "  --contact-model M impulse, penalty or kinematic (the scene's simulation.contact_model)\n"
     "  --csv FILE        time series: t,kinetic,potential,work_nc,drift,correction,\n"
@@ -55,7 +55,9 @@ const char* kRunUsage =
     "                    distance(A,B) angle(A,B,C) (ids or points X:Y; vertex B)\n"
     "                    force(JOINT) JOINT.angle contact_force(ID)\n"
     "  --plot-energy F   the energy plot as .png or .svg\n"
-    "  --plot-phase ID.COORD F   phase plot of COORD (x, y or angle) of object ID\n";
+    "  --plot-phase ID.COORD F   phase plot of COORD (x, y or angle) of object ID\n"
+    "  --threads N       workers, 1 to 1024; every output but the timings is the same for\n"
+    "                    every N (this version steps on one worker)\n";
 
 struct RunOptions {
     QString scene;
@@ -121,7 +123,8 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
                               {"plot-energy"},
                               {"plot-phase", 2, "--plot-phase needs ID.COORD and FILE"},
                               {"probe"},
-                              {"contact-model"}},
+                              {"contact-model"},
+                              {"threads"}},
                              args, line);
         !error.isEmpty())
         return error;
@@ -136,7 +139,9 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
         QString error;
         double d = 0.0;
         int n = 0;
-        if (a == QLatin1String("--integrator")) {
+        if (a == QLatin1String("--threads")) {
+            if (!(error = threadsProblem(v)).isEmpty()) return error;
+        } else if (a == QLatin1String("--integrator")) {
             if (!findIntegrator(v.toStdString()))
                 return QStringLiteral("--integrator: unknown integrator \"%1\"; known: %2")
                     .arg(v, QString::fromStdString(knownIntegratorNames()));
