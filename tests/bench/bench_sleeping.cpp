@@ -14,6 +14,7 @@
 
 #include "AllocationCounter.h"
 #include "BenchCommon.h"
+#include "SleepScenes.h"
 
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
@@ -31,33 +32,12 @@ namespace {
 using namespace phasebox;
 using namespace phasebox::bench;
 
-constexpr int kRows = 20;
+constexpr int kRows = sleep_scenes::kRows;
 constexpr int kBoxes = kRows * (kRows + 1) / 2;
 constexpr int kDefaultSteps = 120;
 constexpr int kDefaultRepeat = 7;
 
-SceneDesc pyramid(bool sleep) {
-    SceneDesc s = scenes::pyramid(kRows);
-    s.simulation.sleep = sleep;
-    return s;
-}
-
-SceneDesc withSlider(bool sleep) {
-    SceneDesc s = pyramid(sleep);
-    BoxDesc ledge;
-    ledge.id = "ledge";
-    ledge.isStatic = true;
-    ledge.position = {9.55, 18.8};
-    ledge.size = {17.0, 0.4};
-    ledge.friction = 0.0;
-    s.boxes.push_back(ledge);
-    BoxDesc slider;
-    slider.id = "slider";
-    slider.position = {17.0, 19.5};
-    slider.velocity = {-2.0, 0.0};
-    s.boxes.push_back(slider);
-    return s;
-}
+using sleep_scenes::pyramid;
 
 int asleep(const World& w) {
     int n = 0;
@@ -114,7 +94,7 @@ struct Wake {
 
 Wake runSlider(bool sleep) {
     Wake r;
-    auto w = buildWorld(withSlider(sleep)).world;
+    auto w = buildWorld(sleep_scenes::pyramidAndSlider(sleep)).world;
     int apex = -1;
     for (int i = 0; i < static_cast<int>(w->boxes().size()); ++i)
         if (w->boxes()[i].id == "r19c0") apex = i;

@@ -10,6 +10,7 @@
 //   - the same scene gives the same bits, and sleeping off changes nothing.
 
 #include "../bench/AllocationCounter.h"
+#include "../bench/SleepScenes.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
 #include "physics/world/World.h"
@@ -34,31 +35,8 @@ std::unique_ptr<World> build(const SceneDesc& desc) {
     return buildWorld(desc).world;
 }
 
-SceneDesc pyramid(bool sleep) {
-    SceneDesc s = scenes::pyramid(20);
-    s.simulation.sleep = sleep;
-    return s;
-}
-
-// The pyramid with a 1 m box on a frictionless static ledge at the apex's base, sliding left
-// at 2 m/s so that it reaches the apex's side at about t = 8 s, after the pyramid fell asleep.
-SceneDesc pyramidAndSlider(bool sleep) {
-    SceneDesc s = pyramid(sleep);
-    BoxDesc ledge;
-    ledge.id = "ledge";
-    ledge.isStatic = true;
-    ledge.position = {9.55, 18.8};
-    ledge.size = {17.0, 0.4};
-    ledge.friction = 0.0;
-    s.boxes.push_back(ledge);
-    BoxDesc slider;
-    slider.id = "slider";
-    slider.position = {17.0, 19.5};
-    slider.size = {1.0, 1.0};
-    slider.velocity = {-2.0, 0.0};
-    s.boxes.push_back(slider);
-    return s;
-}
+using sleep_scenes::pyramid;
+using sleep_scenes::pyramidAndSlider;
 
 int boxIndex(const World& w, const std::string& id) {
     for (int i = 0; i < static_cast<int>(w.boxes().size()); ++i)
