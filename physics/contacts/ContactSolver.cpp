@@ -46,6 +46,26 @@ namespace {
 Vec2 tangentOf(const Vec2& n) {
     return {n.y(), -n.x()};
 }
+
+// A soft contact carries its load by sinking load/(m·ω²), g/ω² for a body lying on the floor:
+// an absolute depth, whatever the body's size. A body much smaller than that depth's scale
+// would rest sunk by a large share of its size and tilt by the difference of its corners'
+// depths (a triangle's corners carry 2 : 1), then spin up as the manifold follows the tilt.
+// Below kStiffHalfSize the contact stiffens as the smaller body's half-size falls, so that its
+// rest depth keeps the same share of its size: ω² ∝ 1/size. The soft step is implicit, so a
+// stiff contact stays stable; it answers like a rigid one, pushed out within a few sub-steps.
+// (More sub-steps would do the same at a cost for the whole scene; a rigid answer below a
+// size would make a small body's contacts behave unlike a large one's.)
+constexpr double kStiffHalfSize = 5e-3;
+// ContactStage sets a contact's deepOverlap to this share of the smaller body's half-size.
+constexpr double kDeepOverlapPerHalfSize = 0.1;
+constexpr double kMostSizeStiffness = 1000.0;
+
+double sizeStiffness(double deepOverlap) {
+    const double halfSize = deepOverlap / kDeepOverlapPerHalfSize;
+    if (!(halfSize > 0.0) || !(halfSize < kStiffHalfSize)) return 1.0;
+    return std::min(std::sqrt(kStiffHalfSize / halfSize), kMostSizeStiffness);
+}
 }  // namespace
 
 // Soft constraint coefficients (Box2D v3's b2MakeSoft): a spring-damper of frequency ω and
@@ -86,6 +106,7 @@ void ContactSolver::prepare() {
         } else {
             c.stiffness = 2.0;
         }
+        c.stiffness *= sizeStiffness(c.deepOverlap);
         const Vec2 t = tangentOf(c.normal);
         for (int k = 0; k < c.pointCount; ++k) {
             ContactPoint& p = c.points[k];

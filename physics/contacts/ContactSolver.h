@@ -185,6 +185,10 @@ public:
     // The deepest sag a stack may take at the default stiffness before the solver adds inner
     // sub-steps (stiffer with each), and the passes that sum sag down support chains.
     static constexpr double kSagTarget = 0.04;
+    // The deepest a loaded contact may rest at the default stiffness, as a share of its
+    // deep-overlap bound (a tenth of the smaller body's half-size): past that bound the push-out
+    // moves positions only, so a stack of small bodies resting there is pushed apart and falls.
+    static constexpr double kLoadedSinkShare = 0.25;
     static constexpr int kMaxSagPasses = 256;
     static constexpr int kStepsBeforeFewer = 120;
     static constexpr int kStepsBeforeMore = 30;
@@ -400,7 +404,7 @@ private:
     int lastSubsteps_ = 0;
     int stepsWantingFewer_ = 0;
     int stepsWantingMore_ = 0;
-    double leastDeepSag_ = 0.0;
+    double leastDepthRatio_ = 0.0;   // the least depth over its bound while more were wanted
     double largestMassRatio_ = 1.0;  // over the contacts between two dynamic bodies (prepare)
     double predictedSag_ = 0.0;
 };

@@ -1,6 +1,7 @@
 // How many inner sub-steps the contact solver takes in a step: at least kInnerRate a second,
 // and more for a deep stack, whose sag under its load (each contact sinks by its force over its
-// stiffness, summed down the support chains) would otherwise pass kSagTarget.
+// stiffness, summed down the support chains) would otherwise pass kSagTarget, or where one
+// contact would sink past its share of its bodies' size (kLoadedSinkShare).
 #include "physics/contacts/ContactSolver.h"
 
 #include <algorithm>
@@ -30,6 +31,7 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
     const int world = static_cast<int>(bodies_.size());
     // Each contact once: which body rests on which, and by how much the upper one sinks.
     supports_.clear();
+    double worstSink = 0.0;                  // the deepest contact's sink over the most it may sink
     supports_.reserve(constraints_.size());  // grown with the contacts, not mid-run
     for (const ContactConstraint& c : constraints_) {
         const double w = omega * c.stiffness;
@@ -40,6 +42,7 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
         }
         if (c.pointCount == 0 || !(sink > 0.0)) continue;
         sink /= c.pointCount * lastInnerH_;
+        worstSink = std::max(worstSink, sink / (kLoadedSinkShare * c.deepOverlap));
         const int a = c.bodyA >= 0 ? c.bodyA : world;
         const int b = c.bodyB >= 0 ? c.bodyB : world;
         // The normal points from A to B: B rests on A when its smooth push is against n.
@@ -64,24 +67,26 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
     }
     for (double d : depth_) predictedSag_ = std::max(predictedSag_, d);
     if (settings.substeps > 0) return base;
+    // How far past its bound the worse of the two goes: the stack's sag, or a contact's own.
+    const double depthRatio = std::max(predictedSag_ / kSagTarget, worstSink);
     // A change of stiffness moves a resting stack to a new rest, so the count follows the
     // load, not an impact: it rises when the sag has been predicted too deep for a while (by
     // the least of those predictions) and falls when fewer have sufficed for longer.
     const int held = std::clamp(lastSubsteps_, base, kMaxInnerSubsteps);
-    const auto needed = [&](double sag) {
-        if (!(sag > kSagTarget)) return base;
+    const auto needed = [&](double ratio) {
+        if (!(ratio > 1.0)) return base;
         // The sag falls with the square of the rate (the stiffness rises with it).
-        const double factor = std::sqrt(sag / kSagTarget);
+        const double factor = std::sqrt(ratio);
         return std::min(kMaxInnerSubsteps, static_cast<int>(std::ceil(base * factor)));
     };
-    const int wanted = needed(predictedSag_);
+    const int wanted = needed(depthRatio);
     if (wanted > held) {
         stepsWantingFewer_ = 0;
-        leastDeepSag_ =
-            stepsWantingMore_ == 0 ? predictedSag_ : std::min(leastDeepSag_, predictedSag_);
+        leastDepthRatio_ =
+            stepsWantingMore_ == 0 ? depthRatio : std::min(leastDepthRatio_, depthRatio);
         if (++stepsWantingMore_ < kStepsBeforeMore) return held;
         stepsWantingMore_ = 0;
-        return std::max(held, needed(leastDeepSag_));
+        return std::max(held, needed(leastDepthRatio_));
     }
     stepsWantingMore_ = 0;
     if (wanted == held || ++stepsWantingFewer_ < kStepsBeforeFewer) return held;

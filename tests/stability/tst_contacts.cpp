@@ -160,6 +160,40 @@ private slots:
         QVERIFY(shortening < 0.005 * height);
     }
 
+    void centimetreTowerStands() {
+        // The tower of ten boxes at a hundredth of the size: 1 cm boxes. Its lower contacts carry
+        // the boxes above them at the same absolute stiffness, so at the base stiffness they
+        // would rest deeper than their deep-overlap bound (a tenth of a half-size, 0.5 mm) and
+        // the column was pushed apart and fell; the solver adds sub-steps until each contact
+        // rests within its share of that bound, as it does when a whole stack sags too far.
+        const int count = 10;
+        const double size = 0.01;
+        // Every other box is set off by a ten-thousandth of its size, as no hand places them
+        // exactly: a perfectly symmetric column cannot topple, whatever its contacts do.
+        SceneDesc scene = scenes::tower(count);
+        for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
+            BoxDesc& b = scene.boxes[i];
+            b.size = {size, size};
+            b.position = {(i % 2 == 1 ? 1e-4 : 0.0) * size, b.position[1] * size};
+        }
+        auto world = build(scene);
+        QVERIFY(run(*world, 5.0));
+        double sideways = 0.0, tilt = 0.0;
+        for (int i = 0; i < count; ++i) {
+            sideways =
+                std::max(sideways, std::abs(world->boxPosition(i).x() -
+                                            scene.boxes[static_cast<std::size_t>(i)].position[0]));
+            tilt = std::max(tilt, std::abs(world->boxAngle(i)));
+        }
+        const double height = count * size;
+        const double shortening = height - (world->boxPosition(count - 1).y() + 0.5 * size);
+        qInfo("1 cm tower of %d after 5 s: sideways %.2e m, tilt %.2e rad, shortened by %.2f%%",
+              count, sideways, tilt, 100.0 * shortening / height);
+        QVERIFY(sideways < 0.01 * size);
+        QVERIFY(tilt < 0.01);
+        QVERIFY(shortening < 0.01 * height);
+    }
+
     void ballBouncesToESquaredHeight() {
         auto world = build(scenes::ballDrop(1.0, 0.8));
         const double radius = world->particles()[0].radius;

@@ -173,6 +173,64 @@ private slots:
         QVERIFY(std::abs(p.y() - 0.3 * std::cos(std::numbers::pi / 5.0)) < 0.08);
     }
 
+    void smallShapesRestFlatAtEverySize_data() {
+        QTest::addColumn<QString>("shape");
+        QTest::addColumn<double>("size");
+        for (double size : {2e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1.0}) {
+            const QByteArray triangle = "right triangle " + QByteArray::number(size);
+            QTest::newRow(triangle.constData()) << QString("right triangle") << size;
+        }
+        QTest::newRow("equilateral triangle 1.2e-6") << QString("equilateral") << 1.2e-6;
+        QTest::newRow("box 1e-5") << QString("box") << 1e-5;
+    }
+    void smallShapesRestFlatAtEverySize() {
+        // A rigid shape lying flat on the floor stays flat and at rest, whatever its size: the
+        // contact's rest depth must be a share of the body's size, not an absolute depth (a
+        // right triangle's corners carry 2 : 1, so equal-stiffness corners at an absolute
+        // depth tilt it by the depths' difference over its width, 0.53 rad at 10 µm, and a
+        // 1 µm triangle dropped 1 cm spun at 345 rad/s). Each is dropped 1 cm at the defaults.
+        QFETCH(QString, shape);
+        QFETCH(double, size);
+        SceneDesc s = onTheGround(QString::fromStdString(SimulationDesc{}.integrator));
+        double bottomToCentre = 0.0;
+        if (shape == "box") {
+            BoxDesc b;
+            b.size = {size, size};
+            bottomToCentre = size / 2.0;
+            b.position = {0.0, 0.01 + bottomToCentre};
+            s.boxes.push_back(b);
+        } else {
+            PolygonDesc t;
+            if (shape == "equilateral") {
+                t = regular(3, size / std::sqrt(3.0), {0.0, 0.0}, std::numbers::pi / 2.0);
+                bottomToCentre = size / (2.0 * std::sqrt(3.0));
+            } else {
+                t.vertices = {
+                    {-size / 2, -size / 3}, {size / 2, -size / 3}, {-size / 2, 2 * size / 3}};
+                bottomToCentre = size / 3.0;
+            }
+            t.position = {0.0, 0.01 + bottomToCentre};
+            s.polygons.push_back(t);
+        }
+        auto world = buildWorld(s).world;
+        double fastestTurn = 0.0;
+        for (int k = 0; k < 180; ++k) {
+            QVERIFY(world->step());
+            if (k >= 120)
+                fastestTurn = std::max(fastestTurn, std::abs(world->boxAngularVelocity(0)));
+        }
+        const double tilt = std::abs(world->boxAngle(0));
+        const double depth = bottomToCentre - world->boxPosition(0).y();
+        qInfo(
+            "%s %g m: tilt %.2e rad, fastest turn in the last second %.2e rad/s, rest depth "
+            "%.2e of its size",
+            qPrintable(shape), size, tilt, fastestTurn, depth / size);
+        QVERIFY2(tilt < 1e-3, qPrintable(QString::number(tilt)));
+        QVERIFY2(fastestTurn < 1e-3, qPrintable(QString::number(fastestTurn)));
+        QVERIFY2(std::abs(depth) < 5e-3 * size, qPrintable(QString::number(depth / size)));
+        QVERIFY(world->boxVelocity(0).norm() < 1e-3 * std::sqrt(9.81 * size) + 1e-12);
+    }
+
     void fastSmallShapesDoNotTunnel_data() { addIntegrators(); }
     void fastSmallShapesDoNotTunnel() {
         // 200 m/s at dt = 1/60 is 3.3 m a step against a 0.1 m wall: a 5 cm disk and a 5 cm
