@@ -6,6 +6,7 @@
 // where both began; the plots carry the recorded run's lines under its method's name; leaving
 // compare mode (the action, Reset, Undo, another scene) removes every ghost.
 
+#include "app/desktop/CompareDialog.h"
 #include "app/desktop/MainWindow.h"
 #include "app/desktop/presenters/ComparePresenter.h"
 #include "app/document/Document.h"
@@ -20,6 +21,7 @@
 #include <QAction>
 #include <QChart>
 #include <QChartView>
+#include <QDoubleSpinBox>
 #include <QStandardPaths>
 #include <QTest>
 #include <QToolButton>
@@ -261,6 +263,56 @@ private slots:
         QVERIFY(w.document().loadFromDesc(scenes::pyramid(3)));
         expectGone();
         QVERIFY(!w.action("compareFromHere")->isEnabled());
+    }
+
+    // Going back before the comparison's start and playing on from there drops the comparison
+    // run, and with it the ghost; scrubbing to that moment only hides the canvas's ghost.
+    void playFromBeforeTheStartLeavesCompare() {
+        MainWindow& w = *window_;
+        SimulationDesc symplectic = w.document().setup().simulation;
+        symplectic.integrator = "symplectic_euler";
+        QVERIFY(compare_->start(symplectic));
+        QVERIFY(w.controller().advance(0.2));
+        QVERIFY(w.controller().showFrame(10));
+        w.refreshNow();
+        QVERIFY(compare_->run().isActive());
+        QVERIFY(!w.canvas()->ghost());
+        QCOMPARE(ghostSeriesCount(w.plotsPanel()->energyView()), 0);  // cut at the cursor
+        QVERIFY(w.controller().advance(kDt));
+        w.refreshNow();
+        QVERIFY(!compare_->run().isActive());
+        QVERIFY(!w.canvas()->ghost());
+    }
+
+    // The dialog proposes the method after the recorded one and keeps the recorded dt exactly
+    // when its field (which rounds) is left alone.
+    void theDialogProposesTheNextMethod() {
+        MainWindow& w = *window_;
+        SimulationDesc scene = w.document().setup().simulation;
+        SimulationSettings recorded;
+        recorded.integrator = "explicit_euler";
+        recorded.dt = 1.0 / 60.0;
+        recorded.contactModel = ContactModel::Penalty;
+        CompareDialog dialog(scene, recorded, 0.5);
+        const SimulationDesc chosen = dialog.settings();
+        QCOMPARE(chosen.integrator, std::string("symplectic_euler"));
+        QCOMPARE(chosen.dt, 1.0 / 60.0);
+        QCOMPARE(chosen.contactModel, ContactModel::Penalty);
+        QCOMPARE(chosen.substeps, scene.substeps);
+        auto* dt = dialog.findChild<QDoubleSpinBox*>(QStringLiteral("compareDt"));
+        QVERIFY(dt);
+        dt->setValue(0.005);
+        QCOMPARE(dialog.settings().dt, 0.005);
+        // The menu entry opens it, named and reachable from the Simulation menu.
+        QVERIFY(!w.action("compareFromHere")->text().isEmpty());
+        w.action("compareFromHere")->trigger();
+        auto* shown = w.findChild<CompareDialog*>(QStringLiteral("compareDialog"));
+        QVERIFY(shown && shown->isVisible());
+        shown->accept();
+        QCoreApplication::processEvents();
+        QVERIFY(compare_->run().isActive());
+        QCOMPARE(w.document().world().settings().integrator, std::string("symplectic_euler"));
+        QCOMPARE(bitsOf(w.document().world()), bitsOf(recorded_[kCursor]));
     }
 
     // At the live end there is no recorded run ahead to compare with.

@@ -206,7 +206,8 @@ void addCursor(QChart* chart, QXYSeries* cursor, const QList<QPointF>& points) {
 
 // The recorded run's line, dashed and lighter than the live lines, on the chart's axes, which
 // widen to hold it.
-void addGhostLine(QChart* chart, const QString& name, QVector<QPointF> points, QColor colour) {
+void addGhostLine(QChart* chart, const QString& name, QVector<QPointF> points, QColor colour,
+                  bool hasMarkers) {
     const auto* x = qobject_cast<QValueAxis*>(chart->axes(Qt::Horizontal).value(0));
     const auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).value(0));
     if (points.isEmpty() || !x || !y) return;
@@ -226,6 +227,12 @@ void addGhostLine(QChart* chart, const QString& name, QVector<QPointF> points, Q
     chart->addSeries(line);
     chart->axes(Qt::Horizontal).value(0)->setRange(xlo, xhi);
     chart->axes(Qt::Vertical).value(0)->setRange(ylo, yhi);
+    // The energy plot's markers (vertical lines where the method or dt changed) span the
+    // widened range too.
+    for (QAbstractSeries* s : hasMarkers ? chart->series() : QList<QAbstractSeries*>{})
+        if (auto* m = qobject_cast<QLineSeries*>(s);
+            m && m->count() == 2 && m->at(0).x() == m->at(1).x())
+            m->replace(QList<QPointF>{{m->at(0).x(), ylo}, {m->at(0).x(), yhi}});
     line->attachAxis(chart->axes(Qt::Horizontal).value(0));
     line->attachAxis(chart->axes(Qt::Vertical).value(0));
 }
@@ -262,7 +269,7 @@ void PlotsPanel::setEnergy(std::span<const EnergySample> samples,
         QVector<QPointF> points;
         for (const QPointF& p : ghost_.energy)
             if (p.x() <= ghostUntil_ + kGhostTimeSlack) points.push_back(p);
-        addGhostLine(chart, ghost_.name, decimate(points), energyColor(2));
+        addGhostLine(chart, ghost_.name, decimate(points), energyColor(2), true);
     }
     if (std::isfinite(cursorTime_)) {
         const auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).value(0));
@@ -305,7 +312,7 @@ void PlotsPanel::setPhase(std::span<const PhaseSample> samples, const QString& c
             thinned.push_back(points.back());
             points = std::move(thinned);
         }
-        addGhostLine(chart, ghost_.name, points, QColor(0x60, 0x60, 0x60));
+        addGhostLine(chart, ghost_.name, points, QColor(0x60, 0x60, 0x60), false);
     }
     if (cursorPhase_) {
         auto* dot = new QScatterSeries;
