@@ -2186,7 +2186,7 @@
     </message>
     <message>
         <source>Leave compare</source>
-        <translation>Vergleich beenden</translation>
+        <translation>Vergleich aus</translation>
     </message>
     <message>
         <source>Comparing from t = %L1 s: %2 against the recorded run (dashed).</source>

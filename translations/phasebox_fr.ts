@@ -2186,7 +2186,7 @@
     </message>
     <message>
         <source>Leave compare</source>
-        <translation>Quitter la comparaison</translation>
+        <translation>Fin comparaison</translation>
     </message>
     <message>
         <source>Comparing from t = %L1 s: %2 against the recorded run (dashed).</source>

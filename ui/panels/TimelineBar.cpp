@@ -85,6 +85,9 @@ void TimelineBar::setCompareAction(QAction* action) {
         compare_->setToolTip(action->toolTip());
     }
     compare_->setVisible(action != nullptr);
+    // The button takes the memory figure's place: under the canvas of a 1024 px window both do
+    // not fit beside a usable slider (the budget field stays).
+    memory_->setVisible(action == nullptr);
 }
 
 void TimelineBar::setFrames(int count, int shown, double shownTime, double endTime) {

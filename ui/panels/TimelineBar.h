@@ -30,7 +30,8 @@ public:
     void setMemory(std::size_t usedBytes, std::size_t budgetBytes);
     int shownFrame() const;
     // The button beside the time for one of the app's actions (Compare from Here, Leave
-    // Compare): it shows and triggers whichever is set (nullptr hides it).
+    // Compare): it shows and triggers whichever is set (nullptr hides it). While it shows, the
+    // memory figure is hidden.
     void setCompareAction(QAction* action);
 
 signals:
