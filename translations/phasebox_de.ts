@@ -59,10 +59,6 @@
         <translation>Ziehen Sie die Zeitleiste zuerst auf einen früheren Moment: Von dort aus wird der Lauf verglichen.</translation>
     </message>
     <message>
-        <source>Compare needs sleeping off (Parameters): a recording does not hold the islands asleep.</source>
-        <translation>Vergleichen braucht ausgeschaltetes Schlafen (Parameter): Eine Aufzeichnung enthält die schlafenden Inseln nicht.</translation>
-    </message>
-    <message>
         <source>The recording holds no state before this moment.</source>
         <translation>Die Aufzeichnung enthält keinen Zustand vor diesem Moment.</translation>
     </message>
@@ -77,6 +73,10 @@
     <message>
         <source>Compare from here</source>
         <translation>Von hier vergleichen</translation>
+    </message>
+    <message>
+        <source>Compare needs sleeping off (simulation.sleep in the scene file): a recording does not hold the islands asleep.</source>
+        <translation>Vergleichen braucht ausgeschaltetes Schlafen (simulation.sleep in der Szenendatei): Eine Aufzeichnung enthält die schlafenden Inseln nicht.</translation>
     </message>
 </context>
 <context>

@@ -59,10 +59,6 @@
         <translation>Arrastre primero la línea de tiempo a un momento anterior: la ejecución se compara desde allí.</translation>
     </message>
     <message>
-        <source>Compare needs sleeping off (Parameters): a recording does not hold the islands asleep.</source>
-        <translation>Comparar requiere el reposo desactivado (Parámetros): una grabación no guarda las islas en reposo.</translation>
-    </message>
-    <message>
         <source>The recording holds no state before this moment.</source>
         <translation>La grabación no contiene ningún estado anterior a este momento.</translation>
     </message>
@@ -77,6 +73,10 @@
     <message>
         <source>Compare from here</source>
         <translation>Comparar desde aquí</translation>
+    </message>
+    <message>
+        <source>Compare needs sleeping off (simulation.sleep in the scene file): a recording does not hold the islands asleep.</source>
+        <translation>Comparar requiere el reposo desactivado (simulation.sleep en el archivo de la escena): una grabación no guarda las islas en reposo.</translation>
     </message>
 </context>
 <context>

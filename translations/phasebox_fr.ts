@@ -59,10 +59,6 @@
         <translation>Faites d&apos;abord glisser la frise chronologique vers un moment antérieur : la simulation est comparée à partir de là.</translation>
     </message>
     <message>
-        <source>Compare needs sleeping off (Parameters): a recording does not hold the islands asleep.</source>
-        <translation>La comparaison demande que la mise en sommeil soit désactivée (Paramètres) : un enregistrement ne garde pas les îlots endormis.</translation>
-    </message>
-    <message>
         <source>The recording holds no state before this moment.</source>
         <translation>L&apos;enregistrement ne contient aucun état avant ce moment.</translation>
     </message>
@@ -77,6 +73,10 @@
     <message>
         <source>Compare from here</source>
         <translation>Comparer à partir d&apos;ici</translation>
+    </message>
+    <message>
+        <source>Compare needs sleeping off (simulation.sleep in the scene file): a recording does not hold the islands asleep.</source>
+        <translation>La comparaison demande que la mise en sommeil soit désactivée (simulation.sleep dans le fichier de scène) : un enregistrement ne garde pas les îlots endormis.</translation>
     </message>
 </context>
 <context>

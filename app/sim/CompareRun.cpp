@@ -33,8 +33,8 @@ bool CompareRun::start(SimulationController& controller, Document& document,
     if (document.setup().simulation.sleep || document.world().settings().sleep)
         return refuse(QCoreApplication::translate(
             "CompareRun",
-            "Compare needs sleeping off (Parameters): a recording does not hold "
-            "the islands asleep."));
+            "Compare needs sleeping off (simulation.sleep in the scene file): a "
+            "recording does not hold the islands asleep."));
     const SimulationSettings* recorded = recording->settingsAt(recording->frame(from).stepCount);
     if (!recorded)
         return refuse(QCoreApplication::translate(
