@@ -53,6 +53,33 @@
     </message>
 </context>
 <context>
+    <name>CompareRun</name>
+    <message>
+        <source>Drag the timeline to an earlier moment first: the run is compared from there.</source>
+        <translation>Ziehen Sie die Zeitleiste zuerst auf einen früheren Moment: Von dort aus wird der Lauf verglichen.</translation>
+    </message>
+    <message>
+        <source>The recording holds no state before this moment.</source>
+        <translation>Die Aufzeichnung enthält keinen Zustand vor diesem Moment.</translation>
+    </message>
+    <message>
+        <source>The scene cannot be built for the ghost.</source>
+        <translation>Die Szene lässt sich für den Geist nicht aufbauen.</translation>
+    </message>
+    <message>
+        <source>The recorded frames are of other objects than the scene&apos;s.</source>
+        <translation>Die aufgezeichneten Bilder zeigen andere Objekte als die der Szene.</translation>
+    </message>
+    <message>
+        <source>Compare from here</source>
+        <translation>Von hier vergleichen</translation>
+    </message>
+    <message>
+        <source>Compare needs sleeping off (simulation.sleep in the scene file): a recording does not hold the islands asleep.</source>
+        <translation>Vergleichen braucht ausgeschaltetes Schlafen (simulation.sleep in der Szenendatei): Eine Aufzeichnung enthält die schlafenden Inseln nicht.</translation>
+    </message>
+</context>
+<context>
     <name>DivergenceText</name>
     <message>
         <source>a position or speed grew so large that it is no longer a number</source>
@@ -2102,6 +2129,92 @@
     <message>
         <source>Drag from a particle to the centre of its hoop.</source>
         <translation>Von einem Teilchen zum Mittelpunkt seines Rings ziehen.</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::CompareDialog</name>
+    <message>
+        <source>Compare from Here</source>
+        <translation>Von hier vergleichen</translation>
+    </message>
+    <message>
+        <source>From t = %L1 s the run goes on with the settings below, while the recorded run (%2, dt %L3 s) is drawn beside it as a ghost.</source>
+        <translation>Ab t = %L1 s läuft die Simulation mit den Einstellungen unten weiter, während der aufgezeichnete Lauf (%2, dt %L3 s) als Geist daneben gezeichnet wird.</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>&amp;Integrator:</source>
+        <translation>&amp;Integrator:</translation>
+    </message>
+    <message>
+        <source>&amp;dt:</source>
+        <translation>&amp;dt:</translation>
+    </message>
+    <message>
+        <source>&amp;Contacts:</source>
+        <translation>&amp;Kontakte:</translation>
+    </message>
+    <message>
+        <source>Co&amp;mpare</source>
+        <translation>&amp;Vergleichen</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ComparePresenter</name>
+    <message>
+        <source>&amp;Compare from Here…</source>
+        <translation>Von hier &amp;vergleichen…</translation>
+    </message>
+    <message>
+        <source>Run on from the timeline&apos;s moment with another integrator, dt or contact model, with the recorded run beside it as a ghost</source>
+        <translation>Vom Moment der Zeitleiste an mit einem anderen Integrator, dt oder Kontaktmodell weiterlaufen, den aufgezeichneten Lauf als Geist daneben</translation>
+    </message>
+    <message>
+        <source>Compare…</source>
+        <translation>Vergleichen…</translation>
+    </message>
+    <message>
+        <source>&amp;Leave Compare</source>
+        <translation>Vergleich &amp;beenden</translation>
+    </message>
+    <message>
+        <source>Remove the recorded run&apos;s ghost from the canvas and the plots</source>
+        <translation>Den Geist des aufgezeichneten Laufs von der Zeichenfläche und aus den Diagrammen entfernen</translation>
+    </message>
+    <message>
+        <source>Leave compare</source>
+        <translation>Vergleich aus</translation>
+    </message>
+    <message>
+        <source>Comparing from t = %L1 s: %2 against the recorded run (dashed).</source>
+        <translation>Vergleich ab t = %L1 s: %2 gegen den aufgezeichneten Lauf (gestrichelt).</translation>
+    </message>
+    <message>
+        <source>Drag the timeline to an earlier moment first: the run is compared from there.</source>
+        <translation>Ziehen Sie die Zeitleiste zuerst auf einen früheren Moment: Von dort aus wird der Lauf verglichen.</translation>
+    </message>
+    <message>
+        <source>Left Compare: the recorded run&apos;s ghost is gone.</source>
+        <translation>Vergleich beendet: Der Geist des aufgezeichneten Laufs ist entfernt.</translation>
+    </message>
+    <message>
+        <source>recorded: %1</source>
+        <translation>aufgezeichnet: %1</translation>
+    </message>
+    <message>
+        <source>, dt %L1 s</source>
+        <translation>, dt %L1 s</translation>
+    </message>
+    <message>
+        <source>Ghost: the recorded run ended at t = %L1 s</source>
+        <translation>Geist: Der aufgezeichnete Lauf endete bei t = %L1 s</translation>
+    </message>
+    <message>
+        <source>Ghost: the recorded run, %1</source>
+        <translation>Geist: der aufgezeichnete Lauf, %1</translation>
     </message>
 </context>
 <context>

@@ -53,6 +53,33 @@
     </message>
 </context>
 <context>
+    <name>CompareRun</name>
+    <message>
+        <source>Drag the timeline to an earlier moment first: the run is compared from there.</source>
+        <translation>Arrastre primero la línea de tiempo a un momento anterior: la ejecución se compara desde allí.</translation>
+    </message>
+    <message>
+        <source>The recording holds no state before this moment.</source>
+        <translation>La grabación no contiene ningún estado anterior a este momento.</translation>
+    </message>
+    <message>
+        <source>The scene cannot be built for the ghost.</source>
+        <translation>No se puede construir la escena para el fantasma.</translation>
+    </message>
+    <message>
+        <source>The recorded frames are of other objects than the scene&apos;s.</source>
+        <translation>Los fotogramas grabados son de otros objetos que los de la escena.</translation>
+    </message>
+    <message>
+        <source>Compare from here</source>
+        <translation>Comparar desde aquí</translation>
+    </message>
+    <message>
+        <source>Compare needs sleeping off (simulation.sleep in the scene file): a recording does not hold the islands asleep.</source>
+        <translation>Comparar requiere el reposo desactivado (simulation.sleep en el archivo de la escena): una grabación no guarda las islas en reposo.</translation>
+    </message>
+</context>
+<context>
     <name>DivergenceText</name>
     <message>
         <source>a position or speed grew so large that it is no longer a number</source>
@@ -2102,6 +2129,92 @@
     <message>
         <source>Drag from a particle to the centre of its hoop.</source>
         <translation>Arrastre desde una partícula hasta el centro de su aro.</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::CompareDialog</name>
+    <message>
+        <source>Compare from Here</source>
+        <translation>Comparar desde aquí</translation>
+    </message>
+    <message>
+        <source>From t = %L1 s the run goes on with the settings below, while the recorded run (%2, dt %L3 s) is drawn beside it as a ghost.</source>
+        <translation>Desde t = %L1 s la ejecución continúa con los ajustes de abajo, mientras la ejecución grabada (%2, dt %L3 s) se dibuja a su lado como un fantasma.</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>&amp;Integrator:</source>
+        <translation>&amp;Integrador:</translation>
+    </message>
+    <message>
+        <source>&amp;dt:</source>
+        <translation>&amp;dt:</translation>
+    </message>
+    <message>
+        <source>&amp;Contacts:</source>
+        <translation>&amp;Contactos:</translation>
+    </message>
+    <message>
+        <source>Co&amp;mpare</source>
+        <translation>Co&amp;mparar</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ComparePresenter</name>
+    <message>
+        <source>&amp;Compare from Here…</source>
+        <translation>&amp;Comparar desde aquí…</translation>
+    </message>
+    <message>
+        <source>Run on from the timeline&apos;s moment with another integrator, dt or contact model, with the recorded run beside it as a ghost</source>
+        <translation>Continuar desde el momento de la línea de tiempo con otro integrador, dt o modelo de contacto, con la ejecución grabada al lado como fantasma</translation>
+    </message>
+    <message>
+        <source>Compare…</source>
+        <translation>Comparar…</translation>
+    </message>
+    <message>
+        <source>&amp;Leave Compare</source>
+        <translation>&amp;Salir de la comparación</translation>
+    </message>
+    <message>
+        <source>Remove the recorded run&apos;s ghost from the canvas and the plots</source>
+        <translation>Quitar el fantasma de la ejecución grabada del lienzo y de las gráficas</translation>
+    </message>
+    <message>
+        <source>Leave compare</source>
+        <translation>Fin comparación</translation>
+    </message>
+    <message>
+        <source>Comparing from t = %L1 s: %2 against the recorded run (dashed).</source>
+        <translation>Comparando desde t = %L1 s: %2 frente a la ejecución grabada (discontinua).</translation>
+    </message>
+    <message>
+        <source>Drag the timeline to an earlier moment first: the run is compared from there.</source>
+        <translation>Arrastre primero la línea de tiempo a un momento anterior: la ejecución se compara desde allí.</translation>
+    </message>
+    <message>
+        <source>Left Compare: the recorded run&apos;s ghost is gone.</source>
+        <translation>Comparación terminada: el fantasma de la ejecución grabada se ha quitado.</translation>
+    </message>
+    <message>
+        <source>recorded: %1</source>
+        <translation>grabado: %1</translation>
+    </message>
+    <message>
+        <source>, dt %L1 s</source>
+        <translation>, dt %L1 s</translation>
+    </message>
+    <message>
+        <source>Ghost: the recorded run ended at t = %L1 s</source>
+        <translation>Fantasma: la ejecución grabada terminó en t = %L1 s</translation>
+    </message>
+    <message>
+        <source>Ghost: the recorded run, %1</source>
+        <translation>Fantasma: la ejecución grabada, %1</translation>
     </message>
 </context>
 <context>

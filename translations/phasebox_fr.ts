@@ -53,6 +53,33 @@
     </message>
 </context>
 <context>
+    <name>CompareRun</name>
+    <message>
+        <source>Drag the timeline to an earlier moment first: the run is compared from there.</source>
+        <translation>Faites d&apos;abord glisser la frise chronologique vers un moment antérieur : la simulation est comparée à partir de là.</translation>
+    </message>
+    <message>
+        <source>The recording holds no state before this moment.</source>
+        <translation>L&apos;enregistrement ne contient aucun état avant ce moment.</translation>
+    </message>
+    <message>
+        <source>The scene cannot be built for the ghost.</source>
+        <translation>La scène ne peut pas être construite pour le fantôme.</translation>
+    </message>
+    <message>
+        <source>The recorded frames are of other objects than the scene&apos;s.</source>
+        <translation>Les images enregistrées portent sur d&apos;autres objets que ceux de la scène.</translation>
+    </message>
+    <message>
+        <source>Compare from here</source>
+        <translation>Comparer à partir d&apos;ici</translation>
+    </message>
+    <message>
+        <source>Compare needs sleeping off (simulation.sleep in the scene file): a recording does not hold the islands asleep.</source>
+        <translation>La comparaison demande que la mise en sommeil soit désactivée (simulation.sleep dans le fichier de scène) : un enregistrement ne garde pas les îlots endormis.</translation>
+    </message>
+</context>
+<context>
     <name>DivergenceText</name>
     <message>
         <source>a position or speed grew so large that it is no longer a number</source>
@@ -2102,6 +2129,92 @@
     <message>
         <source>Drag from a particle to the centre of its hoop.</source>
         <translation>Glissez d’une particule au centre de son cerceau.</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::CompareDialog</name>
+    <message>
+        <source>Compare from Here</source>
+        <translation>Comparer à partir d&apos;ici</translation>
+    </message>
+    <message>
+        <source>From t = %L1 s the run goes on with the settings below, while the recorded run (%2, dt %L3 s) is drawn beside it as a ghost.</source>
+        <translation>À partir de t = %L1 s, la simulation continue avec les réglages ci-dessous, tandis que la simulation enregistrée (%2, dt %L3 s) est dessinée à côté comme un fantôme.</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>&amp;Integrator:</source>
+        <translation>&amp;Intégrateur :</translation>
+    </message>
+    <message>
+        <source>&amp;dt:</source>
+        <translation>&amp;dt :</translation>
+    </message>
+    <message>
+        <source>&amp;Contacts:</source>
+        <translation>&amp;Contacts :</translation>
+    </message>
+    <message>
+        <source>Co&amp;mpare</source>
+        <translation>Co&amp;mparer</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ComparePresenter</name>
+    <message>
+        <source>&amp;Compare from Here…</source>
+        <translation>&amp;Comparer à partir d&apos;ici…</translation>
+    </message>
+    <message>
+        <source>Run on from the timeline&apos;s moment with another integrator, dt or contact model, with the recorded run beside it as a ghost</source>
+        <translation>Repartir du moment de la frise avec un autre intégrateur, dt ou modèle de contact, la simulation enregistrée à côté comme un fantôme</translation>
+    </message>
+    <message>
+        <source>Compare…</source>
+        <translation>Comparer…</translation>
+    </message>
+    <message>
+        <source>&amp;Leave Compare</source>
+        <translation>&amp;Quitter la comparaison</translation>
+    </message>
+    <message>
+        <source>Remove the recorded run&apos;s ghost from the canvas and the plots</source>
+        <translation>Retirer le fantôme de la simulation enregistrée du canevas et des graphiques</translation>
+    </message>
+    <message>
+        <source>Leave compare</source>
+        <translation>Fin comparaison</translation>
+    </message>
+    <message>
+        <source>Comparing from t = %L1 s: %2 against the recorded run (dashed).</source>
+        <translation>Comparaison à partir de t = %L1 s : %2 contre la simulation enregistrée (en pointillés).</translation>
+    </message>
+    <message>
+        <source>Drag the timeline to an earlier moment first: the run is compared from there.</source>
+        <translation>Faites d&apos;abord glisser la frise chronologique vers un moment antérieur : la simulation est comparée à partir de là.</translation>
+    </message>
+    <message>
+        <source>Left Compare: the recorded run&apos;s ghost is gone.</source>
+        <translation>Comparaison quittée : le fantôme de la simulation enregistrée a disparu.</translation>
+    </message>
+    <message>
+        <source>recorded: %1</source>
+        <translation>enregistré : %1</translation>
+    </message>
+    <message>
+        <source>, dt %L1 s</source>
+        <translation>, dt %L1 s</translation>
+    </message>
+    <message>
+        <source>Ghost: the recorded run ended at t = %L1 s</source>
+        <translation>Fantôme : la simulation enregistrée s&apos;est arrêtée à t = %L1 s</translation>
+    </message>
+    <message>
+        <source>Ghost: the recorded run, %1</source>
+        <translation>Fantôme : la simulation enregistrée, %1</translation>
     </message>
 </context>
 <context>

@@ -3,10 +3,14 @@
 #include "app/desktop/MainWindow.h"
 #include "app/desktop/MeasureTools.h"
 #include "app/desktop/presenters/AppearancePresenter.h"
+#include "app/desktop/presenters/ComparePresenter.h"
 #include "app/desktop/presenters/InstrumentsPresenter.h"
 #include "app/document/Document.h"
 #include "app/i18n/Language.h"
 #include "app/io/OutputFile.h"
+#include "app/sim/RunRecording.h"
+#include "app/sim/SimulationController.h"
+#include "physics/integrators/Integrator.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
 
@@ -22,6 +26,58 @@
 #include <cmath>
 
 namespace phasebox {
+
+namespace {
+
+// --compare-from and --compare-method: both or neither, a known method, a moment the run
+// before the picture records.
+bool parseCompareOptions(const QCommandLineParser& parser, DesktopOptions& options,
+                         QString* error) {
+    const bool from = parser.isSet(QStringLiteral("compare-from"));
+    if (from != parser.isSet(QStringLiteral("compare-method"))) {
+        *error = QStringLiteral("--compare-from and --compare-method go together");
+        return false;
+    }
+    if (!from) return true;
+    bool ok = false;
+    options.compareFrom = parser.value(QStringLiteral("compare-from")).toDouble(&ok);
+    if (!ok || !(options.compareFrom >= 0.0) || options.compareFrom >= options.runFor) {
+        *error = QStringLiteral(
+                     "--compare-from: expected seconds from 0 to less than --run-for, "
+                     "got \"%1\"")
+                     .arg(parser.value(QStringLiteral("compare-from")));
+        return false;
+    }
+    options.compareMethod = parser.value(QStringLiteral("compare-method"));
+    if (!findIntegrator(options.compareMethod.toStdString())) {
+        QStringList names;
+        for (const IntegratorInfo& info : integratorRegistry())
+            names << QString::fromUtf8(info.name.data(), static_cast<qsizetype>(info.name.size()));
+        *error = QStringLiteral("--compare-method: expected one of %1, got \"%2\"")
+                     .arg(names.join(QStringLiteral(", ")), options.compareMethod);
+        return false;
+    }
+    return true;
+}
+
+// The screenshot's comparison: back to compareFrom, on with compareMethod to where the run was.
+int startComparison(MainWindow& window, const DesktopOptions& options, QString* error) {
+    auto* compare = window.findChild<ComparePresenter*>();
+    const RunRecording* recording = window.controller().runRecording();
+    const double end = window.document().world().time();
+    SimulationDesc settings = window.document().setup().simulation;
+    settings.integrator = options.compareMethod.toStdString();
+    if (!compare || !recording ||
+        !window.controller().showFrame(recording->frameAtOrBefore(options.compareFrom)) ||
+        !compare->start(settings)) {
+        *error = QStringLiteral("--compare-from: the run cannot be compared from %1 s")
+                     .arg(options.compareFrom);
+        return 2;
+    }
+    return window.controller().advance(end - window.document().world().time()) ? 0 : 1;
+}
+
+}  // namespace
 
 bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, QString* error) {
     QCommandLineParser parser;
@@ -86,8 +142,16 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
         QStringLiteral("text-scale"),
         QStringLiteral("Scale the canvas's and the plots' text by F (0.5 to 4)."),
         QStringLiteral("F"));
+    const QCommandLineOption compareFrom(
+        QStringLiteral("compare-from"),
+        QStringLiteral("With --screenshot: compare the run from S seconds (Compare from here)."),
+        QStringLiteral("S"));
+    const QCommandLineOption compareMethod(QStringLiteral("compare-method"),
+                                           QStringLiteral("The method the comparison runs with."),
+                                           QStringLiteral("NAME"));
     parser.addOptions({screenshot, runFor, canvas, presentation, select, probe, ruler, protractor,
-                       freeBody, size, language, highContrast, lineScale, textScale});
+                       freeBody, size, language, highContrast, lineScale, textScale, compareFrom,
+                       compareMethod});
     parser.addPositionalArgument(QStringLiteral("scene"),
                                  QStringLiteral("Scene file to open (default: the demo)."));
     if (!parser.parse(arguments)) {
@@ -153,7 +217,7 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
         return false;
     }
     options.scene = positional.isEmpty() ? QString() : positional.first();
-    return true;
+    return parseCompareOptions(parser, options, error);
 }
 
 int takeScreenshot(MainWindow& window, const DesktopOptions& options, QString* error) {
@@ -163,6 +227,10 @@ int takeScreenshot(MainWindow& window, const DesktopOptions& options, QString* e
     QApplication::processEvents();
     int status = 0;
     if (options.runFor > 0.0 && !window.controller().advance(options.runFor)) status = 1;
+    if (status == 0 && !options.compareMethod.isEmpty()) {
+        status = startComparison(window, options, error);
+        if (status == 2) return status;
+    }
     window.refreshNow();
     QApplication::processEvents();
     if (options.presentation) window.canvas()->fitToWorld();  // the layout changed under it

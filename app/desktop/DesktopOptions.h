@@ -28,6 +28,10 @@ struct DesktopOptions {
     double lineScale = 0.0;     // --line-scale; 0 = the stored one
     double textScale = 0.0;     // --text-scale; 0 = the stored one
     QString language;  // --language: en, de, es, fr; empty = the stored choice or the system's
+    // --compare-from S --compare-method NAME (with --screenshot and a longer --run-for): the run
+    // is recorded for runFor seconds, then compared from S with NAME up to runFor again.
+    double compareFrom = -1.0;
+    QString compareMethod;
 };
 
 inline const QString kDemoScene = QStringLiteral(":/scenes/demo.phasebox.json");

@@ -9,6 +9,7 @@
 #include "app/desktop/SceneLibraryMenu.h"
 #include "app/desktop/presenters/AppearancePresenter.h"
 #include "app/desktop/presenters/CanvasPresenter.h"
+#include "app/desktop/presenters/ComparePresenter.h"
 #include "app/desktop/presenters/EffectsPresenter.h"
 #include "app/desktop/presenters/ExactPresenter.h"
 #include "app/desktop/presenters/InstrumentsPresenter.h"
@@ -216,9 +217,9 @@ void MainWindow::createMenus() {
     addNamedActions(menuBar()->addMenu(tr("&Edit")), *this,
                     {"undo", "redo", "", "cut", "copy", "paste", "delete"});
     addNamedActions(menuBar()->addMenu(tr("&Simulation")), *this,
-                    {"play", "step", "reset", "", "frameBack", "frameForward", "jumpToStart", "",
-                     "nextIntegrator", "previousIntegrator", "doubleDt", "halveDt", "moreSubsteps",
-                     "fewerSubsteps", "faster", "slower"});
+                    {"play", "step", "reset", "", "frameBack", "frameForward", "jumpToStart",
+                     "compareFromHere", "leaveCompare", "", "nextIntegrator", "previousIntegrator",
+                     "doubleDt", "halveDt", "moreSubsteps", "fewerSubsteps", "faster", "slower"});
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     tools->addActions(canvasPresenter_->toolActions());
     addNamedActions(tools, *this,
@@ -385,6 +386,9 @@ void MainWindow::createDockWindows() {
     addPresenter(exactPresenter_ = new ExactPresenter(*canvas_, *plots_, document_, controller_,
                                                       recorder_, this));
     exactPresenter_->createActions(*this);
+    addPresenter(new ComparePresenter(*canvas_, *timeline_, *plots_, *plotsPresenter_, document_,
+                                      controller_, recorder_, this))
+        ->createActions(*this);
     connect(exactPresenter_, &ExactPresenter::phaseReferenceChanged, plotsPresenter_,
             &PlotsPresenter::refresh);
     addPresenter(instrumentsPresenter_ = new InstrumentsPresenter(*instruments_, document_,

@@ -122,6 +122,15 @@ bool RunRecording::restore(World& world, long long stepCount) const {
     return same(kept.q, world.positions()) && same(kept.u, world.velocities());
 }
 
+const SimulationSettings* RunRecording::settingsAt(long long stepCount) const {
+    const auto after =
+        std::upper_bound(keyframes_.begin(), keyframes_.end(), stepCount,
+                         [](long long step, const std::pair<long long, WorldSnapshot>& k) {
+                             return step < k.first;
+                         });
+    return after == keyframes_.begin() ? nullptr : &std::prev(after)->second.settings();
+}
+
 RunRecording::Tail RunRecording::truncateAfter(long long stepCount) {
     Tail tail;
     while (!frames_.empty() && frames_.back().stepCount > stepCount) {

@@ -53,6 +53,10 @@ public:
     // between taken again. False when no keyframe precedes it or the re-simulation diverged.
     bool restore(World& world, long long stepCount) const;
 
+    // The settings the run had at step stepCount: those of the keyframe at or before it (a
+    // recording keeps one wherever they changed); nullptr when no keyframe precedes it.
+    const SimulationSettings* settingsAt(long long stepCount) const;
+
     // Drops every frame and keyframe after the given step and hands them back, so that an
     // undoable command can put them back with append().
     struct Tail {

@@ -61,6 +61,8 @@ public:
     // keyframe where they change, so that re-simulation never crosses a switch of method).
     bool hasSettingsOf(const World& world) const;
 
+    // The settings the world ran with when the snapshot was taken (method, dt, contact model).
+    const SimulationSettings& settings() const { return settings_; }
     double time() const { return clock_.time; }
     long long stepCount() const { return clock_.stepCount; }
     // Bytes held, for a recording's memory budget (an estimate: vectors by their sizes).

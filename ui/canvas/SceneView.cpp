@@ -1,5 +1,7 @@
 #include "ui/canvas/SceneView.h"
 
+#include "ui/canvas/GhostOverlay.h"
+
 #include <QGuiApplication>
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -252,8 +254,10 @@ void SceneView::paintSurface(QPainter& painter, QSize size) {
         SceneRenderer::paint(painter, view_, size, *world_, options_, &trails_);
     else
         SceneRenderer::paintEmpty(painter, view_, size, options_);
+    if (world_ && ghost_) drawGhost(painter, view_, size, *ghost_, options_);
     if (world_) drawReferenceOverlay(painter, view_, reference_, options_);
     MeasureRenderer::paint(painter, view_, size, measurements_, options_);
+    if (world_ && ghost_) drawGhostCaption(painter, size, ghostCaption_, options_);
     drawOverlay(painter, view_, overlay_, options_);
     drawHud(painter, hudText_, options_);
     drawKeyboardCursor(painter);
@@ -412,6 +416,12 @@ void SceneView::setHudText(const QString& text) {
     surface_->update();
 }
 
+void SceneView::setGhost(const World* ghost, const QString& caption) {
+    ghost_ = ghost;
+    ghostCaption_ = ghost ? caption : QString();
+    surface_->update();
+}
+
 QImage SceneView::renderImage(QSize size, bool withHud) const {
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
     if (image.isNull()) return image;
@@ -429,6 +439,10 @@ QImage SceneView::renderImage(QSize size, bool withHud) const {
         SceneRenderer::paint(painter, v, size, *world_, options, &trails_);
     else
         SceneRenderer::paintEmpty(painter, v, size, options);
+    if (world_ && ghost_) {
+        drawGhost(painter, v, size, *ghost_, options);
+        drawGhostCaption(painter, size, ghostCaption_, options);
+    }
     MeasureRenderer::paint(painter, v, size, measurements_, options);
     if (withHud) drawHud(painter, hudText_, options);
     return image;

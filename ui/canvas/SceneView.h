@@ -109,6 +109,11 @@ public:
     // preview; in renderImage too: they are part of the picture).
     void setMeasurements(const MeasureOverlay& measurements);
     const MeasureOverlay& measurements() const { return measurements_; }
+    // A recorded run's ghost drawn over the scene (GhostOverlay.h) and its caption; nullptr:
+    // none. Not owned; repaint with update() after it changes.
+    void setGhost(const World* ghost, const QString& caption = {});
+    const World* ghost() const { return ghost_; }
+    QString ghostCaption() const { return ghostCaption_; }
     void setHudText(const QString& text);
     QString hudText() const { return hudText_; }
 
@@ -187,6 +192,8 @@ private:
     ReferenceOverlay reference_;
     MeasureOverlay measurements_;
     QString hudText_;
+    const World* ghost_ = nullptr;
+    QString ghostCaption_;
     QStringList keyboardTargets_;
     QPointF keyboardCursor_{0.0, 0.0};
     bool arrowsMoveSelection_ = true;

@@ -1,5 +1,6 @@
 #include "ui/panels/TimelineBar.h"
 
+#include <QAction>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
@@ -42,12 +43,18 @@ TimelineBar::TimelineBar(QWidget* parent) : QWidget(parent) {
     slider_->setAccessibleName(tr("Recorded time"));
     slider_->setToolTip(tr("Drag to any recorded moment; Play goes on from there"));
     slider_->setRange(0, 0);
+    slider_->setMinimumWidth(60);
     row->addWidget(slider_, 1);
     time_ = new QLabel(this);
     time_->setObjectName(QStringLiteral("timelineTime"));
     time_->setMinimumWidth(
         time_->fontMetrics().horizontalAdvance(QStringLiteral("000.000 / 000.000 s")));
     row->addWidget(time_);
+    compare_ = new QToolButton(this);
+    compare_->setObjectName(QStringLiteral("timelineCompare"));
+    compare_->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    compare_->hide();
+    row->addWidget(compare_);
     memory_ = new QLabel(this);
     memory_->setObjectName(QStringLiteral("timelineMemory"));
     memory_->setToolTip(tr("Memory the recording holds, of its budget"));
@@ -67,6 +74,20 @@ TimelineBar::TimelineBar(QWidget* parent) : QWidget(parent) {
     connect(forward_, &QToolButton::clicked, this, [this] { emit stepRequested(1); });
     connect(budget_, &QSpinBox::valueChanged, this,
             [this](int mb) { emit budgetRequested(static_cast<std::size_t>(mb) * kMiB); });
+}
+
+void TimelineBar::setCompareAction(QAction* action) {
+    if (compare_->defaultAction() == action && compare_->isVisibleTo(this) == (action != nullptr))
+        return;
+    if (action) {
+        compare_->setDefaultAction(action);
+        compare_->setAccessibleName(action->text().remove(QLatin1Char('&')));
+        compare_->setToolTip(action->toolTip());
+    }
+    compare_->setVisible(action != nullptr);
+    // The button takes the memory figure's place: under the canvas of a 1024 px window both do
+    // not fit beside a usable slider (the budget field stays).
+    memory_->setVisible(action == nullptr);
 }
 
 void TimelineBar::setFrames(int count, int shown, double shownTime, double endTime) {

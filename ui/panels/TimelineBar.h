@@ -9,6 +9,7 @@
 #include <cstddef>
 
 QT_BEGIN_NAMESPACE
+class QAction;
 class QLabel;
 class QSlider;
 class QSpinBox;
@@ -28,6 +29,10 @@ public:
     void setFrames(int count, int shown, double shownTime, double endTime);
     void setMemory(std::size_t usedBytes, std::size_t budgetBytes);
     int shownFrame() const;
+    // The button beside the time for one of the app's actions (Compare from Here, Leave
+    // Compare): it shows and triggers whichever is set (nullptr hides it). While it shows, the
+    // memory figure is hidden.
+    void setCompareAction(QAction* action);
 
 signals:
     // The user dragged or clicked the slider to this frame.
@@ -43,6 +48,7 @@ private:
     QToolButton* forward_;
     QSlider* slider_;
     QLabel* time_;
+    QToolButton* compare_;
     QLabel* memory_;
     QSpinBox* budget_;
 };

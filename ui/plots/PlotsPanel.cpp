@@ -27,6 +27,9 @@
 namespace phasebox::ui {
 
 namespace {
+// Two runs with different steps reach the same time with different rounding.
+constexpr double kGhostTimeSlack = 1e-9;
+
 // Swaps the view's chart; QChartView releases the old one without deleting it.
 void replaceChart(QChartView* view, QChart* chart) {
     QChart* old = view->chart();
@@ -201,7 +204,44 @@ void addCursor(QChart* chart, QXYSeries* cursor, const QList<QPointF>& points) {
         for (QLegendMarker* m : legend->markers(cursor)) m->setVisible(false);
 }
 
+// The recorded run's line, dashed and lighter than the live lines, on the chart's axes, which
+// widen to hold it.
+void addGhostLine(QChart* chart, const QString& name, QVector<QPointF> points, QColor colour,
+                  bool hasMarkers) {
+    const auto* x = qobject_cast<QValueAxis*>(chart->axes(Qt::Horizontal).value(0));
+    const auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).value(0));
+    if (points.isEmpty() || !x || !y) return;
+    double xlo = x->min(), xhi = x->max(), ylo = y->min(), yhi = y->max();
+    for (const QPointF& p : std::as_const(points))
+        if (std::isfinite(p.x()) && std::isfinite(p.y())) {
+            xlo = std::min(xlo, p.x());
+            xhi = std::max(xhi, p.x());
+            ylo = std::min(ylo, p.y());
+            yhi = std::max(yhi, p.y());
+        }
+    auto* line = new QLineSeries;
+    line->setName(name);
+    line->replace(points);
+    colour.setAlphaF(0.6);
+    line->setPen(QPen(colour, 2.0, Qt::DashLine));
+    chart->addSeries(line);
+    chart->axes(Qt::Horizontal).value(0)->setRange(xlo, xhi);
+    chart->axes(Qt::Vertical).value(0)->setRange(ylo, yhi);
+    // The energy plot's markers (vertical lines where the method or dt changed) span the
+    // widened range too.
+    for (QAbstractSeries* s : hasMarkers ? chart->series() : QList<QAbstractSeries*>{})
+        if (auto* m = qobject_cast<QLineSeries*>(s);
+            m && m->count() == 2 && m->at(0).x() == m->at(1).x())
+            m->replace(QList<QPointF>{{m->at(0).x(), ylo}, {m->at(0).x(), yhi}});
+    line->attachAxis(chart->axes(Qt::Horizontal).value(0));
+    line->attachAxis(chart->axes(Qt::Vertical).value(0));
+}
+
 }  // namespace
+
+void PlotsPanel::setGhost(GhostLines ghost) {
+    ghost_ = std::move(ghost);
+}
 
 void PlotsPanel::setTimeCursor(double t, std::optional<PhaseSample> phase) {
     cursorTime_ = t;
@@ -222,6 +262,15 @@ void PlotsPanel::setEnergy(std::span<const EnergySample> samples,
     }
     if (paused_) return;
     QChart* chart = createEnergyChart(samples, markers, title);
+    ghostUntil_ = std::isfinite(cursorTime_) ? cursorTime_
+                  : samples.empty()          ? -std::numeric_limits<double>::infinity()
+                                             : samples.back().t;
+    if (!ghost_.name.isEmpty()) {
+        QVector<QPointF> points;
+        for (const QPointF& p : ghost_.energy)
+            if (p.x() <= ghostUntil_ + kGhostTimeSlack) points.push_back(p);
+        addGhostLine(chart, ghost_.name, decimate(points), energyColor(2), true);
+    }
     if (std::isfinite(cursorTime_)) {
         const auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).value(0));
         auto* line = new QLineSeries;
@@ -251,6 +300,20 @@ void PlotsPanel::setPhase(std::span<const PhaseSample> samples, const QString& c
     if (paused_) return;
     QChart* chart = createPhaseChart(samples, coordinateName, velocityName, title, phaseReference_,
                                      phaseReferenceName_);
+    if (!ghost_.name.isEmpty() && ghost_.phaseCoordinate == coordinateName) {
+        QVector<QPointF> points;
+        for (std::size_t k = 0; k < ghost_.phase.size() && k < ghost_.phaseTimes.size(); ++k)
+            if (ghost_.phaseTimes[k] <= ghostUntil_ + kGhostTimeSlack)
+                points.push_back({ghost_.phase[k].coordinate, ghost_.phase[k].velocity});
+        if (points.size() > kMaxPlotPoints) {  // a curve: thinned by stride, as the live one
+            QVector<QPointF> thinned;
+            const qsizetype stride = (points.size() + kMaxPlotPoints - 1) / kMaxPlotPoints;
+            for (qsizetype i = 0; i < points.size(); i += stride) thinned.push_back(points[i]);
+            thinned.push_back(points.back());
+            points = std::move(thinned);
+        }
+        addGhostLine(chart, ghost_.name, points, QColor(0x60, 0x60, 0x60), false);
+    }
     if (cursorPhase_) {
         auto* dot = new QScatterSeries;
         dot->setMarkerSize(11.0);

@@ -26,6 +26,17 @@ QT_END_NAMESPACE
 
 namespace phasebox::ui {
 
+// A recorded run drawn beside the live one (Compare from here): its total energy and its phase
+// trace, dashed and lighter, under one legend name. Drawn up to the time the plots reach (the
+// last energy sample, or the timeline's cursor), so the two runs are seen to part as they run.
+struct GhostLines {
+    QString name;
+    std::vector<QPointF> energy;  // (t, kinetic + potential)
+    std::vector<double> phaseTimes;
+    std::vector<PhaseSample> phase;
+    QString phaseCoordinate;  // the phase plot's coordinate name the trace is of
+};
+
 class PlotsPanel : public QWidget {
     Q_OBJECT
 
@@ -55,6 +66,10 @@ public:
     // phase plot (none when phase is empty).
     void setTimeCursor(double t, std::optional<PhaseSample> phase);
     double timeCursor() const { return cursorTime_; }
+
+    // The ghost lines from the next update on (an empty name: none).
+    void setGhost(GhostLines ghost);
+    const GhostLines& ghost() const { return ghost_; }
 
     // The plot shown below the energy plot (Phase or Error), and showing one there.
     Plot lowerPlot() const;
@@ -99,6 +114,8 @@ private:
     QString phaseReferenceName_;
     double cursorTime_ = std::numeric_limits<double>::quiet_NaN();
     std::optional<PhaseSample> cursorPhase_;
+    GhostLines ghost_;
+    double ghostUntil_ = -std::numeric_limits<double>::infinity();
 };
 
 }  // namespace phasebox::ui
