@@ -375,38 +375,47 @@
     <name>ObjectKind</name>
     <message>
         <source>particle</source>
+        <extracomment>kind: particle</extracomment>
         <translation>Teilchen</translation>
     </message>
     <message>
         <source>box</source>
+        <extracomment>kind: box</extracomment>
         <translation>Quader</translation>
     </message>
     <message>
         <source>disk</source>
+        <extracomment>kind: disk</extracomment>
         <translation>Scheibe</translation>
     </message>
     <message>
         <source>polygon</source>
+        <extracomment>kind: polygon</extracomment>
         <translation>Vieleck</translation>
     </message>
     <message>
         <source>plane</source>
+        <extracomment>kind: plane</extracomment>
         <translation>Ebene</translation>
     </message>
     <message>
         <source>spring</source>
+        <extracomment>kind: spring</extracomment>
         <translation>Feder</translation>
     </message>
     <message>
         <source>cloth</source>
+        <extracomment>kind: cloth</extracomment>
         <translation>Tuch</translation>
     </message>
     <message>
         <source>joint</source>
+        <extracomment>kind: joint</extracomment>
         <translation>Gelenk</translation>
     </message>
     <message>
         <source>object</source>
+        <extracomment>kind: object</extracomment>
         <translation>Objekt</translation>
     </message>
 </context>
@@ -487,14 +496,6 @@
         <translation>%1 verschieben</translation>
     </message>
     <message>
-        <source>spring %1 hangs between two bodies; move them instead</source>
-        <translation>Feder %1 hängt zwischen zwei Körpern; verschieben Sie stattdessen die Körper</translation>
-    </message>
-    <message>
-        <source>joint %1 moves with its bodies; move them instead</source>
-        <translation>Gelenk %1 bewegt sich mit seinen Körpern; verschieben Sie stattdessen die Körper</translation>
-    </message>
-    <message>
         <source>unknown object id %1</source>
         <translation>unbekannte Objektkennung %1</translation>
     </message>
@@ -553,6 +554,14 @@
     <message>
         <source>CPU time [s], left is faster</source>
         <translation>CPU-Zeit [s], weiter links ist schneller</translation>
+    </message>
+    <message>
+        <source>%1 %2 hangs between two bodies; move them instead</source>
+        <translation>%1 %2 hängt zwischen zwei Körpern; verschieben Sie stattdessen die Körper</translation>
+    </message>
+    <message>
+        <source>%1 %2 moves with its bodies; move them instead</source>
+        <translation>%1 %2 bewegt sich mit seinen Körpern; verschieben Sie stattdessen die Körper</translation>
     </message>
 </context>
 <context>

@@ -375,38 +375,47 @@
     <name>ObjectKind</name>
     <message>
         <source>particle</source>
+        <extracomment>kind: particle</extracomment>
         <translation>partícula</translation>
     </message>
     <message>
         <source>box</source>
+        <extracomment>kind: box</extracomment>
         <translation>caja</translation>
     </message>
     <message>
         <source>disk</source>
+        <extracomment>kind: disk</extracomment>
         <translation>disco</translation>
     </message>
     <message>
         <source>polygon</source>
+        <extracomment>kind: polygon</extracomment>
         <translation>polígono</translation>
     </message>
     <message>
         <source>plane</source>
+        <extracomment>kind: plane</extracomment>
         <translation>plano</translation>
     </message>
     <message>
         <source>spring</source>
+        <extracomment>kind: spring</extracomment>
         <translation>muelle</translation>
     </message>
     <message>
         <source>cloth</source>
+        <extracomment>kind: cloth</extracomment>
         <translation>tela</translation>
     </message>
     <message>
         <source>joint</source>
+        <extracomment>kind: joint</extracomment>
         <translation>unión</translation>
     </message>
     <message>
         <source>object</source>
+        <extracomment>kind: object</extracomment>
         <translation>objeto</translation>
     </message>
 </context>
@@ -487,14 +496,6 @@
         <translation>Mover %1</translation>
     </message>
     <message>
-        <source>spring %1 hangs between two bodies; move them instead</source>
-        <translation>el muelle %1 cuelga entre dos cuerpos; mueva los cuerpos</translation>
-    </message>
-    <message>
-        <source>joint %1 moves with its bodies; move them instead</source>
-        <translation>la unión %1 se mueve con sus cuerpos; mueva los cuerpos</translation>
-    </message>
-    <message>
         <source>unknown object id %1</source>
         <translation>id de objeto desconocido %1</translation>
     </message>
@@ -553,6 +554,14 @@
     <message>
         <source>CPU time [s], left is faster</source>
         <translation>tiempo de CPU [s], más a la izquierda es más rápido</translation>
+    </message>
+    <message>
+        <source>%1 %2 hangs between two bodies; move them instead</source>
+        <translation>%1 %2 cuelga entre dos cuerpos; mueva los cuerpos</translation>
+    </message>
+    <message>
+        <source>%1 %2 moves with its bodies; move them instead</source>
+        <translation>%1 %2 se mueve con sus cuerpos; mueva los cuerpos</translation>
     </message>
 </context>
 <context>

@@ -375,38 +375,47 @@
     <name>ObjectKind</name>
     <message>
         <source>particle</source>
+        <extracomment>kind: particle</extracomment>
         <translation>particule</translation>
     </message>
     <message>
         <source>box</source>
+        <extracomment>kind: box</extracomment>
         <translation>boîte</translation>
     </message>
     <message>
         <source>disk</source>
+        <extracomment>kind: disk</extracomment>
         <translation>disque</translation>
     </message>
     <message>
         <source>polygon</source>
+        <extracomment>kind: polygon</extracomment>
         <translation>polygone</translation>
     </message>
     <message>
         <source>plane</source>
+        <extracomment>kind: plane</extracomment>
         <translation>plan</translation>
     </message>
     <message>
         <source>spring</source>
+        <extracomment>kind: spring</extracomment>
         <translation>ressort</translation>
     </message>
     <message>
         <source>cloth</source>
+        <extracomment>kind: cloth</extracomment>
         <translation>tissu</translation>
     </message>
     <message>
         <source>joint</source>
+        <extracomment>kind: joint</extracomment>
         <translation>liaison</translation>
     </message>
     <message>
         <source>object</source>
+        <extracomment>kind: object</extracomment>
         <translation>objet</translation>
     </message>
 </context>
@@ -487,14 +496,6 @@
         <translation>Déplacer %1</translation>
     </message>
     <message>
-        <source>spring %1 hangs between two bodies; move them instead</source>
-        <translation>le ressort %1 est tendu entre deux corps ; déplacez plutôt les corps</translation>
-    </message>
-    <message>
-        <source>joint %1 moves with its bodies; move them instead</source>
-        <translation>la liaison %1 se déplace avec ses corps ; déplacez plutôt les corps</translation>
-    </message>
-    <message>
         <source>unknown object id %1</source>
         <translation>identifiant d’objet inconnu %1</translation>
     </message>
@@ -553,6 +554,14 @@
     <message>
         <source>CPU time [s], left is faster</source>
         <translation>temps CPU [s], plus à gauche est plus rapide</translation>
+    </message>
+    <message>
+        <source>%1 %2 hangs between two bodies; move them instead</source>
+        <translation>%1 %2 est tendu entre deux corps ; déplacez plutôt les corps</translation>
+    </message>
+    <message>
+        <source>%1 %2 moves with its bodies; move them instead</source>
+        <translation>%1 %2 se déplace avec ses corps ; déplacez plutôt les corps</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 #include "app/io/SceneIO.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
+#include "physics/scene/SceneSchema.h"
 
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -376,7 +377,8 @@ AccuracyResult runAccuracyStudy(const SceneDesc& scene, const AccuracyOptions& o
     }
     const std::vector<double> dts =
         options.dts.empty() ? defaultAccuracyDts(scene.simulation.dt) : options.dts;
-    for (double dt : dts) checkRange("dt", dt, 1.0);  // World's own range for dt
+    const double maxDt = schema::simulationField(schema::key::dt).range.max;  // World's too
+    for (double dt : dts) checkRange("dt", dt, maxDt);
     for (double tol : options.tolerances) checkRange("tolerance", tol, kNoUpperBound);
     const auto tolerancesOf = [&](const IntegratorInfo& method) {
         return options.tolerances.empty() ? defaultAccuracyTolerances(method.name)

@@ -10,6 +10,7 @@
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
+#include "physics/scene/SceneSchema.h"
 #include "physics/world/Probes.h"
 #include "ui/plots/Charts.h"
 
@@ -153,8 +154,9 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
                     .arg(v, QString::fromStdString(knownContactModelNames()));
         } else if (a == QLatin1String("--dt")) {
             if (!(error = number(a, v, d)).isEmpty()) return error;
-            if (!(d > 0.0 && d <= 1.0))
-                return QStringLiteral("--dt: must be > 0 and <= 1 (got %1)").arg(v);
+            const double maxDt = schema::simulationField(schema::key::dt).range.max;
+            if (!(d > 0.0 && d <= maxDt))
+                return QStringLiteral("--dt: must be > 0 and <= %1 (got %2)").arg(maxDt).arg(v);
             o.dt = d;
         } else if (a == QLatin1String("--duration")) {
             if (!(error = number(a, v, d)).isEmpty()) return error;

@@ -20,21 +20,13 @@ Point2 point(QPointF p) {
     return {p.x(), p.y()};
 }
 
-// The key pair that places an object of this kind.
+// The key pair that places an object of this kind (schema::KindInfo::placeKey); none for a
+// kind that moves with its bodies or its anchor.
 std::optional<std::pair<QString, QString>> positionKeys(ObjectKind kind) {
-    switch (kind) {
-        case ObjectKind::Particle:
-        case ObjectKind::Box:
-        case ObjectKind::Disk:
-        case ObjectKind::Polygon:
-            return std::pair{QStringLiteral("position.x"), QStringLiteral("position.y")};
-        case ObjectKind::Plane:
-            return std::pair{QStringLiteral("point.x"), QStringLiteral("point.y")};
-        case ObjectKind::Cloth:
-            return std::pair{QStringLiteral("origin.x"), QStringLiteral("origin.y")};
-        default:
-            return std::nullopt;
-    }
+    const std::string_view key = schema::kindInfo(kind).placeKey;
+    if (key.empty()) return std::nullopt;
+    const QString name = QString::fromUtf8(key.data(), static_cast<qsizetype>(key.size()));
+    return std::pair{name + QStringLiteral(".x"), name + QStringLiteral(".y")};
 }
 
 QString formatLength(double metres) {

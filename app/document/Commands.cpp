@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <string_view>
 
 namespace phasebox {
 
@@ -20,24 +22,49 @@ QString quoted(const std::string& id) {
     return QLatin1Char('"') + QString::fromStdString(id) + QLatin1Char('"');
 }
 
-// Removes the listed (ascending) indices from v, back to front so the indices stay valid.
-template <typename T>
-void eraseAt(std::vector<T>& v, const std::vector<std::pair<std::size_t, T>>& removed) {
+// Removes the listed objects (ascending by kind and index), back to front so that the indices
+// stay valid.
+void eraseAt(SceneDesc& scene, const std::vector<std::pair<ObjectRef, ObjectDesc>>& removed) {
     for (auto it = removed.rbegin(); it != removed.rend(); ++it)
-        v.erase(v.begin() + static_cast<std::ptrdiff_t>(it->first));
+        std::visit(
+            [&](const auto& desc) {
+                auto& array = arrayOf(scene, desc);
+                array.erase(array.begin() + static_cast<std::ptrdiff_t>(it->first.index));
+            },
+            it->second);
 }
 // Puts them back, front to back: each lands at its original index.
-template <typename T>
-void insertAt(std::vector<T>& v, const std::vector<std::pair<std::size_t, T>>& removed) {
-    for (const auto& [index, object] : removed)
-        v.insert(v.begin() + static_cast<std::ptrdiff_t>(index), object);
+void insertAt(SceneDesc& scene, const std::vector<std::pair<ObjectRef, ObjectDesc>>& removed) {
+    for (const auto& [ref, object] : removed)
+        std::visit(
+            [&](const auto& desc) {
+                auto& array = arrayOf(scene, desc);
+                array.insert(array.begin() + static_cast<std::ptrdiff_t>(ref.index), desc);
+            },
+            object);
 }
 
-// Whether a spring end names this body: the object itself or, for a cloth, one of its nodes.
-bool attachedTo(const std::string& end, const std::string& id, bool cloth) {
+// Whether a connector's end names this body: the object itself or one of its nodes.
+bool attachedTo(const std::string& end, const std::string& id, bool nodes) {
     if (end == id) return true;
-    return cloth && end.size() > id.size() + 2 && end.compare(0, id.size(), id) == 0 &&
+    return nodes && end.size() > id.size() + 2 && end.compare(0, id.size(), id) == 0 &&
            end[id.size()] == '[';
+}
+
+// The point field a move sets on an object of this kind; empty when it moves with its bodies.
+std::string_view placeKeyOf(ObjectKind kind) {
+    const schema::KindInfo& info = schema::kindInfo(kind);
+    return info.anchorPlaces ? schema::key::anchor : info.placeKey;
+}
+
+// The object's pin flag (schema::KindInfo::pinKey); nullopt when it has none.
+std::optional<bool> pinOf(const SceneDesc& scene, ObjectRef ref) {
+    std::optional<bool> pinned;
+    visitObject(scene, ref, [&](const auto& desc) {
+        auto copy = desc;
+        if (const bool* flag = boolField(copy, schema::kindInfo(ref.kind).pinKey)) pinned = *flag;
+    });
+    return pinned;
 }
 
 bool sameSimulation(const SimulationDesc& a, const SimulationDesc& b) {
@@ -140,70 +167,33 @@ void AddObjectsCommand::revert(SceneDesc& scene) const {
 DeleteObjectsCommand::DeleteObjectsCommand(Document& document, const QStringList& ids)
     : DocumentCommand(document, {}) {
     const SceneDesc& scene = setup();
-    std::vector<bool> particle(scene.particles.size()), box(scene.boxes.size()),
-        disk(scene.disks.size()), polygon(scene.polygons.size()), plane(scene.planes.size()),
-        spring(scene.springs.size()), cloth(scene.cloths.size()), joint(scene.joints.size());
-    std::vector<std::pair<std::string, bool>> bodies;  // deleted bodies (id, is a cloth)
+    std::set<std::pair<ObjectKind, std::size_t>> marked;
+    std::vector<std::pair<std::string, bool>> bodies;  // deleted bodies (id, has nodes)
     QStringList names;
     for (const QString& qid : ids) {
-        const std::string id = qid.toStdString();
-        const ObjectRef ref = findObject(scene, id);
-        switch (ref.kind) {
-            case ObjectKind::Particle:
-                particle[ref.index] = true;
-                break;
-            case ObjectKind::Box:
-                box[ref.index] = true;
-                break;
-            case ObjectKind::Disk:
-                disk[ref.index] = true;
-                break;
-            case ObjectKind::Polygon:
-                polygon[ref.index] = true;
-                break;
-            case ObjectKind::Plane:
-                plane[ref.index] = true;
-                break;
-            case ObjectKind::Spring:
-                spring[ref.index] = true;
-                break;
-            case ObjectKind::Cloth:
-                cloth[ref.index] = true;
-                break;
-            case ObjectKind::Joint:
-                joint[ref.index] = true;
-                break;
-            case ObjectKind::None:
-                continue;
-        }
+        const ObjectRef ref = findObject(scene, qid.toStdString());
+        if (!ref.isValid()) continue;
+        marked.insert({ref.kind, ref.index});
         const std::string name = objectId(scene, ref);
         if (!names.contains(QString::fromStdString(name))) names << QString::fromStdString(name);
-        if (ref.kind != ObjectKind::Plane && ref.kind != ObjectKind::Spring &&
-            ref.kind != ObjectKind::Joint)
-            bodies.emplace_back(name, ref.kind == ObjectKind::Cloth);
+        const schema::KindInfo& info = schema::kindInfo(ref.kind);
+        if (info.body) bodies.emplace_back(name, info.nodes);
     }
-    // A spring or a joint cannot outlive a body it holds.
+    // A connector (a spring, a joint) cannot outlive a body it holds.
     const auto holds = [&](const std::string& a, const std::optional<std::string>& b) {
-        for (const auto& [id, isCloth] : bodies)
-            if (attachedTo(a, id, isCloth) || (b && attachedTo(*b, id, isCloth))) return true;
+        for (const auto& [id, nodes] : bodies)
+            if (attachedTo(a, id, nodes) || (b && attachedTo(*b, id, nodes))) return true;
         return false;
     };
-    for (std::size_t i = 0; i < scene.springs.size(); ++i)
-        if (holds(scene.springs[i].a, scene.springs[i].b)) spring[i] = true;
-    for (std::size_t i = 0; i < scene.joints.size(); ++i)
-        if (holds(scene.joints[i].a, scene.joints[i].b)) joint[i] = true;
-    auto collect = [](const auto& array, const std::vector<bool>& marked, auto& out) {
-        for (std::size_t i = 0; i < array.size(); ++i)
-            if (marked[i]) out.emplace_back(i, array[i]);
-    };
-    collect(scene.particles, particle, particles_);
-    collect(scene.boxes, box, boxes_);
-    collect(scene.disks, disk, disks_);
-    collect(scene.polygons, polygon, polygons_);
-    collect(scene.planes, plane, planes_);
-    collect(scene.springs, spring, springs_);
-    collect(scene.cloths, cloth, cloths_);
-    collect(scene.joints, joint, joints_);
+    forEachKind([&]<typename D>(std::type_identity<D>, ObjectKind kind) {
+        if constexpr (schema::Connector<D>) {
+            const std::vector<D>& array = arrayOf<D>(scene);
+            for (std::size_t i = 0; i < array.size(); ++i)
+                if (holds(array[i].a, array[i].b)) marked.insert({kind, i});
+        }
+    });
+    for (const auto& [kind, index] : marked)
+        removed_.emplace_back(ObjectRef{kind, index}, objectDesc(scene, {kind, index}));
 
     if (names.isEmpty())
         refuse(QObject::tr("nothing to delete: no object has the id %1")
@@ -215,25 +205,11 @@ DeleteObjectsCommand::DeleteObjectsCommand(Document& document, const QStringList
 }
 
 void DeleteObjectsCommand::apply(SceneDesc& scene) const {
-    eraseAt(scene.particles, particles_);
-    eraseAt(scene.boxes, boxes_);
-    eraseAt(scene.disks, disks_);
-    eraseAt(scene.polygons, polygons_);
-    eraseAt(scene.planes, planes_);
-    eraseAt(scene.springs, springs_);
-    eraseAt(scene.cloths, cloths_);
-    eraseAt(scene.joints, joints_);
+    eraseAt(scene, removed_);
 }
 
 void DeleteObjectsCommand::revert(SceneDesc& scene) const {
-    insertAt(scene.particles, particles_);
-    insertAt(scene.boxes, boxes_);
-    insertAt(scene.disks, disks_);
-    insertAt(scene.polygons, polygons_);
-    insertAt(scene.planes, planes_);
-    insertAt(scene.springs, springs_);
-    insertAt(scene.cloths, cloths_);
-    insertAt(scene.joints, joints_);
+    insertAt(scene, removed_);
 }
 
 // ---- MoveObjectCommand -----------------------------------------------------------------------
@@ -244,41 +220,20 @@ MoveObjectCommand::MoveObjectCommand(Document& document, const QString& id, cons
       ref_(findObject(setup(), id_)),
       to_(position) {
     const SceneDesc& scene = setup();
-    switch (ref_.kind) {
-        case ObjectKind::Particle:
-            from_ = scene.particles[ref_.index].position;
-            break;
-        case ObjectKind::Box:
-            from_ = scene.boxes[ref_.index].position;
-            break;
-        case ObjectKind::Disk:
-            from_ = scene.disks[ref_.index].position;
-            break;
-        case ObjectKind::Polygon:
-            from_ = scene.polygons[ref_.index].position;
-            break;
-        case ObjectKind::Plane:
-            from_ = scene.planes[ref_.index].point;
-            break;
-        case ObjectKind::Cloth:
-            from_ = scene.cloths[ref_.index].origin;
-            break;
-        case ObjectKind::Spring:
-            if (const auto& anchor = scene.springs[ref_.index].anchor)
-                from_ = *anchor;
-            else
-                refuse(
-                    QObject::tr("spring %1 hangs between two bodies; move them instead").arg(id));
-            break;
-        case ObjectKind::Joint:
-            refuse(QObject::tr("joint %1 moves with its bodies; move them instead").arg(id));
-            break;
-        case ObjectKind::None:
-            refuse(QObject::tr("unknown object id %1").arg(quoted(id_)));
-            break;
-    }
-    if (ref_.kind == ObjectKind::Cloth)
-        id_ = scene.cloths[ref_.index].id;  // a node moves its cloth
+    const std::string_view placeKey = placeKeyOf(ref_.kind);
+    std::optional<Point2> from;
+    visitObject(scene, ref_, [&](const auto& desc) { from = pointField(desc, placeKey); });
+    if (!ref_.isValid())
+        refuse(QObject::tr("unknown object id %1").arg(quoted(id_)));
+    else if (from)
+        from_ = *from;
+    else if (!placeKey.empty())  // a connector held between two bodies, not by its anchor
+        refuse(QObject::tr("%1 %2 hangs between two bodies; move them instead")
+                   .arg(objectKindName(ref_.kind), id));
+    else
+        refuse(QObject::tr("%1 %2 moves with its bodies; move them instead")
+                   .arg(objectKindName(ref_.kind), id));
+    if (schema::kindInfo(ref_.kind).nodes) id_ = objectId(scene, ref_);  // a node moves its object
     // Only the position changes, so only it needs checking: a full validateScene() at every
     // mouse move of a drag would cost more than the rebuild.
     // The file-format bound too: a drag far off screen must not give a scene that saves but
@@ -293,33 +248,8 @@ MoveObjectCommand::MoveObjectCommand(Document& document, const QString& id, cons
 }
 
 void MoveObjectCommand::place(SceneDesc& scene, const Point2& position) const {
-    switch (ref_.kind) {
-        case ObjectKind::Particle:
-            scene.particles[ref_.index].position = position;
-            break;
-        case ObjectKind::Box:
-            scene.boxes[ref_.index].position = position;
-            break;
-        case ObjectKind::Disk:
-            scene.disks[ref_.index].position = position;
-            break;
-        case ObjectKind::Polygon:
-            scene.polygons[ref_.index].position = position;
-            break;
-        case ObjectKind::Plane:
-            scene.planes[ref_.index].point = position;
-            break;
-        case ObjectKind::Cloth:
-            scene.cloths[ref_.index].origin = position;
-            break;
-        case ObjectKind::Spring:
-            scene.springs[ref_.index].anchor = position;
-            break;
-        case ObjectKind::Joint:
-            break;
-        case ObjectKind::None:
-            break;
-    }
+    const std::string_view placeKey = placeKeyOf(ref_.kind);
+    visitObject(scene, ref_, [&](auto& desc) { setPointField(desc, placeKey, position); });
 }
 
 void MoveObjectCommand::apply(SceneDesc& scene) const {
@@ -392,16 +322,13 @@ bool SetPropertyCommand::mergeWith(const QUndoCommand* other) {
 
 SetPinnedCommand::SetPinnedCommand(Document& document, const QString& id, bool pinned)
     : DocumentCommand(document, {}), ref_(findObject(setup(), id.toStdString())), pinned_(pinned) {
-    if (ref_.kind == ObjectKind::Particle) {
-        before_ = setup().particles[ref_.index].pinned;
-        setText(pinned ? QObject::tr("Pin %1").arg(id) : QObject::tr("Unpin %1").arg(id));
-    } else if (ref_.kind == ObjectKind::Box || ref_.kind == ObjectKind::Disk ||
-               ref_.kind == ObjectKind::Polygon) {
-        before_ = ref_.kind == ObjectKind::Box    ? setup().boxes[ref_.index].isStatic
-                  : ref_.kind == ObjectKind::Disk ? setup().disks[ref_.index].isStatic
-                                                  : setup().polygons[ref_.index].isStatic;
-        setText(pinned ? QObject::tr("Make %1 static").arg(id)
-                       : QObject::tr("Make %1 dynamic").arg(id));
+    if (const std::optional<bool> before = pinOf(setup(), ref_)) {
+        before_ = *before;
+        if (schema::kindInfo(ref_.kind).pinKey == schema::key::isStatic)
+            setText(pinned ? QObject::tr("Make %1 static").arg(id)
+                           : QObject::tr("Make %1 dynamic").arg(id));
+        else
+            setText(pinned ? QObject::tr("Pin %1").arg(id) : QObject::tr("Unpin %1").arg(id));
     } else {
         refuse(ref_.isValid() ? QObject::tr("only particles and rigid bodies can be pinned")
                               : QObject::tr("unknown object id %1").arg(quoted(id.toStdString())));
@@ -409,14 +336,9 @@ SetPinnedCommand::SetPinnedCommand(Document& document, const QString& id, bool p
 }
 
 void SetPinnedCommand::set(SceneDesc& scene, bool pinned) const {
-    if (ref_.kind == ObjectKind::Particle)
-        scene.particles[ref_.index].pinned = pinned;
-    else if (ref_.kind == ObjectKind::Box)
-        scene.boxes[ref_.index].isStatic = pinned;
-    else if (ref_.kind == ObjectKind::Disk)
-        scene.disks[ref_.index].isStatic = pinned;
-    else if (ref_.kind == ObjectKind::Polygon)
-        scene.polygons[ref_.index].isStatic = pinned;
+    visitObject(scene, ref_, [&](auto& desc) {
+        if (bool* flag = boolField(desc, schema::kindInfo(ref_.kind).pinKey)) *flag = pinned;
+    });
 }
 
 void SetPinnedCommand::apply(SceneDesc& scene) const {

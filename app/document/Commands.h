@@ -84,8 +84,8 @@ private:
     QStringList ids_;
 };
 
-// Deletes objects; a body (particle, rigid body, cloth) takes the springs and joints attached to
-// it along. Undo puts everything back at its original index.
+// Deletes objects; a body (schema::KindInfo::body) takes the connectors (springs, joints)
+// attached to it along. Undo puts everything back at its original index.
 class DeleteObjectsCommand final : public DocumentCommand {
 public:
     DeleteObjectsCommand(Document& document, const QStringList& ids);
@@ -95,18 +95,12 @@ protected:
     void revert(SceneDesc& scene) const override;
 
 private:
-    // Removed objects with their indices, ascending, per array.
-    std::vector<std::pair<std::size_t, ParticleDesc>> particles_;
-    std::vector<std::pair<std::size_t, BoxDesc>> boxes_;
-    std::vector<std::pair<std::size_t, DiskDesc>> disks_;
-    std::vector<std::pair<std::size_t, PolygonDesc>> polygons_;
-    std::vector<std::pair<std::size_t, PlaneDesc>> planes_;
-    std::vector<std::pair<std::size_t, SpringDesc>> springs_;
-    std::vector<std::pair<std::size_t, ClothDesc>> cloths_;
-    std::vector<std::pair<std::size_t, JointDesc>> joints_;
+    // The removed objects, ascending by kind and index.
+    std::vector<std::pair<ObjectRef, ObjectDesc>> removed_;
 };
 
-// Places a particle or box (position), a plane (point), a cloth (origin) or a spring's anchor.
+// Places an object: sets the point field its kind is placed by (schema::KindInfo::placeKey: a
+// body's position, a plane's point, a cloth's origin) or a connector's anchor.
 // Consecutive moves of one object merge: a drag is one undo step.
 class MoveObjectCommand final : public DocumentCommand {
 public:
@@ -147,7 +141,8 @@ private:
     bool moves_ = false;
 };
 
-// Pins or unpins a particle, or makes a box static or dynamic.
+// Sets the flag that holds an object in place (schema::KindInfo::pinKey): pins or unpins a
+// particle, makes a rigid body static or dynamic.
 class SetPinnedCommand final : public DocumentCommand {
 public:
     SetPinnedCommand(Document& document, const QString& id, bool pinned);

@@ -6,6 +6,7 @@
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/effects/MouseSpringEffect.h"
 #include "physics/scene/BuildWorld.h"
+#include "physics/scene/SceneLibrary.h"
 #include "physics/scene/SceneSchema.h"
 #include "physics/scene/StateTransfer.h"
 #include "physics/world/World.h"
@@ -77,14 +78,7 @@ bool Document::hasRun() const {
 // ---- files -----------------------------------------------------------------------------------
 
 void Document::newScene() {
-    SceneDesc scene;
-    scene.name = "Untitled";
-    scene.effects.gravity = GravityDesc{};
-    PlaneDesc ground;
-    ground.id = "ground";
-    ground.point = {0.0, -2.0};
-    scene.planes.push_back(ground);
-    loadFromDesc(scene, QString());
+    loadFromDesc(scenes::untitled(), QString());
 }
 
 bool Document::load(const QString& path, QString* error) {
@@ -267,12 +261,8 @@ void Document::commitSetupEdit(const SetupEdit& edit, const QStringList& moved) 
         for (const QString& qid : moved) {
             const std::string id = qid.toStdString();
             keep.insert(id);
-            const ObjectRef ref = findObject(setup_, id);
-            if (ref.kind != ObjectKind::Cloth) continue;
-            const ClothDesc& cloth = setup_.cloths[ref.index];
-            for (int j = 0; j < cloth.resolution[1]; ++j)
-                for (int i = 0; i < cloth.resolution[0]; ++i)
-                    keep.insert(clothNodeId(cloth.id, i, j));
+            for (const std::string& node : nodeIds(setup_, findObject(setup_, id)))
+                keep.insert(node);
         }
         transferState(*world_, *built.world, keep);
     }

@@ -1,5 +1,6 @@
 #include "app/document/ObjectClipboard.h"
 
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <type_traits>
@@ -12,11 +13,6 @@ namespace {
 // The body a spring end names: the object itself, or the cloth of a node id ID[i,j].
 std::string bodyOf(const std::string& end) {
     return end.substr(0, end.find('['));
-}
-
-void shift(Point2& p, const Point2& by) {
-    p[0] += by[0];
-    p[1] += by[1];
 }
 
 template <typename D>
@@ -33,21 +29,20 @@ SceneDesc copyObjects(const SceneDesc& scene, const QStringList& ids) {
     assignDefaultIds(copy);  // ids are what the selection names
     std::unordered_set<std::string> chosen;
     for (const QString& id : ids) chosen.insert(bodyOf(id.toStdString()));
-    std::unordered_set<std::string> bodies;
-    keepCopied(copy.particles, chosen, bodies);
-    keepCopied(copy.boxes, chosen, bodies);
-    keepCopied(copy.disks, chosen, bodies);
-    keepCopied(copy.polygons, chosen, bodies);
-    keepCopied(copy.cloths, chosen, bodies);
-    std::unordered_set<std::string> planes;
-    keepCopied(copy.planes, chosen, planes);
-    // A spring comes along with its bodies: when each end is copied or a fixed anchor.
+    std::unordered_set<std::string> bodies, others;
+    forEachKind([&]<typename D>(std::type_identity<D>, ObjectKind kind) {
+        if constexpr (!schema::Connector<D>)
+            keepCopied(arrayOf<D>(copy), chosen, schema::kindInfo(kind).body ? bodies : others);
+    });
+    // A connector (a spring, a joint) comes along with its bodies: when each end is copied or
+    // the world (a fixed anchor).
     const auto leftBehind = [&](const std::string& a, const std::optional<std::string>& b) {
         return !bodies.count(bodyOf(a)) || (b && !bodies.count(bodyOf(*b)));
     };
-    std::erase_if(copy.springs, [&](const SpringDesc& s) { return leftBehind(s.a, s.b); });
-    // Joints likewise: both bodies copied, or one and the world.
-    std::erase_if(copy.joints, [&](const JointDesc& j) { return leftBehind(j.a, j.b); });
+    forEachKind([&]<typename D>(std::type_identity<D>, ObjectKind) {
+        if constexpr (schema::Connector<D>)
+            std::erase_if(arrayOf<D>(copy), [&](const D& d) { return leftBehind(d.a, d.b); });
+    });
     return copy;
 }
 
@@ -58,17 +53,11 @@ std::vector<ObjectDesc> pastedObjects(const SceneDesc& target, const SceneDesc& 
     SceneDesc trial = target;  // grows as ids are taken, so that each is fresh
     std::map<std::string, std::string> renamed;
     std::vector<ObjectDesc> out;
-    const auto add = [&](auto desc) {
-        using D = std::decay_t<decltype(desc)>;
-        const ObjectDesc object = desc;
-        const std::string fresh = uniqueObjectId(trial, defaultIdPrefix(objectKind(object)));
+    const auto add = [&]<typename D>(D desc) {
+        const std::string fresh = uniqueObjectId(trial, defaultIdPrefix(kindOf<D>()));
         renamed[desc.id] = fresh;
         desc.id = fresh;
-        if constexpr (std::is_same_v<D, PlaneDesc>)
-            shift(desc.point, offset);
-        else if constexpr (std::is_same_v<D, ClothDesc>)
-            shift(desc.origin, offset);
-        else if constexpr (std::is_same_v<D, SpringDesc> || std::is_same_v<D, JointDesc>) {
+        if constexpr (schema::Connector<D>) {
             const auto rename = [&](const std::string& end) {
                 const std::size_t bracket = end.find('[');
                 const auto it = renamed.find(end.substr(0, bracket));
@@ -77,29 +66,18 @@ std::vector<ObjectDesc> pastedObjects(const SceneDesc& target, const SceneDesc& 
             };
             desc.a = rename(desc.a);
             if (desc.b) desc.b = rename(*desc.b);
-            if (desc.anchor) shift(*desc.anchor, offset);
-            if constexpr (std::is_same_v<D, JointDesc>) {
-                // The world points a joint holds move with the copy.
-                shift(desc.groundA, offset);
-                shift(desc.groundB, offset);
-                if (desc.circle) shift(desc.circle->center, offset);
-                if (desc.line) shift(desc.line->point, offset);
-            }
-        } else {
-            shift(desc.position, offset);
         }
-        arrayOf(trial, desc).push_back(desc);
-        out.push_back(std::move(desc));
+        ObjectDesc object = std::move(desc);
+        translateObject(object, offset);
+        arrayOf<D>(trial).push_back(std::get<D>(object));
+        out.push_back(std::move(object));
     };
-    // Bodies first, so that the springs after them find their ends' new ids.
-    for (const ParticleDesc& d : source.particles) add(d);
-    for (const BoxDesc& d : source.boxes) add(d);
-    for (const DiskDesc& d : source.disks) add(d);
-    for (const PolygonDesc& d : source.polygons) add(d);
-    for (const ClothDesc& d : source.cloths) add(d);
-    for (const PlaneDesc& d : source.planes) add(d);
-    for (const SpringDesc& d : source.springs) add(d);
-    for (const JointDesc& d : source.joints) add(d);
+    // Bodies first, so that the connectors after them find their ends' new ids.
+    for (const bool bodies : {true, false})
+        forEachKind([&]<typename D>(std::type_identity<D>, ObjectKind kind) {
+            if (schema::kindInfo(kind).body == bodies)
+                for (const D& d : arrayOf<D>(source)) add(d);
+        });
     return out;
 }
 

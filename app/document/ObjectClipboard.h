@@ -17,9 +17,9 @@ namespace phasebox {
 // The MIME type of copied objects (the same text also goes out as plain text).
 inline constexpr const char* kSceneMimeType = "application/x-phasebox-scene+json";
 
-// The setup with only these objects: particles, boxes, disks, polygons, planes, cloths (a cloth
-// node id copies its cloth) and the springs and joints whose bodies are each copied or the
-// world (one chosen without its bodies stays behind). Simulation settings and effects are kept.
+// The setup with only these objects (a node id copies its cloth) and the connectors (springs,
+// joints) whose bodies are each copied or the world (one chosen without its bodies stays
+// behind). Simulation settings and effects are kept.
 SceneDesc copyObjects(const SceneDesc& scene, const QStringList& ids);
 
 // The fragment's objects ready to add to target: each with an id no object of target uses,

@@ -1,5 +1,6 @@
 #include "app/i18n/BuiltinTexts.h"
 
+#include "app/document/PropertyTable.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/SceneSchema.h"
 #include "ui/panels/BuiltinText.h"
@@ -82,6 +83,10 @@ std::vector<BuiltinText> builtinTexts() {
     schema::forEachEffect([&](const auto& table, auto) { out.addTable(table); });
     out.addTable(schema::table<AttractorDesc>());
     schema::forEachObjectKind([&](const auto& table, auto) { out.addTable(table); });
+    for (std::size_t kind = 0; kind <= kObjectKindCount; ++kind) {
+        const std::string_view name = schema::kindInfo(static_cast<ObjectKind>(kind)).name;
+        out.add(kObjectKindTextContext, text(name), QStringLiteral("kind: ") + text(name));
+    }
     out.addTable(schema::table<ClothStiffnessDesc>());
     out.addTable(schema::table<JointMotorDesc>());
     out.addTable(schema::table<TrackCircleDesc>());

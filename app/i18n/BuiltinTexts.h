@@ -1,7 +1,8 @@
 #pragma once
 // The texts the app shows that are data, not code: the built-in scenes' and lessons' names and
 // notes (resources/, compiled in as :/scenes and :/lessons), the schema's field labels and
-// effect descriptions (physics/scene, which has no Qt), the integrators' names and summaries.
+// effect descriptions and the object kinds' names (physics/scene, which has no Qt), the
+// integrators' names and summaries.
 // lupdate cannot see them, so they are listed here, once, from their sources: the
 // update_translations target writes them as a lupdate-readable file (phasebox-texts), and the
 // translations test checks that each has a translation in every language.

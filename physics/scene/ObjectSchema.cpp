@@ -4,6 +4,8 @@
 // JointSchema.cpp.
 #include "physics/scene/SchemaFields.h"
 
+#include <numbers>
+
 namespace phasebox::schema {
 
 namespace {
@@ -217,7 +219,7 @@ const Field<PlaneDesc> kPlane[] = {
      .description = "a point of the surface",
      .need = Need::Required,
      .editor = {-kFar, kFar, 3}},
-    // The editor shows the normal as the surface's tilt (PropertyTable).
+    // The editor shows the normal as the surface's tilt.
     {.key = key::normal,
      .type = T::Point,
      .member = &PlaneDesc::normal,
@@ -225,6 +227,7 @@ const Field<PlaneDesc> kPlane[] = {
      .label = "Normal",
      .description = "points out of the solid side; normalised on load",
      .need = Need::Required,
+     .editor = {.min = -std::numbers::pi, .max = std::numbers::pi, .decimals = 3, .tilt = true},
      .rule = Rule::NonZeroDirection},
     frictionField(&PlaneDesc::friction),
     restitutionField(&PlaneDesc::restitution),

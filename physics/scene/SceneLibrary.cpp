@@ -45,6 +45,17 @@ BoxDesc box(const std::string& id, double x, double y, double w, double h) {
 }
 }  // namespace
 
+SceneDesc untitled() {
+    SceneDesc scene;
+    scene.name = "Untitled";
+    scene.effects.gravity = GravityDesc{};
+    PlaneDesc ground;
+    ground.id = "ground";
+    ground.point = {0.0, -2.0};
+    scene.planes.push_back(ground);
+    return scene;
+}
+
 SceneDesc pyramid(int rows) {
     SceneDesc s = contactScene(name("Pyramid of ", rows) + " rows",
                                "1 m boxes with friction 0.6 stacked into a pyramid. A good "

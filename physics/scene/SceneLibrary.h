@@ -10,6 +10,9 @@
 
 namespace phasebox::scenes {
 
+// A new document's scene: "Untitled", gravity, and the plane "ground" 2 m below the origin.
+SceneDesc untitled();
+
 // A pyramid of `rows` rows of 1 m boxes on a ground plane (friction 0.6), base centred at x = 0.
 SceneDesc pyramid(int rows);
 // The same pyramid of hexagons (1 m across the flats, pointy side up), stacked like a

@@ -6,6 +6,10 @@
 
 #include "physics/scene/SchemaFields.h"
 
+#include <stdexcept>
+#include <string>
+#include <vector>
+
 namespace phasebox::schema {
 
 namespace {
@@ -13,6 +17,14 @@ namespace {
 using namespace fields;
 
 // ---- simulation ----
+
+// The time step's upper bound, for the format, World and the commands alike (a step of more than
+// a second skips past every motion a classroom scene has). The editors' lower bound is a
+// hundred-thousandth of a second: a valid scene may go below it, and the editor then widens.
+constexpr Range kDt = {Bound::PositiveUpTo, 1.0, 0.0};
+
+// The parameters panel's everyday ranges of the settings that the format allows far past them.
+constexpr double kLargeSetting = 1e12;
 
 const Field<SimulationDesc> kSimulation[] = {
     {.key = key::integrator,
@@ -24,28 +36,32 @@ const Field<SimulationDesc> kSimulation[] = {
     {.key = key::dt,
      .type = T::Number,
      .member = &SimulationDesc::dt,
-     .range = {Bound::PositiveUpTo, 1.0, 0.0},
+     .range = kDt,
      .unit = "s",
      .label = "Time step",
-     .description = "the frame step: the time one step advances"},
+     .description = "the frame step: the time one step advances",
+     .editor = {.min = 1e-5, .max = kDt.max}},
     {.key = key::substeps,
      .type = T::Integer,
      .member = &SimulationDesc::substeps,
      .range = {Bound::IntegerAtLeast, L::kMaxSubsteps, 1.0},
      .label = "Sub-steps",
-     .description = "each step is split into this many equal sub-steps"},
+     .description = "each step is split into this many equal sub-steps",
+     .editor = {.min = 1.0, .max = 1000.0}},
     {.key = key::tolerance,
      .type = T::Number,
      .member = &SimulationDesc::tolerance,
      .range = positive(L::kMaxCoefficient, L::kMinTolerance),
      .label = "Tolerance",
-     .description = "local error tolerance of the adaptive integrators"},
+     .description = "local error tolerance of the adaptive integrators",
+     .editor = {.min = 1e-15, .max = 1.0}},
     {.key = key::newtonIterations,
      .type = T::Integer,
      .member = &SimulationDesc::newtonIterations,
      .range = {Bound::IntegerAtLeast, L::kMaxNewtonIterations, 1.0},
      .label = "Newton iterations",
-     .description = "Newton iterations of implicit_euler (1 = the linearised step)"},
+     .description = "Newton iterations of implicit_euler (1 = the linearised step)",
+     .editor = {.min = 1.0, .max = L::kMaxNewtonIterations}},
     {.key = key::duration,
      .type = T::Number,
      .member = &SimulationDesc::duration,
@@ -73,7 +89,8 @@ const Field<SimulationDesc> kSimulation[] = {
      .unit = "N/m",
      .label = "Contact stiffness",
      .description = "penalty stiffness per contact point; absent: the lightest body gets "
-                    "omega*h = 0.5"},
+                    "omega*h = 0.5",
+     .editor = {.min = 1e-3, .max = kLargeSetting}},
     {.key = key::contactDamping,
      .type = T::Number,
      .member = &SimulationDesc::contactDamping,
@@ -81,6 +98,7 @@ const Field<SimulationDesc> kSimulation[] = {
      .unit = "N s/m",
      .label = "Contact damping",
      .description = "penalty damping per contact point",
+     .editor = {.min = 0.0, .max = kLargeSetting},
      .present = [](const SimulationDesc& s) { return s.contactDamping != 0.0; }},
     {.key = key::sleep,
      .type = T::Bool,
@@ -108,11 +126,6 @@ const SolverSetting kSolverSettings[] = {
     {key::speculativeDistance, nonNegative(L::kMaxCoefficient),
      "distance at which contacts are created before touching"},
 };
-
-constexpr std::string_view kTopKeys[] = {
-    key::format,  key::version,   key::name,   key::description, key::simulation,
-    key::effects, key::particles, key::boxes,  key::disks,       key::polygons,
-    key::planes,  key::springs,   key::cloths, key::joints,      key::instruments};
 
 }  // namespace
 
@@ -142,7 +155,15 @@ std::span<const SolverSetting> solverSettings() {
     return kSolverSettings;
 }
 std::span<const std::string_view> topKeys() {
-    return kTopKeys;
+    // The object arrays' keys are their tables'.
+    static const std::vector<std::string_view> keys = [] {
+        std::vector<std::string_view> out{key::format,      key::version,    key::name,
+                                          key::description, key::simulation, key::effects};
+        forEachObjectKind([&](const auto& table, auto) { out.push_back(table.key); });
+        out.push_back(key::instruments);
+        return out;
+    }();
+    return keys;
 }
 
 std::span<const std::string_view> effectKeys() {
@@ -155,5 +176,11 @@ std::span<const std::string_view> effectKeys() {
 }
 
 PB_TABLE(SimulationDesc, key::simulation, "how time advances", kSimulation)
+
+const Field<SimulationDesc>& simulationField(std::string_view key) {
+    for (const Field<SimulationDesc>& f : kSimulation)
+        if (f.key == key) return f;
+    throw std::invalid_argument("no simulation setting \"" + std::string(key) + "\"");
+}
 
 }  // namespace phasebox::schema

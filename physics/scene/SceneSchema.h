@@ -221,10 +221,11 @@ constexpr Range unitInterval() {
     return {Bound::UnitInterval, 1.0, 0.0};
 }
 
-// The property editor's view of a field, where it differs from the format's: a spin box range
-// that fits the classroom (the format's bounds are a million times past it), the decimals
-// shown, and whether an edit places or launches the object (it then restarts from its setup).
-// decimals < 0: not shown in the editor.
+// The editors' view of a field, where it differs from the format's: a spin box range that fits
+// the classroom (the format's bounds are a million times past it), the decimals shown, and
+// whether an edit places or launches the object (it then restarts from its setup). The property
+// editor shows an object's fields with decimals >= 0; the parameters panel lays out the
+// simulation settings itself and takes their ranges from here.
 struct Editor {
     double min = 0.0;
     double max = 0.0;
@@ -232,6 +233,9 @@ struct Editor {
     bool movesObject = false;
     // Shown after the fields of rank 0 (a spring's anchor after its stiffness).
     int rank = 0;
+    // A direction (Type::Point) edited as one angle, the tilt of the surface it is normal to
+    // (0: normal up, a floor; π/2: a wall facing −x): two components could be made zero.
+    bool tilt = false;
 };
 
 enum class Need { Optional, Required };
@@ -325,6 +329,10 @@ const Table<JointDesc>& tableOf(std::type_identity<JointDesc>);
 const Table<JointMotorDesc>& tableOf(std::type_identity<JointMotorDesc>);
 const Table<TrackCircleDesc>& tableOf(std::type_identity<TrackCircleDesc>);
 const Table<TrackLineDesc>& tableOf(std::type_identity<TrackLineDesc>);
+
+// The simulation setting with this key (key::dt, …): its range, which World and the commands
+// check too, and its editor's limits.
+const Field<SimulationDesc>& simulationField(std::string_view key);
 
 template <typename D>
 const Table<D>& table() {

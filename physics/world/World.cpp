@@ -3,12 +3,14 @@
 #include "physics/contacts/ContactStage.h"
 #include "physics/contacts/PenaltyContacts.h"
 #include "physics/effects/SpringEffect.h"
+#include "physics/scene/SceneSchema.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <stdexcept>
 
 namespace phasebox {
@@ -317,8 +319,13 @@ void World::setSettings(const SimulationSettings& settings) {
     if (!findIntegrator(settings.integrator))
         throw std::invalid_argument("unknown integrator \"" + settings.integrator +
                                     "\"; known: " + knownIntegratorNames());
-    if (!(settings.dt > 0.0) || !(settings.dt <= 1.0))
-        throw std::invalid_argument("dt must be > 0 and <= 1");
+    // The scene format's range (the schema's), so that a World runs every valid scene.
+    const double maxDt = schema::simulationField(schema::key::dt).range.max;
+    if (!(settings.dt > 0.0) || !(settings.dt <= maxDt)) {
+        std::ostringstream message;
+        message << "dt must be > 0 and <= " << maxDt;
+        throw std::invalid_argument(message.str());
+    }
     if (settings.substeps < 1) throw std::invalid_argument("substeps must be >= 1");
     if (!(settings.tolerance > 0.0) || !std::isfinite(settings.tolerance))
         throw std::invalid_argument("tolerance must be > 0");

@@ -1,6 +1,7 @@
 #include "ui/panels/ParametersPanel.h"
 
 #include "physics/integrators/Integrator.h"
+#include "physics/scene/SceneSchema.h"
 #include "ui/panels/BuiltinText.h"
 #include "ui/panels/PropertiesPanel.h"  // ScientificSpinBox
 
@@ -25,10 +26,10 @@
 namespace phasebox::ui {
 
 namespace {
-constexpr double kMinDt = 1e-5;
-constexpr double kMaxDt = 1.0;
-constexpr int kMaxSubsteps = 1000;
-constexpr double kMinTolerance = 1e-15;
+// The editors' limits of a simulation setting: its schema field's (schema::Editor).
+const schema::Editor& limits(std::string_view key) {
+    return schema::simulationField(key).editor;
+}
 
 QString qs(std::string_view text) {
     return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
@@ -115,7 +116,8 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     // ---- dt and its presets --------------------------------------------------------------
     dtBox_ = new ScientificSpinBox;
     dtBox_->setObjectName(QStringLiteral("dt"));
-    dtBox_->setRange(kMinDt, kMaxDt);
+    const schema::Editor& dt = limits(schema::key::dt);
+    dtBox_->setRange(dt.min, dt.max);
     dtBox_->setSignificantDigits(4);
     // Halving dt is the classroom experiment (order of accuracy), so the arrows halve and
     // double rather than add a fixed amount that is too big at 1e-4 and too small at 0.1.
@@ -123,7 +125,7 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     dtBox_->setSuffix(tr(" s"));
     dtBox_->setToolTip(tr("The frame step: the time one step advances (%1 … %2 s).\n"
                           "The arrows halve or double it; 2e-4 style entry is accepted.")
-                           .arg(dtBox_->formatNumber(kMinDt), dtBox_->formatNumber(kMaxDt)));
+                           .arg(dtBox_->formatNumber(dt.min), dtBox_->formatNumber(dt.max)));
     connect(dtBox_, &QDoubleSpinBox::valueChanged, this, &ParametersPanel::dtChanged);
 
     dtPresetButton_ = new QToolButton;
@@ -146,7 +148,8 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     // ---- sub-steps, tolerance, Newton ----------------------------------------------------
     substepsBox_ = new QSpinBox;
     substepsBox_->setObjectName(QStringLiteral("substeps"));
-    substepsBox_->setRange(1, kMaxSubsteps);
+    const schema::Editor& substeps = limits(schema::key::substeps);
+    substepsBox_->setRange(static_cast<int>(substeps.min), static_cast<int>(substeps.max));
     substepsBox_->setKeyboardTracking(false);
     substepsBox_->setAccelerated(true);
     substepsBox_->setToolTip(tr("Each step is split into this many equal sub-steps"));
@@ -157,7 +160,8 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
         if (info.adaptive) adaptiveNames << qs(info.name);
     toleranceBox_ = new ScientificSpinBox;
     toleranceBox_->setObjectName(QStringLiteral("tolerance"));
-    toleranceBox_->setRange(kMinTolerance, 1.0);
+    const schema::Editor& tolerance = limits(schema::key::tolerance);
+    toleranceBox_->setRange(tolerance.min, tolerance.max);
     toleranceBox_->setSignificantDigits(3);
     toleranceBox_->setStepFactor(10.0);  // tolerances are chosen by decade
     toleranceBox_->setToolTip(tr("Local error tolerance of the adaptive methods (%1);\n"
@@ -167,7 +171,8 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
 
     newtonBox_ = new QSpinBox;
     newtonBox_->setObjectName(QStringLiteral("newtonIterations"));
-    newtonBox_->setRange(1, SceneLimits::kMaxNewtonIterations);
+    const schema::Editor& newton = limits(schema::key::newtonIterations);
+    newtonBox_->setRange(static_cast<int>(newton.min), static_cast<int>(newton.max));
     newtonBox_->setKeyboardTracking(false);
     newtonBox_->setToolTip(
         tr("Newton iterations of implicit Euler per step\n"
@@ -195,7 +200,8 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     });
     stiffnessBox_ = new ScientificSpinBox;
     stiffnessBox_->setObjectName(QStringLiteral("contactStiffness"));
-    stiffnessBox_->setRange(1e-3, 1e12);
+    const schema::Editor& stiffness = limits(schema::key::contactStiffness);
+    stiffnessBox_->setRange(stiffness.min, stiffness.max);
     stiffnessBox_->setSignificantDigits(3);
     stiffnessBox_->setStepFactor(10.0);
     stiffnessBox_->setSuffix(tr(" N/m"));
@@ -221,7 +227,8 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     stiffnessRow->addWidget(automaticStiffnessButton_);
     contactDampingBox_ = new ScientificSpinBox;
     contactDampingBox_->setObjectName(QStringLiteral("contactDamping"));
-    contactDampingBox_->setRange(0.0, 1e12);
+    const schema::Editor& damping = limits(schema::key::contactDamping);
+    contactDampingBox_->setRange(damping.min, damping.max);
     contactDampingBox_->setSignificantDigits(3);
     contactDampingBox_->setSuffix(tr(" N·s/m"));
     contactDampingBox_->setToolTip(tr("Penalty damping c per contact point"));
@@ -326,12 +333,15 @@ void ParametersPanel::setSimulation(const SimulationDesc& simulation) {
     if (index >= 0) integratorBox_->setCurrentIndex(index);
     // A valid scene may lie outside the editors' everyday ranges (dt 1e-6, 5000 sub-steps):
     // widen the range rather than show a number that is not the scene's.
-    if (simulation.dt > 0.0) dtBox_->setMinimum(std::min(kMinDt, simulation.dt));
+    if (simulation.dt > 0.0)
+        dtBox_->setMinimum(std::min(limits(schema::key::dt).min, simulation.dt));
     dtBox_->setValue(simulation.dt);
-    substepsBox_->setMaximum(std::max(kMaxSubsteps, simulation.substeps));
+    substepsBox_->setMaximum(
+        std::max(static_cast<int>(limits(schema::key::substeps).max), simulation.substeps));
     substepsBox_->setValue(simulation.substeps);
     if (simulation.tolerance > 0.0)
-        toleranceBox_->setMinimum(std::min(kMinTolerance, simulation.tolerance));
+        toleranceBox_->setMinimum(
+            std::min(limits(schema::key::tolerance).min, simulation.tolerance));
     toleranceBox_->setValue(simulation.tolerance);
     newtonBox_->setValue(simulation.newtonIterations);
     contactModelBox_->setCurrentIndex(static_cast<int>(simulation.contactModel));

@@ -4,6 +4,7 @@
 #include "app/sim/SimulationController.h"
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/integrators/Integrator.h"
+#include "physics/scene/SceneSchema.h"
 #include "ui/panels/ParametersPanel.h"
 
 #include <QAction>
@@ -164,7 +165,8 @@ void ParametersPresenter::cycleIntegrator(int direction) {
 }
 
 void ParametersPresenter::scaleDt(double factor) {
-    const double dt = std::clamp(document_.setup().simulation.dt * factor, 1e-5, 1.0);
+    const schema::Editor& limits = schema::simulationField(schema::key::dt).editor;
+    const double dt = std::clamp(document_.setup().simulation.dt * factor, limits.min, limits.max);
     if (change([&](auto& s) { s.dt = dt; })) emit message(tr("dt = %1 s").arg(dt, 0, 'g', 4));
 }
 

@@ -116,8 +116,8 @@ void PlotsPresenter::followSelection() {
     const QString first = selection.isEmpty() ? QString() : selection.first();
     const ObjectRef ref = findObject(document_.setup(), first.toStdString());
     const bool isNode = first.contains(QLatin1Char('['));
-    if (ref.kind == ObjectKind::Particle || ref.kind == ObjectKind::Box ||
-        ref.kind == ObjectKind::Disk || ref.kind == ObjectKind::Polygon || isNode) {
+    const schema::KindInfo& kind = schema::kindInfo(ref.kind);
+    if ((kind.body && !kind.nodes) || isNode) {
         const QString coordinate = defaultPhaseCoordinate(first);
         recorder_.setPhaseTarget(first, coordinate);
         panel_.setPhaseCoordinate(coordinate);
@@ -148,8 +148,7 @@ QString PlotsPresenter::defaultPhaseCoordinate(const QString& id) const {
 void PlotsPresenter::choosePhaseCoordinate(const QString& coordinate) {
     const QString object = recorder_.phaseObject();
     const ObjectRef ref = findObject(document_.setup(), object.toStdString());
-    const bool turns = ref.kind == ObjectKind::Box || ref.kind == ObjectKind::Disk ||
-                       ref.kind == ObjectKind::Polygon;
+    const bool turns = schema::kindInfo(ref.kind).rotates;
     if (object.isEmpty() || (coordinate == QLatin1String("angle") && !turns)) {
         emit message(object.isEmpty() ? tr("Click an object first.")
                                       : tr("Only rigid bodies have an angle."));

@@ -42,8 +42,8 @@ void PropertiesPresenter::update(bool rebuild) {
     const World& world = document_.world();
     // Only bodies have a state of their own in a scene (a cloth's nodes, a spring, a joint and
     // a plane keep their setup numbers while it runs).
-    const bool body = ref.kind == ObjectKind::Particle || ref.kind == ObjectKind::Box ||
-                      ref.kind == ObjectKind::Disk || ref.kind == ObjectKind::Polygon;
+    const schema::KindInfo& kind = schema::kindInfo(ref.kind);
+    const bool body = kind.body && !kind.nodes;
     const bool live = body && document_.hasRun();
     // The selected body alone, snapshotted (this runs every frame: not the whole scene).
     SceneDesc liveScene;

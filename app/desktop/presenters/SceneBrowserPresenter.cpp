@@ -36,9 +36,8 @@ void SceneBrowserPresenter::deleteSelection() {
 
 bool SceneBrowserPresenter::copySelection() {
     const SceneDesc copy = copyObjects(document_.setup(), document_.selection());
-    const std::size_t count = copy.particles.size() + copy.boxes.size() + copy.disks.size() +
-                              copy.polygons.size() + copy.planes.size() + copy.cloths.size() +
-                              copy.springs.size();
+    std::size_t count = 0;
+    forEachKind([&](auto, ObjectKind kind) { count += objectCount(copy, kind); });
     if (count == 0) {
         emit message(
             tr("Nothing to copy: select objects first (a spring goes along with the "
