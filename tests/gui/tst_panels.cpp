@@ -3,6 +3,7 @@
 // /tmp/panel_*.png for a look.
 
 #include "physics/integrators/Integrator.h"
+#include "physics/scene/ObjectKinds.h"
 #include "ui/panels/EffectsPanel.h"
 #include "ui/panels/ParametersPanel.h"
 #include "ui/panels/PropertiesPanel.h"
@@ -449,6 +450,42 @@ private slots:
         QVERIFY(tree->topLevelItem(0)->isHidden());
         browser.setFilter(QString());
         QVERIFY(!findItem(tree, "ball")->isHidden());
+    }
+
+    void browserListsEveryKind() {
+        // One object of every kind the scene format has: each gets its group and its row, so a
+        // kind the browser forgot (disks and polygons were missing) shows here.
+        SceneDesc scene = sampleScene();
+        DiskDesc disk;
+        disk.id = "wheel";
+        disk.radius = 0.25;
+        disk.mass = 2.0;
+        scene.disks.push_back(disk);
+        PolygonDesc triangle;
+        triangle.id = "wedge";
+        triangle.vertices = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+        triangle.isStatic = true;
+        scene.polygons.push_back(triangle);
+        JointDesc hinge;
+        hinge.id = "pin";
+        hinge.a = "wheel";
+        scene.joints.push_back(hinge);
+        SceneBrowser browser;
+        browser.setScene(scene);
+        auto* tree = browser.findChild<QTreeWidget*>("objects");
+        std::size_t kinds = 0;
+        forEachKind([&]<typename D>(std::type_identity<D>, ObjectKind kind) {
+            if (objectCount(scene, kind) == 0) return;
+            ++kinds;
+            for (std::size_t i = 0; i < objectCount(scene, kind); ++i) {
+                const QString id = QString::fromStdString(objectId(scene, {kind, i}));
+                QVERIFY2(findItem(tree, id), qPrintable(id));
+            }
+        });
+        QCOMPARE(kinds, kObjectKindCount);
+        QCOMPARE(tree->topLevelItemCount(), static_cast<int>(kObjectKindCount));
+        QCOMPARE(findItem(tree, "wheel")->text(1), QString("r 0.25 m, m 2 kg"));
+        QCOMPARE(findItem(tree, "wedge")->text(1), QString("3 vertices, static"));
     }
 
     void browserSelection() {

@@ -1,5 +1,6 @@
 #include "ui/panels/SceneBrowser.h"
 
+#include "physics/scene/ObjectKinds.h"
 #include "physics/scene/SceneSchema.h"
 #include "ui/panels/DisplayText.h"
 
@@ -50,24 +51,36 @@ QString qs(std::string_view text) {
 }
 }  // namespace
 
-QString SceneBrowser::particleSummary(const ParticleDesc& particle) {
+QString SceneBrowser::summary(const ParticleDesc& particle) {
     QString text = tr("m %1 kg, r %2 m").arg(num(particle.mass), num(particle.radius));
     if (particle.pinned) text += tr(", pinned");
     if (particle.charge != 0.0) text += tr(", q %1 C").arg(num(particle.charge));
     return text;
 }
 
-QString SceneBrowser::boxSummary(const BoxDesc& box) {
+QString SceneBrowser::summary(const BoxDesc& box) {
     const QString size = tr("%1 × %2 m").arg(num(box.size[0]), num(box.size[1]));
     if (box.isStatic) return tr("%1, static").arg(size);
     return tr("%1, m %2 kg").arg(size, num(box.resolvedMass()));
 }
 
-QString SceneBrowser::planeSummary(const PlaneDesc& plane) {
+QString SceneBrowser::summary(const DiskDesc& disk) {
+    const QString radius = tr("r %1 m").arg(num(disk.radius));
+    if (disk.isStatic) return tr("%1, static").arg(radius);
+    return tr("%1, m %2 kg").arg(radius, num(disk.resolvedMass()));
+}
+
+QString SceneBrowser::summary(const PolygonDesc& polygon) {
+    const QString shape = tr("%n vertices", nullptr, static_cast<int>(polygon.vertices.size()));
+    if (polygon.isStatic) return tr("%1, static").arg(shape);
+    return tr("%1, m %2 kg").arg(shape, num(polygon.resolvedMass()));
+}
+
+QString SceneBrowser::summary(const PlaneDesc& plane) {
     return tr("through %1, normal %2").arg(point(plane.point), point(plane.normal));
 }
 
-QString SceneBrowser::springSummary(const SpringDesc& spring) {
+QString SceneBrowser::summary(const SpringDesc& spring) {
     const QString other = spring.b        ? qs(*spring.b)
                           : spring.anchor ? tr("anchor %1").arg(point(*spring.anchor))
                                           : tr("?");
@@ -76,7 +89,7 @@ QString SceneBrowser::springSummary(const SpringDesc& spring) {
     return text;
 }
 
-QString SceneBrowser::jointSummary(const JointDesc& joint) {
+QString SceneBrowser::summary(const JointDesc& joint) {
     const QString type = qs(schema::kJointTypeNames[static_cast<std::size_t>(joint.type)]);
     const QString other = joint.b ? qs(*joint.b) : tr("the world");
     QString text = joint.type == JointType::Track
@@ -88,7 +101,7 @@ QString SceneBrowser::jointSummary(const JointDesc& joint) {
     return text;
 }
 
-QString SceneBrowser::clothSummary(const ClothDesc& cloth) {
+QString SceneBrowser::summary(const ClothDesc& cloth) {
     QString pinned;
     if (const auto* mode = std::get_if<std::string>(&cloth.pinned))
         pinned = qs(*mode);
@@ -100,6 +113,31 @@ QString SceneBrowser::clothSummary(const ClothDesc& cloth) {
         .arg(cloth.resolution[0])
         .arg(cloth.resolution[1])
         .arg(num(cloth.mass), pinned);
+}
+
+QString SceneBrowser::groupTitle(const ParticleDesc&) {
+    return tr("Particles");
+}
+QString SceneBrowser::groupTitle(const BoxDesc&) {
+    return tr("Boxes");
+}
+QString SceneBrowser::groupTitle(const DiskDesc&) {
+    return tr("Disks");
+}
+QString SceneBrowser::groupTitle(const PolygonDesc&) {
+    return tr("Polygons");
+}
+QString SceneBrowser::groupTitle(const PlaneDesc&) {
+    return tr("Planes");
+}
+QString SceneBrowser::groupTitle(const SpringDesc&) {
+    return tr("Springs");
+}
+QString SceneBrowser::groupTitle(const ClothDesc&) {
+    return tr("Cloths");
+}
+QString SceneBrowser::groupTitle(const JointDesc&) {
+    return tr("Joints");
 }
 
 SceneBrowser::SceneBrowser(QWidget* parent) : QWidget(parent) {
@@ -166,13 +204,16 @@ void SceneBrowser::setScene(const SceneDesc& scene) {
     tree_->setUpdatesEnabled(false);
     tree_->clear();
 
-    // Adds one group of n objects, capped at kMaxRowsPerGroup rows.
-    auto addKind = [&](const QString& key, const QString& title, std::size_t n, auto&& idOf,
-                       auto&& summaryOf) {
+    // A group per kind in the scene file's order, capped at kMaxRowsPerGroup rows.
+    forEachKind([&]<typename D>(std::type_identity<D>, ObjectKind kind) {
+        const std::vector<D>& objects = arrayOf<D>(scene);
+        const std::size_t n = objects.size();
         if (n == 0) return;
-        QTreeWidgetItem* group = addGroup(key, title, static_cast<int>(n));
+        const QString key = qs(schema::table<D>().key);
+        QTreeWidgetItem* group = addGroup(key, groupTitle(D{}), static_cast<int>(n));
         const std::size_t shown = std::min<std::size_t>(n, kMaxRowsPerGroup);
-        for (std::size_t i = 0; i < shown; ++i) addObject(group, idOf(i), summaryOf(i));
+        for (std::size_t i = 0; i < shown; ++i)
+            addObject(group, qs(objectId(scene, {kind, i})), summary(objects[i]));
         if (shown < n) {
             auto* more = new QTreeWidgetItem(group);
             more->setText(kIdColumn, tr("… and %1 more").arg(n - shown));
@@ -180,31 +221,7 @@ void SceneBrowser::setScene(const SceneDesc& scene) {
             more->setFlags(Qt::ItemIsEnabled);
         }
         group->setExpanded(expanded.value(key, true));
-    };
-    addKind(
-        qs(schema::key::particles), tr("Particles"), scene.particles.size(),
-        [&](std::size_t i) { return qs(particleId(scene, i)); },
-        [&](std::size_t i) { return particleSummary(scene.particles[i]); });
-    addKind(
-        qs(schema::key::boxes), tr("Boxes"), scene.boxes.size(),
-        [&](std::size_t i) { return qs(boxId(scene, i)); },
-        [&](std::size_t i) { return boxSummary(scene.boxes[i]); });
-    addKind(
-        qs(schema::key::planes), tr("Planes"), scene.planes.size(),
-        [&](std::size_t i) { return qs(planeId(scene, i)); },
-        [&](std::size_t i) { return planeSummary(scene.planes[i]); });
-    addKind(
-        qs(schema::key::springs), tr("Springs"), scene.springs.size(),
-        [&](std::size_t i) { return qs(springId(scene, i)); },
-        [&](std::size_t i) { return springSummary(scene.springs[i]); });
-    addKind(
-        qs(schema::key::cloths), tr("Cloths"), scene.cloths.size(),
-        [&](std::size_t i) { return qs(scene.cloths[i].id); },
-        [&](std::size_t i) { return clothSummary(scene.cloths[i]); });
-    addKind(
-        qs(schema::key::joints), tr("Joints"), scene.joints.size(),
-        [&](std::size_t i) { return qs(jointId(scene, i)); },
-        [&](std::size_t i) { return jointSummary(scene.joints[i]); });
+    });
 
     // The id column as wide as the longest id (group headings span both columns), so the
     // summaries get the rest of a narrow dock; capped so a long id cannot hide them.

@@ -35,13 +35,25 @@ public:
     QStringList ids() const;
     void setFilter(const QString& text);
 
-    // "m 1 kg, r 0.05 m" and the like, as shown in the tree.
-    static QString particleSummary(const ParticleDesc& particle);
-    static QString boxSummary(const BoxDesc& box);
-    static QString planeSummary(const PlaneDesc& plane);
-    static QString springSummary(const SpringDesc& spring);
-    static QString clothSummary(const ClothDesc& cloth);
-    static QString jointSummary(const JointDesc& joint);
+    // "m 1 kg, r 0.05 m" and the like, as shown in the tree: one per kind (setScene visits
+    // every kind of physics/scene/ObjectKinds.h, so a kind without one does not compile).
+    static QString summary(const ParticleDesc& particle);
+    static QString summary(const BoxDesc& box);
+    static QString summary(const DiskDesc& disk);
+    static QString summary(const PolygonDesc& polygon);
+    static QString summary(const PlaneDesc& plane);
+    static QString summary(const SpringDesc& spring);
+    static QString summary(const ClothDesc& cloth);
+    static QString summary(const JointDesc& joint);
+    // The heading of a kind's group ("Particles"), likewise one per kind.
+    static QString groupTitle(const ParticleDesc&);
+    static QString groupTitle(const BoxDesc&);
+    static QString groupTitle(const DiskDesc&);
+    static QString groupTitle(const PolygonDesc&);
+    static QString groupTitle(const PlaneDesc&);
+    static QString groupTitle(const SpringDesc&);
+    static QString groupTitle(const ClothDesc&);
+    static QString groupTitle(const JointDesc&);
 
 signals:
     void selectionChanged(const QStringList& ids);
