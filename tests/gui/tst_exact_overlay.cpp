@@ -241,7 +241,7 @@ private slots:
         window.w.refreshNow();
         QCOMPARE(window.overlay().ghosts.size(), 2);
         const World& world = window.w.document().world();
-        const Box& box = world.boxes()[0];
+        const RigidBody& box = world.rigidBodies()[0];
         bool found = false;
         for (const auto& ghost : window.overlay().ghosts)
             if (!ghost.size.isEmpty()) {

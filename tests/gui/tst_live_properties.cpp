@@ -79,9 +79,9 @@ private slots:
         QVERIFY2(panel->stateNote().contains(
                      QStringLiteral("Live at t = %1 s").arg(world.time(), 0, 'f', 3)),
                  qPrintable(panel->stateNote()));
-        QVERIFY(world.boxPosition(0).y() < 0.25);
-        QVERIFY(std::abs(shown(panel, "position.y") - world.boxPosition(0).y()) < 1e-3);
-        QVERIFY(std::abs(shown(panel, "velocity.y") - world.boxVelocity(0).y()) < 1e-3);
+        QVERIFY(world.bodyPosition(0).y() < 0.25);
+        QVERIFY(std::abs(shown(panel, "position.y") - world.bodyPosition(0).y()) < 1e-3);
+        QVERIFY(std::abs(shown(panel, "velocity.y") - world.bodyVelocity(0).y()) < 1e-3);
 
         // At rest on the floor after 3 s: the live y is the resting height, -1.7 m.
         QVERIFY(w.controller().advance(3.0));

@@ -120,7 +120,7 @@ private slots:
         QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(-300, 0));
         QCOMPARE(w.document().setup().disks.size(), std::size_t(2));
         QCOMPARE(w.document().setup().disks[1].radius, CanvasTools::kClickDiskRadius);
-        QCOMPARE(w.document().world().boxes().size(), std::size_t(2));
+        QCOMPARE(w.document().world().rigidBodies().size(), std::size_t(2));
 
         // The pin tool makes it static; the select tool finds it by its circle.
         w.action("toolPin")->trigger();
@@ -157,8 +157,8 @@ private slots:
         QVERIFY(std::abs(hexagon.position[0] - centre.x()) < 1e-9);
         QVERIFY(std::abs(std::hypot(hexagon.vertices[0][0], hexagon.vertices[0][1]) -
                          QLineF(centre, corner).length()) < 1e-9);
-        QCOMPARE(w.document().world().boxes().size(), std::size_t(1));
-        QVERIFY(w.document().world().boxes()[0].shape == RigidShape::Polygon);
+        QCOMPARE(w.document().world().rigidBodies().size(), std::size_t(1));
+        QVERIFY(w.document().world().rigidBodies()[0].shape == RigidShape::Polygon);
         w.action("toolSelect")->trigger();
         QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(20, 20));
         QCOMPARE(w.document().selection(), QStringList{QStringLiteral("poly0")});
@@ -451,7 +451,7 @@ private slots:
         w.document().reset();
         auto* type = w.findChild<QComboBox*>(QStringLiteral("jointType"));
         type->setCurrentIndex(type->findText(QStringLiteral("weld")));
-        const Vec2 bar = w.document().world().boxPosition(0);
+        const Vec2 bar = w.document().world().bodyPosition(0);
         QTest::mouseClick(canvas, Qt::LeftButton, {},
                           w.canvas()->toWidget(QPointF(bar.x(), bar.y())).toPoint());
         QCOMPARE(w.document().setup().joints.size(), std::size_t(2));

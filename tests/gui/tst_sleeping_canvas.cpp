@@ -51,28 +51,28 @@ private slots:
         QVERIFY(w.openFile(writeScene(dir, true), true));
         QVERIFY(w.document().setup().simulation.sleep);
         const ui::SceneColors colours;
-        QCOMPARE(colourAt(w, w.document().world().boxPosition(0)), colours.dynamicBox);
+        QCOMPARE(colourAt(w, w.document().world().bodyPosition(0)), colours.dynamicBox);
         QVERIFY(w.controller().advance(1.5));
         const World& world = w.document().world();
         QCOMPARE(world.sleepingBodies(), 2);
-        QVERIFY(world.boxes()[0].asleep);
-        QCOMPARE(colourAt(w, world.boxPosition(0)), colours.sleepingBox);
-        QCOMPARE(colourAt(w, world.boxPosition(1)), colours.sleepingBox);
+        QVERIFY(world.rigidBodies()[0].asleep);
+        QCOMPARE(colourAt(w, world.bodyPosition(0)), colours.sleepingBox);
+        QCOMPARE(colourAt(w, world.bodyPosition(1)), colours.sleepingBox);
 
         // A drag on the crate pulls it with the mouse spring: its island wakes.
         QWidget* canvas = w.canvas();
-        const Vec2 at = w.document().world().boxPosition(0);
+        const Vec2 at = w.document().world().bodyPosition(0);
         const QPoint crate = w.canvas()->toWidget(QPointF(at.x(), at.y())).toPoint();
         QTest::mousePress(canvas, Qt::LeftButton, {}, crate);
         QTest::mouseMove(canvas, crate + QPoint(10, -5));
         QTest::mouseMove(canvas, crate + QPoint(20, -10));
         QVERIFY(w.document().isGrabbing());
         QCOMPARE(w.document().world().sleepingBodies(), 0);
-        QVERIFY(!w.document().world().boxes()[0].asleep);
-        QCOMPARE(colourAt(w, w.document().world().boxPosition(0)), colours.dynamicBox);
+        QVERIFY(!w.document().world().rigidBodies()[0].asleep);
+        QCOMPARE(colourAt(w, w.document().world().bodyPosition(0)), colours.dynamicBox);
         QVERIFY(w.controller().advance(0.3));
         // Held by the mouse, the crate does not fall asleep.
-        QVERIFY(!w.document().world().boxes()[0].asleep);
+        QVERIFY(!w.document().world().rigidBodies()[0].asleep);
         QTest::mouseRelease(canvas, Qt::LeftButton, {}, crate + QPoint(20, -10));
         QVERIFY(!w.document().isGrabbing());
         // Let go, the two come to rest and sleep again.
@@ -89,7 +89,7 @@ private slots:
         QVERIFY(w.openFile(writeScene(dir, false), true));
         QVERIFY(w.controller().advance(1.5));
         QCOMPARE(w.document().world().sleepingBodies(), 0);
-        QCOMPARE(colourAt(w, w.document().world().boxPosition(0)), ui::SceneColors{}.dynamicBox);
+        QCOMPARE(colourAt(w, w.document().world().bodyPosition(0)), ui::SceneColors{}.dynamicBox);
     }
 };
 

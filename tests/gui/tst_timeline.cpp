@@ -144,8 +144,8 @@ private slots:
         w.action("showInstruments")->trigger();
         QCoreApplication::processEvents();
         int box = -1;
-        for (std::size_t i = 0; i < w.document().world().boxes().size(); ++i)
-            if (w.document().world().boxes()[i].id == "r1c2") box = static_cast<int>(i);
+        for (std::size_t i = 0; i < w.document().world().rigidBodies().size(); ++i)
+            if (w.document().world().rigidBodies()[i].id == "r1c2") box = static_cast<int>(i);
         QVERIFY(box >= 0);
         Run run(w);
         run.moments.push_back(run.now());
@@ -166,7 +166,7 @@ private slots:
             QCOMPARE(shown.readouts, then.readouts);
             const World& world = w.document().world();
             QCOMPARE(phaseCursor(w),
-                     QPointF(world.boxPosition(box).y(), world.boxVelocity(box).y()));
+                     QPointF(world.bodyPosition(box).y(), world.bodyVelocity(box).y()));
             QVERIFY2(shown.canvas == then.canvas,
                      qPrintable(QStringLiteral("canvas at frame %1").arg(frame)));
             QCOMPARE(energyCursor(w), w.document().world().time());
