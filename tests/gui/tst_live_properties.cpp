@@ -4,6 +4,7 @@
 // fits the dock of a window at its first size, and at 1024 x 700 every page of the
 // Instruments dock fits its width (nothing cut at the right edge).
 
+#include "MainWindowTestSupport.h"
 #include "app/desktop/MainWindow.h"
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
@@ -23,6 +24,7 @@
 #include <cmath>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 
@@ -63,7 +65,7 @@ private slots:
         QString error;
         QVERIFY2(w.document().loadFromDesc(droppedBox(), {}, &error), qPrintable(error));
         w.document().setSelection({QStringLiteral("crate")});
-        ui::PropertiesPanel* panel = w.propertiesPanel();
+        ui::PropertiesPanel* panel = propertiesPanelOf(w);
         QVERIFY(panel->hasObject());
         QVERIFY(!panel->showsLiveState());
         QVERIFY(panel->stateNote().startsWith(QStringLiteral("Setup")));
@@ -103,9 +105,9 @@ private slots:
         w.document().setSelection({QStringLiteral("crate")});
         w.findChild<QDockWidget*>(QStringLiteral("propertiesDock"))->raise();
         QApplication::processEvents();
-        auto* scroll = w.propertiesPanel()->findChild<QScrollArea*>(QStringLiteral("formScroll"));
+        auto* scroll = propertiesPanelOf(w)->findChild<QScrollArea*>(QStringLiteral("formScroll"));
         QVERIFY(scroll);
-        QVERIFY(w.propertiesPanel()->keys().size() >= 12);
+        QVERIFY(propertiesPanelOf(w)->keys().size() >= 12);
         QCOMPARE(scroll->verticalScrollBar()->maximum(), 0);  // nothing hidden below
     }
 
@@ -119,8 +121,8 @@ private slots:
         QApplication::processEvents();
         QTest::qWait(50);
         QVERIFY(w.findChild<QDockWidget*>(QStringLiteral("instrumentsDock"))->isVisible());
-        QVERIFY2(w.canvas()->width() >= 1024 / 2 - 2,
-                 qPrintable(QString::number(w.canvas()->width())));
+        QVERIFY2(canvasOf(w)->width() >= 1024 / 2 - 2,
+                 qPrintable(QString::number(canvasOf(w)->width())));
     }
 
     void instrumentsFitASmallWindow() {
@@ -135,7 +137,7 @@ private slots:
         QVERIFY(scroll);
         using Tab = ui::InstrumentsPanel::Tab;
         for (const Tab tab : {Tab::Readouts, Tab::Graphs, Tab::Timer, Tab::Table}) {
-            w.instrumentsPanel()->showTab(tab);
+            instrumentsPanelOf(w)->showTab(tab);
             w.refreshNow();
             QApplication::processEvents();
             QVERIFY2(scroll->horizontalScrollBar()->maximum() == 0,

@@ -2,6 +2,7 @@
 // drawn dimmed; dragging it wakes it (and it is drawn as before); a scene without sleep never
 // dims anything.
 
+#include "MainWindowTestSupport.h"
 #include "app/desktop/MainWindow.h"
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
@@ -14,6 +15,7 @@
 #include <QTest>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 
@@ -32,8 +34,8 @@ QString writeScene(const QTemporaryDir& dir, bool sleep) {
 }
 
 QColor colourAt(MainWindow& w, const Vec2& point) {
-    const QImage image = w.canvas()->renderImage(w.canvas()->size());
-    return image.pixelColor(w.canvas()->toWidget(QPointF(point.x(), point.y())).toPoint());
+    const QImage image = canvasOf(w)->renderImage(canvasOf(w)->size());
+    return image.pixelColor(canvasOf(w)->toWidget(QPointF(point.x(), point.y())).toPoint());
 }
 
 }  // namespace
@@ -60,9 +62,9 @@ private slots:
         QCOMPARE(colourAt(w, world.bodyPosition(1)), colours.sleepingBox);
 
         // A drag on the crate pulls it with the mouse spring: its island wakes.
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const Vec2 at = w.document().world().bodyPosition(0);
-        const QPoint crate = w.canvas()->toWidget(QPointF(at.x(), at.y())).toPoint();
+        const QPoint crate = canvasOf(w)->toWidget(QPointF(at.x(), at.y())).toPoint();
         QTest::mousePress(canvas, Qt::LeftButton, {}, crate);
         QTest::mouseMove(canvas, crate + QPoint(10, -5));
         QTest::mouseMove(canvas, crate + QPoint(20, -10));
