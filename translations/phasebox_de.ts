@@ -2227,6 +2227,13 @@
     </message>
 </context>
 <context>
+    <name>phasebox::DivergenceNotice</name>
+    <message>
+        <source>The simulation became unstable</source>
+        <translation>Die Simulation wurde instabil</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::Document</name>
     <message>
         <source>Switched to %1 so the %2 stays stable; Undo to go back to %3</source>
@@ -2312,6 +2319,17 @@
     <message>
         <source>Phase space of %1</source>
         <translation>Phasenraum von %1</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::HelpWindows</name>
+    <message>
+        <source>About Phasebox</source>
+        <translation>Über Phasebox</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;A 2D physics sandbox for the classroom: drop particles, springs, cloth and boxes into a scene, switch the integrator while it runs, and watch what accuracy costs.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;Ein 2D-Physik-Sandkasten für den Unterricht: Teilchen, Federn, Tücher und Quader in eine Szene setzen, den Integrator während des Laufs wechseln und sehen, was Genauigkeit kostet.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -2525,6 +2543,21 @@
     </message>
 </context>
 <context>
+    <name>phasebox::LanguageMenu</name>
+    <message>
+        <source>&amp;System Language</source>
+        <translation>&amp;Systemsprache</translation>
+    </message>
+    <message>
+        <source>Phasebox will speak %1 from its next start.</source>
+        <translation>Phasebox spricht ab dem nächsten Start %1.</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::MainWindow</name>
     <message>
         <source>Autosave failed: %1</source>
@@ -2655,14 +2688,6 @@
         <translation>&amp;Über Phasebox</translation>
     </message>
     <message>
-        <source>About Phasebox</source>
-        <translation>Über Phasebox</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;A 2D physics sandbox for the classroom: drop particles, springs, cloth and boxes into a scene, switch the integrator while it runs, and watch what accuracy costs.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;Ein 2D-Physik-Sandkasten für den Unterricht: Teilchen, Federn, Tücher und Quader in eine Szene setzen, den Integrator während des Laufs wechseln und sehen, was Genauigkeit kostet.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
@@ -2699,10 +2724,6 @@
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <source>The simulation became unstable</source>
-        <translation>Die Simulation wurde instabil</translation>
-    </message>
-    <message>
         <source>Revert</source>
         <translation>Zurücksetzen</translation>
     </message>
@@ -2721,18 +2742,6 @@
     <message>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
-    </message>
-    <message>
-        <source>&amp;System Language</source>
-        <translation>&amp;Systemsprache</translation>
-    </message>
-    <message>
-        <source>Phasebox will speak %1 from its next start.</source>
-        <translation>Phasebox spricht ab dem nächsten Start %1.</translation>
-    </message>
-    <message>
-        <source>Language</source>
-        <translation>Sprache</translation>
     </message>
     <message>
         <source>Scene canvas</source>

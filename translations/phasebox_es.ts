@@ -2227,6 +2227,13 @@
     </message>
 </context>
 <context>
+    <name>phasebox::DivergenceNotice</name>
+    <message>
+        <source>The simulation became unstable</source>
+        <translation>La simulación se volvió inestable</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::Document</name>
     <message>
         <source>Switched to %1 so the %2 stays stable; Undo to go back to %3</source>
@@ -2312,6 +2319,17 @@
     <message>
         <source>Phase space of %1</source>
         <translation>Espacio de fases de %1</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::HelpWindows</name>
+    <message>
+        <source>About Phasebox</source>
+        <translation>Acerca de Phasebox</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;A 2D physics sandbox for the classroom: drop particles, springs, cloth and boxes into a scene, switch the integrator while it runs, and watch what accuracy costs.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;Un arenero de física 2D para el aula: ponga partículas, muelles, telas y cajas en una escena, cambie el integrador mientras corre y vea lo que cuesta la precisión.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -2525,6 +2543,21 @@
     </message>
 </context>
 <context>
+    <name>phasebox::LanguageMenu</name>
+    <message>
+        <source>&amp;System Language</source>
+        <translation>Idioma del &amp;sistema</translation>
+    </message>
+    <message>
+        <source>Phasebox will speak %1 from its next start.</source>
+        <translation>Phasebox hablará %1 desde su próximo inicio.</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Idioma</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::MainWindow</name>
     <message>
         <source>Autosave failed: %1</source>
@@ -2655,14 +2688,6 @@
         <translation>&amp;Acerca de Phasebox</translation>
     </message>
     <message>
-        <source>About Phasebox</source>
-        <translation>Acerca de Phasebox</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;A 2D physics sandbox for the classroom: drop particles, springs, cloth and boxes into a scene, switch the integrator while it runs, and watch what accuracy costs.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;Un arenero de física 2D para el aula: ponga partículas, muelles, telas y cajas en una escena, cambie el integrador mientras corre y vea lo que cuesta la precisión.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>Main</source>
         <translation>Principal</translation>
     </message>
@@ -2699,10 +2724,6 @@
         <translation>Sin título</translation>
     </message>
     <message>
-        <source>The simulation became unstable</source>
-        <translation>La simulación se volvió inestable</translation>
-    </message>
-    <message>
         <source>Revert</source>
         <translation>Revertir</translation>
     </message>
@@ -2721,18 +2742,6 @@
     <message>
         <source>&amp;Language</source>
         <translation>&amp;Idioma</translation>
-    </message>
-    <message>
-        <source>&amp;System Language</source>
-        <translation>Idioma del &amp;sistema</translation>
-    </message>
-    <message>
-        <source>Phasebox will speak %1 from its next start.</source>
-        <translation>Phasebox hablará %1 desde su próximo inicio.</translation>
-    </message>
-    <message>
-        <source>Language</source>
-        <translation>Idioma</translation>
     </message>
     <message>
         <source>Scene canvas</source>

@@ -2227,6 +2227,13 @@
     </message>
 </context>
 <context>
+    <name>phasebox::DivergenceNotice</name>
+    <message>
+        <source>The simulation became unstable</source>
+        <translation>La simulation est devenue instable</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::Document</name>
     <message>
         <source>Switched to %1 so the %2 stays stable; Undo to go back to %3</source>
@@ -2312,6 +2319,17 @@
     <message>
         <source>Phase space of %1</source>
         <translation>Espace des phases de %1</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::HelpWindows</name>
+    <message>
+        <source>About Phasebox</source>
+        <translation>À propos de Phasebox</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;A 2D physics sandbox for the classroom: drop particles, springs, cloth and boxes into a scene, switch the integrator while it runs, and watch what accuracy costs.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;Un bac à sable de physique 2D pour la classe : posez des particules, des ressorts, des tissus et des boîtes dans une scène, changez d’intégrateur pendant le calcul et voyez ce que coûte la précision.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -2525,6 +2543,21 @@
     </message>
 </context>
 <context>
+    <name>phasebox::LanguageMenu</name>
+    <message>
+        <source>&amp;System Language</source>
+        <translation>Langue du &amp;système</translation>
+    </message>
+    <message>
+        <source>Phasebox will speak %1 from its next start.</source>
+        <translation>Phasebox parlera %1 à son prochain démarrage.</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Langue</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::MainWindow</name>
     <message>
         <source>Autosave failed: %1</source>
@@ -2655,14 +2688,6 @@
         <translation>À &amp;propos de Phasebox</translation>
     </message>
     <message>
-        <source>About Phasebox</source>
-        <translation>À propos de Phasebox</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;A 2D physics sandbox for the classroom: drop particles, springs, cloth and boxes into a scene, switch the integrator while it runs, and watch what accuracy costs.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;Phasebox %1&lt;/b&gt;&lt;p&gt;Un bac à sable de physique 2D pour la classe : posez des particules, des ressorts, des tissus et des boîtes dans une scène, changez d’intégrateur pendant le calcul et voyez ce que coûte la précision.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>Main</source>
         <translation>Principale</translation>
     </message>
@@ -2699,10 +2724,6 @@
         <translation>Sans titre</translation>
     </message>
     <message>
-        <source>The simulation became unstable</source>
-        <translation>La simulation est devenue instable</translation>
-    </message>
-    <message>
         <source>Revert</source>
         <translation>Revenir</translation>
     </message>
@@ -2721,18 +2742,6 @@
     <message>
         <source>&amp;Language</source>
         <translation>&amp;Langue</translation>
-    </message>
-    <message>
-        <source>&amp;System Language</source>
-        <translation>Langue du &amp;système</translation>
-    </message>
-    <message>
-        <source>Phasebox will speak %1 from its next start.</source>
-        <translation>Phasebox parlera %1 à son prochain démarrage.</translation>
-    </message>
-    <message>
-        <source>Language</source>
-        <translation>Langue</translation>
     </message>
     <message>
         <source>Scene canvas</source>

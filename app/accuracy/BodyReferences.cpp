@@ -29,7 +29,7 @@ std::optional<ExactReference> findSupportedReferences(const SceneDesc& scene, co
     if (!(g.norm() > 0.0) || !(endTime > 0.0)) return std::nullopt;
     const Vec& q = world.positions();
     const Vec& u = world.velocities();
-    const auto& boxes = world.boxes();
+    const auto& boxes = world.rigidBodies();
 
     ExactReference::Parts ref;
     ref.dimension = world.dimension();
@@ -39,18 +39,18 @@ std::optional<ExactReference> findSupportedReferences(const SceneDesc& scene, co
     constexpr double kTouch = 1e-5;   // m: a body placed on a face to this
     constexpr int kSamples = 400;
     for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const Box& body = boxes[i];
+        const RigidBody& body = boxes[i];
         if (body.dof < 0 || body.shape == RigidShape::Polygon || u[body.dof + 2] != 0.0) continue;
         const bool disk = body.shape == RigidShape::Disk;
         const Vec2 c0 = q.segment<2>(body.dof), v0 = u.segment<2>(body.dof);
         const double angle0 = q[body.dof + 2];
         // The support: a static rectangle's face, facing up at most 60° from the vertical, that
         // the body lies on (a disk touching it, a box with a face flat on it).
-        const Box* support = nullptr;
+        const RigidBody* support = nullptr;
         Vec2 n, t;
         double depth = 0.0;     // from the body's centre to the face along −n
         double faceHalf = 0.0;  // half the face's length
-        for (const Box& s : boxes) {
+        for (const RigidBody& s : boxes) {
             if (s.dof >= 0 || s.shape != RigidShape::Rectangle) continue;
             const Mat2 r = rotation(s.angle);
             for (int side = 0; side < 4 && !support; ++side) {
@@ -130,7 +130,7 @@ std::optional<ExactReference> findSupportedReferences(const SceneDesc& scene, co
                 break;
             }
             const Vec2 c = c0 + sNow * t;
-            for (const Box& other : boxes) {
+            for (const RigidBody& other : boxes) {
                 if (&other == &body || &other == support) continue;
                 if (other.dof < 0 && other.shape == RigidShape::Rectangle) {
                     if (distanceToBox(other, c) < reach + kMargin) clear = false;
@@ -177,11 +177,11 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
 
     // What is attached to something cannot move on its own.
     const auto& particles = world.particles();
-    const auto& boxes = world.boxes();
+    const auto& boxes = world.rigidBodies();
     std::vector<char> attachedParticle(particles.size(), 0), attachedBox(boxes.size(), 0);
     const auto attach = [&](SpringEnd::Kind kind, int index) {
         if (kind == SpringEnd::Kind::Particle) attachedParticle[index] = 1;
-        if (kind == SpringEnd::Kind::Box) attachedBox[index] = 1;
+        if (kind == SpringEnd::Kind::Rigid) attachedBox[index] = 1;
     };
     for (const Spring& sp : world.springs()) {
         attach(sp.a.kind, sp.a.index);
@@ -210,7 +210,7 @@ std::optional<ExactReference> findBodyReferences(const SceneDesc& scene, const W
             candidates.push_back({p.dof, x, u.segment<2>(p.dof), p.radius, p.mass, p.restitution});
     }
     for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const Box& b = boxes[i];
+        const RigidBody& b = boxes[i];
         const Vec2 x = b.dof >= 0 ? Vec2(q.segment<2>(b.dof)) : b.position;
         const double reach = b.shape == RigidShape::Disk ? b.radius : 0.5 * b.size.norm();
         others.emplace_back(x, reach);

@@ -146,7 +146,7 @@ double contactFreeUntil(const ExactReference& ref, const World& world, double en
         else
             fixed.emplace_back(p.position, p.radius);
     }
-    for (const Box& b : world.boxes()) {
+    for (const RigidBody& b : world.rigidBodies()) {
         const double reach = b.shape == RigidShape::Disk ? b.radius : 0.5 * b.size.norm();
         if (b.dof >= 0)
             moving.push_back({b.dof, reach});
@@ -197,7 +197,7 @@ double contactFreeUntil(const ExactReference& ref, const World& world, double en
 bool heldToFixed(const World& world, const Joint& joint) {
     const JointBody& b = joint.b;
     if (b.kind == JointBody::Kind::Particle) return world.particles()[b.index].dof < 0;
-    if (b.kind == JointBody::Kind::Rigid) return world.boxes()[b.index].dof < 0;
+    if (b.kind == JointBody::Kind::Rigid) return world.rigidBodies()[b.index].dof < 0;
     return true;
 }
 
@@ -214,7 +214,7 @@ bool ropeStaysTaut(const PendulumMotion& motion) {
 std::optional<ExactReference::RigidPendulum> rigidPendulum(const World& world, int j,
                                                            const Vec2& g) {
     const Joint& joint = world.joints()[j];
-    const Box& body = world.boxes()[joint.a.index];
+    const RigidBody& body = world.rigidBodies()[joint.a.index];
     if (body.dof < 0 || !heldToFixed(world, joint) || !world.jointSolver()) return std::nullopt;
     const Vec& q = world.positions();
     const Vec& u = world.velocities();
@@ -283,7 +283,7 @@ std::optional<ExactReference> atwoodMachines(const SceneDesc& scene, const World
             return true;
         }
         if (body.kind != JointBody::Kind::Rigid) return false;
-        const Box& b = world.boxes()[body.index];
+        const RigidBody& b = world.rigidBodies()[body.index];
         dof = b.dof;
         mass = b.mass;
         return true;
@@ -316,7 +316,7 @@ std::optional<ExactReference> atwoodMachines(const SceneDesc& scene, const World
             double w = 0.0;
             for (const JointBody* body : {&joint.a, &joint.b})
                 if (body->kind == JointBody::Kind::Rigid)
-                    w = std::max(w, std::abs(u[world.boxes()[body->index].dof + 2]));
+                    w = std::max(w, std::abs(u[world.rigidBodies()[body->index].dof + 2]));
             return w;
         }();
         if (rotating != 0.0) return std::nullopt;
@@ -332,7 +332,7 @@ std::optional<ExactReference> atwoodMachines(const SceneDesc& scene, const World
     }
     for (const Particle& p : world.particles())
         if (p.dof >= 0 && !held[p.dof]) return std::nullopt;
-    for (const Box& b : world.boxes())
+    for (const RigidBody& b : world.rigidBodies())
         if (b.dof >= 0 && !held[b.dof]) return std::nullopt;
     ref.kind = "Atwood machine";
     return ref;
@@ -348,7 +348,7 @@ std::optional<ExactReference> pendulums(const SceneDesc& scene, const World& wor
     if (world.effects().size() != 1 || !fx.gravity) return std::nullopt;
     const Vec2 g(fx.gravity->g[0], fx.gravity->g[1]);
     std::vector<int> heldBy(world.particles().size(), -1);
-    std::vector<char> rigidHeld(world.boxes().size(), 0);
+    std::vector<char> rigidHeld(world.rigidBodies().size(), 0);
     const auto& joints = world.joints();
     for (int j = 0; j < static_cast<int>(joints.size()); ++j) {
         const Joint& joint = joints[j];
@@ -383,8 +383,8 @@ std::optional<ExactReference> pendulums(const SceneDesc& scene, const World& wor
     }
     for (std::size_t i = 0; i < world.particles().size(); ++i)
         if (world.particles()[i].dof >= 0 && heldBy[i] < 0) return std::nullopt;
-    for (std::size_t i = 0; i < world.boxes().size(); ++i)
-        if (world.boxes()[i].dof >= 0 && !rigidHeld[i]) return std::nullopt;
+    for (std::size_t i = 0; i < world.rigidBodies().size(); ++i)
+        if (world.rigidBodies()[i].dof >= 0 && !rigidHeld[i]) return std::nullopt;
     const bool physical =
         std::any_of(ref.rigidPendulums.begin(), ref.rigidPendulums.end(),
                     [](const ExactReference::RigidPendulum& p) { return p.hinged; });
@@ -417,7 +417,7 @@ std::optional<ExactReference> keplerOrbits(const SceneDesc& scene, const World& 
     };
     for (const Particle& p : world.particles())
         if (p.dof >= 0 && !body(p.dof)) return std::nullopt;
-    for (const Box& b : world.boxes()) {
+    for (const RigidBody& b : world.rigidBodies()) {
         if (b.dof < 0) continue;
         if (!body(b.dof)) return std::nullopt;
         coordinate(b.dof + 2, 0.0, 0.0, 0.0);  // no torque about the centre: θ = θ₀ + ω₀t
@@ -447,7 +447,7 @@ std::optional<ExactReference> oscillatorsAndFalls(const SceneDesc& scene, const 
         Vec2 anchor;
     };
     const auto& particles = world.particles();
-    const auto& boxes = world.boxes();
+    const auto& boxes = world.rigidBodies();
     std::vector<std::vector<Anchored>> springsOf(particles.size());
     const auto fixedPoint = [&](const SpringEnd& end) -> std::optional<Vec2> {
         switch (end.kind) {
@@ -456,8 +456,8 @@ std::optional<ExactReference> oscillatorsAndFalls(const SceneDesc& scene, const 
             case SpringEnd::Kind::Particle:
                 if (particles[end.index].pinned) return particles[end.index].position;
                 return std::nullopt;
-            case SpringEnd::Kind::Box: {
-                const Box& b = boxes[end.index];
+            case SpringEnd::Kind::Rigid: {
+                const RigidBody& b = boxes[end.index];
                 if (b.isStatic) return Vec2(b.position + rotation(b.angle) * end.point);
                 return std::nullopt;
             }
@@ -523,7 +523,7 @@ std::optional<ExactReference> oscillatorsAndFalls(const SceneDesc& scene, const 
         damped = damped || s.damping > 0.0;
         ref.axes.push_back({p.dof, anchor, axis, along});
     }
-    for (const Box& b : boxes) {
+    for (const RigidBody& b : boxes) {
         if (b.dof < 0) continue;
         for (int k = 0; k < 2; ++k) coordinate(b.dof + k, 0.0, drag.linear / b.mass, g[k]);
         coordinate(b.dof + 2, 0.0, drag.angular / b.inertia, 0.0);
@@ -633,7 +633,7 @@ std::optional<ExactReference> coupledOnALine(const World& world, double endTime)
         if (effect->name() != effectName::springs) return std::nullopt;
     if (!world.joints().empty() || !(endTime > 0.0)) return std::nullopt;
     const auto& particles = world.particles();
-    for (const Box& b : world.boxes())
+    for (const RigidBody& b : world.rigidBodies())
         if (b.dof >= 0) return std::nullopt;
     const Vec& q = world.positions();
     const Vec& u = world.velocities();

@@ -24,7 +24,7 @@ inline bool alongAxis(const Vec2& v, const Vec2& axis) {
 }
 
 // Distance from a point to a static rectangle (zero inside).
-inline double distanceToBox(const Box& box, const Vec2& point) {
+inline double distanceToBox(const RigidBody& box, const Vec2& point) {
     const Vec2 local = rotation(-box.angle) * (point - box.position);
     const Vec2 half = 0.5 * box.size;
     const Vec2 outside(std::max(std::abs(local.x()) - half.x(), 0.0),

@@ -83,7 +83,7 @@ double gap(const Mover& a, const Vec2& x, double angle, const Vec2& c, double r,
 struct ImpactBodies {
     std::vector<Mover> movers;
     std::vector<std::pair<Vec2, double>> fixedCircles;  // pinned particles, static disks, polygons
-    std::vector<const Box*> fixedBoxes;
+    std::vector<const RigidBody*> fixedBoxes;
 };
 bool collectBodies(const World& world, ImpactBodies& out) {
     const Vec& q = world.positions();
@@ -103,7 +103,7 @@ bool collectBodies(const World& world, ImpactBodies& out) {
         m.v = u.segment<2>(p.dof);
         out.movers.push_back(m);
     }
-    for (const Box& b : world.boxes()) {
+    for (const RigidBody& b : world.rigidBodies()) {
         if (b.dof < 0) {
             if (b.shape == RigidShape::Rectangle)
                 out.fixedBoxes.push_back(&b);
@@ -257,7 +257,7 @@ std::optional<ExactReference> findImpactReference(const SceneDesc& scene, const 
                 if ((c - plane.point).dot(plane.normal) < reach) return std::nullopt;
             for (const auto& [centre, radius] : fixedCircles)
                 if ((c - centre).norm() < reach + radius) return std::nullopt;
-            for (const Box* box : fixedBoxes)
+            for (const RigidBody* box : fixedBoxes)
                 if (distanceToBox(*box, c) < reach) return std::nullopt;
         }
     }

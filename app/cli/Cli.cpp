@@ -230,7 +230,7 @@ int infoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     }
     // The rigid bodies by shape (the world keeps them in one array): boxes, disks, polygons.
     int rigid[3] = {0, 0, 0}, rigidStatic[3] = {0, 0, 0};
-    for (const Box& b : world.boxes()) {
+    for (const RigidBody& b : world.rigidBodies()) {
         const auto shape = static_cast<std::size_t>(b.shape);
         ++rigid[shape];
         rigidStatic[shape] += b.isStatic;

@@ -245,16 +245,16 @@ std::optional<Tracked> findObject(const World& world, const QString& id) {
     const std::string key = id.toStdString();
     for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
         if (world.particles()[i].id == key) return Tracked{id, false, i};
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-        if (world.boxes()[i].id == key) return Tracked{id, true, i};
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+        if (world.rigidBodies()[i].id == key) return Tracked{id, true, i};
     return std::nullopt;
 }
 
 // Coordinate and velocity of a tracked object: 0 x, 1 y, 2 angle.
 ui::PhaseSample phaseOf(const World& world, const Tracked& t, int coordinate) {
     if (t.isBox) {
-        if (coordinate == 2) return {world.boxAngle(t.index), world.boxAngularVelocity(t.index)};
-        return {world.boxPosition(t.index)[coordinate], world.boxVelocity(t.index)[coordinate]};
+        if (coordinate == 2) return {world.bodyAngle(t.index), world.bodyAngularVelocity(t.index)};
+        return {world.bodyPosition(t.index)[coordinate], world.bodyVelocity(t.index)[coordinate]};
     }
     return {world.particlePosition(t.index)[coordinate],
             world.particleVelocity(t.index)[coordinate]};
@@ -320,10 +320,10 @@ void writeCsvRow(QTextStream& s, const World& world, const std::vector<Tracked>&
       << ',' << formatNumber(e.correction) << ',' << formatNumber(world.jointErrors().position);
     for (const Tracked& t : tracked) {
         if (t.isBox) {
-            const Vec2 p = world.boxPosition(t.index), v = world.boxVelocity(t.index);
+            const Vec2 p = world.bodyPosition(t.index), v = world.bodyVelocity(t.index);
             s << ',' << formatNumber(p.x()) << ',' << formatNumber(p.y()) << ','
-              << formatNumber(world.boxAngle(t.index)) << ',' << formatNumber(v.x()) << ','
-              << formatNumber(v.y()) << ',' << formatNumber(world.boxAngularVelocity(t.index));
+              << formatNumber(world.bodyAngle(t.index)) << ',' << formatNumber(v.x()) << ','
+              << formatNumber(v.y()) << ',' << formatNumber(world.bodyAngularVelocity(t.index));
         } else {
             const Vec2 p = world.particlePosition(t.index), v = world.particleVelocity(t.index);
             s << ',' << formatNumber(p.x()) << ',' << formatNumber(p.y()) << ','
@@ -378,12 +378,12 @@ void writeJsonReport(QTextStream& out, const QJsonObject& report, const World& w
         out << "\"position\": " << jsonPair(world.particlePosition(i))
             << ", \"velocity\": " << jsonPair(world.particleVelocity(i)) << "}";
     }
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i) {
-        next(world.boxes()[i].id);
-        out << "\"position\": " << jsonPair(world.boxPosition(i))
-            << ", \"velocity\": " << jsonPair(world.boxVelocity(i))
-            << ", \"angle\": " << jsonNumber(world.boxAngle(i))
-            << ", \"angular_velocity\": " << jsonNumber(world.boxAngularVelocity(i)) << "}";
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i) {
+        next(world.rigidBodies()[i].id);
+        out << "\"position\": " << jsonPair(world.bodyPosition(i))
+            << ", \"velocity\": " << jsonPair(world.bodyVelocity(i))
+            << ", \"angle\": " << jsonNumber(world.bodyAngle(i))
+            << ", \"angular_velocity\": " << jsonNumber(world.bodyAngularVelocity(i)) << "}";
     }
     out << (first ? "}" : "\n    }") << "\n}\n";
 }
@@ -591,8 +591,8 @@ QString trackedObjects(const World& world, const RunOptions& o, std::vector<Trac
         for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
             if (world.particles()[i].cloth < 0)
                 tracked.push_back({QString::fromStdString(world.particles()[i].id), false, i});
-        for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-            tracked.push_back({QString::fromStdString(world.boxes()[i].id), true, i});
+        for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+            tracked.push_back({QString::fromStdString(world.rigidBodies()[i].id), true, i});
     }
     return {};
 }

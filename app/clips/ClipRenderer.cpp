@@ -60,7 +60,7 @@ MotionSurvey surveyMotion(const SceneDesc& scene, const ClipOptions& o, int fram
     };
     // Per particle, then per body: the range of x and of y over the frames.
     const std::size_t particles = world.particles().size();
-    std::vector<std::array<double, 4>> ranges(particles + world.boxes().size(),
+    std::vector<std::array<double, 4>> ranges(particles + world.rigidBodies().size(),
                                               {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL});
     const auto track = [&](std::size_t slot, const Vec2& p) {
         std::array<double, 4>& r = ranges[slot];
@@ -78,10 +78,10 @@ MotionSurvey surveyMotion(const SceneDesc& scene, const ClipOptions& o, int fram
             include(at, p.radius);
             if (p.cloth < 0) track(i, at);
         }
-        for (std::size_t i = 0; i < world.boxes().size(); ++i) {
-            if (world.boxes()[i].dof < 0) continue;
-            const Vec2 at = world.boxPosition(static_cast<int>(i));
-            include(at, 0.5 * world.boxes()[i].size.norm());
+        for (std::size_t i = 0; i < world.rigidBodies().size(); ++i) {
+            if (world.rigidBodies()[i].dof < 0) continue;
+            const Vec2 at = world.bodyPosition(static_cast<int>(i));
+            include(at, 0.5 * world.rigidBodies()[i].size.norm());
             track(particles + i, at);
         }
         if (!ok) break;  // a runaway: the frames after it show the restored state
@@ -94,8 +94,9 @@ MotionSurvey surveyMotion(const SceneDesc& scene, const ClipOptions& o, int fram
         const double dx = r[1] - r[0], dy = r[3] - r[2];
         if (!(std::max(dx, dy) > farthest)) continue;  // untracked ranges are −inf
         farthest = std::max(dx, dy);
-        survey.object = QString::fromStdString(
-            slot < particles ? world.particles()[slot].id : world.boxes()[slot - particles].id);
+        survey.object =
+            QString::fromStdString(slot < particles ? world.particles()[slot].id
+                                                    : world.rigidBodies()[slot - particles].id);
         survey.coordinate = dy > dx ? QStringLiteral("y") : QStringLiteral("x");
     }
     return survey;
@@ -116,10 +117,10 @@ void choosePhaseTarget(const World& world, const SceneDesc& scene, QString& obje
             object = QString::fromStdString(world.particles()[i].id);
             v = world.particleVelocity(i);
         }
-    for (int i = 0; i < static_cast<int>(world.boxes().size()) && object.isEmpty(); ++i)
-        if (world.boxes()[i].dof >= 0) {
-            object = QString::fromStdString(world.boxes()[i].id);
-            v = world.boxVelocity(i);
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()) && object.isEmpty(); ++i)
+        if (world.rigidBodies()[i].dof >= 0) {
+            object = QString::fromStdString(world.rigidBodies()[i].id);
+            v = world.bodyVelocity(i);
         }
     if (object.isEmpty() || !coordinate.isEmpty()) return;
     if (v.squaredNorm() == 0.0 && scene.effects.gravity)

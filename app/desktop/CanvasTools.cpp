@@ -159,7 +159,7 @@ QString CanvasTools::objectAt(QPointF world) const {
     if (hit.kind == ui::PickResult::Joint && tool_ != Tool::Select && tool_ != Tool::Pin) {
         const World& w = document_.world();
         const JointBody& a = w.joints()[hit.index].a;
-        return QString::fromStdString(a.kind == JointBody::Kind::Rigid ? w.boxes()[a.index].id
+        return QString::fromStdString(a.kind == JointBody::Kind::Rigid ? w.rigidBodies()[a.index].id
                                                                        : w.particles()[a.index].id);
     }
     return QString::fromStdString(hit.id);
@@ -212,8 +212,8 @@ void CanvasTools::pressed(QPointF world, Qt::MouseButton button, Qt::KeyboardMod
         const ui::PickResult hit = view_.pick(view_.toWidget(world));
         Point2 local{0.0, 0.0};
         if (hit.kind == ui::PickResult::Box) {
-            const Vec2 offset = Vec2(world.x(), world.y()) - w.boxPosition(hit.index);
-            const Vec2 inBox = rotation(-w.boxAngle(hit.index)) * offset;
+            const Vec2 offset = Vec2(world.x(), world.y()) - w.bodyPosition(hit.index);
+            const Vec2 inBox = rotation(-w.bodyAngle(hit.index)) * offset;
             local = {inBox.x(), inBox.y()};
         }
         if ((hit.kind == ui::PickResult::Particle || hit.kind == ui::PickResult::Box) &&

@@ -220,6 +220,16 @@ bool parseDesktopOptions(const QStringList& arguments, DesktopOptions& options, 
     return parseCompareOptions(parser, options, error);
 }
 
+namespace {
+// A part of the window, by its type and object name (MainWindow.h lists them).
+template <typename T>
+T& part(const MainWindow& window, const char* name) {
+    T* found = window.findChild<T*>(QLatin1String(name));
+    Q_ASSERT(found);
+    return *found;
+}
+}  // namespace
+
 int takeScreenshot(MainWindow& window, const DesktopOptions& options, QString* error) {
     // The picture must not replace the scene it shows (the same file under any name).
     if (!window.document().mayWriteOutput(options.screenshot, error)) return 2;
@@ -233,7 +243,8 @@ int takeScreenshot(MainWindow& window, const DesktopOptions& options, QString* e
     }
     window.refreshNow();
     QApplication::processEvents();
-    if (options.presentation) window.canvas()->fitToWorld();  // the layout changed under it
+    if (options.presentation)  // the layout changed under the canvas
+        part<ui::SceneView>(window, "canvas").fitToWorld();
     QApplication::processEvents();
     QPixmap picture = window.grab();
     // A blow-up's dialog is a window of its own: drawn over the picture where it stands, centred
@@ -279,14 +290,15 @@ int runDesktop(QApplication& app) {
         options.canvas == QLatin1String("raster")   ? ui::CanvasBackend::Raster
         : options.canvas == QLatin1String("opengl") ? ui::CanvasBackend::OpenGL
                                                     : ui::CanvasBackend::Auto;
-    window.canvas()->setBackend(backend);
+    part<ui::SceneView>(window, "canvas").setBackend(backend);
     if (options.size.isValid()) window.resize(options.size);
     if (options.highContrast || options.lineScale > 0.0 || options.textScale > 0.0) {
-        ui::Appearance look = window.appearance()->appearance();
+        auto& appearance = part<AppearancePresenter>(window, "appearancePresenter");
+        ui::Appearance look = appearance.appearance();
         look.highContrast = look.highContrast || options.highContrast;
         if (options.lineScale > 0.0) look.lineScale = options.lineScale;
         if (options.textScale > 0.0) look.textScale = options.textScale;
-        window.appearance()->setAppearance(look);
+        appearance.setAppearance(look);
     }
     const QString scene = options.scene.isEmpty() ? kDemoScene : options.scene;
     const bool headless = !options.screenshot.isEmpty();
@@ -297,12 +309,13 @@ int runDesktop(QApplication& app) {
     if (!options.select.isEmpty()) window.document().setSelection({options.select});
     for (const QString& probe : std::as_const(options.probes)) {
         // An unknown probe is refused with the list of known ones, as by phasebox-cli.
-        if (!window.instruments()->plotProbe(probe, {}, &error)) {
+        if (!part<InstrumentsPresenter>(window, "instrumentsPresenter")
+                 .plotProbe(probe, {}, &error)) {
             err << "phasebox: error: --probe: " << error << "\n";
             if (headless) return 2;
         }
     }
-    MeasureTools& measure = *window.measureTools();
+    auto& measure = part<MeasureTools>(window, "measureTools");
     for (const QString& ruler : std::as_const(options.rulers))
         if (!measure.addRuler(ruler, &error)) {
             err << "phasebox: error: " << error << "\n";

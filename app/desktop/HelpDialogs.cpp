@@ -9,6 +9,7 @@
 #include <QHeaderView>
 #include <QImage>
 #include <QLabel>
+#include <QMessageBox>
 #include <QRegularExpression>
 #include <QScrollBar>
 #include <QTableWidget>
@@ -187,6 +188,32 @@ QDialog* createShortcutsDialog(QWidget& window) {
     layout->addWidget(table, 1);
     layout->addWidget(buttons);
     return dialog;
+}
+
+HelpWindows::HelpWindows(QWidget& window) : QObject(&window), window_(window) {}
+
+void HelpWindows::showUserGuide() {
+    if (!guide_) guide_ = createUserGuideDialog(&window_);
+    guide_->show();
+    guide_->raise();
+    guide_->activateWindow();
+}
+
+void HelpWindows::showKeyboardShortcuts() {
+    delete shortcuts_;
+    shortcuts_ = createShortcutsDialog(window_);
+    shortcuts_->setAttribute(Qt::WA_DeleteOnClose);
+    shortcuts_->show();
+    shortcuts_->raise();
+    shortcuts_->activateWindow();
+}
+
+void HelpWindows::showAbout() {
+    QMessageBox::about(&window_, tr("About Phasebox"),
+                       tr("<b>Phasebox %1</b><p>A 2D physics sandbox for the classroom: drop "
+                          "particles, springs, cloth and boxes into a scene, switch the "
+                          "integrator while it runs, and watch what accuracy costs.</p>")
+                           .arg(QStringLiteral(PHASEBOX_VERSION)));
 }
 
 }  // namespace phasebox

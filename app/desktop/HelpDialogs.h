@@ -4,6 +4,8 @@
 // repository read the same text. The shortcut table is made from the window's actions each time
 // it opens: a key added or changed anywhere shows there without anyone editing a list.
 
+#include <QObject>
+#include <QPointer>
 #include <QString>
 
 #include <vector>
@@ -35,5 +37,22 @@ std::vector<ShortcutEntry> collectShortcuts(const QWidget& window);
 // The table of collectShortcuts(window) in a dialog (object name "shortcutsDialog"; its
 // QTableWidget is "shortcutsTable", columns action and keys).
 QDialog* createShortcutsDialog(QWidget& window);
+
+// Help > User Guide, Keyboard Shortcuts and About for a window: the guide is made once and
+// kept; the shortcut table is made anew each time from the actions as they are then.
+class HelpWindows : public QObject {
+    Q_OBJECT
+
+public:
+    explicit HelpWindows(QWidget& window);
+    void showUserGuide();
+    void showKeyboardShortcuts();
+    void showAbout();
+
+private:
+    QWidget& window_;
+    QDialog* guide_ = nullptr;
+    QPointer<QDialog> shortcuts_;  // deletes itself on close
+};
 
 }  // namespace phasebox

@@ -4,7 +4,13 @@
 // docks for Parameters, Effects, Properties, Plots, Instruments, the Scene list and the scene's
 // Notes. It only composes: each dock has a presenter (presenters/) that connects its ui/ widget to
 // the Document (what is edited), the SimulationController (what runs) and the Recorder (what is
-// plotted).
+// plotted); the docks' layout and presentation mode are WindowLayout's, the Accuracy Lab is
+// AccuracyLab's, the Help menu's dialogs HelpWindows', View > Language LanguageMenu's and the
+// blow-up dialog DivergenceNotice's. Its parts are reached through Qt's object tree by their
+// object names: the widgets "canvas", "parametersPanel", "effectsPanel", "propertiesPanel",
+// "sceneBrowser", "plotsPanel", "instruments" and "notes"; "canvasTools", "measureTools",
+// "appearancePresenter", "exactPresenter", "instrumentsPresenter", "accuracyLabController",
+// "recorder", "probeRecorder" and "autosave"; the actions by their names (action()).
 
 #include "app/document/Document.h"
 #include "app/sim/ProbeRecorder.h"
@@ -13,17 +19,13 @@
 #include "ui/plots/PlotsPanel.h"
 
 #include <QMainWindow>
-#include <QPointer>
 #include <QStringList>
 
 #include <memory>
 
 QT_BEGIN_NAMESPACE
 class QAction;
-class QDialog;
-class QMessageBox;
 class QDockWidget;
-class QMenu;
 class QTextBrowser;
 QT_END_NAMESPACE
 
@@ -39,12 +41,15 @@ class SceneBrowser;
 class InstrumentsPanel;
 }  // namespace ui
 
-class CanvasTools;
-class TimelinePresenter;
-class MeasureTools;
-class AccuracyDialog;
+class AccuracyLab;
 class AnimationExport;
 class Autosave;
+class CanvasTools;
+class DivergenceNotice;
+class HelpWindows;
+class MeasureTools;
+class TimelinePresenter;
+class WindowLayout;
 class Presenter;
 class SceneFiles;
 class AppearancePresenter;
@@ -65,22 +70,6 @@ public:
 
     Document& document() { return document_; }
     SimulationController& controller() { return controller_; }
-    Recorder& recorder() { return recorder_; }
-    ProbeRecorder& probeRecorder() { return probes_; }
-    ui::SceneView* canvas() const { return canvas_; }
-    CanvasTools* tools() const { return tools_; }
-    // The ruler, protractor and free-body view.
-    MeasureTools* measureTools() const { return measure_; }
-    ui::ParametersPanel* parametersPanel() const { return parameters_; }
-    ui::EffectsPanel* effectsPanel() const { return effects_; }
-    ui::PropertiesPanel* propertiesPanel() const { return properties_; }
-    ui::SceneBrowser* sceneBrowser() const { return browser_; }
-    ui::PlotsPanel* plotsPanel() const { return plots_; }
-    ui::InstrumentsPanel* instrumentsPanel() const { return instruments_; }
-    InstrumentsPresenter* instruments() const { return instrumentsPresenter_; }
-    ExactPresenter* exactSolution() const { return exactPresenter_; }
-    // High contrast, line width and text size (View menu).
-    AppearancePresenter* appearance() const { return appearance_; }
     QAction* action(const QString& name) const;
 
     // Opens a scene file; a bad file shows the loader's message (in a dialog unless quiet) and
@@ -96,18 +85,10 @@ public:
     void setPresentationMode(bool on);
     // After a crash: offers the scene autosaved by the last session (if any) and opens it.
     void offerRecovery();
-    Autosave* autosave() const { return autosave_.get(); }
 
     // Writes a plot as PNG, SVG or CSV, chosen by the file's extension.
     bool exportPlot(ui::PlotsPanel::Plot plot, const QString& path, QString* error);
     bool exportCanvas(const QString& path, QString* error);
-    // The accuracy lab (created on first use).
-    AccuracyDialog* accuracyDialog();
-    void showAccuracyLab();
-    // Help > User Guide (F1): docs/user-guide.md in a dialog. Help > Keyboard Shortcuts: every
-    // action of the window that has a key, listed from the actions themselves.
-    void showUserGuide();
-    void showKeyboardShortcuts();
     // The language chosen in View > Language ("" = follow the system), read before the window
     // is made (its texts are translated as they are created); "" when the settings files may
     // not be read as they are (readSettings() repairs them and says so).
@@ -115,20 +96,15 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
-    void showEvent(QShowEvent* event) override;
-    void resizeEvent(QResizeEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
 private:
     void createActions();
     void createMenus();
-    void createLanguageMenu(QMenu& menu);
     void prepareForKeyboard();
     void createToolBar();
     void createDockWindows();
-    QDockWidget* addDock(QWidget* widget, const QString& title, const QString& name,
-                         Qt::DockWidgetArea area);
     // Keeps the presenter for refreshNow() and shows its messages in the status bar.
     template <typename P>
     P* addPresenter(P* presenter);
@@ -144,10 +120,6 @@ private:
     void newScene();
     void openIfSaved(const QString& path);
     void updateTitle();
-    void onDiverged(const QString& message, const QString& details);
-    // Gives the canvas at least kCanvasShare of the window's width (from the side docks).
-    void keepCanvasWide();
-    static constexpr double kCanvasShare = 0.5;
 
     Document document_;
     Recorder recorder_;
@@ -164,8 +136,8 @@ private:
     ui::SceneBrowser* browser_ = nullptr;
     ui::PlotsPanel* plots_ = nullptr;
     ui::InstrumentsPanel* instruments_ = nullptr;
-    QTextBrowser* notes_ = nullptr;  // the scene's name and description: what to try
-    QList<QDockWidget*> docks_;
+    QTextBrowser* notes_ = nullptr;   // the scene's name and description: what to try
+    WindowLayout* layout_ = nullptr;  // the docks, their widths and presentation mode
 
     QList<Presenter*> presenters_;  // every view's, for refreshNow()
     CanvasPresenter* canvasPresenter_ = nullptr;
@@ -178,20 +150,13 @@ private:
     StatusPresenter* status_ = nullptr;
     TimelinePresenter* timelinePresenter_ = nullptr;
 
-    AccuracyDialog* accuracy_ = nullptr;
+    AccuracyLab* accuracyLab_ = nullptr;
     AnimationExport* animationExport_ = nullptr;  // File > Export Animation
-    QDialog* guide_ = nullptr;
-    QPointer<QDialog> shortcuts_;                 // deletes itself on close
-    QPointer<QDockWidget> leftDock_, rightDock_;  // the docks keepCanvasWide() narrows
-    QPointer<QMessageBox> divergenceBox_;         // the blow-up dialog while it is open
-    // The docks' layout came from the settings (else the first show sets the columns' widths).
-    bool layoutRestored_ = false;
-    bool shownOnce_ = false;
-    std::unique_ptr<Autosave> autosave_;  // the open scene, every minute, for crash recovery
+    HelpWindows* help_ = nullptr;
+    DivergenceNotice* divergence_ = nullptr;  // the blow-up dialog
+    std::unique_ptr<Autosave> autosave_;      // the open scene, every minute, for crash recovery
 
     SceneFiles* files_ = nullptr;
-    QByteArray normalState_;  // dock layout before presentation mode
-    bool presentation_ = false;
 };
 
 }  // namespace phasebox

@@ -1,9 +1,11 @@
-// MainWindow: files, settings and closing.
+// MainWindow: files, settings and closing (the settings files are checked by SettingsGuard).
 
 #include "app/desktop/MainWindow.h"
 
 #include "app/desktop/MeasureTools.h"
 #include "app/desktop/SceneFiles.h"
+#include "app/desktop/SettingsGuard.h"
+#include "app/desktop/WindowLayout.h"
 #include "app/desktop/presenters/AppearancePresenter.h"
 #include "app/desktop/presenters/CanvasPresenter.h"
 #include "app/desktop/presenters/InstrumentsPresenter.h"
@@ -12,13 +14,11 @@
 #include "app/desktop/presenters/StatusPresenter.h"
 #include "app/document/Autosave.h"
 #include "app/i18n/Language.h"
-#include "app/io/InputFile.h"
 #include "ui/canvas/SceneView.h"
 
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDebug>
-#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -26,7 +26,6 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QSettings>
-#include <QStandardPaths>
 #include <QTimer>
 
 namespace phasebox {
@@ -140,63 +139,6 @@ void MainWindow::dropEvent(QDropEvent* event) {
     event->acceptProposedAction();
 }
 
-namespace {
-// QSettings opens and reads its file with no bound: a FIFO there blocks the start for ever, and
-// a link to /dev/zero is read until memory runs out. So before the first QSettings, the user's
-// settings files (Qt's names for them: ORGANIZATION/APPLICATION.conf and ORGANIZATION.conf in
-// the generic config folder) are checked without being opened: one that is not a regular file
-// is removed (a link, not its target), and one larger than 1 MiB (ours hold a few kilobytes)
-// is moved aside as NAME.too-large. Says what was done in *problems, one line each; false when
-// a file that must not be read is still there (then no QSettings may be made). With repair
-// false nothing is changed: the answer is only whether the files may be read as they are.
-bool guardSettingsFiles(QStringList* problems, bool repair = true) {
-    bool safe = true;
-    if (QSettings::defaultFormat() != QSettings::NativeFormat &&
-        QSettings::defaultFormat() != QSettings::IniFormat)
-        return safe;
-#if defined(Q_OS_UNIX) && !defined(Q_OS_DARWIN)
-    const QString folder = QStandardPaths::writableLocation(QStandardPaths::GenericConfigLocation);
-    const QString organization = QCoreApplication::organizationName().isEmpty()
-                                     ? QStringLiteral("Unknown Organization")  // as QSettings
-                                     : QCoreApplication::organizationName();
-    const QString application = QCoreApplication::applicationName();
-    QStringList paths{folder + QLatin1Char('/') + organization + QStringLiteral(".conf")};
-    if (!application.isEmpty())
-        paths.prepend(folder + QLatin1Char('/') + organization + QLatin1Char('/') + application +
-                      QStringLiteral(".conf"));
-    constexpr qint64 kMaxSettingsBytes = 1024 * 1024;
-    for (const QString& path : std::as_const(paths)) {
-        if (!repair) {
-            const QFileInfo info(path);
-            if (!inputfile::irregularKind(path).isEmpty() ||
-                (info.isFile() && info.size() > kMaxSettingsBytes))
-                return false;
-            continue;
-        }
-        if (const QString kind = inputfile::irregularKind(path); !kind.isEmpty()) {
-            const bool removed = QFileInfo(path).isDir() ? QDir().rmdir(path) : QFile::remove(path);
-            safe = safe && removed;
-            *problems << QStringLiteral(
-                             "%1: it is %2, not a settings file; %3 (default settings used)")
-                             .arg(path, kind,
-                                  removed ? QStringLiteral("removed") : QStringLiteral("ignored"));
-        } else if (const QFileInfo info(path); info.isFile() && info.size() > kMaxSettingsBytes) {
-            const QString aside = path + QStringLiteral(".too-large");
-            QFile::remove(aside);
-            const bool moved = QFile::rename(path, aside);
-            safe = safe && moved;
-            *problems << QStringLiteral(
-                             "%1: the settings file is larger than 1 MiB; %2 (default "
-                             "settings used)")
-                             .arg(path, moved ? QStringLiteral("moved to ") + aside
-                                              : QStringLiteral("could not move it aside"));
-        }
-    }
-#endif
-    return safe;
-}
-}  // namespace
-
 QString MainWindow::storedLanguage() {
     QStringList problems;
     if (!guardSettingsFiles(&problems, false)) return {};  // readSettings() repairs and says so
@@ -223,7 +165,7 @@ void MainWindow::readSettings() {
         resize(1400, 880);
     if (const QByteArray state = settings.value(QStringLiteral("window/state")).toByteArray();
         state.size() <= 256 * 1024)
-        layoutRestored_ = restoreState(state);
+        layout_->restoreState(state);
     files_->readSettings(settings);
     parametersPresenter_->readSettings(settings);
     canvasPresenter_->readSettings(settings);
@@ -233,7 +175,7 @@ void MainWindow::readSettings() {
 void MainWindow::writeSettings() {
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    settings.setValue(QStringLiteral("window/state"), presentation_ ? normalState_ : saveState());
+    settings.setValue(QStringLiteral("window/state"), layout_->stateToSave());
     files_->writeSettings(settings);
     parametersPresenter_->writeSettings(settings);
     canvasPresenter_->writeSettings(settings);

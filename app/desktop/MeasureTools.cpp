@@ -326,7 +326,7 @@ void MeasureTools::refresh() {
         if (overlay.freeBody) {
             const ProbeObject& o = overlay.freeBody->body;
             const World& world = document_.world();
-            overlay.freeBodyName = QString::fromStdString(o.rigid ? world.boxes()[o.index].id
+            overlay.freeBodyName = QString::fromStdString(o.rigid ? world.rigidBodies()[o.index].id
                                                                   : world.particles()[o.index].id);
         }
         const SystemMotion system = systemMotion(document_.world());

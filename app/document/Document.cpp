@@ -361,7 +361,7 @@ bool Document::grab(const QString& id, const Point2& localPoint, const Point2& t
     double mass = 0.0;
     for (const Particle& p : world_->particles())
         if (p.id == name && !p.pinned) mass = p.mass;
-    for (const Box& b : world_->boxes())
+    for (const RigidBody& b : world_->rigidBodies())
         if (b.id == name && !b.isStatic)
             mass = MouseSpringEffect::effectiveMass(b.mass, b.inertia, vec(localPoint));
     if (!(mass > 0.0)) return false;

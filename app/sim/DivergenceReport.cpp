@@ -57,7 +57,7 @@ QString describeObject(const World& world, const QString& id) {
         }
         return DivergenceText::tr("particle '%1'").arg(id);
     }
-    for (const Box& b : world.boxes()) {
+    for (const RigidBody& b : world.rigidBodies()) {
         if (b.id != key) continue;
         switch (b.shape) {
             case RigidShape::Disk:

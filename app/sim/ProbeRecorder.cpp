@@ -100,7 +100,7 @@ void ProbeRecorder::rebind(const World& world) {
 void ProbeRecorder::bind(const World& world) {
     world_ = &world;
     particles_ = world.particles().size();
-    boxes_ = world.boxes().size();
+    boxes_ = world.rigidBodies().size();
     joints_ = world.joints().size();
     for (Column& c : columns_) {
         c.error.clear();
@@ -110,7 +110,7 @@ void ProbeRecorder::bind(const World& world) {
 
 bool ProbeRecorder::boundTo(const World& world) const {
     return world_ == &world && particles_ == world.particles().size() &&
-           boxes_ == world.boxes().size() && joints_ == world.joints().size();
+           boxes_ == world.rigidBodies().size() && joints_ == world.joints().size();
 }
 
 void ProbeRecorder::record(const World& world) {

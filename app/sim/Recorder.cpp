@@ -210,7 +210,7 @@ bool Recorder::samplePhase(const World& world, ui::PhaseSample& sample) {
     // The world is rebuilt by edits, so the cached index is checked against the id each time
     // (one string compare per step) and searched again only when it no longer matches.
     const auto& particles = world.particles();
-    const auto& boxes = world.boxes();
+    const auto& boxes = world.rigidBodies();
     const bool cached =
         phaseIndex_ >= 0 && (phaseIsBox_ ? phaseIndex_ < static_cast<int>(boxes.size()) &&
                                                boxes[phaseIndex_].id == phaseObject_
@@ -234,12 +234,12 @@ bool Recorder::samplePhase(const World& world, ui::PhaseSample& sample) {
     const int i = phaseIndex_;
     if (phaseCoordinate_ == QLatin1String("angle")) {
         if (!phaseIsBox_) return false;
-        sample = {world.boxAngle(i), world.boxAngularVelocity(i)};
+        sample = {world.bodyAngle(i), world.bodyAngularVelocity(i)};
         return true;
     }
     const int axis = phaseCoordinate_ == QLatin1String("y") ? 1 : 0;
-    const Vec2 x = phaseIsBox_ ? world.boxPosition(i) : world.particlePosition(i);
-    const Vec2 v = phaseIsBox_ ? world.boxVelocity(i) : world.particleVelocity(i);
+    const Vec2 x = phaseIsBox_ ? world.bodyPosition(i) : world.particlePosition(i);
+    const Vec2 v = phaseIsBox_ ? world.bodyVelocity(i) : world.particleVelocity(i);
     sample = {x[axis], v[axis]};
     return true;
 }

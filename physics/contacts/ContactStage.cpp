@@ -16,13 +16,13 @@ constexpr std::size_t kMostReservedContacts = 4096;
 }  // namespace
 
 bool ContactStage::needed(const Bodies& bodies, bool particleCollisions) {
-    int dynamicBodies = 0, disks = 0, boxes = static_cast<int>(bodies.boxes.size());
+    int dynamicBodies = 0, disks = 0, boxes = static_cast<int>(bodies.rigidBodies.size());
     for (const Particle& p : bodies.particles) {
         if (p.radius <= 0.0) continue;
         ++disks;
         dynamicBodies += !p.pinned;
     }
-    for (const Box& b : bodies.boxes) dynamicBodies += !b.isStatic;
+    for (const RigidBody& b : bodies.rigidBodies) dynamicBodies += !b.isStatic;
     if (dynamicBodies == 0) return false;
     if (!bodies.planes.empty()) return true;
     if (boxes >= 2 || (boxes >= 1 && disks >= 1)) return true;
@@ -38,9 +38,9 @@ void ContactStage::bind(const Bodies& bodies) {
             colliders_.push_back({Collider::Kind::Disk, i, p.dof, p.friction, p.restitution, false,
                                   false, p.asleep, i});
     }
-    const auto& boxes = bodies.boxes;
+    const auto& boxes = bodies.rigidBodies;
     for (int i = 0; i < static_cast<int>(boxes.size()); ++i) {
-        const Box& b = boxes[i];
+        const RigidBody& b = boxes[i];
         // A rigid disk collides as a disk but turns: its contacts have lever arms.
         const Collider::Kind kind = b.shape == RigidShape::Disk      ? Collider::Kind::Disk
                                     : b.shape == RigidShape::Polygon ? Collider::Kind::Polygon
@@ -232,13 +232,13 @@ void ContactStage::updateShapes(const Bodies& bodies, const Vec& q) {
     for (int i = 0; i < count; ++i) {
         const Collider& c = colliders_[i];
         if (c.kind == Collider::Kind::Disk) {
-            const Vec2 position =
-                c.rigid ? bodies.boxes[c.object].position : bodies.particles[c.object].position;
+            const Vec2 position = c.rigid ? bodies.rigidBodies[c.object].position
+                                          : bodies.particles[c.object].position;
             const double radius =
-                c.rigid ? bodies.boxes[c.object].radius : bodies.particles[c.object].radius;
+                c.rigid ? bodies.rigidBodies[c.object].radius : bodies.particles[c.object].radius;
             disks_[i] = {c.dof >= 0 ? Vec2(q.segment<2>(c.dof)) : position, radius};
         } else if (c.kind == Collider::Kind::Polygon) {
-            const Box& b = bodies.boxes[c.object];
+            const RigidBody& b = bodies.rigidBodies[c.object];
             OrientedPolygon& p = polygons_[i];
             p.center = c.dof >= 0 ? Vec2(q.segment<2>(c.dof)) : b.position;
             p.rotation = rotation(c.dof >= 0 ? q[c.dof + 2] : b.angle);
@@ -247,7 +247,7 @@ void ContactStage::updateShapes(const Bodies& bodies, const Vec& q) {
             p.normals = b.normals.data();
             p.inradius = b.inradius;
         } else {
-            const Box& b = bodies.boxes[c.object];
+            const RigidBody& b = bodies.rigidBodies[c.object];
             boxes_[i] = c.dof >= 0 ? OrientedBox{q.segment<2>(c.dof), q[c.dof + 2], 0.5 * b.size}
                                    : OrientedBox{b.position, b.angle, 0.5 * b.size};
         }
@@ -288,7 +288,7 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
             if (c.kind == Collider::Kind::Box)
                 motion.turn = reach(c.dof + 2) * boxes_[i].halfExtents.norm() * dt;
             if (c.kind == Collider::Kind::Polygon)
-                motion.turn = reach(c.dof + 2) * 0.5 * bodies.boxes[c.object].size.x() * dt;
+                motion.turn = reach(c.dof + 2) * 0.5 * bodies.rigidBodies[c.object].size.x() * dt;
             sweep[i] = speed * dt + motion.turn;
         }
         // With bodies asleep an awake one looks two frames ahead (findReachedSleepers()).

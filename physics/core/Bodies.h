@@ -1,11 +1,11 @@
 #pragma once
-// The object records: what a scene's particles, boxes, planes, springs and cloths are once
+// The object records: what a scene's particles, rigid bodies, planes, springs and cloths are once
 // built. Cold data (ids, materials, setup values) lives here; the hot state of a dynamic
 // object is in the world's flat vectors (q, u) at the record's `dof`.
 //
 // For a dynamic object the state is authoritative and the record's position/velocity are only
-// its setup values; for a pinned particle, a static box or a body asleep the record's fields are
-// the truth.
+// its setup values; for a pinned particle, a static rigid body or a body asleep the record's fields
+// are the truth.
 
 #include "physics/core/Types.h"
 
@@ -30,11 +30,11 @@ struct Particle {
     bool asleep = false;
 };
 
-// A rigid body: x, y and an angle. The name is that of the first kind; CONTRACT §6 added disks
-// (the scene's `disks` array), which are the same record with the disk shape.
+// A rigid body: x, y and an angle, whatever its shape: a rectangle (the scene's `boxes`), a disk
+// (`disks`) or a convex polygon (`polygons`) share this one record.
 enum class RigidShape : unsigned char { Rectangle, Disk, Polygon };
 
-struct Box {
+struct RigidBody {
     std::string id;
     RigidShape shape = RigidShape::Rectangle;
     double radius = 0.0;  // a disk's; its size is then its bounding square, 2r × 2r
@@ -67,10 +67,10 @@ struct Plane {
 
 // One end of a spring, by object index (resolved to a BodyPoint when the layout is built).
 struct SpringEnd {
-    enum class Kind { Particle, Box, Anchor };
+    enum class Kind { Particle, Rigid, Anchor };
     Kind kind = Kind::Anchor;
-    int index = -1;        // particle or box index
-    Vec2 point{0.0, 0.0};  // box: attachment in the box frame; anchor: world point
+    int index = -1;        // particle or rigid body index
+    Vec2 point{0.0, 0.0};  // rigid: attachment in the body's frame; anchor: world point
 };
 
 struct Spring {
@@ -95,7 +95,7 @@ struct Cloth {
 struct JointBody {
     enum class Kind : unsigned char { Particle, Rigid, World };
     Kind kind = Kind::World;
-    int index = -1;        // particle or rigid body (Box record) index
+    int index = -1;        // particle or rigid body index
     Vec2 point{0.0, 0.0};  // in the body's frame; for the world, where it is
 };
 
@@ -126,7 +126,7 @@ struct Joint {
 // Every object of a world, by kind, in the order added (the scene file's order).
 struct Bodies {
     std::vector<Particle> particles;
-    std::vector<Box> boxes;
+    std::vector<RigidBody> rigidBodies;
     std::vector<Plane> planes;
     std::vector<Spring> springs;
     std::vector<Cloth> cloths;

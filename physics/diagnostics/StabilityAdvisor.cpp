@@ -34,7 +34,8 @@ double pendulumOmega(const World& world) {
     const auto& joints = world.joints();
     // Bodies in more than one joint (chains, ragdolls) are not single pendulums.
     // (A fixed support may hold many: a pendulum wave.)
-    std::vector<int> particleJoints(world.particles().size()), rigidJoints(world.boxes().size());
+    std::vector<int> particleJoints(world.particles().size()),
+        rigidJoints(world.rigidBodies().size());
     const auto count = [&](const JointBody& body) -> int* {
         if (body.kind == JointBody::Kind::Particle) return &particleJoints[body.index];
         if (body.kind == JointBody::Kind::Rigid) return &rigidJoints[body.index];
@@ -45,7 +46,7 @@ double pendulumOmega(const World& world) {
             if (int* n = count(*body)) ++*n;
     const auto fixed = [&](const JointBody& body) {
         if (body.kind == JointBody::Kind::Particle) return world.particles()[body.index].dof < 0;
-        if (body.kind == JointBody::Kind::Rigid) return world.boxes()[body.index].dof < 0;
+        if (body.kind == JointBody::Kind::Rigid) return world.rigidBodies()[body.index].dof < 0;
         return true;
     };
     double omega2 = 0.0;
@@ -59,9 +60,9 @@ double pendulumOmega(const World& world) {
             (joint.a.kind == JointBody::Kind::Particle || joint.a.point == Vec2::Zero())) {
             omega2 = std::max(omega2, gn / joint.length);
         } else if (!line && joint.a.kind == JointBody::Kind::Rigid) {
-            const Box& body = world.boxes()[joint.a.index];
+            const RigidBody& body = world.rigidBodies()[joint.a.index];
             const double d =
-                (world.boxPosition(joint.a.index) - solver->pointB(j, world.positions())).norm();
+                (world.bodyPosition(joint.a.index) - solver->pointB(j, world.positions())).norm();
             if (d > 0.0)
                 omega2 = std::max(omega2, body.mass * gn * d / (body.inertia + body.mass * d * d));
         }
@@ -78,7 +79,7 @@ struct Extent {
 };
 
 // How far the body reaches from its centre in direction d (unit).
-double reach(const Box& box, double angle, const Vec2& d) {
+double reach(const RigidBody& box, double angle, const Vec2& d) {
     const Vec2 axisX(std::cos(angle), std::sin(angle)), axisY(-axisX.y(), axisX.x());
     switch (box.shape) {
         case RigidShape::Disk:
@@ -102,11 +103,11 @@ double reach(const Box& box, double angle, const Vec2& d) {
 std::optional<std::pair<int, int>> findStack(const World& world, const Vec2& up) {
     const Vec2 side(up.y(), -up.x());
     std::vector<Extent> extents;
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i) {
-        const Box& box = world.boxes()[i];
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i) {
+        const RigidBody& box = world.rigidBodies()[i];
         if (box.isStatic) continue;
-        const Vec2 c = world.boxPosition(i);
-        const double angle = world.boxAngle(i);
+        const Vec2 c = world.bodyPosition(i);
+        const double angle = world.bodyAngle(i);
         Extent e;
         e.centre = c.dot(up);
         e.low = e.centre - reach(box, angle, -up);
@@ -155,8 +156,8 @@ std::string contactModelWarning(const World& world) {
     if (!(g.norm() > 0.0)) return {};  // nothing presses one body on another
     const auto stack = findStack(world, -g.normalized());
     if (!stack) return {};
-    return "Kinematic contacts cannot hold a stack (\"" + world.boxes()[stack->first].id +
-           "\" rests on \"" + world.boxes()[stack->second].id +
+    return "Kinematic contacts cannot hold a stack (\"" + world.rigidBodies()[stack->first].id +
+           "\" rests on \"" + world.rigidBodies()[stack->second].id +
            "\"): they only stop bodies moving into each other and push them apart, so the stack "
            "sinks into the floor. Use impulse contacts for stacks.";
 }

@@ -20,19 +20,19 @@ void BuoyancyEffect::bind(const EffectWorldView& view) {
     Effect::bind(view);
     const StateLayout& layout = *view.layout;
     diskRadius_.assign(static_cast<std::size_t>(layout.dynamicParticles), 0.0);
-    boxHalfSize_.assign(static_cast<std::size_t>(layout.dynamicBoxes), Vec2::Zero());
-    rigidDiskRadius_.assign(static_cast<std::size_t>(layout.dynamicBoxes), 0.0);
-    rigidPolygon_.assign(static_cast<std::size_t>(layout.dynamicBoxes), nullptr);
-    rigidPolygonArea_.assign(static_cast<std::size_t>(layout.dynamicBoxes), 0.0);
+    boxHalfSize_.assign(static_cast<std::size_t>(layout.dynamicRigidBodies), Vec2::Zero());
+    rigidDiskRadius_.assign(static_cast<std::size_t>(layout.dynamicRigidBodies), 0.0);
+    rigidPolygon_.assign(static_cast<std::size_t>(layout.dynamicRigidBodies), nullptr);
+    rigidPolygonArea_.assign(static_cast<std::size_t>(layout.dynamicRigidBodies), 0.0);
     // Right after addEffect() the world binds with its old layout, before the commit that binds
     // again; a dof outside the current layout is stale then and is skipped, not written past.
     if (view.particles)
         for (const Particle& p : *view.particles)
-            if (p.dof >= 0 && p.dof < layout.boxBase()) diskRadius_[p.dof / 2] = p.radius;
-    if (view.boxes)
-        for (const Box& b : *view.boxes) {
-            const int k = (b.dof - layout.boxBase()) / 3;
-            if (b.dof >= layout.boxBase() && k < layout.dynamicBoxes) {
+            if (p.dof >= 0 && p.dof < layout.rigidBase()) diskRadius_[p.dof / 2] = p.radius;
+    if (view.rigidBodies)
+        for (const RigidBody& b : *view.rigidBodies) {
+            const int k = (b.dof - layout.rigidBase()) / 3;
+            if (b.dof >= layout.rigidBase() && k < layout.dynamicRigidBodies) {
                 boxHalfSize_[k] = 0.5 * b.size;
                 if (b.shape == RigidShape::Disk) rigidDiskRadius_[k] = b.radius;
                 if (b.shape == RigidShape::Polygon) {
@@ -156,8 +156,8 @@ void BuoyancyEffect::forEachBody(const Vec& q, Fn&& fn) const {
         const double fraction = full > 0.0 ? part.area / full : (depth > 0.0 ? 1.0 : 0.0);
         fn(dof, false, part, fraction);
     }
-    for (int k = 0; k < layout.dynamicBoxes; ++k) {
-        const int dof = layout.boxDof(k);
+    for (int k = 0; k < layout.dynamicRigidBodies; ++k) {
+        const int dof = layout.rigidDof(k);
         const double depth = surfaceY_ - q[dof + 1];
         if (const double radius = rigidDiskRadius_[k]; radius > 0.0) {
             // A disk's submerged segment is symmetric about its centre's vertical: no torque.
@@ -165,7 +165,7 @@ void BuoyancyEffect::forEachBody(const Vec& q, Fn&& fn) const {
             fn(dof, true, part, part.area / (std::numbers::pi * radius * radius));
             continue;
         }
-        if (const Box* polygon = rigidPolygon_[k]) {
+        if (const RigidBody* polygon = rigidPolygon_[k]) {
             const double area = rigidPolygonArea_[k];
             const SubmergedPart part = submergedPolygon(polygon->vertices, area, q[dof + 2], depth);
             fn(dof, true, part, part.area / area);
@@ -181,15 +181,15 @@ double BuoyancyEffect::addForces(double, const Vec& q, const Vec& u, Vec& force)
     const double lift = density_ * gravity_;
     const Vec& m = *view_.mass;
     double power = 0.0;
-    forEachBody(q, [&](int dof, bool isBox, const SubmergedPart& part, double fraction) {
+    forEachBody(q, [&](int dof, bool isRigid, const SubmergedPart& part, double fraction) {
         force[dof + 1] += lift * part.area;
-        if (isBox) force[dof + 2] += lift * part.area * part.centroid.x();  // r × (0, F)
+        if (isRigid) force[dof + 2] += lift * part.area * part.centroid.x();  // r × (0, F)
         if (!(drag_ > 0.0 && fraction > 0.0)) return;
         const double c = drag_ * fraction;
         force[dof] -= c * u[dof];
         force[dof + 1] -= c * u[dof + 1];
         power -= c * (u[dof] * u[dof] + u[dof + 1] * u[dof + 1]);
-        if (isBox) {
+        if (isRigid) {
             const double spin = c * m[dof + 2] / m[dof];
             force[dof + 2] -= spin * u[dof + 2];
             power -= spin * u[dof + 2] * u[dof + 2];
@@ -202,10 +202,10 @@ double BuoyancyEffect::nonConservativePower(double, const Vec& q, const Vec& u) 
     if (!(drag_ > 0.0)) return 0.0;
     const Vec& m = *view_.mass;
     double power = 0.0;
-    forEachBody(q, [&](int dof, bool isBox, const SubmergedPart&, double fraction) {
+    forEachBody(q, [&](int dof, bool isRigid, const SubmergedPart&, double fraction) {
         const double c = drag_ * fraction;
         power -= c * (u[dof] * u[dof] + u[dof + 1] * u[dof + 1]);
-        if (isBox) power -= c * m[dof + 2] / m[dof] * u[dof + 2] * u[dof + 2];
+        if (isRigid) power -= c * m[dof + 2] / m[dof] * u[dof + 2] * u[dof + 2];
     });
     return power;
 }
@@ -219,11 +219,11 @@ void BuoyancyEffect::addJacobians(double, const Vec& q, const Vec&, ForceJacobia
     // Every body writes its entries, zero or not, so the sparsity pattern never changes.
     const double lift = density_ * gravity_;
     const Vec& m = *view_.mass;
-    forEachBody(q, [&](int dof, bool isBox, const SubmergedPart& part, double fraction) {
+    forEachBody(q, [&](int dof, bool isRigid, const SubmergedPart& part, double fraction) {
         const double length = part.waterlineLength();
         const double kyy = -lift * length;
         jac.addStiffness(dof + 1, dof + 1, kyy);
-        if (isBox) {
+        if (isRigid) {
             const double mid = 0.5 * (part.waterlineFrom + part.waterlineTo);
             const double from = part.waterlineFrom, to = part.waterlineTo;
             const double secondMoment = (to * to * to - from * from * from) / 3.0;
@@ -241,7 +241,7 @@ void BuoyancyEffect::addJacobians(double, const Vec& q, const Vec&, ForceJacobia
         const double c = -drag_ * fraction;
         jac.addDamping(dof, dof, c);
         jac.addDamping(dof + 1, dof + 1, c);
-        if (isBox) jac.addDamping(dof + 2, dof + 2, c * m[dof + 2] / m[dof]);
+        if (isRigid) jac.addDamping(dof + 2, dof + 2, c * m[dof + 2] / m[dof]);
     });
 }
 

@@ -33,7 +33,7 @@
 
 namespace phasebox {
 
-struct Box;
+struct RigidBody;
 
 // The part of a body below the surface, relative to the body's centre.
 struct SubmergedPart {
@@ -72,16 +72,16 @@ public:
     double surfaceY() const { return surfaceY_; }
 
 private:
-    // Calls fn(dof, isBox, part, fullArea) for every dynamic body in state q.
+    // Calls fn(dof, isRigid, part, fullArea) for every dynamic body in state q.
     template <typename Fn>
     void forEachBody(const Vec& q, Fn&& fn) const;
 
     double density_, surfaceY_, drag_, gravity_;
-    std::vector<double> diskRadius_;        // per dynamic particle
-    std::vector<Vec2> boxHalfSize_;         // per dynamic box
-    std::vector<double> rigidDiskRadius_;   // per dynamic box: a disk's radius, 0 for a box
-    std::vector<const Box*> rigidPolygon_;  // per dynamic box: a polygon's record, or null
-    std::vector<double> rigidPolygonArea_;  // and its area
+    std::vector<double> diskRadius_;              // per dynamic particle
+    std::vector<Vec2> boxHalfSize_;               // per dynamic box
+    std::vector<double> rigidDiskRadius_;         // per dynamic box: a disk's radius, 0 for a box
+    std::vector<const RigidBody*> rigidPolygon_;  // per dynamic box: a polygon's record, or null
+    std::vector<double> rigidPolygonArea_;        // and its area
 };
 
 }  // namespace phasebox

@@ -12,7 +12,7 @@ void CoulombEffect::bind(const EffectWorldView& view) {
     free_.clear();
     fixed_.clear();
     if (!view.particles) return;
-    const int end = view.layout->boxBase();
+    const int end = view.layout->rigidBase();
     for (const Particle& p : *view.particles) {
         if (p.charge == 0.0) continue;
         if (p.pinned) fixed_.push_back({p.position, p.charge});

@@ -7,7 +7,7 @@ namespace {
 template <typename Fn>
 void forEachBody(const StateLayout& layout, Fn&& fn) {
     for (int p = 0; p < layout.dynamicParticles; ++p) fn(layout.particleDof(p));
-    for (int b = 0; b < layout.dynamicBoxes; ++b) fn(layout.boxDof(b));
+    for (int b = 0; b < layout.dynamicRigidBodies; ++b) fn(layout.rigidDof(b));
 }
 }  // namespace
 
@@ -22,8 +22,8 @@ double DragEffect::addForces(double, const Vec&, const Vec& u, Vec& force) {
     });
     if (angular_ != 0.0) {
         const StateLayout& layout = *view_.layout;
-        for (int b = 0; b < layout.dynamicBoxes; ++b) {
-            const int i = layout.boxDof(b) + 2;
+        for (int b = 0; b < layout.dynamicRigidBodies; ++b) {
+            const int i = layout.rigidDof(b) + 2;
             force[i] -= angular_ * u[i];
             power -= angular_ * u[i] * u[i];
         }
@@ -38,8 +38,8 @@ double DragEffect::nonConservativePower(double, const Vec&, const Vec& u) {
         power -= (linear_ + quadratic_ * speed) * speed * speed;
     });
     const StateLayout& layout = *view_.layout;
-    for (int b = 0; b < layout.dynamicBoxes; ++b) {
-        const double w = u[layout.boxDof(b) + 2];
+    for (int b = 0; b < layout.dynamicRigidBodies; ++b) {
+        const double w = u[layout.rigidDof(b) + 2];
         power -= angular_ * w * w;
     }
     return power;
@@ -56,8 +56,8 @@ void DragEffect::addJacobians(double, const Vec&, const Vec& u, ForceJacobians& 
     });
     if (angular_ != 0.0) {
         const StateLayout& layout = *view_.layout;
-        for (int b = 0; b < layout.dynamicBoxes; ++b) {
-            const int i = layout.boxDof(b) + 2;
+        for (int b = 0; b < layout.dynamicRigidBodies; ++b) {
+            const int i = layout.rigidDof(b) + 2;
             jacobians.addDamping(i, i, -angular_);
         }
     }

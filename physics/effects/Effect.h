@@ -18,7 +18,7 @@
 namespace phasebox {
 
 struct Particle;
-struct Box;
+struct RigidBody;
 
 // What every effect may read of the world: the layout and the per-dof masses, and the objects
 // themselves for the few effects that need a property the state does not hold (a disk's radius
@@ -26,9 +26,9 @@ struct Box;
 // what it needs into arrays of its own in bind(), so the per-step loops stay on flat arrays.
 struct EffectWorldView {
     const StateLayout* layout = nullptr;
-    const Vec* mass = nullptr;  // per dof: m, m for particles; m, m, I for boxes
+    const Vec* mass = nullptr;  // per dof: m, m for particles; m, m, I for rigid bodies
     const std::vector<Particle>* particles = nullptr;  // every particle, with its dof (−1: pinned)
-    const std::vector<Box>* boxes = nullptr;           // every box, with its dof (−1: static)
+    const std::vector<RigidBody>* rigidBodies = nullptr;  // every rigid body, its dof (−1: static)
 };
 
 class Effect {

@@ -7,13 +7,13 @@ double GravityEffect::addForces(double, const Vec&, const Vec&, Vec& force) {
     const double* __restrict m = view_.mass->data();
     double* __restrict f = force.data();
     const double gx = g_.x(), gy = g_.y();
-    const int particleEnd = layout.boxBase();
+    const int particleEnd = layout.rigidBase();
     for (int i = 0; i < particleEnd; i += 2) {
         f[i] += m[i] * gx;
         f[i + 1] += m[i + 1] * gy;
     }
-    for (int b = 0; b < layout.dynamicBoxes; ++b) {
-        const int i = layout.boxDof(b);
+    for (int b = 0; b < layout.dynamicRigidBodies; ++b) {
+        const int i = layout.rigidDof(b);
         f[i] += m[i] * gx;
         f[i + 1] += m[i + 1] * gy;
     }
@@ -24,14 +24,14 @@ void GravityEffect::addAccelerations(double, const Vec&, const Vec&, Vec& accel,
     const StateLayout& layout = *view_.layout;
     double* __restrict a = accel.data();
     const double gx = g_.x(), gy = g_.y();
-    const int particleEnd = layout.boxBase();
+    const int particleEnd = layout.rigidBase();
     if (overwrite) {
         for (int i = 0; i < particleEnd; i += 2) {
             a[i] = gx;
             a[i + 1] = gy;
         }
-        for (int b = 0; b < layout.dynamicBoxes; ++b) {
-            const int i = layout.boxDof(b);
+        for (int b = 0; b < layout.dynamicRigidBodies; ++b) {
+            const int i = layout.rigidDof(b);
             a[i] = gx;
             a[i + 1] = gy;
             a[i + 2] = 0.0;
@@ -42,8 +42,8 @@ void GravityEffect::addAccelerations(double, const Vec&, const Vec&, Vec& accel,
         a[i] += gx;
         a[i + 1] += gy;
     }
-    for (int b = 0; b < layout.dynamicBoxes; ++b) {
-        const int i = layout.boxDof(b);
+    for (int b = 0; b < layout.dynamicRigidBodies; ++b) {
+        const int i = layout.rigidDof(b);
         a[i] += gx;
         a[i + 1] += gy;
     }
@@ -54,10 +54,10 @@ double GravityEffect::potentialEnergy(const Vec& q) const {
     const double* m = view_.mass->data();
     const double gx = g_.x(), gy = g_.y();
     double sum = 0.0;
-    const int particleEnd = layout.boxBase();
+    const int particleEnd = layout.rigidBase();
     for (int i = 0; i < particleEnd; i += 2) sum += m[i] * (gx * q[i] + gy * q[i + 1]);
-    for (int b = 0; b < layout.dynamicBoxes; ++b) {
-        const int i = layout.boxDof(b);
+    for (int b = 0; b < layout.dynamicRigidBodies; ++b) {
+        const int i = layout.rigidDof(b);
         sum += m[i] * (gx * q[i] + gy * q[i + 1]);
     }
     return -sum;

@@ -44,14 +44,14 @@ void MouseSpringEffect::bind(const EffectWorldView& view) {
         break;
     }
     if (!point_.isDynamic()) {
-        for (const Box& b : *view.boxes) {
+        for (const RigidBody& b : *view.rigidBodies) {
             if (b.id != objectId_) continue;
-            if (b.dof >= 0 && b.dof + 3 <= size) point_ = BodyPoint::box(b.dof, localPoint_);
+            if (b.dof >= 0 && b.dof + 3 <= size) point_ = BodyPoint::rigid(b.dof, localPoint_);
             break;
         }
     }
     if (point_.kind == BodyPoint::Kind::Particle) effectiveMass_ = (*view.mass)[point_.dof];
-    if (point_.kind == BodyPoint::Kind::Box)
+    if (point_.kind == BodyPoint::Kind::Rigid)
         effectiveMass_ =
             effectiveMass((*view.mass)[point_.dof], (*view.mass)[point_.dof + 2], localPoint_);
     updateDamping();
@@ -95,7 +95,7 @@ void MouseSpringEffect::addJacobians(double, const Vec& q, const Vec& u, ForceJa
     const int i = point_.dof;
     jac.addStiffnessBlock(i, i, -stiffness_ * Mat2::Identity());
     jac.addDampingBlock(i, i, -damping_ * Mat2::Identity());
-    if (point_.kind != BodyPoint::Kind::Box) return;
+    if (point_.kind != BodyPoint::Kind::Rigid) return;
     const Vec2 r = perp(arm);
     for (int a = 0; a < 2; ++a) {
         jac.addStiffness(i + a, i + 2, -stiffness_ * r[a]);

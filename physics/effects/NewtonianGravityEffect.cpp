@@ -22,7 +22,7 @@ void NewtonianGravityEffect::forEachPair(const Vec& q, bool mutualPairs, Fn&& fn
             fn(i, -1, Vec2(q.segment<2>(i) - at.position), G_ * at.mass * m[i]);
     };
     for (int p = 0; p < layout.dynamicParticles; ++p) body(layout.particleDof(p));
-    for (int b = 0; b < layout.dynamicBoxes; ++b) body(layout.boxDof(b));
+    for (int b = 0; b < layout.dynamicRigidBodies; ++b) body(layout.rigidDof(b));
     if (!mutualPairs) return;
     for (int a = 0; a < layout.dynamicParticles; ++a) {
         const int i = layout.particleDof(a);

@@ -55,7 +55,7 @@ PointJacobian pointJacobian(const BodyPoint& point, const Vec2& arm) {
     pj.j.setZero();
     pj.j.leftCols<2>().setIdentity();
     pj.columns = 2;
-    if (point.kind == BodyPoint::Kind::Box) {
+    if (point.kind == BodyPoint::Kind::Rigid) {
         pj.j.col(2) = perp(arm);
         pj.columns = 3;
     }
@@ -101,7 +101,7 @@ void SpringEffect::setTerms(std::vector<SpringTerm> terms) {
     for (const SpringTerm& s : terms_) anyDamping_ = anyDamping_ || s.damping != 0.0;
     points_.clear();
     const bool allPoints = std::none_of(terms_.begin(), terms_.end(), [](const SpringTerm& s) {
-        return s.a.kind == BodyPoint::Kind::Box || s.b.kind == BodyPoint::Kind::Box;
+        return s.a.kind == BodyPoint::Kind::Rigid || s.b.kind == BodyPoint::Kind::Rigid;
     });
     if (!allPoints) return;
     points_.reserve(terms_.size());
@@ -202,7 +202,7 @@ void addTermJacobians(const SpringTerm& s, const SpringGeometry& g, bool valid,
     const double ux = valid ? g.dir.x() : 0.0, uy = valid ? g.dir.y() : 0.0;
     const Mat2 ks =
         elasticCoupling(s.stiffness, s.restLength, g.length, ux, uy, valid, jac.definite);
-    if (s.a.kind != BodyPoint::Kind::Box && s.b.kind != BodyPoint::Kind::Box) {
+    if (s.a.kind != BodyPoint::Kind::Rigid && s.b.kind != BodyPoint::Kind::Rigid) {
         // Points without a rotation: one two-point coupling.
         const int a = s.a.isDynamic() ? s.a.dof : -1, b = s.b.isDynamic() ? s.b.dof : -1;
         jac.addStiffnessPair(a, b, ks);
@@ -228,8 +228,9 @@ void addTermJacobians(const SpringTerm& s, const SpringGeometry& g, bool valid,
     const Vec2 f =
         valid ? Vec2(-(s.stiffness * (g.length - s.restLength) + s.damping * g.rate) * g.dir)
               : Vec2::Zero();
-    if (s.a.kind == BodyPoint::Kind::Box) jac.addStiffness(s.a.dof + 2, s.a.dof + 2, -g.ra.dot(f));
-    if (s.b.kind == BodyPoint::Kind::Box) jac.addStiffness(s.b.dof + 2, s.b.dof + 2, g.rb.dot(f));
+    if (s.a.kind == BodyPoint::Kind::Rigid)
+        jac.addStiffness(s.a.dof + 2, s.a.dof + 2, -g.ra.dot(f));
+    if (s.b.kind == BodyPoint::Kind::Rigid) jac.addStiffness(s.b.dof + 2, s.b.dof + 2, g.rb.dot(f));
 }
 }  // namespace
 

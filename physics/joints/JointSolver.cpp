@@ -39,7 +39,7 @@ joints::End resolveEnd(const Bodies& bodies, const JointBody& body) {
             break;
         }
         case JointBody::Kind::Rigid: {
-            const Box& b = bodies.boxes[body.index];
+            const RigidBody& b = bodies.rigidBodies[body.index];
             e.rigid = true;
             if (b.dof >= 0) {
                 e.dof = b.dof;

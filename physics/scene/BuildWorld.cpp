@@ -197,7 +197,7 @@ void addParticles(World& world, const SceneDesc& scene, EndsById& ends) {
 void addRigidBodies(World& world, const SceneDesc& scene, EndsById& ends) {
     // A rigid body (box or disk) from what every rigid kind's description holds.
     const auto rigid = [&](const auto& d, std::string id) {
-        Box b;
+        RigidBody b;
         b.id = std::move(id);
         b.position = vec(d.position);
         b.angle = d.angle;
@@ -210,17 +210,17 @@ void addRigidBodies(World& world, const SceneDesc& scene, EndsById& ends) {
         b.restitution = d.restitution;
         return b;
     };
-    const auto addRigid = [&](const Box& b) {
-        ends[b.id] = {SpringEnd::Kind::Box, world.addBox(b), Vec2::Zero()};
+    const auto addRigid = [&](const RigidBody& b) {
+        ends[b.id] = {SpringEnd::Kind::Rigid, world.addRigidBody(b), Vec2::Zero()};
     };
     for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
-        Box b = rigid(scene.boxes[i], boxId(scene, i));
+        RigidBody b = rigid(scene.boxes[i], boxId(scene, i));
         b.size = vec(scene.boxes[i].size);
         addRigid(b);
     }
     for (std::size_t i = 0; i < scene.polygons.size(); ++i) {
         const PolygonDesc& d = scene.polygons[i];
-        Box b = rigid(d, polygonId(scene, i));
+        RigidBody b = rigid(d, polygonId(scene, i));
         b.shape = RigidShape::Polygon;
         // About the centroid (recentrePolygons moved the frame there), counter-clockwise.
         double reach = 0.0;
@@ -242,7 +242,7 @@ void addRigidBodies(World& world, const SceneDesc& scene, EndsById& ends) {
         addRigid(b);
     }
     for (std::size_t i = 0; i < scene.disks.size(); ++i) {
-        Box b = rigid(scene.disks[i], diskId(scene, i));
+        RigidBody b = rigid(scene.disks[i], diskId(scene, i));
         b.shape = RigidShape::Disk;
         b.radius = scene.disks[i].radius;
         b.size = Vec2::Constant(2.0 * b.radius);
@@ -323,7 +323,7 @@ void addJoints(World& world, const SceneDesc& scene, const EndsById& ends) {
             case JointBody::Kind::Particle:
                 return world.particles()[body.index].position;
             case JointBody::Kind::Rigid: {
-                const Box& b = world.boxes()[body.index];
+                const RigidBody& b = world.rigidBodies()[body.index];
                 return b.position + rotation(b.angle) * body.point;
             }
             case JointBody::Kind::World:
@@ -332,12 +332,12 @@ void addJoints(World& world, const SceneDesc& scene, const EndsById& ends) {
         return body.point;
     };
     const auto angle = [&](const JointBody& body) {
-        return body.kind == JointBody::Kind::Rigid ? world.boxes()[body.index].angle : 0.0;
+        return body.kind == JointBody::Kind::Rigid ? world.rigidBodies()[body.index].angle : 0.0;
     };
     // The point of body at a world point w (a rigid body's frame; the world's is w itself).
     const auto pointAt = [&](JointBody& body, const Vec2& w) {
         if (body.kind == JointBody::Kind::Rigid) {
-            const Box& b = world.boxes()[body.index];
+            const RigidBody& b = world.rigidBodies()[body.index];
             body.point = rotation(-b.angle) * (w - b.position);
         } else if (body.kind == JointBody::Kind::World) {
             body.point = w;

@@ -316,7 +316,7 @@ struct SceneLimits {
     // sweep looks at; flocking's neighbours are every boid). 20,000 at one point take their
     // first step in 2 s under either; 100,000 took 25 s and 250,000 over 100 s.
     static constexpr long long kMaxInteractingParticles = 20'000;
-    static constexpr long long kMaxBoxes = 25'000;  // rigid bodies: boxes, disks, polygons
+    static constexpr long long kMaxRigidBodies = 25'000;  // rigid bodies: boxes, disks, polygons
     static constexpr int kMaxPolygonVertices = 16;
     static constexpr long long kMaxSprings = 250'000;
     static constexpr long long kMaxPlanes = 1'000;

@@ -348,11 +348,11 @@ bool checkSizes(Checker& check, const SceneDesc& scene) {
         !problem.empty() && !tooManyClothNodes && particleCount <= SceneLimits::kMaxParticles)
         check.fail(join(std::string(key::simulation), key::substeps), problem);
     if (static_cast<long long>(scene.boxes.size() + scene.disks.size() + scene.polygons.size()) >
-        SceneLimits::kMaxBoxes)
+        SceneLimits::kMaxRigidBodies)
         check.fail(std::string(!scene.polygons.empty() ? key::polygons
                                : !scene.disks.empty()  ? key::disks
                                                        : key::boxes),
-                   "at most " + std::to_string(SceneLimits::kMaxBoxes) +
+                   "at most " + std::to_string(SceneLimits::kMaxRigidBodies) +
                        " rigid bodies (boxes, disks and polygons) are allowed");
     if (static_cast<long long>(scene.springs.size()) > SceneLimits::kMaxSprings)
         check.fail(std::string(key::springs),

@@ -15,8 +15,8 @@ struct DynamicIndex {
         particles.reserve(world.particles().size());
         for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
             if (!world.particles()[i].pinned) particles.emplace(world.particles()[i].id, i);
-        for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-            if (!world.boxes()[i].isStatic) boxes.emplace(world.boxes()[i].id, i);
+        for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+            if (!world.rigidBodies()[i].isStatic) boxes.emplace(world.rigidBodies()[i].id, i);
     }
     static int find(const std::unordered_map<std::string_view, int>& map, std::string_view id) {
         const auto it = map.find(id);
@@ -41,14 +41,14 @@ void transferState(const World& from, World& to, const std::unordered_set<std::s
         q.segment<2>(p.dof) = from.particlePosition(k);
         u.segment<2>(p.dof) = from.particleVelocity(k);
     }
-    for (const Box& b : to.boxes()) {
+    for (const RigidBody& b : to.rigidBodies()) {
         if (b.dof < 0 || keepSetup.count(b.id)) continue;
         const int k = DynamicIndex::find(source.boxes, b.id);
         if (k < 0) continue;
-        q.segment<2>(b.dof) = from.boxPosition(k);
-        q[b.dof + 2] = from.boxAngle(k);
-        u.segment<2>(b.dof) = from.boxVelocity(k);
-        u[b.dof + 2] = from.boxAngularVelocity(k);
+        q.segment<2>(b.dof) = from.bodyPosition(k);
+        q[b.dof + 2] = from.bodyAngle(k);
+        u.segment<2>(b.dof) = from.bodyVelocity(k);
+        u[b.dof + 2] = from.bodyAngularVelocity(k);
     }
     to.setState(q, u);
     to.setTime(from.time());
@@ -71,10 +71,10 @@ SceneDesc snapshotScene(const World& world, const SceneDesc& setup) {
         if (b.isStatic) continue;
         const int k = DynamicIndex::find(live.boxes, boxId(setup, i));
         if (k < 0) continue;
-        b.position = point(world.boxPosition(k));
-        b.angle = world.boxAngle(k);
-        b.velocity = point(world.boxVelocity(k));
-        b.angularVelocity = world.boxAngularVelocity(k);
+        b.position = point(world.bodyPosition(k));
+        b.angle = world.bodyAngle(k);
+        b.velocity = point(world.bodyVelocity(k));
+        b.angularVelocity = world.bodyAngularVelocity(k);
     }
     return scene;
 }

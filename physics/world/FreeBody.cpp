@@ -8,8 +8,8 @@ namespace phasebox {
 std::optional<FreeBody> freeBodyOf(const World& world, std::string_view id) {
     const std::optional<ProbeObject> object = findProbeObject(world, id);
     if (!object) return std::nullopt;
-    const int dof =
-        object->rigid ? world.boxes()[object->index].dof : world.particles()[object->index].dof;
+    const int dof = object->rigid ? world.rigidBodies()[object->index].dof
+                                  : world.particles()[object->index].dof;
     const Vec& q = world.positions();
     const Vec& u = world.velocities();
     if (dof < 0 || q.size() < dof + 2 || u.size() < dof + 2) return std::nullopt;
@@ -39,7 +39,7 @@ std::optional<FreeBody> freeBodyOf(const World& world, std::string_view id) {
         const Spring& s = springs[i];
         const auto on = [&](const SpringEnd& end) {
             return end.kind != SpringEnd::Kind::Anchor &&
-                   isBody(end.kind == SpringEnd::Kind::Box, end.index);
+                   isBody(end.kind == SpringEnd::Kind::Rigid, end.index);
         };
         if (!on(s.a) && !on(s.b)) continue;
         const Vec2 d = world.springEndPosition(s.b) - world.springEndPosition(s.a);

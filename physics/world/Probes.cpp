@@ -161,7 +161,7 @@ std::optional<ProbeParse> parseInstrument(const World& world, std::string_view t
     if (instrument->kind == ProbeKind::ContactForce) {
         const ProbeObject& o = probe.objects[0];
         const bool fixed =
-            o.rigid ? world.boxes()[o.index].isStatic : world.particles()[o.index].pinned;
+            o.rigid ? world.rigidBodies()[o.index].isStatic : world.particles()[o.index].pinned;
         // The world takes the reaction of what it holds still; it is not summed anywhere.
         if (fixed)
             return refuse(text, quoted(args[0]) +
@@ -181,12 +181,12 @@ struct ObjectState {
 ObjectState stateOf(const World& world, const ProbeObject& o) {
     ObjectState s;
     if (o.rigid) {
-        const Box& b = world.boxes()[o.index];
-        s.position = world.boxPosition(o.index);
-        s.angle = world.boxAngle(o.index);
+        const RigidBody& b = world.rigidBodies()[o.index];
+        s.position = world.bodyPosition(o.index);
+        s.angle = world.bodyAngle(o.index);
         if (b.dof >= 0) {
-            s.velocity = world.boxVelocity(o.index);
-            s.omega = world.boxAngularVelocity(o.index);
+            s.velocity = world.bodyVelocity(o.index);
+            s.omega = world.bodyAngularVelocity(o.index);
             s.mass = b.mass;
             s.inertia = b.inertia;
         }
@@ -212,8 +212,8 @@ Vec2 jointPoint(const World& world, const JointBody& body) {
         case JointBody::Kind::Particle:
             return world.particlePosition(body.index);
         case JointBody::Kind::Rigid:
-            return world.boxPosition(body.index) +
-                   rotation(world.boxAngle(body.index)) * body.point;
+            return world.bodyPosition(body.index) +
+                   rotation(world.bodyAngle(body.index)) * body.point;
         case JointBody::Kind::World:
             break;
     }
@@ -255,14 +255,14 @@ std::optional<double> jointAngle(const World& world, int j) {
     if (joint.b.kind != JointBody::Kind::World) {
         if (!hinge) return angleFromDown(jointPoint(world, joint.b), jointPoint(world, joint.a));
         const auto angleOf = [&](const JointBody& body) {
-            return body.kind == JointBody::Kind::Rigid ? world.boxAngle(body.index) : 0.0;
+            return body.kind == JointBody::Kind::Rigid ? world.bodyAngle(body.index) : 0.0;
         };
         return angleOf(joint.b) - angleOf(joint.a) - joint.referenceAngle;
     }
     // Held to the world: b's point is the anchor. A hinge's a-point sits on the anchor, so the
     // pendulum's line runs to a's centre; a rod or rope pulls on a's point.
     const Vec2 end =
-        hinge ? (joint.a.kind == JointBody::Kind::Rigid ? world.boxPosition(joint.a.index)
+        hinge ? (joint.a.kind == JointBody::Kind::Rigid ? world.bodyPosition(joint.a.index)
                                                         : world.particlePosition(joint.a.index))
               : jointPoint(world, joint.a);
     return angleFromDown(joint.b.point, end);
@@ -271,13 +271,13 @@ std::optional<double> jointAngle(const World& world, int j) {
 std::optional<ProbeObject> findProbeObject(const World& world, std::string_view id) {
     for (std::size_t i = 0; i < world.particles().size(); ++i)
         if (world.particles()[i].id == id) return ProbeObject{false, static_cast<int>(i)};
-    for (std::size_t i = 0; i < world.boxes().size(); ++i)
-        if (world.boxes()[i].id == id) return ProbeObject{true, static_cast<int>(i)};
+    for (std::size_t i = 0; i < world.rigidBodies().size(); ++i)
+        if (world.rigidBodies()[i].id == id) return ProbeObject{true, static_cast<int>(i)};
     return std::nullopt;
 }
 
 Vec2 probeObjectPosition(const World& world, const ProbeObject& o) {
-    return o.rigid ? world.boxPosition(o.index) : world.particlePosition(o.index);
+    return o.rigid ? world.bodyPosition(o.index) : world.particlePosition(o.index);
 }
 
 double signedAngle(const Vec2& a, const Vec2& vertex, const Vec2& c) {
@@ -295,7 +295,7 @@ SystemMotion systemMotion(const World& world) {
     const Vec& q = world.positions();
     const Vec& u = world.velocities();
     const Vec& m = world.mass();
-    const int paired = world.layout().boxBase(), dimension = world.layout().dimension();
+    const int paired = world.layout().rigidBase(), dimension = world.layout().dimension();
     if (q.size() < dimension || u.size() < dimension || m.size() < dimension) return s;
     const auto add = [&](int i) {
         const Vec2 x = q.segment<2>(i), v = u.segment<2>(i);
@@ -319,7 +319,7 @@ SystemMotion systemMotion(const World& world) {
     };
     for (const Particle& p : world.particles())
         if (p.asleep) addAsleep(p.position, p.velocity, p.mass);
-    for (const Box& b : world.boxes()) {
+    for (const RigidBody& b : world.rigidBodies()) {
         if (!b.asleep) continue;
         addAsleep(b.position, b.velocity, b.mass);
         s.angularMomentum += b.inertia * b.angularVelocity;
@@ -446,7 +446,8 @@ double evaluateProbe(const World& world, const Probe& probe) {
         }
         case ProbeKind::ContactForce: {
             const ProbeObject& o = probe.objects[0];
-            const int dof = o.rigid ? world.boxes()[o.index].dof : world.particles()[o.index].dof;
+            const int dof =
+                o.rigid ? world.rigidBodies()[o.index].dof : world.particles()[o.index].dof;
             return dof < 0 ? 0.0 : world.contactForce(dof).norm();
         }
     }
@@ -465,7 +466,7 @@ std::vector<std::string> objectProbes(const World& world, std::string_view id) {
         if (turns && !object->rigid) continue;
         texts.push_back(prefix + std::string(f.name));
     }
-    const bool fixed = object->rigid ? world.boxes()[object->index].isStatic
+    const bool fixed = object->rigid ? world.rigidBodies()[object->index].isStatic
                                      : world.particles()[object->index].pinned;
     if (!fixed) texts.push_back("contact_force(" + std::string(id) + ')');
     return texts;
@@ -480,7 +481,7 @@ std::vector<std::string> listProbes(const World& world) {
     };
     for (const Particle& p : world.particles())
         if (p.cloth < 0) add(p.id);
-    for (const Box& b : world.boxes()) add(b.id);
+    for (const RigidBody& b : world.rigidBodies()) add(b.id);
     for (const Joint& j : world.joints()) {
         const std::vector<std::string> fields = jointProbes(world, j.id);
         texts.insert(texts.end(), fields.begin(), fields.end());

@@ -33,11 +33,11 @@ int World::addParticle(const Particle& particle) {
     return static_cast<int>(bodies_.particles.size()) - 1;
 }
 
-int World::addBox(const Box& box) {
+int World::addRigidBody(const RigidBody& body) {
     storeStateInObjects();
-    bodies_.boxes.push_back(box);
+    bodies_.rigidBodies.push_back(body);
     layoutDirty_ = true;
-    return static_cast<int>(bodies_.boxes.size()) - 1;
+    return static_cast<int>(bodies_.rigidBodies.size()) - 1;
 }
 
 int World::addPlane(const Plane& plane) {
@@ -73,7 +73,7 @@ void World::storeStateInObjects() {
         p.position = q.segment<2>(p.dof);
         p.velocity = u.segment<2>(p.dof);
     }
-    for (Box& b : bodies_.boxes) {
+    for (RigidBody& b : bodies_.rigidBodies) {
         if (b.dof < 0) continue;
         b.position = q.segment<2>(b.dof);
         b.angle = q[b.dof + 2];
@@ -89,14 +89,15 @@ void World::commit() {
     if (!sleepRelayout_) resetSleep();  // an edit wakes every island
 
     dynamicParticles_.clear();
-    dynamicBoxes_.clear();
+    dynamicRigidBodies_.clear();
     for (int i = 0; i < static_cast<int>(bodies_.particles.size()); ++i)
         if (!bodies_.particles[i].pinned && !bodies_.particles[i].asleep)
             dynamicParticles_.push_back(i);
-    for (int i = 0; i < static_cast<int>(bodies_.boxes.size()); ++i)
-        if (!bodies_.boxes[i].isStatic && !bodies_.boxes[i].asleep) dynamicBoxes_.push_back(i);
+    for (int i = 0; i < static_cast<int>(bodies_.rigidBodies.size()); ++i)
+        if (!bodies_.rigidBodies[i].isStatic && !bodies_.rigidBodies[i].asleep)
+            dynamicRigidBodies_.push_back(i);
     layout_.dynamicParticles = static_cast<int>(dynamicParticles_.size());
-    layout_.dynamicBoxes = static_cast<int>(dynamicBoxes_.size());
+    layout_.dynamicRigidBodies = static_cast<int>(dynamicRigidBodies_.size());
 
     const int n = layout_.dimension();
     for (int k = 0; k < 2; ++k) {
@@ -112,7 +113,7 @@ void World::commit() {
     Vec& q = q_[0];
     Vec& u = u_[0];
     for (Particle& p : bodies_.particles) p.dof = -1;
-    for (Box& b : bodies_.boxes) b.dof = -1;
+    for (RigidBody& b : bodies_.rigidBodies) b.dof = -1;
     for (int k = 0; k < layout_.dynamicParticles; ++k) {
         Particle& p = bodies_.particles[dynamicParticles_[k]];
         p.dof = layout_.particleDof(k);
@@ -120,9 +121,9 @@ void World::commit() {
         u.segment<2>(p.dof) = p.velocity;
         mass_.segment<2>(p.dof).setConstant(p.mass);
     }
-    for (int k = 0; k < layout_.dynamicBoxes; ++k) {
-        Box& b = bodies_.boxes[dynamicBoxes_[k]];
-        b.dof = layout_.boxDof(k);
+    for (int k = 0; k < layout_.dynamicRigidBodies; ++k) {
+        RigidBody& b = bodies_.rigidBodies[dynamicRigidBodies_[k]];
+        b.dof = layout_.rigidDof(k);
         q.segment<2>(b.dof) = b.position;
         q[b.dof + 2] = b.angle;
         u.segment<2>(b.dof) = b.velocity;
@@ -190,9 +191,9 @@ void World::rebuildSpringEffect() {
                 const Particle& p = bodies_.particles[end.index];
                 return p.dof >= 0 ? BodyPoint::particle(p.dof) : BodyPoint::fixed(p.position);
             }
-            case SpringEnd::Kind::Box: {
-                const Box& b = bodies_.boxes[end.index];
-                if (b.dof >= 0) return BodyPoint::box(b.dof, end.point);
+            case SpringEnd::Kind::Rigid: {
+                const RigidBody& b = bodies_.rigidBodies[end.index];
+                if (b.dof >= 0) return BodyPoint::rigid(b.dof, end.point);
                 return BodyPoint::fixed(b.position + rotation(b.angle) * end.point);
             }
             case SpringEnd::Kind::Anchor:
@@ -206,7 +207,7 @@ void World::rebuildSpringEffect() {
 }
 
 void World::bindEffects() {
-    const EffectWorldView view{&layout_, &mass_, &bodies_.particles, &bodies_.boxes};
+    const EffectWorldView view{&layout_, &mass_, &bodies_.particles, &bodies_.rigidBodies};
     for (auto& effect : effects_) effect->bind(view);
     if (penalty_) penalty_->bind(view);
     sortEffectsByChannel();
@@ -237,20 +238,20 @@ Vec2 World::particleVelocity(int i) const {
     const Particle& p = bodies_.particles.at(i);
     return p.dof >= 0 && !layoutDirty_ ? Vec2(u_[current_].segment<2>(p.dof)) : p.velocity;
 }
-Vec2 World::boxPosition(int i) const {
-    const Box& b = bodies_.boxes.at(i);
+Vec2 World::bodyPosition(int i) const {
+    const RigidBody& b = bodies_.rigidBodies.at(i);
     return b.dof >= 0 && !layoutDirty_ ? Vec2(q_[current_].segment<2>(b.dof)) : b.position;
 }
-double World::boxAngle(int i) const {
-    const Box& b = bodies_.boxes.at(i);
+double World::bodyAngle(int i) const {
+    const RigidBody& b = bodies_.rigidBodies.at(i);
     return b.dof >= 0 && !layoutDirty_ ? q_[current_][b.dof + 2] : b.angle;
 }
-Vec2 World::boxVelocity(int i) const {
-    const Box& b = bodies_.boxes.at(i);
+Vec2 World::bodyVelocity(int i) const {
+    const RigidBody& b = bodies_.rigidBodies.at(i);
     return b.dof >= 0 && !layoutDirty_ ? Vec2(u_[current_].segment<2>(b.dof)) : b.velocity;
 }
-double World::boxAngularVelocity(int i) const {
-    const Box& b = bodies_.boxes.at(i);
+double World::bodyAngularVelocity(int i) const {
+    const RigidBody& b = bodies_.rigidBodies.at(i);
     return b.dof >= 0 && !layoutDirty_ ? u_[current_][b.dof + 2] : b.angularVelocity;
 }
 
@@ -258,8 +259,8 @@ Vec2 World::springEndPosition(const SpringEnd& end) const {
     switch (end.kind) {
         case SpringEnd::Kind::Particle:
             return particlePosition(end.index);
-        case SpringEnd::Kind::Box:
-            return boxPosition(end.index) + rotation(boxAngle(end.index)) * end.point;
+        case SpringEnd::Kind::Rigid:
+            return bodyPosition(end.index) + rotation(bodyAngle(end.index)) * end.point;
         case SpringEnd::Kind::Anchor:
             break;
     }
@@ -510,8 +511,8 @@ void World::setState(const Vec& q, const Vec& u) {
 
 std::string World::objectAtDof(int dof) const {
     if (dof < 0 || dof >= layout_.dimension()) return {};
-    if (dof < layout_.boxBase()) return bodies_.particles[dynamicParticles_[dof / 2]].id;
-    return bodies_.boxes[dynamicBoxes_[(dof - layout_.boxBase()) / 3]].id;
+    if (dof < layout_.rigidBase()) return bodies_.particles[dynamicParticles_[dof / 2]].id;
+    return bodies_.rigidBodies[dynamicRigidBodies_[(dof - layout_.rigidBase()) / 3]].id;
 }
 
 // ---- stepping -----------------------------------------------------------------------------

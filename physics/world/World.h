@@ -64,7 +64,7 @@ public:
     // ---- objects ----------------------------------------------------------------------
     // Adding or removing objects rebuilds the state layout; live state is carried over.
     int addParticle(const Particle& particle);
-    int addBox(const Box& box);
+    int addRigidBody(const RigidBody& body);
     int addPlane(const Plane& plane);
     int addSpring(const Spring& spring);
     int addCloth(const Cloth& cloth);  // its particles and springs are added separately
@@ -75,7 +75,7 @@ public:
 
     const Bodies& bodies() const { return bodies_; }
     const std::vector<Particle>& particles() const { return bodies_.particles; }
-    const std::vector<Box>& boxes() const { return bodies_.boxes; }
+    const std::vector<RigidBody>& rigidBodies() const { return bodies_.rigidBodies; }
     const std::vector<Plane>& planes() const { return bodies_.planes; }
     const std::vector<Spring>& springs() const { return bodies_.springs; }
     const std::vector<Cloth>& cloths() const { return bodies_.cloths; }
@@ -87,10 +87,11 @@ public:
 
     Vec2 particlePosition(int i) const;
     Vec2 particleVelocity(int i) const;
-    Vec2 boxPosition(int i) const;
-    double boxAngle(int i) const;
-    Vec2 boxVelocity(int i) const;
-    double boxAngularVelocity(int i) const;
+    // Rigid body i (an index into rigidBodies(), whatever its shape).
+    Vec2 bodyPosition(int i) const;
+    double bodyAngle(int i) const;
+    Vec2 bodyVelocity(int i) const;
+    double bodyAngularVelocity(int i) const;
     // World position of a spring end.
     Vec2 springEndPosition(const SpringEnd& end) const;
     // Signed tension of spring i (positive = stretched), for drawing.
@@ -150,9 +151,9 @@ public:
     // ---- sleeping (simulation.sleep, CONTRACT §6; WorldSleep.cpp) ---------------------
     // An island of bodies tied by contacts, springs or joints whose every body has stayed below
     // kSleepSpeed and kSleepTurnRate for kSleepSeconds falls asleep: its bodies leave the state
-    // (dof −1, Particle::asleep, Box::asleep) with their positions and velocities kept in their
-    // records, so nothing steps them, no effect or contact solve sees them, and their energy is
-    // held as it was (the ledger books nothing for them). Contacts see them as static bodies.
+    // (dof −1, Particle::asleep, RigidBody::asleep) with their positions and velocities kept in
+    // their records, so nothing steps them, no effect or contact solve sees them, and their energy
+    // is held as it was (the ledger books nothing for them). Contacts see them as static bodies.
     // The island wakes, exactly as it fell asleep, when an awake body comes within reach
     // (ContactStage::reachedSleepers), on an edit of the world (objects, effects) and when the
     // method or the contact model is switched. An island held by a joint stays awake.
@@ -163,7 +164,7 @@ public:
     int sleepingBodies() const { return sleepingBodies_; }
     // Wakes every island asleep.
     void wakeAll();
-    // Wakes the island of one body (rigid: a Box record, else a particle); false when it was
+    // Wakes the island of one body (rigid: a RigidBody record, else a particle); false when it was
     // awake.
     bool wakeBody(bool rigid, int index);
 
@@ -199,12 +200,12 @@ public:
     int dimension() const override { return layout_.dimension(); }
     const Vec& inverseMass() const override { return invMass_; }
     const Vec& mass() const override { return mass_; }
-    int pointDofs() const override { return layout_.boxBase(); }
+    int pointDofs() const override { return layout_.rigidBase(); }
     // The scene's units of work (core/WorkUnits.h), as the validation counts them.
     double workUnits() const override {
         return static_cast<double>(bodies_.particles.size() + bodies_.springs.size()) +
                static_cast<double>(kCostlyWorkUnits) *
-                   static_cast<double>(bodies_.boxes.size() + bodies_.joints.size());
+                   static_cast<double>(bodies_.rigidBodies.size() + bodies_.joints.size());
     }
     double acceleration(double t, const Vec& q, const Vec& u, Vec& accel) override;
     SplitAcceleration accelerationSplit(double t, const Vec& q, const Vec& u, Vec& rest) override;
@@ -276,8 +277,8 @@ private:
     void checkInvariants(StepStage after) const;
 
     Bodies bodies_;
-    std::vector<int> dynamicParticles_;  // particle index of each dynamic particle
-    std::vector<int> dynamicBoxes_;      // box index of each dynamic box
+    std::vector<int> dynamicParticles_;    // particle index of each dynamic particle
+    std::vector<int> dynamicRigidBodies_;  // rigid body index of each dynamic one
 
     std::vector<std::unique_ptr<Effect>> effects_;
     SpringEffect* springEffect_ = nullptr;
@@ -335,8 +336,8 @@ private:
     std::optional<Divergence> divergence_;
     StepProfile profile_;
 
-    // Sleeping, per body (particles, then boxes): seconds below the thresholds, the island it
-    // sleeps in (−1 awake); per island root in fallAsleep(): the least of those seconds, and
+    // Sleeping, per body (particles, then rigid bodies): seconds below the thresholds, the island
+    // it sleeps in (−1 awake); per island root in fallAsleep(): the least of those seconds, and
     // whether a joint holds it.
     std::vector<double> restingSeconds_;
     std::vector<int> sleepingIsland_;

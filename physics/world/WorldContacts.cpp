@@ -21,7 +21,7 @@ void World::configureContactModel() {
     }
     if (!penalty_) penalty_ = std::make_unique<PenaltyContacts>();
     penalty_->attach(contacts_.get(), &bodies_);
-    penalty_->bind(EffectWorldView{&layout_, &mass_, &bodies_.particles, &bodies_.boxes});
+    penalty_->bind(EffectWorldView{&layout_, &mass_, &bodies_.particles, &bodies_.rigidBodies});
     penalty_->setParameters(penaltyStiffness(), settings_.contactDamping,
                             settings_.dt / settings_.substeps);
     // The pairs the force reads, found now so that the energy and the advisor see the overlaps
@@ -35,7 +35,7 @@ double World::penaltyStiffness() const {
     double lightest = std::numeric_limits<double>::infinity();
     for (const Particle& p : bodies_.particles)
         if (!p.pinned && p.radius > 0.0) lightest = std::min(lightest, p.mass);
-    for (const Box& b : bodies_.boxes)
+    for (const RigidBody& b : bodies_.rigidBodies)
         if (!b.isStatic) lightest = std::min(lightest, b.mass);
     if (!std::isfinite(lightest)) return 0.0;
     return PenaltyContacts::automaticStiffness(lightest, settings_.dt / settings_.substeps);
@@ -47,7 +47,7 @@ double World::anticipatedContactOmegaSquared() const {
     double omega2 = 0.0;
     for (const Particle& p : bodies_.particles)
         if (!p.pinned && p.radius > 0.0) omega2 = std::max(omega2, k / p.mass);
-    for (const Box& b : bodies_.boxes) {
+    for (const RigidBody& b : bodies_.rigidBodies) {
         if (b.isStatic) continue;
         if (b.shape == RigidShape::Disk) {
             omega2 = std::max(omega2, k / b.mass);

@@ -95,13 +95,13 @@ void World::checkInvariants([[maybe_unused]] StepStage after) const {
         invMass_.size() != n)
         fail("state vectors do not match the layout");
     if (layout_.dynamicParticles != static_cast<int>(dynamicParticles_.size()) ||
-        layout_.dynamicBoxes != static_cast<int>(dynamicBoxes_.size()))
+        layout_.dynamicRigidBodies != static_cast<int>(dynamicRigidBodies_.size()))
         fail("layout counts do not match the objects");
     for (int k = 0; k < layout_.dynamicParticles; ++k)
         if (bodies_.particles[dynamicParticles_[k]].dof != layout_.particleDof(k))
             fail("a particle's dof does not match the layout");
-    for (int k = 0; k < layout_.dynamicBoxes; ++k)
-        if (bodies_.boxes[dynamicBoxes_[k]].dof != layout_.boxDof(k))
+    for (int k = 0; k < layout_.dynamicRigidBodies; ++k)
+        if (bodies_.rigidBodies[dynamicRigidBodies_[k]].dof != layout_.rigidDof(k))
             fail("a box's dof does not match the layout");
     if (!(mass_.array() > 0.0).all() || !mass_.allFinite())
         fail("a mass is not positive and finite");

@@ -18,8 +18,8 @@ namespace phasebox {
 
 void World::resetSleep() {
     for (Particle& p : bodies_.particles) p.asleep = false;
-    for (Box& b : bodies_.boxes) b.asleep = false;
-    const std::size_t count = bodies_.particles.size() + bodies_.boxes.size();
+    for (RigidBody& b : bodies_.rigidBodies) b.asleep = false;
+    const std::size_t count = bodies_.particles.size() + bodies_.rigidBodies.size();
     restingSeconds_.assign(count, 0.0);
     sleepingIsland_.assign(count, -1);
     islandRest_.assign(count, 0.0);
@@ -41,7 +41,8 @@ void World::wakeAll() {
         if (sleepingIsland_[i] < 0) continue;
         sleepingIsland_[i] = -1;
         restingSeconds_[i] = 0.0;
-        (i < particles ? bodies_.particles[i].asleep : bodies_.boxes[i - particles].asleep) = false;
+        (i < particles ? bodies_.particles[i].asleep : bodies_.rigidBodies[i - particles].asleep) =
+            false;
     }
     relayoutForSleep();
 }
@@ -62,7 +63,8 @@ bool World::wakeIsland(int island) {
         if (sleepingIsland_[i] != island) continue;
         sleepingIsland_[i] = -1;
         restingSeconds_[i] = 0.0;
-        (i < particles ? bodies_.particles[i].asleep : bodies_.boxes[i - particles].asleep) = false;
+        (i < particles ? bodies_.particles[i].asleep : bodies_.rigidBodies[i - particles].asleep) =
+            false;
         woke = true;
     }
     return woke;
@@ -85,8 +87,8 @@ void World::updateSleep() {
         rest = u.segment<2>(dof).squaredNorm() < speed2 ? rest + dt : 0.0;
         ripe = ripe || rest >= kSleepSeconds;
     }
-    for (int k : dynamicBoxes_) {
-        const int dof = bodies_.boxes[k].dof;
+    for (int k : dynamicRigidBodies_) {
+        const int dof = bodies_.rigidBodies[k].dof;
         double& rest = restingSeconds_[particles + k];
         const bool slow =
             u.segment<2>(dof).squaredNorm() < speed2 && std::abs(u[dof + 2]) < kSleepTurnRate;
@@ -97,9 +99,9 @@ void World::updateSleep() {
     for (const auto& effect : effects_) {
         const int dof = effect->drivenDof();
         if (dof < 0 || dof >= layout_.dimension()) continue;
-        const int body = dof < layout_.boxBase()
+        const int body = dof < layout_.rigidBase()
                              ? dynamicParticles_[dof / 2]
-                             : particles + dynamicBoxes_[(dof - layout_.boxBase()) / 3];
+                             : particles + dynamicRigidBodies_[(dof - layout_.rigidBase()) / 3];
         restingSeconds_[body] = 0.0;
     }
     if (ripe) changed |= fallAsleep();
@@ -112,7 +114,7 @@ bool World::fallAsleep() {
     const int particles = static_cast<int>(bodies_.particles.size());
     islands_.reset(static_cast<int>(restingSeconds_.size()));
     const auto awakeBody = [&](bool rigid, int index) {
-        if (rigid) return bodies_.boxes[index].dof >= 0 ? particles + index : -1;
+        if (rigid) return bodies_.rigidBodies[index].dof >= 0 ? particles + index : -1;
         return bodies_.particles[index].dof >= 0 ? index : -1;
     };
     const auto tie = [&](int a, int b) {
@@ -124,11 +126,12 @@ bool World::fallAsleep() {
     int first = -1;
     if (coupled) {
         for (int k : dynamicParticles_) tie(first < 0 ? (first = k) : first, k);
-        for (int k : dynamicBoxes_) tie(first < 0 ? (first = particles + k) : first, particles + k);
+        for (int k : dynamicRigidBodies_)
+            tie(first < 0 ? (first = particles + k) : first, particles + k);
     }
     const auto springEnd = [&](const SpringEnd& end) {
         if (end.kind == SpringEnd::Kind::Anchor) return -1;
-        return awakeBody(end.kind == SpringEnd::Kind::Box, end.index);
+        return awakeBody(end.kind == SpringEnd::Kind::Rigid, end.index);
     };
     for (const Spring& s : bodies_.springs) tie(springEnd(s.a), springEnd(s.b));
     const auto jointEnd = [&](const JointBody& end) {
@@ -146,7 +149,7 @@ bool World::fallAsleep() {
     // Each island's least time at rest, and whether a joint holds it.
     const auto each = [&](auto&& fn) {
         for (int k : dynamicParticles_) fn(k);
-        for (int k : dynamicBoxes_) fn(particles + k);
+        for (int k : dynamicRigidBodies_) fn(particles + k);
     };
     each([&](int body) {
         const int root = islands_.find(body);
@@ -168,7 +171,7 @@ bool World::fallAsleep() {
         if (islandId_[root] < 0) islandId_[root] = nextIsland_++;
         sleepingIsland_[body] = islandId_[root];
         (body < particles ? bodies_.particles[body].asleep
-                          : bodies_.boxes[body - particles].asleep) = true;
+                          : bodies_.rigidBodies[body - particles].asleep) = true;
         any = true;
     });
     return any;

@@ -441,8 +441,8 @@ void TestController::mouseSpringOnABoxAndAcrossEdits() {
     SimulationController controller(doc);
     QVERIFY(doc.grab(QStringLiteral("crate"), {0.5, 0.25}, {2.0, 0.0}));
     QVERIFY(controller.advance(0.5));
-    QVERIFY(doc.world().boxAngularVelocity(0) != 0.0 || doc.world().boxAngle(0) != 0.0);
-    QVERIFY(doc.world().boxPosition(0).x() > 0.5);
+    QVERIFY(doc.world().bodyAngularVelocity(0) != 0.0 || doc.world().bodyAngle(0) != 0.0);
+    QVERIFY(doc.world().bodyPosition(0).x() > 0.5);
     QVERIFY(allFinite(doc.world()));
 
     // An edit rebuilds the world; the grab follows into the new one.

@@ -109,7 +109,7 @@ void TestDocument::addEveryKindOfObject() {
     box.size = {0.5, 0.25};
     QVERIFY(doc.addObject(box, nullptr, &id));
     QCOMPARE(id, QStringLiteral("b0"));
-    QCOMPARE(doc.world().boxes().size(), std::size_t(1));
+    QCOMPARE(doc.world().rigidBodies().size(), std::size_t(1));
 
     PlaneDesc floor;
     floor.point = {0.0, -1.0};
@@ -314,8 +314,8 @@ void TestDocument::setPropertyMergesAndReachesTheWorld() {
 
     QVERIFY(doc.setProperty(QStringLiteral("crate"), QStringLiteral("size.w"), 2.0));
     QVERIFY(doc.setProperty(QStringLiteral("crate"), QStringLiteral("mass"), 4.0));
-    QCOMPARE(doc.world().boxes()[0].size.x(), 2.0);
-    QCOMPARE(doc.world().boxes()[0].mass, 4.0);
+    QCOMPARE(doc.world().rigidBodies()[0].size.x(), 2.0);
+    QCOMPARE(doc.world().rigidBodies()[0].mass, 4.0);
     QVERIFY(doc.setProperty(QStringLiteral("s0"), QStringLiteral("stiffness"), 75.0));
     QCOMPARE(doc.world().springs()[0].stiffness, 75.0);
 
@@ -335,7 +335,7 @@ void TestDocument::setPinnedTogglesParticleAndBox() {
     QVERIFY(doc.world().particles()[0].pinned);
     QCOMPARE(doc.world().particles()[0].dof, -1);
     QVERIFY(doc.setPinned(QStringLiteral("crate"), true));
-    QVERIFY(doc.world().boxes()[0].isStatic);
+    QVERIFY(doc.world().rigidBodies()[0].isStatic);
     doc.undoStack()->undo();
     doc.undoStack()->undo();
     QVERIFY(!doc.setup().particles[0].pinned);
@@ -585,21 +585,21 @@ void TestDocument::disksAreEditedLikeBoxes() {
     QString id;
     QVERIFY(doc.addObject(disk, nullptr, &id));
     QCOMPARE(id, QStringLiteral("d0"));
-    QCOMPARE(doc.world().boxes().size(), std::size_t(1));
-    QVERIFY(doc.world().boxes()[0].shape == RigidShape::Disk);
-    QCOMPARE(doc.world().boxes()[0].radius, 0.4);
-    QCOMPARE(doc.world().boxes()[0].inertia, 0.5 * (std::numbers::pi * 0.16) * 0.16);
+    QCOMPARE(doc.world().rigidBodies().size(), std::size_t(1));
+    QVERIFY(doc.world().rigidBodies()[0].shape == RigidShape::Disk);
+    QCOMPARE(doc.world().rigidBodies()[0].radius, 0.4);
+    QCOMPARE(doc.world().rigidBodies()[0].inertia, 0.5 * (std::numbers::pi * 0.16) * 0.16);
 
     QVERIFY(doc.setProperty(id, QStringLiteral("radius"), 0.6));
     QCOMPARE(doc.setup().disks[0].radius, 0.6);
-    QCOMPARE(doc.world().boxes()[0].radius, 0.6);
+    QCOMPARE(doc.world().rigidBodies()[0].radius, 0.6);
     QVERIFY(doc.setPinned(id, true));
-    QVERIFY(doc.world().boxes()[0].isStatic);
+    QVERIFY(doc.world().rigidBodies()[0].isStatic);
     QVERIFY(doc.moveObject(id, {3.0, 4.0}));
-    QCOMPARE(doc.world().boxPosition(0), Vec2(3.0, 4.0));
+    QCOMPARE(doc.world().bodyPosition(0), Vec2(3.0, 4.0));
     QVERIFY(doc.deleteObjects({id}));
     QVERIFY(doc.setup().disks.empty());
-    QVERIFY(doc.world().boxes().empty());
+    QVERIFY(doc.world().rigidBodies().empty());
 
     doc.undoStack()->undo();  // the delete
     QCOMPARE(doc.setup().disks.size(), std::size_t(1));
@@ -610,7 +610,7 @@ void TestDocument::disksAreEditedLikeBoxes() {
     QVERIFY(!doc.setup().disks[0].isStatic);
     QCOMPARE(doc.setup().disks[0].position, (Point2{1.0, 2.0}));
     doc.undoStack()->redo();
-    QCOMPARE(doc.world().boxes()[0].radius, 0.6);
+    QCOMPARE(doc.world().rigidBodies()[0].radius, 0.6);
     QCOMPARE(propertyValue(doc.setup(), id, QStringLiteral("mass")).value_or(0.0),
              std::numbers::pi * 0.36);
 }

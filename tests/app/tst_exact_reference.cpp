@@ -184,7 +184,7 @@ private slots:
             4.0 * std::sqrt(lengthEq / 9.81) * std::comp_ellint_1(std::sin(0.5 * theta0));
         QCOMPARE(ref->periods().size(), std::size_t(1));
         QVERIFY(std::abs(ref->periods()[0] / period - 1.0) < 1e-14);
-        const int dof = world->boxes()[0].dof;
+        const int dof = world->rigidBodies()[0].dof;
         QVERIFY(ref->covers(dof) && ref->covers(dof + 1) && ref->covers(dof + 2));
         // The start and half a period on: mirrored through the vertical, turned by −2·θ0.
         QVERIFY(std::abs(ref->position(dof + 2, 0.0) - 0.4) < 1e-14);
@@ -228,7 +228,7 @@ private slots:
         const double period =
             4.0 * std::sqrt(length / 9.81) * std::comp_ellint_1(std::sin(0.5 * theta0));
         QVERIFY(std::abs(ref->periods()[0] / period - 1.0) < 1e-14);
-        const int dof = world->boxes()[0].dof;
+        const int dof = world->rigidBodies()[0].dof;
         QVERIFY(std::abs(ref->position(dof + 2, 2.0) - 2.0 * spin) < 1e-14);
         const double departure = largestDeparture(*world, *ref, dof, 4.0);
         qInfo("box on a rod at 45 deg: largest departure from the closed form over 4 s %.2e",
@@ -278,11 +278,11 @@ private slots:
         const double t = 1.0;
         while (world->time() < t - 1e-9) QVERIFY(world->step());
         for (const Weight& w : weights) {
-            const auto body = std::find_if(world->boxes().begin(), world->boxes().end(),
-                                           [&](const Box& b) { return b.id == w.id; });
+            const auto body = std::find_if(world->rigidBodies().begin(), world->rigidBodies().end(),
+                                           [&](const RigidBody& b) { return b.id == w.id; });
             const auto desc = std::find_if(scene.boxes.begin(), scene.boxes.end(),
                                            [&](const BoxDesc& b) { return b.id == w.id; });
-            QVERIFY(body != world->boxes().end() && desc != scene.boxes.end());
+            QVERIFY(body != world->rigidBodies().end() && desc != scene.boxes.end());
             const int dof = body->dof;
             const double y0 = desc->position[1];
             const double expected = y0 + 0.5 * w.acceleration * t * t;
@@ -324,9 +324,9 @@ private slots:
         const double t = 1.0;
         while (world->time() < t - 1e-9) QVERIFY(world->step());
         for (const Body& b : bodies) {
-            const auto body = std::find_if(world->boxes().begin(), world->boxes().end(),
-                                           [&](const Box& x) { return x.id == b.id; });
-            QVERIFY(body != world->boxes().end());
+            const auto body = std::find_if(world->rigidBodies().begin(), world->rigidBodies().end(),
+                                           [&](const RigidBody& x) { return x.id == b.id; });
+            QVERIFY(body != world->rigidBodies().end());
             const int dof = body->dof;
             const Vec2 start = body->position;
             const Vec2 exact(ref->position(dof, t), ref->position(dof + 1, t));
@@ -400,7 +400,7 @@ private slots:
         QVERIFY(std::isinf(ref->validUntil()));
         const double m = 0.1, v = 20.0, M = 2.0, d = 0.15, e = 0.5, I = M * 1.25 / 12.0;
         const double J = (1.0 + e) * m * v / (1.0 + m / M + m * d * d / I);
-        const int pellet = world->particles()[0].dof, box = world->boxes()[0].dof;
+        const int pellet = world->particles()[0].dof, box = world->rigidBodies()[0].dof;
         const double impact = 2.45 / 20.0;
         QVERIFY(std::abs(ref->position(pellet, impact) - (-0.55)) < 1e-9);
         const double later = 2.0;

@@ -41,7 +41,7 @@ struct Bounds {
 };
 
 // The reach of a rigid body from its centre, as the canvas frames it: half its diagonal.
-double reachOf(const Box& box) {
+double reachOf(const RigidBody& box) {
     return 0.5 * box.size.norm();
 }
 
@@ -86,15 +86,15 @@ private slots:
             QStringLiteral(PHASEBOX_SOURCE_DIR "/resources/lessons/rolling-race.phasebox.json"));
         auto world = buildWorld(scene).world;
         Bounds view;
-        for (int i = 0; i < static_cast<int>(world->boxes().size()); ++i)
-            view.include(world->boxPosition(i), reachOf(world->boxes()[i]));
+        for (int i = 0; i < static_cast<int>(world->rigidBodies().size()); ++i)
+            view.include(world->bodyPosition(i), reachOf(world->rigidBodies()[i]));
         QVERIFY(view.hi[0] - view.lo[0] < 20.0);  // still a view a class can read
         while (world->time() < scene.simulation.duration - 1e-9) {
             QVERIFY(world->step());
-            for (int i = 0; i < static_cast<int>(world->boxes().size()); ++i) {
-                const Box& body = world->boxes()[i];
+            for (int i = 0; i < static_cast<int>(world->rigidBodies().size()); ++i) {
+                const RigidBody& body = world->rigidBodies()[i];
                 if (body.isStatic) continue;
-                QVERIFY2(view.holds(world->boxPosition(i), reachOf(body)),
+                QVERIFY2(view.holds(world->bodyPosition(i), reachOf(body)),
                          qPrintable(QStringLiteral("%1 leaves the view at t = %2")
                                         .arg(QString::fromStdString(body.id))
                                         .arg(world->time())));

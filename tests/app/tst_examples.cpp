@@ -62,8 +62,8 @@ int particleIndex(const World& world, const std::string& id) {
 }
 
 int boxIndex(const World& world, const std::string& id) {
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-        if (world.boxes()[i].id == id) return i;
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+        if (world.rigidBodies()[i].id == id) return i;
     return -1;
 }
 
@@ -218,8 +218,8 @@ void TestExamples::everyExampleRunsStably() {
         // (the car's), and are not distances.
         for (int i = 0; i < static_cast<int>(world->particles().size()); ++i)
             farthest = std::max(farthest, world->particlePosition(i).cwiseAbs().maxCoeff());
-        for (int i = 0; i < static_cast<int>(world->boxes().size()); ++i)
-            farthest = std::max(farthest, world->boxPosition(i).cwiseAbs().maxCoeff());
+        for (int i = 0; i < static_cast<int>(world->rigidBodies().size()); ++i)
+            farthest = std::max(farthest, world->bodyPosition(i).cwiseAbs().maxCoeff());
     }
     const double moving = maxKinetic + (maxPotential - minPotential);
     qInfo("%-36s %-17s %5.1f s: energy in motion %9.4g J, drift in [%.3g, %.3g] J, farthest %.2f m",
@@ -457,10 +457,10 @@ void TestExamples::boxesOnTheInclineStickOrSlideAsTanThetaPredicts() {
         auto world = build(scene);
         const int i = boxIndex(*world, box.id);
         QVERIFY(runTo(*world, 0.25));  // let the contact settle
-        const double s0 = world->boxPosition(i).dot(down), v0 = world->boxVelocity(i).dot(down);
+        const double s0 = world->bodyPosition(i).dot(down), v0 = world->bodyVelocity(i).dot(down);
         const double t = 1.5;
         QVERIFY(runTo(*world, 0.25 + t));
-        const double s1 = world->boxPosition(i).dot(down);
+        const double s1 = world->bodyPosition(i).dot(down);
         const double measured = 2.0 * (s1 - s0 - v0 * t) / (t * t);
         const double expected = sticks ? 0.0 : g * (std::sin(theta) - mu * std::cos(theta));
         qInfo(
@@ -471,7 +471,7 @@ void TestExamples::boxesOnTheInclineStickOrSlideAsTanThetaPredicts() {
         if (sticks) {
             ++sticking;
             QVERIFY(std::abs(s1 - s0) < 0.005);
-            QVERIFY(std::abs(world->boxAngle(i) - box.angle) < 0.01);
+            QVERIFY(std::abs(world->bodyAngle(i) - box.angle) < 0.01);
         } else {
             ++sliding;
             QVERIFY(std::abs(measured - expected) < 0.03 * expected);
@@ -604,10 +604,10 @@ void TestExamples::jointedExamplesHoldAndDoWhatTheySay() {
     QVERIFY(position < 1e-3);
     QVERIFY(angle < 1e-3);
     if (file.startsWith(QLatin1String("chain-bridge"))) {
-        const Vec2 crate = world->boxPosition(boxIndex(*world, "crate"));
-        const double pillar = world->boxPosition(boxIndex(*world, "right_pillar")).x();
+        const Vec2 crate = world->bodyPosition(boxIndex(*world, "crate"));
+        const double pillar = world->bodyPosition(boxIndex(*world, "right_pillar")).x();
         qInfo("crate at (%.3f, %.3f) m, speed %.3f m/s", crate.x(), crate.y(),
-              world->boxVelocity(boxIndex(*world, "crate")).norm());
+              world->bodyVelocity(boxIndex(*world, "crate")).norm());
         QVERIFY(std::abs(crate.x()) < pillar - 0.5);
         QVERIFY(crate.y() > 2.0 && crate.y() < 3.0);  // on the bridge, which hangs at 2.4-3 m
     } else if (file.startsWith(QLatin1String("ragdoll"))) {
@@ -620,14 +620,15 @@ void TestExamples::jointedExamplesHoldAndDoWhatTheySay() {
             auto run = nudge == 0.0 ? std::move(world) : build(nudged);
             while (run->time() < kMaxRun - 0.5 * scene.simulation.dt) QVERIFY(run->step());
             double right = -1e9, low = 1e9;
-            for (int i = 0; i < static_cast<int>(run->boxes().size()); ++i) {
-                if (run->boxes()[i].isStatic) continue;
-                right = std::max(right, run->boxPosition(i).x());
-                low = std::min(low, run->boxPosition(i).y());
+            for (int i = 0; i < static_cast<int>(run->rigidBodies().size()); ++i) {
+                if (run->rigidBodies()[i].isStatic) continue;
+                right = std::max(right, run->bodyPosition(i).x());
+                low = std::min(low, run->bodyPosition(i).y());
             }
             const int wall = boxIndex(*run, "wall");
             QVERIFY(wall >= 0);
-            const double face = run->boxPosition(wall).x() - 0.5 * run->boxes()[wall].size.x();
+            const double face =
+                run->bodyPosition(wall).x() - 0.5 * run->rigidBodies()[wall].size.x();
             qInfo(
                 "torso nudged %g m: parts at x <= %.3f m (wall face %.2f m), y >= %.3f m, "
                 "kinetic %.3g J",
@@ -640,11 +641,11 @@ void TestExamples::jointedExamplesHoldAndDoWhatTheySay() {
         }
     } else {
         const int chassis = boxIndex(*world, "chassis");
-        const Vec2 at = world->boxPosition(chassis);
+        const Vec2 at = world->bodyPosition(chassis);
         qInfo("car at (%.3f, %.3f) m, %.3f m/s, tilted %.3f rad", at.x(), at.y(),
-              world->boxVelocity(chassis).x(), world->boxAngle(chassis));
+              world->bodyVelocity(chassis).x(), world->bodyAngle(chassis));
         QVERIFY(at.y() > 1.3 && at.x() > 2.5 && at.x() < 6.0);  // on the 1 m plateau
-        QVERIFY(std::abs(world->boxAngle(chassis)) < 0.1);
+        QVERIFY(std::abs(world->bodyAngle(chassis)) < 0.1);
         QVERIFY(world->energy().workNc > 0.0);  // the motors put work in
     }
 }

@@ -64,8 +64,8 @@ std::unique_ptr<World> build(const SceneDesc& scene, const std::string& integrat
 
 int indexOf(const World& world, const std::string& id, bool box = false) {
     if (box) {
-        for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-            if (world.boxes()[i].id == id) return i;
+        for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+            if (world.rigidBodies()[i].id == id) return i;
     } else {
         for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
             if (world.particles()[i].id == id) return i;
@@ -299,7 +299,7 @@ void TestLessons::ballsReboundToESquaredHAndCratesStopAfterVSquaredOverTwoMuG() 
     std::vector<int> crates;
     for (const char* id : {"on_ice", "on_wood", "on_rubber"}) {
         crates.push_back(indexOf(*world, id, true));
-        start.push_back(world->boxPosition(crates.back()).x());
+        start.push_back(world->bodyPosition(crates.back()).x());
         stopped.push_back(-1.0);
     }
     while (world->time() < scene.simulation.duration - 1e-9) {
@@ -312,8 +312,8 @@ void TestLessons::ballsReboundToESquaredHAndCratesStopAfterVSquaredOverTwoMuG() 
             done[i] = bounced[i] && vy < 0.0;
         }
         for (std::size_t k = 0; k < crates.size(); ++k)
-            if (stopped[k] < 0.0 && std::abs(world->boxVelocity(crates[k]).x()) < 1e-3)
-                stopped[k] = world->boxPosition(crates[k]).x() - start[k];
+            if (stopped[k] < 0.0 && std::abs(world->bodyVelocity(crates[k]).x()) < 1e-3)
+                stopped[k] = world->bodyPosition(crates[k]).x() - start[k];
     }
     for (int i = 0; i < balls; ++i) {
         const double e = scene.particles[i].restitution, expected = e * e * 2.0;
@@ -363,22 +363,22 @@ void TestLessons::offCentreHitSpinsTheBoxAndKeepsAngularMomentum() {
     auto momenta = [&](Eigen::Vector2d& p) {
         const Eigen::Vector2d x = world->particlePosition(0) - impact,
                               u = world->particleVelocity(0);
-        const Eigen::Vector2d X = world->boxPosition(0) - impact, U = world->boxVelocity(0);
+        const Eigen::Vector2d X = world->bodyPosition(0) - impact, U = world->bodyVelocity(0);
         p = m * u + M * U;
         return m * (x.x() * u.y() - x.y() * u.x()) + M * (X.x() * U.y() - X.y() * U.x()) +
-               I * world->boxAngularVelocity(0);
+               I * world->bodyAngularVelocity(0);
     };
     Eigen::Vector2d p0, p1;
     const double l0 = momenta(p0);
     QVERIFY(runDuration(*world, scene.simulation.duration));
     const double l1 = momenta(p1);
-    const double omega = world->boxAngularVelocity(0);
+    const double omega = world->bodyAngularVelocity(0);
     qInfo(
         "box: ω = %.4f rad/s (closed form %.4f), V = %.4f m/s (%.4f); L about the impact "
         "point %.2e → %.2e, momentum change %.2e",
-        omega, -J * d / I, world->boxVelocity(0).x(), J / M, l0, l1, (p1 - p0).norm());
+        omega, -J * d / I, world->bodyVelocity(0).x(), J / M, l0, l1, (p1 - p0).norm());
     QVERIFY(std::abs(omega + J * d / I) < 0.02 * J * d / I);
-    QVERIFY(std::abs(world->boxVelocity(0).x() - J / M) < 0.02 * J / M);
+    QVERIFY(std::abs(world->bodyVelocity(0).x() - J / M) < 0.02 * J / M);
     QVERIFY(std::abs(l1 - l0) < 1e-3 * m * v * d);
     QVERIFY((p1 - p0).norm() < 1e-9 * m * v);
 }
@@ -431,17 +431,17 @@ void TestLessons::theRollingRaceFinishesInTheOrderOfItsClosedForms() {
     std::vector<Vec2> start;
     for (const auto& r : racers) {
         index.push_back(indexOf(*world, r.id, true));
-        start.push_back(world->boxPosition(index.back()));
+        start.push_back(world->bodyPosition(index.back()));
     }
     std::vector<double> finished(std::size(racers), -1.0);
     while (world->time() < scene.simulation.duration - 1e-9) {
         const double before = world->time();
         std::vector<double> was;
         for (std::size_t k = 0; k < index.size(); ++k)
-            was.push_back((world->boxPosition(index[k]) - start[k]).dot(down));
+            was.push_back((world->bodyPosition(index[k]) - start[k]).dot(down));
         QVERIFY(world->step());
         for (std::size_t k = 0; k < index.size(); ++k) {
-            const double now = (world->boxPosition(index[k]) - start[k]).dot(down);
+            const double now = (world->bodyPosition(index[k]) - start[k]).dot(down);
             if (finished[k] < 0.0 && now >= length)  // interpolated within the step
                 finished[k] =
                     before + (world->time() - before) * (length - was[k]) / (now - was[k]);
@@ -560,8 +560,8 @@ void TestLessons::atwoodMachinesAccelerateAtTheClosedForm() {
     QCOMPARE(machines.size(), std::size_t(2));
     QVERIFY(runDuration(*world, 0.5));  // before either heavy weight lands
     for (const Machine& m : machines) {
-        const double vHeavy = world->boxVelocity(m.heavy).y(),
-                     vLight = world->boxVelocity(m.light).y();
+        const double vHeavy = world->bodyVelocity(m.heavy).y(),
+                     vLight = world->bodyVelocity(m.light).y();
         qInfo("a = %.4f m/s^2 (closed form %.4f): heavy %.4f m/s, light %.4f m/s at t = %.2f s",
               -vHeavy / world->time(), m.a, vHeavy, vLight, world->time());
         QVERIFY(std::abs(-vHeavy / world->time() - m.a) < 1e-3 * m.a);
@@ -572,11 +572,11 @@ void TestLessons::atwoodMachinesAccelerateAtTheClosedForm() {
         QVERIFY(world->step());
         QVERIFY(world->jointErrors().position < 1e-3);
         for (const Machine& m : machines)
-            highest = std::max(highest, world->boxPosition(m.light).y() + m.top - m.groundB);
+            highest = std::max(highest, world->bodyPosition(m.light).y() + m.top - m.groundB);
     }
     for (const Machine& m : machines) {
         const double bottom =
-            world->boxPosition(m.heavy).y() - 0.5 * world->boxes()[m.heavy].size.y();
+            world->bodyPosition(m.heavy).y() - 0.5 * world->rigidBodies()[m.heavy].size.y();
         QVERIFY2(std::abs(bottom) < 0.01, qPrintable(QString::number(bottom)));
     }
     QVERIFY2(highest < -1.0, qPrintable(QString::number(highest)));
@@ -635,7 +635,7 @@ void TestLessons::threeWaysToCollide() {
     double lastHighest = 0.0, middleFarthest = 0.0;
     const double lastRest = world->particlePosition(last).y();
     const double middleRest = world->particlePosition(middle).x();
-    const double topStart = world->boxPosition(top).y();
+    const double topStart = world->bodyPosition(top).y();
     double topFarthest = 0.0;
     while (world->time() < 4.0) {
         const Eigen::Vector2d v0 = world->particleVelocity(ball);
@@ -655,7 +655,7 @@ void TestLessons::threeWaysToCollide() {
         lastHighest = std::max(lastHighest, world->particlePosition(last).y() - lastRest);
         middleFarthest =
             std::max(middleFarthest, std::abs(world->particlePosition(middle).x() - middleRest));
-        topFarthest = std::max(topFarthest, std::abs(world->boxPosition(top).y() - topStart));
+        topFarthest = std::max(topFarthest, std::abs(world->bodyPosition(top).y() - topStart));
     }
     const double released = 2.0 * (1.0 - std::cos(40.0 * kPi / 180.0));  // the first ball's drop
     qInfo(

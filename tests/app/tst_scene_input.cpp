@@ -263,7 +263,7 @@ private slots:
                              "most 250000 are allowed"));
 
         SceneDesc boxes;
-        boxes.boxes.resize(SceneLimits::kMaxBoxes + 1);
+        boxes.boxes.resize(SceneLimits::kMaxRigidBodies + 1);
         for (BoxDesc& b : boxes.boxes) b.size = {1.0, 1.0};
         QCOMPARE(firstIssue(boxes),
                  std::string("boxes: at most 25000 rigid bodies (boxes, disks and polygons) are "

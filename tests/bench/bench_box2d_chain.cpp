@@ -192,10 +192,10 @@ struct PhaseboxEngine {
         return w->contacts() ? static_cast<int>(w->contacts()->contacts().size()) : 0;
     }
     Point2 position(int i) const {
-        const Vec2 p = w->boxPosition(i);
+        const Vec2 p = w->bodyPosition(i);
         return {p.x(), p.y()};
     }
-    double angle(int i) const { return w->boxAngle(i); }
+    double angle(int i) const { return w->bodyAngle(i); }
 };
 
 struct Box2dEngine {

@@ -148,10 +148,10 @@ struct Pose {
 
 Pose poseOf(const World& world) {
     Pose pose;
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i) {
-        const Vec2 p = world.boxPosition(i);
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i) {
+        const Vec2 p = world.bodyPosition(i);
         pose.position.push_back({p.x(), p.y()});
-        pose.angle.push_back(world.boxAngle(i));
+        pose.angle.push_back(world.bodyAngle(i));
     }
     return pose;
 }

@@ -170,7 +170,7 @@ SceneResult measure(const SceneSpec& spec, int steps, int repeat, bool quick) {
     result.spec = &spec;
     BuildResult built = buildWorld(spec.make());
     World& world = *built.world;
-    result.bodies = static_cast<int>(world.boxes().size() + world.particles().size());
+    result.bodies = static_cast<int>(world.rigidBodies().size() + world.particles().size());
 
     // Settle, timing each step for the peak (the landing of the rain is its worst moment).
     const int minWarmup = quick ? spec.minWarmup / 2 : spec.minWarmup;

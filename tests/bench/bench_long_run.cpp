@@ -54,7 +54,7 @@ RunFigures run(const std::string& name, SceneDesc scene, double simulatedSeconds
     const long long steps = static_cast<long long>(std::ceil(simulatedSeconds / dt - 1e-9));
     const long long stepsPerMinute = static_cast<long long>(std::llround(60.0 / dt));
     std::printf("%s: %zu particles, %zu boxes, dt = %.6g s, %d sub-steps, %lld steps\n",
-                name.c_str(), world.particles().size(), world.boxes().size(), dt,
+                name.c_str(), world.particles().size(), world.rigidBodies().size(), dt,
                 world.settings().substeps, steps);
     f.initialEnergy = world.energy().initial;
     const auto start = bench::Clock::now();
@@ -73,8 +73,8 @@ RunFigures run(const std::string& name, SceneDesc scene, double simulatedSeconds
                    std::isfinite(e.kinetic) && std::isfinite(e.potential) && std::isfinite(e.drift);
         for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
             f.maxSpeed = std::max(f.maxSpeed, world.particleVelocity(i).norm());
-        for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-            f.maxSpeed = std::max(f.maxSpeed, world.boxVelocity(i).norm());
+        for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+            f.maxSpeed = std::max(f.maxSpeed, world.bodyVelocity(i).norm());
         const long long rss = residentBytes();
         if (k == stepsPerMinute) f.rssFirstMinute = rss;
         f.rssLastMinute = rss;

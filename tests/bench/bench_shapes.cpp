@@ -27,8 +27,8 @@ constexpr int kDefaultRepeat = 7;
 
 double largestDisplacement(const World& world) {
     double worst = 0.0;
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-        worst = std::max(worst, (world.boxPosition(i) - world.boxes()[i].position).norm());
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+        worst = std::max(worst, (world.bodyPosition(i) - world.rigidBodies()[i].position).norm());
     return worst;
 }
 

@@ -41,7 +41,7 @@ using sleep_scenes::pyramid;
 
 int asleep(const World& w) {
     int n = 0;
-    for (int i = 0; i < kBoxes; ++i) n += w.boxes()[i].asleep;
+    for (int i = 0; i < kBoxes; ++i) n += w.rigidBodies()[i].asleep;
     return n;
 }
 
@@ -96,23 +96,23 @@ Wake runSlider(bool sleep) {
     Wake r;
     auto w = buildWorld(sleep_scenes::pyramidAndSlider(sleep)).world;
     int apex = -1;
-    for (int i = 0; i < static_cast<int>(w->boxes().size()); ++i)
-        if (w->boxes()[i].id == "r19c0") apex = i;
+    for (int i = 0; i < static_cast<int>(w->rigidBodies().size()); ++i)
+        if (w->rigidBodies()[i].id == "r19c0") apex = i;
     std::vector<Vec2> setup(kBoxes);
-    for (int i = 0; i < kBoxes; ++i) setup[i] = w->boxPosition(i);
+    for (int i = 0; i < kBoxes; ++i) setup[i] = w->bodyPosition(i);
     bool woke = false;
     while (w->time() < 16.0) {
         w->step();
         for (int i = 0; i < kBoxes; ++i)
             r.largestDisplacement =
-                std::max(r.largestDisplacement, (w->boxPosition(i) - setup[i]).norm());
+                std::max(r.largestDisplacement, (w->bodyPosition(i) - setup[i]).norm());
         const int n = asleep(*w);
         if (r.asleepAt < 0.0 && n == kBoxes) r.asleepAt = w->time();
         if (r.asleepAt > 0.0 && n < kBoxes) woke = true;
         if (woke && r.asleepAgainAt < 0.0 && n == kBoxes) r.asleepAgainAt = w->time();
-        if (w->time() < 7.0) r.apexBefore = w->boxPosition(apex).x();
+        if (w->time() < 7.0) r.apexBefore = w->bodyPosition(apex).x();
     }
-    r.apexAfter = w->boxPosition(apex).x();
+    r.apexAfter = w->bodyPosition(apex).x();
     return r;
 }
 

@@ -3,6 +3,7 @@
 // control is reached, so none is left to the mouse. Also the high-contrast theme and the line and
 // text scales (View menu), which repaint the window, the canvas and the plots.
 
+#include "MainWindowTestSupport.h"
 #include "app/desktop/MainWindow.h"
 #include "app/desktop/presenters/AppearancePresenter.h"
 #include "ui/canvas/SceneView.h"
@@ -19,6 +20,7 @@
 #include <algorithm>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 
@@ -89,7 +91,7 @@ void TestAccessibility::tabReachesEveryControlAndEachHasAName() {
         if (dock->isHidden()) continue;
         dock->raise();
         QApplication::processEvents();
-        const QList<QWidget*> walk = tabWalk(window.canvas());
+        const QList<QWidget*> walk = tabWalk(canvasOf(window));
         walked = std::max(walked, static_cast<int>(walk.size()));
         for (QWidget* w : walk) {
             if (qEnvironmentVariableIsSet("PHASEBOX_LIST_NAMES"))
@@ -106,8 +108,8 @@ void TestAccessibility::tabReachesEveryControlAndEachHasAName() {
                         unnamed.join(QLatin1Char('\n'))));
     QVERIFY2(unreached.isEmpty(), qPrintable(QStringLiteral("controls Tab does not reach:\n") +
                                              unreached.join(QLatin1Char('\n'))));
-    QVERIFY(!ui::accessibleNameOf(window.canvas()).isEmpty());
-    QVERIFY(!window.canvas()->accessibleDescription().isEmpty());
+    QVERIFY(!ui::accessibleNameOf(canvasOf(window)).isEmpty());
+    QVERIFY(!canvasOf(window)->accessibleDescription().isEmpty());
 }
 
 void TestAccessibility::highContrastAndScalesRepaintTheWindow() {
@@ -115,30 +117,30 @@ void TestAccessibility::highContrastAndScalesRepaintTheWindow() {
     window.resize(1024, 700);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
-    AppearancePresenter* look = window.appearance();
+    AppearancePresenter* look = appearanceOf(window);
     QVERIFY(look);
     QVERIFY(!look->appearance().highContrast);
     const QColor normalWindow = QApplication::palette().color(QPalette::Window);
     window.action(QStringLiteral("highContrast"))->trigger();
     QVERIFY(look->appearance().highContrast);
     QCOMPARE(QApplication::palette().color(QPalette::Window), QColor(Qt::black));
-    QCOMPARE(window.canvas()->renderOptions().background, QColor(Qt::black));
-    QCOMPARE(window.canvas()->renderOptions().colors.selection, ui::okabeIto::yellow);
+    QCOMPARE(canvasOf(window)->renderOptions().background, QColor(Qt::black));
+    QCOMPARE(canvasOf(window)->renderOptions().colors.selection, ui::okabeIto::yellow);
     window.action(QStringLiteral("lineScale200"))->trigger();
     window.action(QStringLiteral("textScale150"))->trigger();
     QCOMPARE(look->appearance().lineScale, 2.0);
     QCOMPARE(look->appearance().textScale, 1.5);
-    QCOMPARE(window.canvas()->renderOptions().lineWidthScale, 2.0);
-    QCOMPARE(window.canvas()->renderOptions().fontScale, 1.5);
+    QCOMPARE(canvasOf(window)->renderOptions().lineWidthScale, 2.0);
+    QCOMPARE(canvasOf(window)->renderOptions().fontScale, 1.5);
     // Presentation mode multiplies the user's scales.
     window.setPresentationMode(true);
-    QCOMPARE(window.canvas()->renderOptions().lineWidthScale, 4.0);
+    QCOMPARE(canvasOf(window)->renderOptions().lineWidthScale, 4.0);
     window.setPresentationMode(false);
     window.action(QStringLiteral("highContrast"))->trigger();
     window.action(QStringLiteral("lineScale100"))->trigger();
     window.action(QStringLiteral("textScale100"))->trigger();
     QCOMPARE(QApplication::palette().color(QPalette::Window), normalWindow);
-    QCOMPARE(window.canvas()->renderOptions().background, ui::RenderOptions{}.background);
+    QCOMPARE(canvasOf(window)->renderOptions().background, ui::RenderOptions{}.background);
     QCOMPARE(look->appearance(), ui::Appearance{});
 }
 

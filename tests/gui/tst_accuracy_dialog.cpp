@@ -4,6 +4,7 @@
 // chart, the dt labels do not overlap, "lower is better" is said, and an odd order is explained
 // in words (RK4 at round-off, explicit Euler unstable on a stiff spring).
 
+#include "MainWindowTestSupport.h"
 #include "app/desktop/AccuracyDialog.h"
 #include "app/desktop/MainWindow.h"
 #include "app/document/Document.h"
@@ -30,6 +31,7 @@
 #include <cmath>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 // Leaves only these integrators checked.
@@ -89,7 +91,7 @@ private slots:
         MainWindow w;
         QVERIFY(w.openFile(QStringLiteral(":/scenes/spring-oscillator.phasebox.json"), true));
         w.action("accuracyLab")->trigger();
-        AccuracyDialog* dialog = w.accuracyDialog();
+        AccuracyDialog* dialog = accuracyDialogOf(w);
         QVERIFY(dialog->isVisible());
         choose(*dialog, {"explicit_euler", "rk4"});
         // Not a whole number of periods (T = 1 s and 2 s), where errors partly cancel.
@@ -163,7 +165,7 @@ private slots:
         MainWindow w;
         QVERIFY(w.openFile(QStringLiteral(":/scenes/spring-oscillator.phasebox.json"), true));
         w.action("accuracyLab")->trigger();
-        AccuracyDialog* dialog = w.accuracyDialog();
+        AccuracyDialog* dialog = accuracyDialogOf(w);
         QVERIFY(runStudy(*dialog));  // every method, the default steps: the crowded case
         auto* view = dialog->findChild<QChartView*>(QStringLiteral("workPrecisionChart"));
         QVERIFY(view);
@@ -229,7 +231,7 @@ private slots:
         MainWindow w;
         QVERIFY(w.openFile(QStringLiteral(":/scenes/spring-oscillator.phasebox.json"), true));
         w.action("accuracyLab")->trigger();
-        AccuracyDialog* dialog = w.accuracyDialog();
+        AccuracyDialog* dialog = accuracyDialogOf(w);
         choose(*dialog, {"rk4"});
         setLine(*dialog, 0,
                 QStringLiteral("1/60, 1/120, 1/240, 1/480, 1/960, 1/1920, 1/3840, 1/7680, "
@@ -274,7 +276,7 @@ private slots:
         MainWindow w;
         QVERIFY(w.openFile(QStringLiteral(":/scenes/stiff-spring-blowup.phasebox.json"), true));
         w.action("accuracyLab")->trigger();
-        AccuracyDialog* dialog = w.accuracyDialog();
+        AccuracyDialog* dialog = accuracyDialogOf(w);
         choose(*dialog, {"explicit_euler", "rk4"});
         setLine(*dialog, 1, QStringLiteral("1"));
         QVERIFY(runStudy(*dialog));
@@ -301,7 +303,7 @@ private slots:
     void cancelStopsTheStudy() {
         MainWindow w;
         QVERIFY(w.openFile(QStringLiteral(":/scenes/box-pyramid.phasebox.json"), true));
-        AccuracyDialog* dialog = w.accuracyDialog();
+        AccuracyDialog* dialog = accuracyDialogOf(w);
         dialog->setScene(w.document().setup());
         dialog->findChildren<QLineEdit*>()[1]->setText(QStringLiteral("10"));
         QSignalSpy finished(&dialog->study(), &AccuracyStudy::finished);

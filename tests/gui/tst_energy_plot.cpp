@@ -28,6 +28,7 @@
 #include <memory>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 constexpr double kMass = 1.0;
@@ -75,17 +76,17 @@ void TestEnergyPlot::boxDrawnInANewSceneLeavesDriftAndCorrectionFlat() {
     // Drawn 1 m above the new scene's ground (y = −2 m): it falls, lands and lies there.
     QCOMPARE(w.document().setup().planes.size(), std::size_t(1));
     const double ground = w.document().setup().planes[0].point[1];
-    const QPoint from = w.canvas()->toWidget(QPointF(-0.3, ground + 1.4)).toPoint();
-    const QPoint to = w.canvas()->toWidget(QPointF(0.3, ground + 1.0)).toPoint();
+    const QPoint from = canvasOf(w)->toWidget(QPointF(-0.3, ground + 1.4)).toPoint();
+    const QPoint to = canvasOf(w)->toWidget(QPointF(0.3, ground + 1.0)).toPoint();
     w.action("toolBox")->trigger();
-    testing::drag(w.canvas(), from, to);
+    testing::drag(canvasOf(w), from, to);
     QCOMPARE(w.document().setup().boxes.size(), std::size_t(1));
     QVERIFY(w.document().setup().boxes[0].position[1] > ground + 1.0);
     const double mass = w.document().setup().boxes[0].resolvedMass();
     QVERIFY(w.controller().advance(10.0));
     w.refreshNow();
 
-    QChart* chart = w.plotsPanel()->energyView()->chart();
+    QChart* chart = plotsPanelOf(w)->energyView()->chart();
     QLineSeries* drift = seriesNamed(chart, QStringLiteral("drift"));
     QLineSeries* correction = seriesNamed(chart, QStringLiteral("correction"));
     QVERIFY(drift && correction);

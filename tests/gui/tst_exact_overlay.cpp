@@ -4,6 +4,7 @@
 // themselves (x = cos 2t for the midpoint lesson's spring, the pendulum's circle), not against
 // numbers the code printed. A scene with contacts has none, and the View action clears it.
 
+#include "MainWindowTestSupport.h"
 #include "app/desktop/MainWindow.h"
 #include "app/desktop/presenters/ExactPresenter.h"
 #include "app/document/Document.h"
@@ -28,6 +29,7 @@
 #include <numbers>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 
@@ -64,7 +66,7 @@ private slots:
     void midpointLessonShowsCosTwoT() {
         Window window;
         window.open(QStringLiteral(":/lessons/midpoint-vs-rk4.phasebox.json"));
-        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("harmonic oscillator"));
+        QCOMPARE(exactSolutionOf(window.w)->kind(), QStringLiteral("harmonic oscillator"));
         QVERIFY(window.w.controller().advance(5.0));
         window.w.document().setSelection({QStringLiteral("ball")});
         window.w.refreshNow();
@@ -117,7 +119,7 @@ private slots:
     void pendulumGhostsStayOnTheirCircles() {
         Window window;
         window.open(QStringLiteral(":/lessons/simple-pendulum.phasebox.json"));
-        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("simple pendulum"));
+        QCOMPARE(exactSolutionOf(window.w)->kind(), QStringLiteral("simple pendulum"));
         const World& world = window.w.document().world();
         QVERIFY(window.w.controller().advance(1.7));
         window.w.refreshNow();
@@ -138,11 +140,11 @@ private slots:
     void penaltyBallHasItsClosedFormInTheLesson() {
         Window window;
         window.open(QStringLiteral(":/lessons/three-ways-to-collide.phasebox.json"));
-        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("bounce"));  // impulses
+        QCOMPARE(exactSolutionOf(window.w)->kind(), QStringLiteral("bounce"));  // impulses
         SimulationDesc simulation = window.w.document().setup().simulation;
         simulation.contactModel = ContactModel::Penalty;
         QVERIFY(window.w.document().applySimulationSettings(simulation));
-        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("penalty bounce"));
+        QCOMPARE(exactSolutionOf(window.w)->kind(), QStringLiteral("penalty bounce"));
         const double g = 9.81, h0 = 2.25, r = 0.25;
         QVERIFY(window.w.controller().advance(0.5));
         window.w.refreshNow();
@@ -153,7 +155,7 @@ private slots:
         QVERIFY(std::abs(ghost.x() + 4.0) < 1e-12);
         // The first rebound's apex, from the reference, against (e·v)²/(2g) above the touch
         // with e = exp(−ζπ/√(1 − ζ²)): gravity during the 26 ms contact costs a little.
-        const auto& ref = window.w.exactSolution()->reference();
+        const auto& ref = exactSolutionOf(window.w)->reference();
         int dof = -1;
         for (const Particle& p : window.w.document().world().particles())
             if (p.id == "ball") dof = p.dof;
@@ -185,8 +187,8 @@ private slots:
   "planes": [{"id": "floor", "point": [0, 0], "normal": [0, 1]}]})");
         file.close();
         window.open(file.fileName());
-        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("free fall"));
-        const auto& ref = window.w.exactSolution()->reference();
+        QCOMPARE(exactSolutionOf(window.w)->kind(), QStringLiteral("free fall"));
+        const auto& ref = exactSolutionOf(window.w)->reference();
         QVERIFY(ref.has_value());
         // It lands after √(2·2.9/g) = 0.769 s; the check (2 cm margin and the distance moved
         // between its samples) stops a little earlier.
@@ -201,7 +203,7 @@ private slots:
         QVERIFY(window.overlay().ghosts.isEmpty());
         for (const char* name : {"box-pyramid", "dominoes", "polygon-pile", "newtons-cradle"}) {
             window.open(QStringLiteral(":/scenes/%1.phasebox.json").arg(QLatin1String(name)));
-            QVERIFY2(window.w.exactSolution()->kind().isEmpty(), name);
+            QVERIFY2(exactSolutionOf(window.w)->kind().isEmpty(), name);
             QVERIFY(window.w.controller().advance(0.5));
             window.w.refreshNow();
             QVERIFY(window.overlay().isEmpty());
@@ -214,7 +216,7 @@ private slots:
     void atwoodLessonDrawsItsClosedFormUntilAWeightLands() {
         Window window;
         window.open(QStringLiteral(":/lessons/atwood-machine.phasebox.json"));
-        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("Atwood machine"));
+        QCOMPARE(exactSolutionOf(window.w)->kind(), QStringLiteral("Atwood machine"));
         QVERIFY(window.w.controller().advance(0.5));
         window.w.refreshNow();
         QCOMPARE(window.overlay().ghosts.size(), 4);
@@ -236,12 +238,12 @@ private slots:
     void impulseSpinLessonDrawsTheBoxTurning() {
         Window window;
         window.open(QStringLiteral(":/lessons/impulse-spin.phasebox.json"));
-        QCOMPARE(window.w.exactSolution()->kind(), QStringLiteral("impact"));
+        QCOMPARE(exactSolutionOf(window.w)->kind(), QStringLiteral("impact"));
         QVERIFY(window.w.controller().advance(1.0));
         window.w.refreshNow();
         QCOMPARE(window.overlay().ghosts.size(), 2);
         const World& world = window.w.document().world();
-        const Box& box = world.boxes()[0];
+        const RigidBody& box = world.rigidBodies()[0];
         bool found = false;
         for (const auto& ghost : window.overlay().ghosts)
             if (!ghost.size.isEmpty()) {
@@ -261,9 +263,9 @@ private slots:
             for (const QString& name : QDir(folder).entryList()) {
                 window.open(folder + QLatin1Char('/') + name);
                 qInfo("%s: %s", qPrintable(name),
-                      qPrintable(window.w.exactSolution()->kind().isEmpty()
+                      qPrintable(exactSolutionOf(window.w)->kind().isEmpty()
                                      ? QStringLiteral("-")
-                                     : window.w.exactSolution()->kind()));
+                                     : exactSolutionOf(window.w)->kind()));
             }
         for (const auto& [name, kind] :
              {std::pair{"midpoint-vs-rk4", "harmonic oscillator"},
@@ -276,7 +278,7 @@ private slots:
               std::pair{"bead-on-hoop", "simple pendulum"},
               std::pair{"euler-orbit-spiral", "Kepler orbit"}}) {
             window.open(QStringLiteral(":/lessons/%1.phasebox.json").arg(QLatin1String(name)));
-            QCOMPARE(window.w.exactSolution()->kind(), QString::fromLatin1(kind));
+            QCOMPARE(exactSolutionOf(window.w)->kind(), QString::fromLatin1(kind));
         }
         for (const auto& [name, kind] :
              {std::pair{"pendulum-wave", "simple pendulum"},
@@ -285,7 +287,7 @@ private slots:
               std::pair{"box-incline", "rolling and sliding"},
               std::pair{"bouncing-balls", "bounce"}, std::pair{"orbit", "Kepler orbit"}}) {
             window.open(QStringLiteral(":/scenes/%1.phasebox.json").arg(QLatin1String(name)));
-            QCOMPARE(window.w.exactSolution()->kind(), QString::fromLatin1(kind));
+            QCOMPARE(exactSolutionOf(window.w)->kind(), QString::fromLatin1(kind));
         }
     }
 };

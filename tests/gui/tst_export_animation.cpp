@@ -3,6 +3,7 @@
 // round(duration·fps) frames of the chosen size, Cancel in the progress dialog stops it and
 // leaves no file, an unknown extension is refused with the formats, and the app keeps running.
 
+#include "MainWindowTestSupport.h"
 #include "app/desktop/AnimationExport.h"
 #include "app/desktop/MainWindow.h"
 #include "ui/canvas/SceneView.h"
@@ -29,6 +30,7 @@
 #include <cmath>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 
@@ -149,9 +151,9 @@ private slots:
         QCOMPARE(stream["nb_read_frames"].toString(), QStringLiteral("3"));
         // The first frame is t = 0, the state the open scene shows: the canvas's own picture
         // (through the same view).
-        QCOMPARE(w.canvas()->view().pixelsPerMetre(), o.view->pixelsPerMetre());
+        QCOMPARE(canvasOf(w)->view().pixelsPerMetre(), o.view->pixelsPerMetre());
         const QImage canvas =
-            w.canvas()->renderImage(QSize(320, 240), true).convertToFormat(QImage::Format_RGB32);
+            canvasOf(w)->renderImage(QSize(320, 240), true).convertToFormat(QImage::Format_RGB32);
         const QImage first = decodedFrame(path, 0, dir_.filePath(QStringLiteral("f0.png")));
         QCOMPARE(first.size(), canvas.size());
         long long far = 0;

@@ -9,6 +9,7 @@
 // With PHASEBOX_SCREENSHOT_DIR set, pictures of the dock's tabs are written there to look at.
 
 #include "GuiTestSupport.h"
+#include "MainWindowTestSupport.h"
 #include "app/desktop/CanvasTools.h"
 #include "app/desktop/DesktopOptions.h"
 #include "app/desktop/MainWindow.h"
@@ -54,6 +55,7 @@
 #include <numbers>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 using phasebox::testing::freeScene;
 using phasebox::testing::visibleParticle;
 
@@ -79,8 +81,8 @@ SceneDesc springScene(double k, double m) {
 
 struct Window {
     MainWindow w;
-    ui::InstrumentsPanel* panel() { return w.instrumentsPanel(); }
-    InstrumentsPresenter* instruments() { return w.instruments(); }
+    ui::InstrumentsPanel* panel() { return instrumentsPanelOf(w); }
+    InstrumentsPresenter* instruments() { return instrumentsOf(w); }
     Window() {
         w.resize(1400, 900);
         w.show();
@@ -183,7 +185,7 @@ private slots:
         QVERIFY2(std::abs(*period / exact - 1.0) < 1e-3,
                  qPrintable(QString("T %1 s, exact %2 s").arg(*period).arg(exact)));
         // The crossings shown are the ones the period is the mean interval of.
-        const ProbeRecorder& probes = window.w.probeRecorder();
+        const ProbeRecorder& probes = probeRecorderOf(window.w);
         const std::vector<double> crossings = probes.crossings(probes.indexOf("bob.x"));
         QVERIFY(crossings.size() >= 7);
         QCOMPARE(window.panel()->timer()->crossingCount(), static_cast<int>(crossings.size()));
@@ -321,7 +323,7 @@ private slots:
             window.w.refreshNow();
             QVERIFY2(graphs->graph(0)->pointCount() <= 1, what);
             QVERIFY2(table->model()->rowCount() <= 1, what);
-            QVERIFY2(window.w.probeRecorder().times().size() <= 1, what);
+            QVERIFY2(probeRecorderOf(window.w).times().size() <= 1, what);
             QVERIFY2(!timer->period().has_value(), what);
             QCOMPARE(timer->crossingCount(), 0);
             QCOMPARE(timer->lapCount(), 0);
@@ -334,8 +336,8 @@ private slots:
         checkCleared("reset");
         // The probes stay chosen after Reset: the next run records them from its start.
         QVERIFY(window.w.controller().advance(0.5));
-        QCOMPARE(window.w.probeRecorder().times().size(), std::size_t(31));
-        QCOMPARE(window.w.probeRecorder().times().front(), 0.0);
+        QCOMPARE(probeRecorderOf(window.w).times().size(), std::size_t(31));
+        QCOMPARE(probeRecorderOf(window.w).times().front(), 0.0);
 
         runAndCheckFull();
         QVERIFY(window.w.openFile(path, true));
@@ -361,7 +363,7 @@ private slots:
         QCOMPARE(graphs->count(), 1);
         QVERIFY(graphs->graph(0)->yPicker()->probe().isEmpty());
         QVERIFY(timer->picker()->probe().isEmpty());
-        QCOMPARE(window.w.probeRecorder().probeCount(), 0);
+        QCOMPARE(probeRecorderOf(window.w).probeCount(), 0);
         QVERIFY(window.w.controller().advance(0.5));
         window.w.refreshNow();
         QCOMPARE(graphs->graph(0)->pointCount(), 0);
@@ -464,9 +466,9 @@ private slots:
         for (const char* typed : {"bob.angle", "nobody.x", "contact_force(wall)", "bob.z"}) {
             picker->enter(QLatin1String(typed));
             QVERIFY2(picker->isInvalid(), typed);
-            QVERIFY(!window.w.probeRecorder().probes().contains(QLatin1String(typed)));
+            QVERIFY(!probeRecorderOf(window.w).probes().contains(QLatin1String(typed)));
         }
-        QCOMPARE(window.w.probeRecorder().probes(), QStringList{QStringLiteral("bob.x")});
+        QCOMPARE(probeRecorderOf(window.w).probes(), QStringList{QStringLiteral("bob.x")});
         const auto* status = window.w.findChild<QLabel*>(QStringLiteral("statusMessage"));
         QVERIFY2(status->text().contains(QStringLiteral("unknown probe \"bob.z\"")),
                  qPrintable(status->text()));
@@ -500,7 +502,7 @@ private slots:
         ui::ProbeGraphView* graph = window.panel()->graphs()->graph(0);
         QVERIFY2(graph->message().contains(QStringLiteral("no object \"b\"")),
                  qPrintable(graph->message()));
-        const ProbeRecorder& probes = window.w.probeRecorder();
+        const ProbeRecorder& probes = probeRecorderOf(window.w);
         const int b = probes.indexOf(QStringLiteral("b.x"));
         QVERIFY(!probes.isValid(b));
         QVERIFY(std::isnan(probes.values(b).back()));
@@ -520,7 +522,7 @@ private slots:
         const double exact = 2.0 * std::numbers::pi * std::sqrt(m / k);
         Window window;
         window.load(springScene(k, m));
-        ProbeRecorder& probes = window.w.probeRecorder();
+        ProbeRecorder& probes = probeRecorderOf(window.w);
         probes.setMaxSamples(200);
         QVERIFY(window.instruments()->timeProbe(QStringLiteral("bob.x")));
         QVERIFY(window.instruments()->plotProbe(QStringLiteral("bob.x")));
@@ -547,7 +549,7 @@ private slots:
         QVERIFY(window.instruments()->plotProbe(QStringLiteral("system.total")));
         QVERIFY(!window.w.controller().advance(2.0));
         window.w.refreshNow();
-        const ProbeRecorder& probes = window.w.probeRecorder();
+        const ProbeRecorder& probes = probeRecorderOf(window.w);
         const double t = window.w.document().world().time();
         QVERIFY(probes.times().size() >= 2);
         QVERIFY(probes.times().back() <= t + 1e-12);
@@ -583,11 +585,11 @@ private slots:
     // under the new scene's symplectic Euler at dt 1/60.
     void pendulumBuiltWithTheToolsHasTheEllipticPeriod() {
         Window window;
-        QWidget* canvas = window.w.canvas();
+        QWidget* canvas = canvasOf(window.w);
         // Issue 17's pendulum: 1 m (to the pixel), its lowest point 0.25 m above the new
         // scene's ground (y = −2), inside the canvas as the new scene shows it.
-        const QPoint pivot = window.w.canvas()->toWidget(QPointF(-0.5, -0.75)).toPoint();
-        const QPoint bob = window.w.canvas()->toWidget(QPointF(0.5, -0.75)).toPoint();
+        const QPoint pivot = canvasOf(window.w)->toWidget(QPointF(-0.5, -0.75)).toPoint();
+        const QPoint bob = canvasOf(window.w)->toWidget(QPointF(0.5, -0.75)).toPoint();
         QVERIFY(canvas->rect().contains(pivot) && canvas->rect().contains(bob));
         window.w.action("toolParticle")->trigger();
         QTest::mouseClick(canvas, Qt::LeftButton, {}, bob);
@@ -595,7 +597,7 @@ private slots:
         auto* type = window.w.findChild<QComboBox*>(QStringLiteral("jointType"));
         QVERIFY(type);
         type->setCurrentIndex(type->findText(QStringLiteral("rod")));
-        QCOMPARE(window.w.tools()->jointType(), JointType::Rod);
+        QCOMPARE(toolsOf(window.w)->jointType(), JointType::Rod);
         QTest::mousePress(canvas, Qt::LeftButton, {}, bob);
         for (int k = 1; k <= 4; ++k) QTest::mouseMove(canvas, bob + (pivot - bob) * k / 4);
         QTest::mouseRelease(canvas, Qt::LeftButton, {}, pivot);
@@ -609,10 +611,10 @@ private slots:
         QVERIFY(picker->offered().contains(QStringLiteral("force(j0)")));
         picker->setCurrentIndex(picker->findText(QStringLiteral("p0.x")));
         emit picker->activated(picker->currentIndex());
-        QVERIFY(window.w.probeRecorder().probes().contains(QStringLiteral("p0.x")));
+        QVERIFY(probeRecorderOf(window.w).probes().contains(QStringLiteral("p0.x")));
 
         const World& world = window.w.document().world();
-        const QPointF top = window.w.canvas()->toWorld(QPointF(pivot));
+        const QPointF top = canvasOf(window.w)->toWorld(QPointF(pivot));
         const Vec2 start = world.particlePosition(0);
         const double length = (start - Vec2(top.x(), top.y())).norm();
         const double theta0 = std::atan2(std::abs(start.x() - top.x()), top.y() - start.y());
@@ -657,14 +659,14 @@ private slots:
         window.load(*loaded.scene);
         QVERIFY(window.instruments()->offered().contains(QStringLiteral("pivot.angle")));
         QString error;
-        QVERIFY2(window.w.measureTools()->addProtractor(QStringLiteral("0:-1,0:0,box"), &error),
+        QVERIFY2(measureToolsOf(window.w)->addProtractor(QStringLiteral("0:-1,0:0,box"), &error),
                  qPrintable(error));
-        const QString probe = window.w.measureTools()->protractorProbe(0);
+        const QString probe = measureToolsOf(window.w)->protractorProbe(0);
         QCOMPARE(probe, QStringLiteral("angle(0:-1,0:0,box)"));
         QVERIFY(window.instruments()->offered().contains(probe));
         QVERIFY2(window.instruments()->plotProbe(probe, {}, &error), qPrintable(error));
         QVERIFY(window.instruments()->timeProbe(probe, &error));
-        QCOMPARE(window.w.measureTools()->protractorDegrees(0), 90.0);
+        QCOMPARE(measureToolsOf(window.w)->protractorDegrees(0), 90.0);
 
         const double lengthEq = ((w * w + h * h) / 12.0 + d * d) / d;
         const double exact =
@@ -684,7 +686,7 @@ private slots:
         const World& world = window.w.document().world();
         const ProbeParse joint = parseProbe(world, "pivot.angle");
         QVERIFY(joint);
-        QVERIFY(std::abs(window.w.measureTools()->protractorDegrees(0) -
+        QVERIFY(std::abs(measureToolsOf(window.w)->protractorDegrees(0) -
                          std::abs(evaluateProbe(world, *joint.probe)) * 180.0 / std::numbers::pi) <
                 1e-9);
         window.w.document().setSelection({QStringLiteral("box")});

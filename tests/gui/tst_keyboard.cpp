@@ -4,6 +4,7 @@
 // the Instruments dock's readouts as a screen reader reads them (QAccessible), and the canvas
 // describing the selection. No mouse event is sent.
 
+#include "MainWindowTestSupport.h"
 #include "app/desktop/MainWindow.h"
 #include "ui/canvas/SceneView.h"
 #include "ui/panels/PropertiesPanel.h"
@@ -20,6 +21,7 @@
 #include <cmath>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 
@@ -32,11 +34,11 @@ void press(int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
 // Tab until the canvas has the focus, as a keyboard user gets there.
 bool tabToCanvas(MainWindow& window) {
     for (int i = 0; i < 400; ++i) {
-        if (QApplication::focusWidget() == window.canvas()) return true;
+        if (QApplication::focusWidget() == canvasOf(window)) return true;
         QWidget* from = QApplication::focusWidget() ? QApplication::focusWidget() : &window;
         QTest::keyClick(from, Qt::Key_Tab);
     }
-    return QApplication::focusWidget() == window.canvas();
+    return QApplication::focusWidget() == canvasOf(window);
 }
 
 // A table's cell as a screen reader gets it.
@@ -70,7 +72,7 @@ void TestKeyboard::buildRunAndReadWithTheKeyboardAlone() {
 
     // A particle where the keyboard cursor is, three steps above where it starts.
     QVERIFY(tabToCanvas(window));
-    const QPointF cursor = window.canvas()->keyboardCursor();
+    const QPointF cursor = canvasOf(window)->keyboardCursor();
     press(Qt::Key_2);  // Add particle
     QVERIFY(window.action(QStringLiteral("toolParticle"))->isChecked());
     for (int i = 0; i < 3; ++i) press(Qt::Key_Up);
@@ -83,21 +85,21 @@ void TestKeyboard::buildRunAndReadWithTheKeyboardAlone() {
 
     // Select tool; Tab walks to the particle; Right moves it by a step.
     press(Qt::Key_1);
-    QVERIFY(QApplication::focusWidget() == window.canvas());
+    QVERIFY(QApplication::focusWidget() == canvasOf(window));
     const QString id = QString::fromStdString(placed.id.empty() ? "p0" : placed.id);
     for (int i = 0; i < 4 && window.document().selection() != QStringList{id}; ++i)
         press(Qt::Key_Tab);
     QCOMPARE(window.document().selection(), QStringList{id});
-    QCOMPARE(QApplication::focusWidget(), window.canvas());
+    QCOMPARE(QApplication::focusWidget(), canvasOf(window));
     press(Qt::Key_Right);
     QVERIFY(std::abs(window.document().setup().particles.at(0).position[0] -
                      (placed.position[0] + 0.1)) < 1e-9);
-    QVERIFY(window.canvas()->accessibleDescription().contains(id));
+    QVERIFY(canvasOf(window)->accessibleDescription().contains(id));
 
     // Enter opens its properties: the focus goes to the Properties panel's first field.
     press(Qt::Key_Return);
     QVERIFY(QApplication::focusWidget());
-    QVERIFY(window.propertiesPanel()->isAncestorOf(QApplication::focusWidget()));
+    QVERIFY(propertiesPanelOf(window)->isAncestorOf(QApplication::focusWidget()));
 
     // Run 30 steps (Simulation > Step, S), then read its height off the readouts.
     for (int i = 0; i < 30; ++i) press(Qt::Key_S);
@@ -122,7 +124,7 @@ void TestKeyboard::buildRunAndReadWithTheKeyboardAlone() {
     const double readY = QLocale().toDouble(numbers.last().trimmed());
     QVERIFY2(std::abs(readY - expectedY) < 0.05,
              qPrintable(QStringLiteral("%1 against %2").arg(position).arg(expectedY)));
-    QVERIFY(window.canvas()->accessibleDescription().contains(QStringLiteral("velocity")));
+    QVERIFY(canvasOf(window)->accessibleDescription().contains(QStringLiteral("velocity")));
 }
 
 // Each drawing tool's key, then Enter: its object appears at the keyboard cursor (a spring and a
@@ -153,7 +155,7 @@ void TestKeyboard::everyDrawingToolPlacesAtTheCursor() {
          {Qt::Key_5, Qt::Key_6, Qt::Key_7, Qt::Key_4, Qt::Key_3, Qt::Key_0, Qt::Key_8}) {
         if (key == Qt::Key_3 || key == Qt::Key_0) window.document().setSelection({particle});
         press(key);
-        QCOMPARE(QApplication::focusWidget(), window.canvas());
+        QCOMPARE(QApplication::focusWidget(), canvasOf(window));
         for (int i = 0; i < 15; ++i) press(Qt::Key_Right);
         const std::size_t before = count();
         press(Qt::Key_Return);

@@ -6,6 +6,7 @@
 // on them, and runs: a lesson with a period timer reads a period after 5 s.
 
 #include "GuiTestSupport.h"
+#include "MainWindowTestSupport.h"
 #include "app/desktop/MainWindow.h"
 #include "app/desktop/MeasureTools.h"
 #include "app/desktop/presenters/InstrumentsPresenter.h"
@@ -30,6 +31,7 @@
 #include <cmath>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 using phasebox::testing::visibleParticle;
 
 namespace {
@@ -56,8 +58,8 @@ struct Window {
         w.resize(1400, 900);
         w.show();
     }
-    InstrumentsPresenter& instruments() { return *w.instruments(); }
-    MeasureTools& measure() { return *w.measureTools(); }
+    InstrumentsPresenter& instruments() { return *instrumentsOf(w); }
+    MeasureTools& measure() { return *measureToolsOf(w); }
 };
 
 struct Readings {
@@ -68,10 +70,10 @@ Readings run(Window& window) {
     window.w.controller().advance(4.0);
     window.w.refreshNow();
     Readings r;
-    r.period = window.w.instrumentsPanel()->timer()->period().value_or(-1.0);
+    r.period = instrumentsPanelOf(window.w)->timer()->period().value_or(-1.0);
     r.ruler = window.measure().rulerLength(0);
     r.protractor = window.measure().protractorDegrees(0);
-    const ProbeRecorder& probes = window.w.probeRecorder();
+    const ProbeRecorder& probes = probeRecorderOf(window.w);
     const int total = probes.indexOf(QStringLiteral("system.total"));
     r.lastTotal = total >= 0 ? probes.values(total).back() : -1.0;
     return r;
@@ -102,8 +104,8 @@ private slots:
             QVERIFY(teacher.measure().addProtractor(QStringLiteral("0:-1,0:0,bob"), &error));
             teacher.w.document().setSelection({QStringLiteral("bob")});
             teacher.measure().setFreeBodyShown(true);
-            teacher.w.canvas()->showWidth(QPointF(0.25, -0.5), 3.0);
-            teacher.w.plotsPanel()->showLowerPlot(ui::PlotsPanel::Plot::Error);
+            canvasOf(teacher.w)->showWidth(QPointF(0.25, -0.5), 3.0);
+            plotsPanelOf(teacher.w)->showLowerPlot(ui::PlotsPanel::Plot::Error);
             QVERIFY2(teacher.w.saveFile(path, &error), qPrintable(error));
             before = run(teacher);
         }
@@ -115,21 +117,22 @@ private slots:
 
         Window student;
         QVERIFY(student.w.openFile(path, true));
-        ui::GraphsView* graphs = student.w.instrumentsPanel()->graphs();
+        ui::GraphsView* graphs = instrumentsPanelOf(student.w)->graphs();
         QCOMPARE(graphs->count(), 2);
         QCOMPARE(graphs->graph(0)->yPicker()->probe(), QStringLiteral("bob.x"));
         QCOMPARE(graphs->graph(1)->yPicker()->probe(), QStringLiteral("bob.vx"));
         QCOMPARE(graphs->graph(1)->xPicker()->probe(), QStringLiteral("bob.x"));
-        QCOMPARE(student.w.instrumentsPanel()->timer()->picker()->probe(), QStringLiteral("bob.x"));
-        QVERIFY(student.w.probeRecorder().indexOf(QStringLiteral("system.total")) >= 0);
-        QCOMPARE(student.w.instrumentsPanel()->currentTab(), ui::InstrumentsPanel::Tab::Graphs);
+        QCOMPARE(instrumentsPanelOf(student.w)->timer()->picker()->probe(),
+                 QStringLiteral("bob.x"));
+        QVERIFY(probeRecorderOf(student.w).indexOf(QStringLiteral("system.total")) >= 0);
+        QCOMPARE(instrumentsPanelOf(student.w)->currentTab(), ui::InstrumentsPanel::Tab::Graphs);
         QCOMPARE(student.measure().rulerCount(), 1);
         QCOMPARE(student.measure().protractorCount(), 1);
         QVERIFY(student.measure().freeBodyShown());
         QCOMPARE(student.w.document().selection(), QStringList{QStringLiteral("bob")});
-        QVERIFY(std::abs(student.w.canvas()->shownWidth() - 3.0) < 1e-9);
-        QVERIFY(std::abs(student.w.canvas()->view().centre().x() - 0.25) < 1e-12);
-        QCOMPARE(student.w.plotsPanel()->lowerPlot(), ui::PlotsPanel::Plot::Error);
+        QVERIFY(std::abs(canvasOf(student.w)->shownWidth() - 3.0) < 1e-9);
+        QVERIFY(std::abs(canvasOf(student.w)->view().centre().x() - 0.25) < 1e-12);
+        QCOMPARE(plotsPanelOf(student.w)->lowerPlot(), ui::PlotsPanel::Plot::Error);
 
         // The same run reads the same numbers: the timer's period, the ruler (the rod's 1 m),
         // the protractor (the swing, at most 30°) and the energy in the table.
@@ -161,7 +164,7 @@ private slots:
         QCOMPARE(student.measure().rulerCount(), 0);
         QCOMPARE(student.measure().protractorCount(), 0);
         QVERIFY(!student.measure().freeBodyShown());
-        QCOMPARE(student.w.probeRecorder().probeCount(), 0);
+        QCOMPARE(probeRecorderOf(student.w).probeCount(), 0);
         QVERIFY(SceneIO::serialize(student.w.document().sceneToSave()).indexOf("instruments") < 0);
     }
     // File → Lessons: each lesson opens with its notes and the instruments its file names (the
@@ -186,7 +189,7 @@ private slots:
             const SceneLoadResult loaded = SceneIO::load(path);
             QVERIFY2(loaded.ok(), qPrintable(loaded.errorText()));
             const InstrumentsDesc& in = loaded.scene->instruments;
-            ui::InstrumentsPanel* panel = w.instrumentsPanel();
+            ui::InstrumentsPanel* panel = instrumentsPanelOf(w);
             ui::GraphsView* graphs = panel->graphs();
             if (in.graphs.empty()) {
                 QVERIFY(graphs->graph(0)->yPicker()->probe().isEmpty());
@@ -208,7 +211,7 @@ private slots:
             if (!in.timers.empty()) recorded.push_back(in.timers.front());
             for (const std::string& probe : recorded)
                 QVERIFY2(
-                    probe.empty() || w.probeRecorder().indexOf(QString::fromStdString(probe)) >= 0,
+                    probe.empty() || probeRecorderOf(w).indexOf(QString::fromStdString(probe)) >= 0,
                     probe.c_str());
             QCOMPARE(dock->isVisible(), !in.graphs.empty() || !in.timers.empty() || in.stopwatch ||
                                             !in.probes.empty());

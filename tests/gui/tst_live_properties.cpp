@@ -4,6 +4,7 @@
 // fits the dock of a window at its first size, and at 1024 x 700 every page of the
 // Instruments dock fits its width (nothing cut at the right edge).
 
+#include "MainWindowTestSupport.h"
 #include "app/desktop/MainWindow.h"
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
@@ -23,6 +24,7 @@
 #include <cmath>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 
@@ -63,7 +65,7 @@ private slots:
         QString error;
         QVERIFY2(w.document().loadFromDesc(droppedBox(), {}, &error), qPrintable(error));
         w.document().setSelection({QStringLiteral("crate")});
-        ui::PropertiesPanel* panel = w.propertiesPanel();
+        ui::PropertiesPanel* panel = propertiesPanelOf(w);
         QVERIFY(panel->hasObject());
         QVERIFY(!panel->showsLiveState());
         QVERIFY(panel->stateNote().startsWith(QStringLiteral("Setup")));
@@ -79,9 +81,9 @@ private slots:
         QVERIFY2(panel->stateNote().contains(
                      QStringLiteral("Live at t = %1 s").arg(world.time(), 0, 'f', 3)),
                  qPrintable(panel->stateNote()));
-        QVERIFY(world.boxPosition(0).y() < 0.25);
-        QVERIFY(std::abs(shown(panel, "position.y") - world.boxPosition(0).y()) < 1e-3);
-        QVERIFY(std::abs(shown(panel, "velocity.y") - world.boxVelocity(0).y()) < 1e-3);
+        QVERIFY(world.bodyPosition(0).y() < 0.25);
+        QVERIFY(std::abs(shown(panel, "position.y") - world.bodyPosition(0).y()) < 1e-3);
+        QVERIFY(std::abs(shown(panel, "velocity.y") - world.bodyVelocity(0).y()) < 1e-3);
 
         // At rest on the floor after 3 s: the live y is the resting height, -1.7 m.
         QVERIFY(w.controller().advance(3.0));
@@ -103,9 +105,9 @@ private slots:
         w.document().setSelection({QStringLiteral("crate")});
         w.findChild<QDockWidget*>(QStringLiteral("propertiesDock"))->raise();
         QApplication::processEvents();
-        auto* scroll = w.propertiesPanel()->findChild<QScrollArea*>(QStringLiteral("formScroll"));
+        auto* scroll = propertiesPanelOf(w)->findChild<QScrollArea*>(QStringLiteral("formScroll"));
         QVERIFY(scroll);
-        QVERIFY(w.propertiesPanel()->keys().size() >= 12);
+        QVERIFY(propertiesPanelOf(w)->keys().size() >= 12);
         QCOMPARE(scroll->verticalScrollBar()->maximum(), 0);  // nothing hidden below
     }
 
@@ -119,8 +121,8 @@ private slots:
         QApplication::processEvents();
         QTest::qWait(50);
         QVERIFY(w.findChild<QDockWidget*>(QStringLiteral("instrumentsDock"))->isVisible());
-        QVERIFY2(w.canvas()->width() >= 1024 / 2 - 2,
-                 qPrintable(QString::number(w.canvas()->width())));
+        QVERIFY2(canvasOf(w)->width() >= 1024 / 2 - 2,
+                 qPrintable(QString::number(canvasOf(w)->width())));
     }
 
     void instrumentsFitASmallWindow() {
@@ -135,7 +137,7 @@ private slots:
         QVERIFY(scroll);
         using Tab = ui::InstrumentsPanel::Tab;
         for (const Tab tab : {Tab::Readouts, Tab::Graphs, Tab::Timer, Tab::Table}) {
-            w.instrumentsPanel()->showTab(tab);
+            instrumentsPanelOf(w)->showTab(tab);
             w.refreshNow();
             QApplication::processEvents();
             QVERIFY2(scroll->horizontalScrollBar()->maximum() == 0,

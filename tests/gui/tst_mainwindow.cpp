@@ -35,6 +35,7 @@
 #include <cmath>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 using testing::drag;
 using testing::serialized;
 using testing::worldAt;
@@ -57,7 +58,7 @@ private slots:
     void windowStartsWithTheDocks() {
         MainWindow w;
         w.show();
-        QVERIFY(w.canvas() && !w.canvas()->usingOpenGL());  // offscreen: the raster canvas
+        QVERIFY(canvasOf(w) && !canvasOf(w)->usingOpenGL());  // offscreen: the raster canvas
         for (const char* dock :
              {"parametersDock", "effectsDock", "propertiesDock", "plotsDock", "sceneDock"})
             QVERIFY2(w.findChild<QDockWidget*>(dock), dock);
@@ -75,11 +76,11 @@ private slots:
         QVERIFY(w.controller().advance(0.2));
         const World& world = w.document().world();
         const QPoint ball =
-            w.canvas()
+            canvasOf(w)
                 ->toWidget(QPointF(world.particlePosition(0).x(), world.particlePosition(0).y()))
                 .toPoint();
         const QPoint target = ball + QPoint(150, -100);
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         QTest::mousePress(canvas, Qt::LeftButton, {}, ball);
         QTest::mouseMove(canvas, ball + QPoint(75, -50));
         QTest::mouseMove(canvas, target);
@@ -109,7 +110,7 @@ private slots:
         const Eigen::VectorXd q = w.document().world().positions();
         const Eigen::VectorXd u = w.document().world().velocities();
         const double t = w.document().world().time();
-        auto* combo = w.parametersPanel()->findChild<QComboBox*>();
+        auto* combo = parametersPanelOf(w)->findChild<QComboBox*>();
         QVERIFY(combo);
         const int rk4 = combo->findData(QStringLiteral("rk4"));
         QVERIFY(rk4 >= 0);
@@ -123,10 +124,10 @@ private slots:
         w.controller().pause();
         // The energy plot has the samples and a marker where the integrator changed.
         w.refreshNow();
-        QVERIFY(w.recorder().energySamples().size() >= 59);
-        QVERIFY(pointsIn(w.plotsPanel()->energyView()) > 0);
-        QCOMPARE(w.recorder().markers().empty(), false);
-        QVERIFY(w.recorder().markers().back().label.contains(QStringLiteral("rk4")));
+        QVERIFY(recorderOf(w).energySamples().size() >= 59);
+        QVERIFY(pointsIn(plotsPanelOf(w)->energyView()) > 0);
+        QCOMPARE(recorderOf(w).markers().empty(), false);
+        QVERIFY(recorderOf(w).markers().back().label.contains(QStringLiteral("rk4")));
     }
 
     // CONTRACT §6: the contact model switched live from the Parameters panel keeps the state,
@@ -141,9 +142,9 @@ private slots:
         const World& before = w.document().world();
         const Eigen::VectorXd q = before.positions(), u = before.velocities();
         const double t = before.time(), drift = before.energy().drift;
-        auto* combo = w.parametersPanel()->findChild<QComboBox*>("contactModel");
+        auto* combo = parametersPanelOf(w)->findChild<QComboBox*>("contactModel");
         QVERIFY(combo);
-        auto* stiffness = w.parametersPanel()->findChild<QDoubleSpinBox*>("contactStiffness");
+        auto* stiffness = parametersPanelOf(w)->findChild<QDoubleSpinBox*>("contactStiffness");
         QVERIFY(stiffness && !stiffness->isEnabled());
         combo->setCurrentIndex(static_cast<int>(ContactModel::Penalty));
         const World& world = w.document().world();
@@ -159,8 +160,8 @@ private slots:
         QVERIFY(w.controller().advance(0.5));
         w.controller().pause();
         w.refreshNow();
-        QCOMPARE(w.recorder().markers().empty(), false);
-        QVERIFY(w.recorder().markers().back().label.contains(QStringLiteral("penalty contacts")));
+        QCOMPARE(recorderOf(w).markers().empty(), false);
+        QVERIFY(recorderOf(w).markers().back().label.contains(QStringLiteral("penalty contacts")));
         // One undo step takes it back.
         w.document().undoStack()->undo();
         QCOMPARE(w.document().world().settings().contactModel, ContactModel::Impulse);
@@ -176,7 +177,7 @@ private slots:
         w.show();
         QCOMPARE(QString::fromStdString(w.document().setup().simulation.integrator),
                  QStringLiteral("symplectic_euler"));
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const QPoint c = canvas->rect().center();
         w.action("toolCloth")->trigger();
         drag(canvas, c + QPoint(-250, -200), c + QPoint(150, 0));
@@ -220,7 +221,7 @@ private slots:
         w.resize(1200, 800);
         w.show();
         QVERIFY(w.openFile(QStringLiteral(":/scenes/projectile-drag.phasebox.json"), true));
-        const QRectF opened = w.canvas()->view().visibleWorldRect();
+        const QRectF opened = canvasOf(w)->view().visibleWorldRect();
         w.controller().play();
         QVERIFY(w.controller().advance(3.0));  // every ball has landed
         w.controller().pause();
@@ -236,10 +237,10 @@ private slots:
 
         // Zoomed in on the start, following the farthest ball: it stays in view.
         w.controller().reset();
-        ui::ViewTransform close = w.canvas()->view();
+        ui::ViewTransform close = canvasOf(w)->view();
         close.setPixelsPerMetre(close.pixelsPerMetre() * 8.0);
         close.setCentre(QPointF(0.0, 0.0));
-        w.canvas()->setView(close);
+        canvasOf(w)->setView(close);
         // (Reset rebuilt the world: read it afresh.)
         const std::string far = w.document().world().particles().back().id;
         w.document().setSelection({QString::fromStdString(far)});
@@ -249,7 +250,7 @@ private slots:
             QVERIFY(w.controller().advance(0.1));
             const Vec2 p = w.document().world().particlePosition(
                 static_cast<int>(w.document().world().particles().size()) - 1);
-            const QRectF r = w.canvas()->view().visibleWorldRect();
+            const QRectF r = canvasOf(w)->view().visibleWorldRect();
             QVERIFY2(r.contains(QPointF(p.x(), p.y())),
                      qPrintable(QString("t %1: (%2, %3) outside [%4, %5] x [%6, %7]")
                                     .arg(w.document().world().time())
@@ -272,9 +273,9 @@ private slots:
         w.document().setSelection({id});
         QVERIFY(w.controller().advance(1.0));
         w.refreshNow();
-        QCOMPARE(w.recorder().phaseObject(), id);
-        QVERIFY(w.recorder().phaseSamples().size() >= 59);
-        QVERIFY(pointsIn(w.plotsPanel()->phaseView()) > 0);
+        QCOMPARE(recorderOf(w).phaseObject(), id);
+        QVERIFY(recorderOf(w).phaseSamples().size() >= 59);
+        QVERIFY(pointsIn(plotsPanelOf(w)->phaseView()) > 0);
     }
 
     // The live error estimate: recorded while running, plotted, in the status bar, and larger
@@ -285,8 +286,8 @@ private slots:
         QVERIFY(w.openFile(QStringLiteral(":/scenes/spring-oscillator.phasebox.json"), true));
         QVERIFY(w.controller().advance(1.0));
         w.refreshNow();
-        QVERIFY(w.recorder().errorSamples().size() >= 55);
-        QVERIFY(pointsIn(w.plotsPanel()->errorView()) > 0);
+        QVERIFY(recorderOf(w).errorSamples().size() >= 55);
+        QVERIFY(pointsIn(plotsPanelOf(w)->errorView()) > 0);
         const double small = w.controller().lastErrorEstimate();
         QVERIFY(small > 0.0);
         SimulationDesc s = w.document().setup().simulation;
@@ -324,12 +325,12 @@ private slots:
         {
             MainWindow w;
             QVERIFY(w.openFile(kDemoScene, true));
-            dir = w.autosave()->recoveryDir();
+            dir = autosaveOf(w)->recoveryDir();
             ParticleDesc p;
             p.position = {0.5, 3.0};
             QVERIFY(w.document().addObject(p));
             edited = serialized(w);
-            QVERIFY(w.autosave()->autosaveNow());
+            QVERIFY(autosaveOf(w)->autosaveNow());
         }  // destroyed without closeEvent, as a crash would leave it
         const auto recovery = Autosave::findRecovery(dir);
         QVERIFY(recovery.has_value());

@@ -22,6 +22,7 @@
 #include <numbers>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 using testing::drag;
 using testing::serialized;
 using testing::worldAt;
@@ -36,13 +37,13 @@ private slots:
         MainWindow w;
         w.resize(1200, 800);
         w.show();
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const QRect r = canvas->rect();
         const QPoint c = r.center();
 
         // A click drops a particle where the mouse is.
         w.action("toolParticle")->trigger();
-        QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Particle);
+        QCOMPARE(toolsOf(w)->tool(), CanvasTools::Tool::Particle);
         QTest::mouseClick(canvas, Qt::LeftButton, {}, c);
         QCOMPARE(w.document().setup().particles.size(), std::size_t(1));
         const auto& p = w.document().setup().particles[0];
@@ -106,10 +107,10 @@ private slots:
         MainWindow w;
         w.resize(1200, 800);
         w.show();
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const QPoint c = canvas->rect().center();
         w.action("toolDisk")->trigger();
-        QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Disk);
+        QCOMPARE(toolsOf(w)->tool(), CanvasTools::Tool::Disk);
         drag(canvas, c, c + QPoint(60, 80));
         QCOMPARE(w.document().setup().disks.size(), std::size_t(1));
         const DiskDesc& dragged = w.document().setup().disks[0];
@@ -120,7 +121,7 @@ private slots:
         QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(-300, 0));
         QCOMPARE(w.document().setup().disks.size(), std::size_t(2));
         QCOMPARE(w.document().setup().disks[1].radius, CanvasTools::kClickDiskRadius);
-        QCOMPARE(w.document().world().boxes().size(), std::size_t(2));
+        QCOMPARE(w.document().world().rigidBodies().size(), std::size_t(2));
 
         // The pin tool makes it static; the select tool finds it by its circle.
         w.action("toolPin")->trigger();
@@ -145,10 +146,10 @@ private slots:
         MainWindow w;
         w.resize(1200, 800);
         w.show();
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const QPoint c = canvas->rect().center();
         w.action("toolPolygon")->trigger();
-        QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Polygon);
+        QCOMPARE(toolsOf(w)->tool(), CanvasTools::Tool::Polygon);
         drag(canvas, c, c + QPoint(80, 0));
         QCOMPARE(w.document().setup().polygons.size(), std::size_t(1));
         const PolygonDesc& hexagon = w.document().setup().polygons[0];
@@ -157,8 +158,8 @@ private slots:
         QVERIFY(std::abs(hexagon.position[0] - centre.x()) < 1e-9);
         QVERIFY(std::abs(std::hypot(hexagon.vertices[0][0], hexagon.vertices[0][1]) -
                          QLineF(centre, corner).length()) < 1e-9);
-        QCOMPARE(w.document().world().boxes().size(), std::size_t(1));
-        QVERIFY(w.document().world().boxes()[0].shape == RigidShape::Polygon);
+        QCOMPARE(w.document().world().rigidBodies().size(), std::size_t(1));
+        QVERIFY(w.document().world().rigidBodies()[0].shape == RigidShape::Polygon);
         w.action("toolSelect")->trigger();
         QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(20, 20));
         QCOMPARE(w.document().selection(), QStringList{QStringLiteral("poly0")});
@@ -174,13 +175,13 @@ private slots:
         MainWindow w;
         w.resize(1200, 800);
         w.show();
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const QPoint c = canvas->rect().center();
         auto* sides = w.findChild<QSpinBox*>(QStringLiteral("polygonSides"));
         QVERIFY(sides);
         for (const int n : {3, 5, 16}) {
             sides->setValue(n);
-            QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Polygon);
+            QCOMPARE(toolsOf(w)->tool(), CanvasTools::Tool::Polygon);
             w.document().newScene();
             drag(canvas, c, c + QPoint(90, 0));
             QCOMPARE(w.document().setup().polygons.size(), std::size_t(1));
@@ -199,7 +200,7 @@ private slots:
         MainWindow w;
         w.resize(1200, 800);
         w.show();
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const QPoint c = canvas->rect().center();
         const auto* status = w.findChild<QLabel*>(QStringLiteral("statusMessage"));
         QVERIFY(status);
@@ -208,14 +209,14 @@ private slots:
         const QPoint dent = c + QPoint(70, -30);  // inside the triangle a b d: a dent
         const QPoint e = c + QPoint(0, -100);
         for (const QPoint& p : {a, b, d}) QTest::mouseClick(canvas, Qt::LeftButton, {}, p);
-        QCOMPARE(w.tools()->outline().size(), 3);
+        QCOMPARE(toolsOf(w)->outline().size(), 3);
         QTest::mouseClick(canvas, Qt::LeftButton, {}, dent);
-        QCOMPARE(w.tools()->outline().size(), 3);
+        QCOMPARE(toolsOf(w)->outline().size(), 3);
         QVERIFY2(status->text().contains(QStringLiteral("non-convex")), qPrintable(status->text()));
         QVERIFY(w.document().setup().polygons.empty());
         QTest::mouseClick(canvas, Qt::LeftButton, {}, e);
         QTest::mouseClick(canvas, Qt::LeftButton, {}, a + QPoint(2, 1));  // on the first: close
-        QVERIFY(w.tools()->outline().isEmpty());
+        QVERIFY(toolsOf(w)->outline().isEmpty());
         QCOMPARE(w.document().setup().polygons.size(), std::size_t(1));
         const PolygonDesc& square = w.document().setup().polygons[0];
         QCOMPARE(square.vertices.size(), std::size_t(4));
@@ -236,14 +237,14 @@ private slots:
         for (const QPoint& p : {a, b})
             QTest::mouseClick(canvas, Qt::LeftButton, {}, p + QPoint(0, 150));
         QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(200, 150));
-        QCOMPARE(w.tools()->outline().size(), 2);
+        QCOMPARE(toolsOf(w)->outline().size(), 2);
         QVERIFY2(status->text().contains(QStringLiteral("line")), qPrintable(status->text()));
         QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(50, 250));
-        QCOMPARE(w.tools()->outline().size(), 3);
+        QCOMPARE(toolsOf(w)->outline().size(), 3);
         QTest::keyClick(canvas, Qt::Key_Backspace);
-        QCOMPARE(w.tools()->outline().size(), 2);
+        QCOMPARE(toolsOf(w)->outline().size(), 2);
         QTest::keyClick(canvas, Qt::Key_Escape);
-        QVERIFY(w.tools()->outline().isEmpty());
+        QVERIFY(toolsOf(w)->outline().isEmpty());
         for (const QPoint& p : {a, b, d})
             QTest::mouseClick(canvas, Qt::LeftButton, {}, p + QPoint(-300, 0));
         QTest::keyClick(canvas, Qt::Key_Return);
@@ -329,17 +330,17 @@ private slots:
         MainWindow w;
         w.resize(1200, 800);
         w.show();
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const QPoint c = canvas->rect().center();
         const QPoint pivot = c + QPoint(0, -250), bob = pivot + QPoint(120, 0);
         w.action("toolParticle")->trigger();
         QTest::mouseClick(canvas, Qt::LeftButton, {}, bob);
         w.action("toolJoint")->trigger();
-        QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Joint);
+        QCOMPARE(toolsOf(w)->tool(), CanvasTools::Tool::Joint);
         auto* type = w.findChild<QComboBox*>(QStringLiteral("jointType"));
         QVERIFY(type);
         type->setCurrentIndex(type->findText(QStringLiteral("rod")));
-        QCOMPARE(w.tools()->jointType(), JointType::Rod);
+        QCOMPARE(toolsOf(w)->jointType(), JointType::Rod);
         drag(canvas, bob, pivot);
         QCOMPARE(w.document().setup().joints.size(), std::size_t(1));
         const JointDesc& rod = w.document().setup().joints[0];
@@ -388,14 +389,14 @@ private slots:
         MainWindow w;
         w.resize(1200, 800);
         w.show();
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const QPoint c = canvas->rect().center() + QPoint(0, -150);
         w.action("toolParticle")->trigger();
         for (const QPoint& p : {c, c + QPoint(100, 0), c + QPoint(250, 0)})
             QTest::mouseClick(canvas, Qt::LeftButton, {}, p);
         auto* type = w.findChild<QComboBox*>(QStringLiteral("jointType"));
         type->setCurrentIndex(type->findText(QStringLiteral("pulley")));
-        QCOMPARE(w.tools()->tool(), CanvasTools::Tool::Joint);
+        QCOMPARE(toolsOf(w)->tool(), CanvasTools::Tool::Joint);
         drag(canvas, c, c + QPoint(100, 0));
         type->setCurrentIndex(type->findText(QStringLiteral("track")));
         drag(canvas, c + QPoint(250, 0), c + QPoint(250, -80));
@@ -423,14 +424,14 @@ private slots:
         MainWindow w;
         w.resize(1200, 800);
         w.show();
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const QPoint c = canvas->rect().center() + QPoint(0, -200);
         w.action("toolBox")->trigger();
         drag(canvas, c, c + QPoint(120, 20));
         drag(canvas, c + QPoint(130, 0), c + QPoint(250, 20));
         QCOMPARE(w.document().setup().boxes.size(), std::size_t(2));
         w.action("toolJoint")->trigger();
-        QCOMPARE(w.tools()->jointType(), JointType::Hinge);
+        QCOMPARE(toolsOf(w)->jointType(), JointType::Hinge);
         QTest::mouseClick(canvas, Qt::LeftButton, {}, c + QPoint(5, 10));
         drag(canvas, c + QPoint(115, 10), c + QPoint(140, 10));
         const auto& joints = w.document().setup().joints;
@@ -451,9 +452,9 @@ private slots:
         w.document().reset();
         auto* type = w.findChild<QComboBox*>(QStringLiteral("jointType"));
         type->setCurrentIndex(type->findText(QStringLiteral("weld")));
-        const Vec2 bar = w.document().world().boxPosition(0);
+        const Vec2 bar = w.document().world().bodyPosition(0);
         QTest::mouseClick(canvas, Qt::LeftButton, {},
-                          w.canvas()->toWidget(QPointF(bar.x(), bar.y())).toPoint());
+                          canvasOf(w)->toWidget(QPointF(bar.x(), bar.y())).toPoint());
         QCOMPARE(w.document().setup().joints.size(), std::size_t(2));
         const auto* status = w.findChild<QLabel*>(QStringLiteral("statusMessage"));
         QVERIFY2(status->text().contains(QStringLiteral("two bodies")), qPrintable(status->text()));
@@ -463,7 +464,7 @@ private slots:
         MainWindow w;
         w.resize(1200, 800);
         w.show();
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const QPoint c = canvas->rect().center();
         w.action("toolParticle")->trigger();
         QTest::mouseClick(canvas, Qt::LeftButton, {}, c);

@@ -8,6 +8,7 @@
 // With PHASEBOX_SCREENSHOT_DIR set, pictures of the canvas are written there to look at.
 
 #include "GuiTestSupport.h"
+#include "MainWindowTestSupport.h"
 #include "app/desktop/CanvasTools.h"
 #include "app/desktop/DesktopOptions.h"
 #include "app/desktop/MainWindow.h"
@@ -27,6 +28,7 @@
 #include <numbers>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 using phasebox::testing::freeScene;
 using phasebox::testing::visibleParticle;
 
@@ -40,8 +42,8 @@ struct Window {
         w.resize(1200, 800);
         w.show();
     }
-    ui::SceneView* canvas() { return w.canvas(); }
-    MeasureTools* measure() { return w.measureTools(); }
+    ui::SceneView* canvas() { return canvasOf(w); }
+    MeasureTools* measure() { return measureToolsOf(w); }
     void load(const SceneDesc& scene) {
         QString error;
         QVERIFY2(w.document().loadFromDesc(scene, {}, &error), qPrintable(error));
@@ -112,7 +114,7 @@ void TestMeasureTools::rulerByMouseReadsTheHypotenuse() {
     Window win;
     win.load(SceneDesc{});
     win.exactView();
-    win.w.tools()->setTool(CanvasTools::Tool::Ruler);
+    toolsOf(win.w)->setTool(CanvasTools::Tool::Ruler);
     QCOMPARE(win.w.action(QStringLiteral("toolRuler"))->isChecked(), true);
     win.drag(win.pixel(0.0, 0.0), win.pixel(3.0, 4.0));
     QCOMPARE(win.measure()->rulerCount(), 1);
@@ -140,7 +142,7 @@ void TestMeasureTools::rulerAttachedToParticlesFollowsThem() {
     Window win;
     win.load(scene);
     win.exactView();
-    win.w.tools()->setTool(CanvasTools::Tool::Ruler);
+    toolsOf(win.w)->setTool(CanvasTools::Tool::Ruler);
     win.drag(win.pixel(0.0, 0.0), win.pixel(3.0, 4.0));
     QCOMPARE(win.measure()->rulerCount(), 1);
     QVERIFY(win.canvas()->measurements().rulers[0].attachedA);
@@ -167,7 +169,7 @@ void TestMeasureTools::protractorReadsRightAndHalfRightAngles() {
     Window win;
     win.load(SceneDesc{});
     win.exactView();
-    win.w.tools()->setTool(CanvasTools::Tool::Protractor);
+    toolsOf(win.w)->setTool(CanvasTools::Tool::Protractor);
     // Vertex at the origin, first arm along x, then a click on the y axis.
     win.drag(win.pixel(0.0, 0.0), win.pixel(2.0, 0.0));
     QCOMPARE(win.measure()->protractorCount(), 0);
@@ -193,7 +195,7 @@ void TestMeasureTools::protractorReadsRightAndHalfRightAngles() {
     QCOMPARE(win.canvas()->measurements().protractors[0].vertex, QPointF(0.0, 0.0));
     // The Instruments dock offers every instrument's probe.
     for (int i = 0; i < 3; ++i)
-        QVERIFY(win.w.instruments()->offered().contains(win.measure()->protractorProbe(i)));
+        QVERIFY(instrumentsOf(win.w)->offered().contains(win.measure()->protractorProbe(i)));
     QVERIFY(!win.measure()->addProtractor(QStringLiteral("0:0,1:0"), &error));
     QVERIFY2(error.contains(QStringLiteral("A,B,C")), qPrintable(error));
     win.snapshot(QStringLiteral("protractor.png"));
@@ -202,7 +204,7 @@ void TestMeasureTools::protractorReadsRightAndHalfRightAngles() {
 void TestMeasureTools::instrumentsAreRemovedWithEscDeleteOrClear() {
     Window win;
     win.openWithParticle("p", {5.0, 5.0});
-    win.w.tools()->setTool(CanvasTools::Tool::Ruler);
+    toolsOf(win.w)->setTool(CanvasTools::Tool::Ruler);
     win.drag(win.pixel(0.0, 0.0), win.pixel(2.0, 0.0));
     win.drag(win.pixel(0.0, 1.0), win.pixel(2.0, 1.0));
     QCOMPARE(win.measure()->rulerCount(), 2);
@@ -233,7 +235,7 @@ void TestMeasureTools::draggingAnEndMovesAndAttachesIt() {
     QCOMPARE(win.w.action(QStringLiteral("toolRuler"))->shortcut(), QKeySequence(Qt::Key_R));
     QCOMPARE(win.w.action(QStringLiteral("toolProtractor"))->shortcut(), QKeySequence(Qt::Key_P));
     QCOMPARE(win.w.action(QStringLiteral("freeBody"))->shortcut(), QKeySequence(Qt::Key_B));
-    win.w.tools()->setTool(CanvasTools::Tool::Ruler);
+    toolsOf(win.w)->setTool(CanvasTools::Tool::Ruler);
     win.drag(win.pixel(0.0, 0.0), win.pixel(2.0, 0.0));
     QVERIFY(std::abs(win.measure()->rulerLength(0) - 2.0) < 1e-12);
     // The end at (2, 0) dropped on p: attached, 5 m from the origin.

@@ -29,6 +29,7 @@
 #include <cmath>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 using testing::drag;
 
 namespace {
@@ -76,18 +77,18 @@ private slots:
         const QString warning = QStringLiteral("Kinematic contacts cannot hold a stack");
         QVERIFY(w.document().loadFromDesc(tower(4, ContactModel::Kinematic)));
         w.refreshNow();
-        const QString text = w.parametersPanel()->adviceText();
+        const QString text = parametersPanelOf(w)->adviceText();
         QVERIFY2(text.contains(warning) && text.contains(QStringLiteral("Use impulse contacts")),
                  qPrintable(text));
-        QVERIFY(w.parametersPanel()->findChild<QLabel*>("advice")->property("warning").toBool());
+        QVERIFY(parametersPanelOf(w)->findChild<QLabel*>("advice")->property("warning").toBool());
 
         QVERIFY(w.document().loadFromDesc(tower(1, ContactModel::Kinematic)));
         w.refreshNow();
-        QVERIFY2(!w.parametersPanel()->adviceText().contains(warning),
-                 qPrintable(w.parametersPanel()->adviceText()));
+        QVERIFY2(!parametersPanelOf(w)->adviceText().contains(warning),
+                 qPrintable(parametersPanelOf(w)->adviceText()));
         QVERIFY(w.document().loadFromDesc(tower(4, ContactModel::Impulse)));
         w.refreshNow();
-        QVERIFY(!w.parametersPanel()->adviceText().contains(warning));
+        QVERIFY(!parametersPanelOf(w)->adviceText().contains(warning));
     }
 
     // The cloth the tool draws on a new scene drapes: pinned at its top corners, the middle of
@@ -97,7 +98,7 @@ private slots:
         MainWindow w;
         w.resize(1024, 700);
         w.show();
-        QWidget* canvas = w.canvas();
+        QWidget* canvas = canvasOf(w);
         const QPoint c = canvas->rect().center();
         w.action("toolCloth")->trigger();
         // About 2.5 m × 1.5 m at the new scene's scale.
@@ -150,7 +151,7 @@ private slots:
         QVERIFY(w.document().loadFromDesc(scene));
         QCOMPARE(w.document().setup().simulation.integrator, std::string("symplectic_euler"));
         // The Parameters panel's advice, in the lecture's notation, not the terminal's.
-        const QString advice = w.parametersPanel()->adviceText();
+        const QString advice = parametersPanelOf(w)->adviceText();
         QVERIFY2(
             advice.contains(QStringLiteral("ω·h")) && !advice.contains(QStringLiteral("omega")),
             qPrintable(advice));
@@ -210,14 +211,14 @@ private slots:
         w.document().setSelection({QStringLiteral("ball")});
         QVERIFY(w.controller().advance(0.5));
         w.refreshNow();
-        const auto& samples = w.recorder().phaseSamples();
+        const auto& samples = recorderOf(w).phaseSamples();
         QVERIFY(samples.size() > 2);
-        QCOMPARE(w.recorder().phaseTimes().front(), 0.0);
+        QCOMPARE(recorderOf(w).phaseTimes().front(), 0.0);
         QCOMPARE(samples.front().coordinate, 0.5);
         QCOMPARE(samples.front().velocity, 2.0);
         // The chart's start dot is that point.
         bool found = false;
-        for (QChartView* view : w.plotsPanel()->findChildren<QChartView*>())
+        for (QChartView* view : plotsPanelOf(w)->findChildren<QChartView*>())
             for (QAbstractSeries* series : view->chart()->series())
                 if (series->name() == QStringLiteral("start")) {
                     auto* start = qobject_cast<QLineSeries*>(series);
@@ -235,7 +236,7 @@ private slots:
         w.show();
         w.action("new")->trigger();
         QTest::qWait(50);
-        const QRectF seen = w.canvas()->view().visibleWorldRect();
+        const QRectF seen = canvasOf(w)->view().visibleWorldRect();
         const double groundY = w.document().setup().planes.front().point[1];
         qInfo("new scene: %.2f m x %.2f m from (%.2f, %.2f)", seen.width(), seen.height(),
               seen.left(), seen.top());
@@ -252,12 +253,12 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QVERIFY(w.openFile(QStringLiteral(":/scenes/demo.phasebox.json"), true));
-        QTRY_VERIFY(w.canvas()->width() >= 512);
-        qInfo("canvas %d of %d px", w.canvas()->width(), w.width());
+        QTRY_VERIFY(canvasOf(w)->width() >= 512);
+        qInfo("canvas %d of %d px", canvasOf(w)->width(), w.width());
 
         QVERIFY(w.controller().advance(0.5));
         w.refreshNow();
-        auto* tree = w.effectsPanel()->findChild<QTreeWidget*>("effects");
+        auto* tree = effectsPanelOf(w)->findChild<QTreeWidget*>("effects");
         QVERIFY(tree && tree->topLevelItemCount() > 0);
         QHeaderView* header = tree->header();
         QVERIFY(header->sectionViewportPosition(1) + header->sectionSize(1) <=

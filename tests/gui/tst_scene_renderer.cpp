@@ -80,11 +80,11 @@ std::unique_ptr<World> pickingWorld() {
     ball.id = "ball";
     ball.radius = 0.1;
     world->addParticle(ball);
-    Box crate;
+    RigidBody crate;
     crate.id = "crate";
     crate.position = {2.0, 0.0};
     crate.angle = 0.3;
-    world->addBox(crate);
+    world->addRigidBody(crate);
     Plane ground;
     ground.id = "ground";
     ground.point = {0.0, -1.0};
@@ -217,10 +217,10 @@ void TestSceneRenderer::particleDrawnWhereItIs() {
 
 void TestSceneRenderer::rotatedBoxCoversItsRotatedShape() {
     World world;
-    Box box;
+    RigidBody box;
     box.id = "diamond";
     box.angle = std::numbers::pi / 4.0;  // corners on the axes at ±0.707 m
-    world.addBox(box);
+    world.addRigidBody(box);
     world.commit();
     const ViewTransform view({0.0, 0.0}, 100.0, kSize);
     const QImage image = render(world, view);
@@ -554,17 +554,17 @@ void TestSceneRenderer::decorationsAreDrawn() {
     const int q = particle("q", {3.0, 1.2}, {0.0, 0.0});
     particle("fast", {-1.0, -0.3}, {2.0, 1.0});
     particle("pin", {-1.0, 1.5}, {0.0, 0.0}, true);
-    Box crate;
+    RigidBody crate;
     crate.id = "crate";
     crate.position = {1.5, 0.0};
     crate.velocity = {1.0, 0.5};
-    const int box = world.addBox(crate);
-    Box wall;
+    const int box = world.addRigidBody(crate);
+    RigidBody wall;
     wall.id = "wall";
     wall.position = {-2.5, 0.0};
     wall.size = {0.3, 2.0};
     wall.isStatic = true;
-    world.addBox(wall);
+    world.addRigidBody(wall);
     Plane ground;
     ground.id = "ground";
     ground.point = {0.0, -1.0};
@@ -578,7 +578,7 @@ void TestSceneRenderer::decorationsAreDrawn() {
     world.addSpring(hang);
     Spring push = hang;  // compressed
     push.id = "push";
-    push.a = {SpringEnd::Kind::Box, box, Vec2(0.5, 0.5)};
+    push.a = {SpringEnd::Kind::Rigid, box, Vec2(0.5, 0.5)};
     push.b = {SpringEnd::Kind::Particle, q, Vec2::Zero()};
     push.restLength = 2.0;
     world.addSpring(push);

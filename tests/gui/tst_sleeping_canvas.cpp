@@ -2,6 +2,7 @@
 // drawn dimmed; dragging it wakes it (and it is drawn as before); a scene without sleep never
 // dims anything.
 
+#include "MainWindowTestSupport.h"
 #include "app/desktop/MainWindow.h"
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
@@ -14,6 +15,7 @@
 #include <QTest>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 
@@ -32,8 +34,8 @@ QString writeScene(const QTemporaryDir& dir, bool sleep) {
 }
 
 QColor colourAt(MainWindow& w, const Vec2& point) {
-    const QImage image = w.canvas()->renderImage(w.canvas()->size());
-    return image.pixelColor(w.canvas()->toWidget(QPointF(point.x(), point.y())).toPoint());
+    const QImage image = canvasOf(w)->renderImage(canvasOf(w)->size());
+    return image.pixelColor(canvasOf(w)->toWidget(QPointF(point.x(), point.y())).toPoint());
 }
 
 }  // namespace
@@ -51,28 +53,28 @@ private slots:
         QVERIFY(w.openFile(writeScene(dir, true), true));
         QVERIFY(w.document().setup().simulation.sleep);
         const ui::SceneColors colours;
-        QCOMPARE(colourAt(w, w.document().world().boxPosition(0)), colours.dynamicBox);
+        QCOMPARE(colourAt(w, w.document().world().bodyPosition(0)), colours.dynamicBox);
         QVERIFY(w.controller().advance(1.5));
         const World& world = w.document().world();
         QCOMPARE(world.sleepingBodies(), 2);
-        QVERIFY(world.boxes()[0].asleep);
-        QCOMPARE(colourAt(w, world.boxPosition(0)), colours.sleepingBox);
-        QCOMPARE(colourAt(w, world.boxPosition(1)), colours.sleepingBox);
+        QVERIFY(world.rigidBodies()[0].asleep);
+        QCOMPARE(colourAt(w, world.bodyPosition(0)), colours.sleepingBox);
+        QCOMPARE(colourAt(w, world.bodyPosition(1)), colours.sleepingBox);
 
         // A drag on the crate pulls it with the mouse spring: its island wakes.
-        QWidget* canvas = w.canvas();
-        const Vec2 at = w.document().world().boxPosition(0);
-        const QPoint crate = w.canvas()->toWidget(QPointF(at.x(), at.y())).toPoint();
+        QWidget* canvas = canvasOf(w);
+        const Vec2 at = w.document().world().bodyPosition(0);
+        const QPoint crate = canvasOf(w)->toWidget(QPointF(at.x(), at.y())).toPoint();
         QTest::mousePress(canvas, Qt::LeftButton, {}, crate);
         QTest::mouseMove(canvas, crate + QPoint(10, -5));
         QTest::mouseMove(canvas, crate + QPoint(20, -10));
         QVERIFY(w.document().isGrabbing());
         QCOMPARE(w.document().world().sleepingBodies(), 0);
-        QVERIFY(!w.document().world().boxes()[0].asleep);
-        QCOMPARE(colourAt(w, w.document().world().boxPosition(0)), colours.dynamicBox);
+        QVERIFY(!w.document().world().rigidBodies()[0].asleep);
+        QCOMPARE(colourAt(w, w.document().world().bodyPosition(0)), colours.dynamicBox);
         QVERIFY(w.controller().advance(0.3));
         // Held by the mouse, the crate does not fall asleep.
-        QVERIFY(!w.document().world().boxes()[0].asleep);
+        QVERIFY(!w.document().world().rigidBodies()[0].asleep);
         QTest::mouseRelease(canvas, Qt::LeftButton, {}, crate + QPoint(20, -10));
         QVERIFY(!w.document().isGrabbing());
         // Let go, the two come to rest and sleep again.
@@ -89,7 +91,7 @@ private slots:
         QVERIFY(w.openFile(writeScene(dir, false), true));
         QVERIFY(w.controller().advance(1.5));
         QCOMPARE(w.document().world().sleepingBodies(), 0);
-        QCOMPARE(colourAt(w, w.document().world().boxPosition(0)), ui::SceneColors{}.dynamicBox);
+        QCOMPARE(colourAt(w, w.document().world().bodyPosition(0)), ui::SceneColors{}.dynamicBox);
     }
 };
 

@@ -5,6 +5,7 @@
 // moment goes on exactly as the run went on, and drops the later frames as one undoable step (Undo
 // brings them back).
 
+#include "MainWindowTestSupport.h"
 #include "app/desktop/MainWindow.h"
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
@@ -33,6 +34,7 @@
 #include <vector>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 
@@ -55,7 +57,7 @@ QString statusTime(MainWindow& w) {
 
 // The x of the energy plot's cursor line, NaN when there is none.
 double energyCursor(MainWindow& w) {
-    const QChart* chart = w.plotsPanel()->energyView()->chart();
+    const QChart* chart = plotsPanelOf(w)->energyView()->chart();
     for (QAbstractSeries* s : chart->series())
         if (s->name() == QStringLiteral("cursor")) {
             const auto* line = static_cast<QXYSeries*>(s);
@@ -66,7 +68,7 @@ double energyCursor(MainWindow& w) {
 
 // The phase plot's cursor dot, NaN when there is none.
 QPointF phaseCursor(MainWindow& w) {
-    const QChart* chart = w.plotsPanel()->phaseView()->chart();
+    const QChart* chart = plotsPanelOf(w)->phaseView()->chart();
     const double nan = std::numeric_limits<double>::quiet_NaN();
     if (!chart) return {nan, nan};
     for (QAbstractSeries* s : chart->series())
@@ -104,7 +106,7 @@ public:
     Moment now() {
         w_.refreshNow();
         QCoreApplication::processEvents();
-        return {bitsOf(w_.document().world()), w_.canvas()->grab().toImage(), statusTime(w_),
+        return {bitsOf(w_.document().world()), canvasOf(w_)->grab().toImage(), statusTime(w_),
                 readouts(w_)};
     }
     // Steps the run one step at a time, keeping every moment.
@@ -144,8 +146,8 @@ private slots:
         w.action("showInstruments")->trigger();
         QCoreApplication::processEvents();
         int box = -1;
-        for (std::size_t i = 0; i < w.document().world().boxes().size(); ++i)
-            if (w.document().world().boxes()[i].id == "r1c2") box = static_cast<int>(i);
+        for (std::size_t i = 0; i < w.document().world().rigidBodies().size(); ++i)
+            if (w.document().world().rigidBodies()[i].id == "r1c2") box = static_cast<int>(i);
         QVERIFY(box >= 0);
         Run run(w);
         run.moments.push_back(run.now());
@@ -166,7 +168,7 @@ private slots:
             QCOMPARE(shown.readouts, then.readouts);
             const World& world = w.document().world();
             QCOMPARE(phaseCursor(w),
-                     QPointF(world.boxPosition(box).y(), world.boxVelocity(box).y()));
+                     QPointF(world.bodyPosition(box).y(), world.bodyVelocity(box).y()));
             QVERIFY2(shown.canvas == then.canvas,
                      qPrintable(QStringLiteral("canvas at frame %1").arg(frame)));
             QCOMPARE(energyCursor(w), w.document().world().time());
@@ -226,7 +228,7 @@ private slots:
         auto* timeline = w.findChild<QWidget*>(QStringLiteral("timeline"));
         QVERIFY(timeline && timeline->isVisible());
         QVERIFY(timeline->geometry().bottom() <= w.centralWidget()->height());
-        QVERIFY(w.canvas()->height() > 200);
+        QVERIFY(canvasOf(w)->height() > 200);
         w.controller().advance(0.5);
         w.refreshNow();
         const auto* memory = w.findChild<QLabel*>(QStringLiteral("timelineMemory"));

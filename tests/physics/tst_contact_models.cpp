@@ -298,7 +298,7 @@ private slots:
         QCOMPARE(world->velocities(), u);
         QVERIFY(std::abs(world->energy().drift - drift) < 1e-12);
         for (int i = 0; i < 120; ++i) QVERIFY(world->step());
-        QVERIFY(std::abs(world->boxPosition(0).y() - 0.5) < 0.05);
+        QVERIFY(std::abs(world->bodyPosition(0).y() - 0.5) < 0.05);
     }
 
     void contactForceHoldsUpTheWeight_data() {

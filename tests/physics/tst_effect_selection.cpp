@@ -117,10 +117,10 @@ void TestEffectSelection::firstBoxSwitchesContactsOnAndRebuildingWithoutSwitches
     scene.planes.push_back(ground);
     auto world = build(scene);
     QVERIFY(world->contacts() == nullptr);
-    Box box;
+    RigidBody box;
     box.id = "crate";
     box.position = {0.0, 0.0};
-    world->addBox(box);
+    world->addRigidBody(box);
     world->commit();
     QVERIFY(world->contacts() != nullptr);
     for (int n = 0; n < 5; ++n) QVERIFY(world->step());

@@ -141,10 +141,10 @@ void TestEffectsClosedForm::floatingBoxSinksToDensityRatio() {
     const double h = 0.5;
     auto world = build(floatingBox({2.0, h}, ratio, 0.0, 4.0));
     QVERIFY(runFor(*world, 15.0));
-    const double depth = h / 2.0 - world->boxPosition(0).y();  // surface − bottom
+    const double depth = h / 2.0 - world->bodyPosition(0).y();  // surface − bottom
     qInfo("ρ_b/ρ_f = %.2f: depth %.9f m, Archimedes %.9f m", ratio, depth, ratio * h);
     QVERIFY2(std::abs(depth - ratio * h) <= 1e-6 * h, qPrintable(QString::number(depth, 'g', 12)));
-    QVERIFY(std::abs(world->boxAngle(0)) < 1e-12);  // an upright box is never turned
+    QVERIFY(std::abs(world->bodyAngle(0)) < 1e-12);  // an upright box is never turned
     // The water's drag took the bobbing energy: work_nc < 0 and the drift is rk4's alone.
     QVERIFY(world->energy().workNc < 0.0);
     QVERIFY(world->energy().maxAbsDrift <= 1e-6 * std::abs(world->energy().workNc));
@@ -158,12 +158,12 @@ void TestEffectsClosedForm::tiltedRaftRightsItself() {
     double minAngle = 1.0;
     for (int n = 0; n < 20 * 120; ++n) {
         QVERIFY(world->step());
-        minAngle = std::min(minAngle, world->boxAngle(0));
+        minAngle = std::min(minAngle, world->bodyAngle(0));
     }
     qInfo("raft: angle after 20 s %.3e rad (overshoot to %.3f rad), depth %.6f m",
-          world->boxAngle(0), minAngle, 0.25 - world->boxPosition(0).y());
-    QVERIFY(std::abs(world->boxAngle(0)) < 1e-4);
-    QVERIFY(std::abs(world->boxPosition(0).y()) < 1e-4);  // half of the 0.5 m under: centre at 0
+          world->bodyAngle(0), minAngle, 0.25 - world->bodyPosition(0).y());
+    QVERIFY(std::abs(world->bodyAngle(0)) < 1e-4);
+    QVERIFY(std::abs(world->bodyPosition(0).y()) < 1e-4);  // half of the 0.5 m under: centre at 0
     QVERIFY(minAngle > -0.35);  // it came back, and did not flip the other way
 }
 
@@ -174,11 +174,11 @@ void TestEffectsClosedForm::tiltedRaftRightsItself() {
 void TestEffectsClosedForm::squareLogFloatsCornerDown() {
     auto world = build(floatingBox({1.0, 1.0}, 0.5, 0.2, 4.0));
     QVERIFY(runFor(*world, 30.0));
-    const double folded = quarterTurn(world->boxAngle(0));
+    const double folded = quarterTurn(world->bodyAngle(0));
     qInfo("square log: angle %.6f rad (mod π/2), 45° = %.6f", folded, kPi / 4.0);
     QVERIFY(std::abs(folded - kPi / 4.0) < 1e-4);
     // At 45° the half-submerged square's centre sits exactly at the surface.
-    QVERIFY(std::abs(world->boxPosition(0).y()) < 1e-4);
+    QVERIFY(std::abs(world->bodyPosition(0).y()) < 1e-4);
 }
 
 void TestEffectsClosedForm::diskFloatsAtSegmentDepth_data() {

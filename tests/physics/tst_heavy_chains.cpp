@@ -126,7 +126,7 @@ private slots:
         const double expected = exactPeriod(inertia / moment, theta0);
         const double duration = 3.2 * expected;  // three upward crossings
         const double kinetic = world->kineticEnergy();
-        const int dof = boxes ? world->layout().boxDof(links - 1) : 2 * (links - 1);
+        const int dof = boxes ? world->layout().rigidDof(links - 1) : 2 * (links - 1);
         double x = world->positions()[dof], t = 0.0, worstDrift = 0.0, worstGap = 0.0;
         double worstGain = 0.0;
         std::vector<double> crossings;

@@ -97,8 +97,8 @@ private slots:
                   worstPlace, worstTension);
             QVERIFY(worstPlace < 1e-6);
             QVERIFY(worstTension < 1e-6);
-            QVERIFY(w.boxPosition(0).norm() < 1e-9);
-            QVERIFY(std::abs(w.boxAngle(0)) < 1e-9);
+            QVERIFY(w.bodyPosition(0).norm() < 1e-9);
+            QVERIFY(std::abs(w.bodyAngle(0)) < 1e-9);
             if (hinged) QVERIFY(w.jointSolver()->force(n) < 1e-6);
         }
     }

@@ -463,11 +463,12 @@ private slots:
         for (int k = 0; k < 30; ++k) QVERIFY(w.step());  // 0.5 s: 0.61 m up, still slack
         const double t = w.time();
         // Symplectic Euler's O(h) offset a·t·h/2 aside, the closed form.
-        QVERIFY(std::abs(w.boxPosition(1).y() - (0.13 + 0.5 * a * t * t)) < 0.5 * a * t * h + 1e-6);
+        QVERIFY(std::abs(w.bodyPosition(1).y() - (0.13 + 0.5 * a * t * t)) <
+                0.5 * a * t * h + 1e-6);
         QVERIFY(std::abs(w.energy().correction) < 1e-9);
         for (int k = 0; k < 120; ++k) {
             QVERIFY(w.step());
-            QVERIFY(w.boxPosition(1).y() < 2.0 + 1e-3);  // caught at the rope's length
+            QVERIFY(w.bodyPosition(1).y() < 2.0 + 1e-3);  // caught at the rope's length
         }
     }
 
@@ -488,9 +489,9 @@ private slots:
         const auto built = buildWorld(s);
         World& w = *built.world;
         for (int k = 0; k < 240; ++k) QVERIFY(w.step());
-        const Vec2 d = rotation(-w.boxAngle(0)) * (w.boxPosition(1) - w.boxPosition(0));
+        const Vec2 d = rotation(-w.bodyAngle(0)) * (w.bodyPosition(1) - w.bodyPosition(0));
         QVERIFY((d - Vec2(1.0, 0.2)).norm() < 1e-6);
-        QVERIFY(std::abs(w.boxAngle(1) - w.boxAngle(0) - 0.3) < 1e-6);
+        QVERIFY(std::abs(w.bodyAngle(1) - w.bodyAngle(0) - 0.3) < 1e-6);
     }
 
     // A motor on a wheel hinged to the world: with torque to spare it holds its speed; capped,
@@ -512,7 +513,7 @@ private slots:
             const auto built = buildWorld(s);
             World& w = *built.world;
             for (int k = 0; k < 30; ++k) QVERIFY(w.step());
-            const double omega = w.boxAngularVelocity(0);
+            const double omega = w.bodyAngularVelocity(0);
             if (maxTorque > 100.0) {
                 QVERIFY(std::abs(omega + 2.0) < 1e-9);
             } else {
@@ -520,7 +521,7 @@ private slots:
                 QVERIFY(std::abs(w.energy().workNc - 0.5 * 0.25 * omega * omega) < 1e-9);
                 QVERIFY(std::abs(w.energy().correction) < 1e-9);
             }
-            QVERIFY(w.boxPosition(0).norm() < 1e-9);
+            QVERIFY(w.bodyPosition(0).norm() < 1e-9);
         }
     }
 
@@ -621,12 +622,12 @@ private slots:
         double lowest = 0.0;
         for (int k = 0; k < 180; ++k) {
             QVERIFY(w.step());
-            lowest = std::min(lowest, w.boxAngle(0));
+            lowest = std::min(lowest, w.bodyAngle(0));
             QVERIFY(w.jointErrors().angle < 1e-3);
             QVERIFY(w.jointErrors().position < 1e-3);
         }
         QVERIFY(lowest > -0.5 - 1e-3);
-        QVERIFY(std::abs(w.boxAngle(0) + 0.5) < 1e-3);  // resting on its lower limit
+        QVERIFY(std::abs(w.bodyAngle(0) + 0.5) < 1e-3);  // resting on its lower limit
     }
 
     // Bodies held by a joint do not collide: two overlapping boxes hinged together fall as one,
@@ -644,9 +645,9 @@ private slots:
         const auto built = buildWorld(s);
         World& w = *built.world;
         for (int k = 0; k < 30; ++k) QVERIFY(w.step());
-        QVERIFY(std::abs(w.boxPosition(1).x() - w.boxPosition(0).x() - 0.5) < 1e-9);
-        QVERIFY(std::abs(w.boxAngle(0)) < 1e-9);
-        QVERIFY(std::abs(w.boxAngle(1)) < 1e-9);
+        QVERIFY(std::abs(w.bodyPosition(1).x() - w.bodyPosition(0).x() - 0.5) < 1e-9);
+        QVERIFY(std::abs(w.bodyAngle(0)) < 1e-9);
+        QVERIFY(std::abs(w.bodyAngle(1)) < 1e-9);
     }
 
     // Chains and trees solve in O(n): the minimum-degree elimination of their joint graph makes

@@ -39,14 +39,14 @@ using sleep_scenes::pyramid;
 using sleep_scenes::pyramidAndSlider;
 
 int boxIndex(const World& w, const std::string& id) {
-    for (int i = 0; i < static_cast<int>(w.boxes().size()); ++i)
-        if (w.boxes()[i].id == id) return i;
+    for (int i = 0; i < static_cast<int>(w.rigidBodies().size()); ++i)
+        if (w.rigidBodies()[i].id == id) return i;
     return -1;
 }
 
 int asleepAmong(const World& w, int count) {
     int n = 0;
-    for (int i = 0; i < count; ++i) n += w.boxes()[i].asleep;
+    for (int i = 0; i < count; ++i) n += w.rigidBodies()[i].asleep;
     return n;
 }
 
@@ -81,11 +81,11 @@ std::uint64_t hashOf(const World& w) {
             h *= 0x100000001B3ull;
         }
     };
-    for (int i = 0; i < static_cast<int>(w.boxes().size()); ++i) {
-        add(w.boxPosition(i).x());
-        add(w.boxPosition(i).y());
-        add(w.boxAngle(i));
-        add(w.boxVelocity(i).x());
+    for (int i = 0; i < static_cast<int>(w.rigidBodies().size()); ++i) {
+        add(w.bodyPosition(i).x());
+        add(w.bodyPosition(i).y());
+        add(w.bodyAngle(i));
+        add(w.bodyVelocity(i).x());
     }
     add(w.energy().drift);
     add(w.energy().correction);
@@ -169,21 +169,21 @@ private slots:
         const int n = kPyramidBoxes;
         std::vector<Vec2> last(n);
         std::vector<char> wasAsleep(n, 0);
-        for (int i = 0; i < n; ++i) last[i] = w->boxPosition(i);
+        for (int i = 0; i < n; ++i) last[i] = w->bodyPosition(i);
         double largest = 0.0;
         bool woke = false;
         int asleepSteps = 0;
         while (w->time() < 12.0) {
             QVERIFY(w->step());
             for (int i = 0; i < n; ++i) {
-                const double moved = (w->boxPosition(i) - last[i]).norm();
+                const double moved = (w->bodyPosition(i) - last[i]).norm();
                 largest = std::max(largest, moved);
-                if (wasAsleep[i] && w->boxes()[i].asleep) {
+                if (wasAsleep[i] && w->rigidBodies()[i].asleep) {
                     QCOMPARE(moved, 0.0);
                     ++asleepSteps;
                 }
-                wasAsleep[i] = w->boxes()[i].asleep;
-                last[i] = w->boxPosition(i);
+                wasAsleep[i] = w->rigidBodies()[i].asleep;
+                last[i] = w->bodyPosition(i);
             }
             if (!woke && w->sleepingBodies() == n) {
                 woke = true;
@@ -211,10 +211,10 @@ private slots:
                 if (asleepAt < 0.0 && asleepAmong(*w, kPyramidBoxes) == kPyramidBoxes)
                     asleepAt = w->time();
             }
-            apexBefore = w->boxPosition(apex).x();
+            apexBefore = w->bodyPosition(apex).x();
             while (w->time() < 16.0)
                 if (!w->step()) return false;
-            apexAfter = w->boxPosition(apex).x();
+            apexAfter = w->bodyPosition(apex).x();
             sleepingAtEnd = asleepAmong(*w, kPyramidBoxes);
             return true;
         };
@@ -322,11 +322,11 @@ private slots:
         auto w = build(s);
         while (w->time() < 2.0) QVERIFY(w->step());
         QCOMPARE(w->sleepingBodies(), 4);
-        QVERIFY(!w->boxes()[4].asleep);
+        QVERIFY(!w->rigidBodies()[4].asleep);
         QVERIFY(w->wakeBody(true, 1));  // a1: the a stack wakes, the b stack sleeps on
         QCOMPARE(w->sleepingBodies(), 2);
-        QVERIFY(!w->boxes()[0].asleep && !w->boxes()[1].asleep);
-        QVERIFY(w->boxes()[2].asleep && w->boxes()[3].asleep);
+        QVERIFY(!w->rigidBodies()[0].asleep && !w->rigidBodies()[1].asleep);
+        QVERIFY(w->rigidBodies()[2].asleep && w->rigidBodies()[3].asleep);
         QVERIFY(!w->wakeBody(true, 4));  // the slider is awake already
         while (w->time() < 3.0) QVERIFY(w->step());
         QCOMPARE(w->sleepingBodies(), 4);
@@ -348,7 +348,7 @@ private slots:
         s.joints.push_back(hinge);
         auto w = build(s);
         while (w->time() < 3.0) QVERIFY(w->step());
-        QVERIFY(w->boxVelocity(0).norm() < World::kSleepSpeed);
+        QVERIFY(w->bodyVelocity(0).norm() < World::kSleepSpeed);
         QCOMPARE(w->sleepingBodies(), 0);
     }
 

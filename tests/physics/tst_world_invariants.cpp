@@ -94,7 +94,7 @@ SceneDesc boxPairScene(const std::string& integrator, double dt, double damping)
 // nothing can touch.
 double clearance(const World& world) {
     const double rl = std::hypot(0.4, 0.2), rr = std::hypot(0.25, 0.5);
-    const Eigen::Vector2d left = world.boxPosition(0), right = world.boxPosition(1);
+    const Eigen::Vector2d left = world.bodyPosition(0), right = world.bodyPosition(1);
     const Eigen::Vector2d bob = world.particlePosition(0);
     return std::min(
         {(right - left).norm() - rl - rr, (bob - left).norm() - rl, (bob - right).norm() - rr});
@@ -138,8 +138,8 @@ Eigen::Vector3d momenta(const World& world) {
         result.z() += m[dof] * (q[dof] * u[dof + 1] - q[dof + 1] * u[dof]);
     };
     for (int p = 0; p < layout.dynamicParticles; ++p) body(layout.particleDof(p));
-    for (int b = 0; b < layout.dynamicBoxes; ++b) {
-        const int dof = layout.boxDof(b);
+    for (int b = 0; b < layout.dynamicRigidBodies; ++b) {
+        const int dof = layout.rigidDof(b);
         body(dof);
         result.z() += m[dof + 2] * u[dof + 2];
     }
@@ -539,13 +539,13 @@ void TestWorldInvariants::springsConserveMomenta() {
     QFETCH(double, damping);
     auto world = build(boxPairScene(integrator.toStdString(), 0.002, damping));
     const Eigen::Vector3d p0 = momenta(*world);
-    const double gap0 = (world->boxPosition(1) - world->boxPosition(0)).norm();
+    const double gap0 = (world->bodyPosition(1) - world->bodyPosition(0)).norm();
     double gapChange = 0.0;
     for (int n = 0; n < 2000; ++n) {
         QVERIFY(world->step());
         QVERIFY2(clearance(*world) > 0.0, "the bodies came close enough to touch");
         gapChange = std::max(
-            gapChange, std::abs((world->boxPosition(1) - world->boxPosition(0)).norm() - gap0));
+            gapChange, std::abs((world->bodyPosition(1) - world->bodyPosition(0)).norm() - gap0));
     }
     const Eigen::Vector3d p = momenta(*world);
     QVERIFY2(

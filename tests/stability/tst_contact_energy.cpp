@@ -47,7 +47,7 @@ private slots:
         const EnergyLedger& e = world->energy();
         qInfo("%s: correction %.4f J (m·g·d = %.4f J), work_nc %.2e J, drift %.2e J",
               qPrintable(integrator), e.correction, m * g * d, e.workNc, e.drift);
-        QVERIFY(std::abs(world->boxPosition(0).y() - 0.5) < 0.005);
+        QVERIFY(std::abs(world->bodyPosition(0).y() - 0.5) < 0.005);
         // The push ends within the soft contact's sag (under a millimetre here) of d, and its
         // m·g·d is correction. (Under symplectic and implicit Euler a resting box also gets
         // back, each step, the ½·m·g²·h² that the method's step took, which shows as drift:
@@ -163,7 +163,7 @@ private slots:
         double fastest = 0.0, most = -1e300;
         for (int k = 0; k < 600; ++k) {
             QVERIFY(world->step());
-            for (int i = 0; i < 2; ++i) fastest = std::max(fastest, world->boxVelocity(i).norm());
+            for (int i = 0; i < 2; ++i) fastest = std::max(fastest, world->bodyVelocity(i).norm());
             most = std::max(most, world->energy().kinetic + world->energy().potential);
         }
         qInfo("%s, 1:%g: fastest %.3f m/s, energy at most %.6g J of %.6g J", qPrintable(integrator),

@@ -32,8 +32,8 @@ bool run(World& world, double seconds) {
 // The largest distance any box moved from its setup position.
 double largestBoxDisplacement(const World& world) {
     double worst = 0.0;
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-        worst = std::max(worst, (world.boxPosition(i) - world.boxes()[i].position).norm());
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+        worst = std::max(worst, (world.bodyPosition(i) - world.rigidBodies()[i].position).norm());
     return worst;
 }
 
@@ -117,7 +117,7 @@ private slots:
                 auto world = build(*scene);
                 const bool box = scene == &boxScene;
                 const auto bottom = [&] {
-                    return (box ? world->boxPosition(0).y() : world->particlePosition(0).y()) -
+                    return (box ? world->bodyPosition(0).y() : world->particlePosition(0).y()) -
                            0.5 * size;
                 };
                 double lowest = bottom();
@@ -147,11 +147,11 @@ private slots:
         QVERIFY(run(*world, 10.0));
         double sideways = 0.0, tilt = 0.0;
         for (int i = 0; i < count; ++i) {
-            sideways = std::max(sideways, std::abs(world->boxPosition(i).x()));
-            tilt = std::max(tilt, std::abs(world->boxAngle(i)));
+            sideways = std::max(sideways, std::abs(world->bodyPosition(i).x()));
+            tilt = std::max(tilt, std::abs(world->bodyAngle(i)));
         }
         const double height = count * 1.0;
-        const double shortening = height - (world->boxPosition(count - 1).y() + 0.5);
+        const double shortening = height - (world->bodyPosition(count - 1).y() + 0.5);
         qInfo(
             "tower of %d after 10 s: sideways %.2e m, tilt %.2e rad, shortened by %.4f m (%.2f%%)",
             count, sideways, tilt, shortening, 100.0 * shortening / height);
@@ -249,12 +249,12 @@ private slots:
         bool bounced[2] = {false, false}, done[2] = {false, false};
         for (int k = 0; k < 600 && !(done[0] && done[1]); ++k) {
             QVERIFY(run(*world, world->settings().dt));
-            spin = std::max(spin, std::abs(world->boxAngularVelocity(0)));
+            spin = std::max(spin, std::abs(world->bodyAngularVelocity(0)));
             for (int i = 0; i < 2; ++i) {
-                const double vy = world->boxVelocity(i).y();
+                const double vy = world->bodyVelocity(i).y();
                 if (vy > 0.0) bounced[i] = true;
                 if (bounced[i] && !done[i])
-                    top[i] = std::max(top[i], world->boxPosition(i).y() - 0.3);
+                    top[i] = std::max(top[i], world->bodyPosition(i).y() - 0.3);
                 if (bounced[i] && vy < 0.0) done[i] = true;
             }
         }
@@ -262,7 +262,7 @@ private slots:
               top[0], top[1], restitution * restitution * drop, spin);
         QVERIFY(done[0] && done[1]);
         QVERIFY2(spin < 1e-9, qPrintable(QString::number(spin)));
-        QVERIFY(std::abs(world->boxAngle(0)) < 1e-9);
+        QVERIFY(std::abs(world->bodyAngle(0)) < 1e-9);
         QVERIFY2(std::abs(top[0] - top[1]) < 1e-6 * drop, qPrintable(QString::number(top[0])));
     }
 
@@ -333,7 +333,7 @@ private slots:
     void boxHoldsOnIncline() {
         auto world = build(scenes::incline(20, 0.5));  // tan 20° = 0.364 < 0.5
         QVERIFY(run(*world, 5.0));
-        const double moved = (world->boxPosition(0) - world->boxes()[0].position).norm();
+        const double moved = (world->bodyPosition(0) - world->rigidBodies()[0].position).norm();
         qInfo("box on 20 deg incline with mu 0.5: moved %.5f m in 5 s", moved);
         QVERIFY(moved < 0.01);
     }
@@ -343,10 +343,10 @@ private slots:
         auto world = build(scenes::incline(20, mu));
         QVERIFY(run(*world, 0.5));  // let the contact settle
         const Vec2 down(-std::cos(theta), -std::sin(theta));
-        const double s0 = world->boxPosition(0).dot(down), v0 = world->boxVelocity(0).dot(down);
+        const double s0 = world->bodyPosition(0).dot(down), v0 = world->bodyVelocity(0).dot(down);
         const double t = 1.5;
         QVERIFY(run(*world, t));
-        const double s1 = world->boxPosition(0).dot(down);
+        const double s1 = world->bodyPosition(0).dot(down);
         // s1 − s0 = v0·t + a·t²/2 ⇒ the measured acceleration:
         const double measured = 2.0 * (s1 - s0 - v0 * t) / (t * t);
         const double expected = g * (std::sin(theta) - mu * std::cos(theta));
@@ -384,7 +384,8 @@ private slots:
         auto world = build(scenes::bullet(200));
         QCOMPARE(world->settings().dt, 1.0 / 60.0);
         const double radius = world->particles()[0].radius;
-        const double wallFront = world->boxes()[0].position.x() - 0.5 * world->boxes()[0].size.x();
+        const double wallFront =
+            world->rigidBodies()[0].position.x() - 0.5 * world->rigidBodies()[0].size.x();
         double furthest = -1e9;
         for (int k = 0; k < 60; ++k) {
             QVERIFY(world->step());
@@ -401,7 +402,7 @@ private slots:
         auto world = build(scenes::dominoes(30));
         QVERIFY(run(*world, 10.0));
         for (int i = 0; i < 30; ++i) {
-            const double angle = std::abs(world->boxAngle(i));
+            const double angle = std::abs(world->bodyAngle(i));
             QVERIFY2(angle > 0.5,
                      qPrintable(QStringLiteral("domino %1 stands (angle %2)").arg(i).arg(angle)));
         }
@@ -427,11 +428,11 @@ private slots:
         auto world = build(scene);
         QVERIFY(run(*world, 4.0));
         const double ballBottom = world->particlePosition(0).y() - world->particles()[0].radius;
-        const double boxBottom = world->boxPosition(0).y() - 0.25;
+        const double boxBottom = world->bodyPosition(0).y() - 0.25;
         QVERIFY2(ballBottom > -0.01 && ballBottom < 0.01, qPrintable(QString::number(ballBottom)));
         QVERIFY2(boxBottom > -0.01 && boxBottom < 0.01, qPrintable(QString::number(boxBottom)));
         QVERIFY(world->particleVelocity(0).norm() < 0.05);
-        QVERIFY(world->boxVelocity(0).norm() < 0.05);
+        QVERIFY(world->bodyVelocity(0).norm() < 0.05);
     }
 
     void restingBoxStaysStillUnderEveryIntegrator_data() { everyIntegratorRunsContacts_data(); }
@@ -447,10 +448,10 @@ private slots:
         double lo = 1e9, hi = -1e9, fastest = 0.0;
         for (int k = 0; k < 60; ++k) {
             QVERIFY(world->step());
-            const double bottom = world->boxPosition(0).y() - 0.5;
+            const double bottom = world->bodyPosition(0).y() - 0.5;
             lo = std::min(lo, bottom);
             hi = std::max(hi, bottom);
-            fastest = std::max(fastest, world->boxVelocity(0).norm());
+            fastest = std::max(fastest, world->bodyVelocity(0).norm());
         }
         qInfo("%s: bottom in [%.2e, %.2e] m, fastest %.2e m/s", qPrintable(integrator), lo, hi,
               fastest);
@@ -472,12 +473,12 @@ private slots:
         double highest = -1.0, fastest = 0.0;
         for (int k = 0; k < 120; ++k) {
             QVERIFY(world->step());
-            highest = std::max(highest, world->boxPosition(0).y());
-            fastest = std::max(fastest, world->boxVelocity(0).norm());
+            highest = std::max(highest, world->bodyPosition(0).y());
+            fastest = std::max(fastest, world->bodyVelocity(0).norm());
         }
         qInfo("overlap removal: highest centre %.5f m, fastest %.3f m/s, drift %.2e J", highest,
               fastest, world->energy().drift);
-        QVERIFY(std::abs(world->boxPosition(0).y() - 0.5) < 0.005);
+        QVERIFY(std::abs(world->bodyPosition(0).y() - 0.5) < 0.005);
         QVERIFY(highest < 0.5 + 0.005);  // no jump above resting height
         QVERIFY(fastest < 3.0 + 1e-9);   // the push-out speed limit
         QVERIFY(std::abs(world->energy().drift) < 1e-6);

@@ -66,27 +66,27 @@ private slots:
         auto world = buildWorld(diskOnIncline(integrator, theta, mu)).world;
         const Vec2 down(-std::cos(theta), -std::sin(theta));
         steps(*world, 30);  // the contact settles
-        const double v0 = world->boxVelocity(0).dot(down), w0 = world->boxAngularVelocity(0);
+        const double v0 = world->bodyVelocity(0).dot(down), w0 = world->bodyAngularVelocity(0);
         const double t = 1.0;
         steps(*world, 60);
         // From velocities: every method integrates a constant acceleration's velocity exactly,
         // whereas positions carry each method's O(h) offset.
-        const double a = (world->boxVelocity(0).dot(down) - v0) / t;
-        const double alpha = (world->boxAngularVelocity(0) - w0) / t;
+        const double a = (world->bodyVelocity(0).dot(down) - v0) / t;
+        const double alpha = (world->bodyAngularVelocity(0) - w0) / t;
         const bool rolls = mu >= std::tan(theta) / 3.0;
         const double expected = rolls ? 2.0 / 3.0 * kG * std::sin(theta)
                                       : kG * (std::sin(theta) - mu * std::cos(theta));
         const double expectedAlpha =
             rolls ? expected / kRadius : 2.0 * mu * kG * std::cos(theta) / kRadius;
         const double slip =
-            world->boxVelocity(0).dot(down) - world->boxAngularVelocity(0) * kRadius;
+            world->bodyVelocity(0).dot(down) - world->bodyAngularVelocity(0) * kRadius;
         qInfo("%s, mu %.2f: a = %.5f (expected %.5f), alpha = %.4f (expected %.4f), slip %.3g m/s",
               qPrintable(integrator), mu, a, expected, alpha, expectedAlpha, slip);
         QVERIFY2(std::abs(a / expected - 1.0) < 0.005, qPrintable(QString::number(a)));
         QVERIFY2(std::abs(alpha / expectedAlpha - 1.0) < 0.005, qPrintable(QString::number(alpha)));
         // Rolling: the contact point keeps still but for the soft contact's creep (0.3% of
         // the speed measured); sliding: it slips at (a − α·r)·t and more.
-        const double speed = world->boxVelocity(0).dot(down);
+        const double speed = world->bodyVelocity(0).dot(down);
         if (rolls)
             QVERIFY2(std::abs(slip) < 0.01 * speed, qPrintable(QString::number(slip)));
         else
@@ -106,16 +106,17 @@ private slots:
         double rolledAt = -1.0;
         for (int k = 0; k < 120; ++k) {
             QVERIFY(world->step());
-            const double slip = world->boxVelocity(0).x() + world->boxAngularVelocity(0) * kRadius;
+            const double slip =
+                world->bodyVelocity(0).x() + world->bodyAngularVelocity(0) * kRadius;
             if (rolledAt < 0.0 && std::abs(slip) < 0.01 * vStar) rolledAt = world->time();
         }
         qInfo("%s: rolls from t = %.4f s (expected %.4f), at %.5f m/s (expected %.5f)",
-              qPrintable(integrator), rolledAt, tStar, world->boxVelocity(0).x(), vStar);
+              qPrintable(integrator), rolledAt, tStar, world->bodyVelocity(0).x(), vStar);
         const double dt = world->settings().dt;
         QVERIFY2(rolledAt >= tStar - dt && rolledAt <= tStar + 2.0 * dt,
                  qPrintable(QString::number(rolledAt)));
-        QVERIFY2(std::abs(world->boxVelocity(0).x() / vStar - 1.0) < 0.002,
-                 qPrintable(QString::number(world->boxVelocity(0).x())));
+        QVERIFY2(std::abs(world->bodyVelocity(0).x() / vStar - 1.0) < 0.002,
+                 qPrintable(QString::number(world->bodyVelocity(0).x())));
     }
 
     void spinsFreelyWithItsEnergy_data() { addIntegrators(); }
@@ -134,8 +135,8 @@ private slots:
         const double m = 2.0 * std::numbers::pi * 0.09, inertia = 0.5 * m * 0.09;
         QCOMPARE(world->energy().kinetic, 0.5 * inertia * 25.0);
         steps(*world, 600);
-        QCOMPARE(world->boxAngularVelocity(0), 5.0);
-        QVERIFY(std::abs(world->boxAngle(0) - 50.0) < 1e-9);
+        QCOMPARE(world->bodyAngularVelocity(0), 5.0);
+        QVERIFY(std::abs(world->bodyAngle(0) - 50.0) < 1e-9);
         QCOMPARE(world->energy().kinetic, 0.5 * inertia * 25.0);
     }
 
@@ -165,8 +166,9 @@ private slots:
         auto world = buildWorld(s).world;
         steps(*world, 600);
         double worst = 0.0;
-        for (int i = 0; i < static_cast<int>(world->boxes().size()); ++i)
-            worst = std::max(worst, (world->boxPosition(i) - world->boxes()[i].position).norm());
+        for (int i = 0; i < static_cast<int>(world->rigidBodies().size()); ++i)
+            worst =
+                std::max(worst, (world->bodyPosition(i) - world->rigidBodies()[i].position).norm());
         qInfo("%s: largest displacement after 10 s %.4f m", qPrintable(integrator), worst);
         QVERIFY2(worst < 0.02, qPrintable(QString::number(worst)));
     }

@@ -164,13 +164,14 @@ void TestPiles::boxPileAtOnePointComesApart() {
     for (int step = 0; step < 360; ++step) {
         QVERIFY2(world->step(), "the world reported divergence");
         for (int i = 0; i < kCount; ++i) {
-            rising = std::max(rising, world->boxVelocity(i).y());
-            highest = std::max(highest, world->boxPosition(i).y());
-            fastest = std::max(fastest, world->boxVelocity(i).norm());
+            rising = std::max(rising, world->bodyVelocity(i).y());
+            highest = std::max(highest, world->bodyPosition(i).y());
+            fastest = std::max(fastest, world->bodyVelocity(i).norm());
         }
     }
     double spread = 0.0;
-    for (int i = 0; i < kCount; ++i) spread = std::max(spread, std::abs(world->boxPosition(i).x()));
+    for (int i = 0; i < kCount; ++i)
+        spread = std::max(spread, std::abs(world->bodyPosition(i).x()));
     const double fall = std::sqrt(2.0 * 9.81 * highest);
     qInfo(
         "%s: 1,000 boxes at one point, 6 s: spread %.1f m, highest %.1f m, fastest rising %.2f "

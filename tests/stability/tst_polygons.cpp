@@ -39,8 +39,8 @@ PolygonDesc regular(int sides, double radius, Point2 at, double turn = 0.0) {
 
 double largestDisplacement(const World& world) {
     double worst = 0.0;
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-        worst = std::max(worst, (world.boxPosition(i) - world.boxes()[i].position).norm());
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+        worst = std::max(worst, (world.bodyPosition(i) - world.rigidBodies()[i].position).norm());
     return worst;
 }
 
@@ -86,14 +86,14 @@ private slots:
         const double mass = 6.0, inertia = mass * 50.0 / 36.0, omega = 3.0;
         const Vec2 c(1.0, 4.0 / 3.0), v0(-omega * c.y(), omega * c.x());
         const double energy = 0.5 * mass * v0.squaredNorm() + 0.5 * inertia * omega * omega;
-        QVERIFY((world->boxPosition(0) - (Vec2(2.0, 1.0) + c)).norm() < 1e-12);
-        QVERIFY((world->boxVelocity(0) - v0).norm() < 1e-12);
+        QVERIFY((world->bodyPosition(0) - (Vec2(2.0, 1.0) + c)).norm() < 1e-12);
+        QVERIFY((world->bodyVelocity(0) - v0).norm() < 1e-12);
         QVERIFY(std::abs(world->energy().kinetic - energy) < 1e-12 * energy);
         for (int k = 0; k < 600; ++k) QVERIFY(world->step());
         QVERIFY(std::abs(world->energy().kinetic - energy) < 1e-12 * energy);
-        QVERIFY(std::abs(world->boxAngularVelocity(0) - omega) < 1e-12);
+        QVERIFY(std::abs(world->bodyAngularVelocity(0) - omega) < 1e-12);
         const Vec2 expected = Vec2(2.0, 1.0) + c + world->time() * v0;
-        QVERIFY((world->boxPosition(0) - expected).norm() < 1e-9);
+        QVERIFY((world->bodyPosition(0) - expected).norm() < 1e-9);
     }
 
     void aTriangleOnItsBaseStays_data() { addIntegrators(); }
@@ -105,12 +105,12 @@ private slots:
         t.vertices = {{-0.6, 0.0}, {0.6, 0.0}, {0.1, 0.9}};
         s.polygons.push_back(t);
         auto world = buildWorld(s).world;
-        const double angle = world->boxAngle(0);
+        const double angle = world->bodyAngle(0);
         for (int k = 0; k < 600; ++k) QVERIFY(world->step());
         qInfo("%s: triangle moved %.2e m, turned %.2e rad", qPrintable(integrator),
-              largestDisplacement(*world), std::abs(world->boxAngle(0) - angle));
+              largestDisplacement(*world), std::abs(world->bodyAngle(0) - angle));
         QVERIFY(largestDisplacement(*world) < 1e-3);
-        QVERIFY(std::abs(world->boxAngle(0) - angle) < 1e-3);
+        QVERIFY(std::abs(world->bodyAngle(0) - angle) < 1e-3);
     }
 
     void stacksOfBoxesAndPolygonsStand_data() { addIntegrators(); }
@@ -162,13 +162,13 @@ private slots:
         double fastest = 0.0;
         for (int k = 0; k < 600; ++k) {
             QVERIFY(world->step());
-            fastest = std::max(fastest, world->boxVelocity(1).norm());
+            fastest = std::max(fastest, world->bodyVelocity(1).norm());
         }
-        const Vec2 p = world->boxPosition(1);
+        const Vec2 p = world->bodyPosition(1);
         qInfo("%s: pentagon at (%.3f, %.3f), fastest %.2f m/s", qPrintable(integrator), p.x(),
               p.y(), fastest);
         QVERIFY(fastest < std::sqrt(2.0 * 9.81 * 2.0) + 1.0);
-        QVERIFY(world->boxVelocity(1).norm() < 0.05);
+        QVERIFY(world->bodyVelocity(1).norm() < 0.05);
         QVERIFY(p.x() < -2.0);  // off the ramp's low end
         QVERIFY(std::abs(p.y() - 0.3 * std::cos(std::numbers::pi / 5.0)) < 0.08);
     }
@@ -255,11 +255,11 @@ private slots:
         double furthest = -1e9;
         for (int k = 0; k < 60; ++k) {
             QVERIFY(world->step());
-            for (int i = 1; i < 3; ++i) furthest = std::max(furthest, world->boxPosition(i).x());
+            for (int i = 1; i < 3; ++i) furthest = std::max(furthest, world->bodyPosition(i).x());
         }
         qInfo("%s: furthest centre %.4f m (wall face at 4.95 m)", qPrintable(integrator), furthest);
         QVERIFY(furthest < 4.95);
-        QVERIFY(world->boxVelocity(1).x() < 0.0 && world->boxVelocity(2).x() <= 0.0);
+        QVERIFY(world->bodyVelocity(1).x() < 0.0 && world->bodyVelocity(2).x() <= 0.0);
     }
 };
 

@@ -115,7 +115,7 @@ double dynamicMass(const World& world) {
     double mass = 0.0;
     for (const Particle& p : world.particles())
         if (!p.pinned) mass += p.mass;
-    for (const Box& b : world.boxes())
+    for (const RigidBody& b : world.rigidBodies())
         if (!b.isStatic) mass += b.mass;
     return mass;
 }
@@ -125,8 +125,9 @@ std::map<std::string, Vec2> centres(const World& world) {
     std::map<std::string, Vec2> out;
     for (int i = 0; i < static_cast<int>(world.particles().size()); ++i)
         out[world.particles()[i].id] = world.particlePosition(i);
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-        if (!world.boxes()[i].isStatic) out[world.boxes()[i].id] = world.boxPosition(i);
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+        if (!world.rigidBodies()[i].isStatic)
+            out[world.rigidBodies()[i].id] = world.bodyPosition(i);
     return out;
 }
 

@@ -191,9 +191,9 @@ void drawTrails(const Frame& f, const TrailHistory& trails) {
 // A rigid body's outline: a box's four corners, or a disk's circle (as many sides as keep
 // the outline within half a pixel of the true circle, at least 12).
 QPolygonF boxPolygon(const Frame& f, int i) {
-    const Box& box = f.world.boxes()[i];
-    const Mat2 r = rotation(f.world.boxAngle(i));
-    const Vec2 c = f.world.boxPosition(i), h = 0.5 * box.size;
+    const RigidBody& box = f.world.rigidBodies()[i];
+    const Mat2 r = rotation(f.world.bodyAngle(i));
+    const Vec2 c = f.world.bodyPosition(i), h = 0.5 * box.size;
     QPolygonF polygon;
     if (box.shape == RigidShape::Disk) {
         const double pixels = f.view.toPixels(box.radius);
@@ -221,7 +221,7 @@ void drawBoxes(const Frame& f) {
     // Static boxes first, then the dynamic ones asleep (dimmed), then those awake over them:
     // one pen and brush per pass.
     enum Pass { Static, Asleep, Awake };
-    const auto passOf = [](const Box& box) {
+    const auto passOf = [](const RigidBody& box) {
         return box.isStatic ? Static : box.asleep ? Asleep : Awake;
     };
     for (const Pass pass : {Static, Asleep, Awake}) {
@@ -230,18 +230,18 @@ void drawBoxes(const Frame& f) {
                                              : f.o.colors.dynamicBox;
         p.setPen(f.pen(fill.darker(pass == Static ? 150 : pass == Asleep ? 130 : 165), 1.0));
         p.setBrush(fill);
-        for (int i = 0; i < static_cast<int>(f.world.boxes().size()); ++i) {
-            const Box& box = f.world.boxes()[i];
+        for (int i = 0; i < static_cast<int>(f.world.rigidBodies().size()); ++i) {
+            const RigidBody& box = f.world.rigidBodies()[i];
             const double reach = f.view.toPixels(0.5 * box.size.norm());
-            if (passOf(box) == pass && f.visible(f.screen(f.world.boxPosition(i)), reach))
+            if (passOf(box) == pass && f.visible(f.screen(f.world.bodyPosition(i)), reach))
                 p.drawPolygon(boxPolygon(f, i));
         }
         // A disk's spoke, from its centre along its angle, shows it turning.
-        for (int i = 0; i < static_cast<int>(f.world.boxes().size()); ++i) {
-            const Box& box = f.world.boxes()[i];
+        for (int i = 0; i < static_cast<int>(f.world.rigidBodies().size()); ++i) {
+            const RigidBody& box = f.world.rigidBodies()[i];
             if (box.shape != RigidShape::Disk || passOf(box) != pass) continue;
-            const Vec2 c = f.world.boxPosition(i);
-            const double a = f.world.boxAngle(i);
+            const Vec2 c = f.world.bodyPosition(i);
+            const double a = f.world.bodyAngle(i);
             p.drawLine(f.screen(c), f.screen(c + box.radius * Vec2(std::cos(a), std::sin(a))));
         }
     }
@@ -562,7 +562,7 @@ void drawVectors(const Frame& f, const std::vector<Vec2>& particles, const std::
         if (f.world.particles()[i].cloth < 0)
             add(f.world.particlePosition(static_cast<int>(i)), particles[i]);
     for (std::size_t i = 0; i < boxes.size(); ++i)
-        add(f.world.boxPosition(static_cast<int>(i)), boxes[i]);
+        add(f.world.bodyPosition(static_cast<int>(i)), boxes[i]);
     f.painter.setPen(f.pen(colour, 1.5));
     f.painter.drawLines(lines);
 }
@@ -570,13 +570,13 @@ void drawVectors(const Frame& f, const std::vector<Vec2>& particles, const std::
 void drawArrows(const Frame& f) {
     const World& w = f.world;
     std::vector<Vec2> particles(w.particles().size(), Vec2::Zero());
-    std::vector<Vec2> boxes(w.boxes().size(), Vec2::Zero());
+    std::vector<Vec2> boxes(w.rigidBodies().size(), Vec2::Zero());
     if (f.o.velocityArrows) {
         // Fixed objects keep their setup velocity in the object: they are not moving.
         for (std::size_t i = 0; i < particles.size(); ++i)
             if (!w.particles()[i].pinned) particles[i] = w.particleVelocity(static_cast<int>(i));
         for (std::size_t i = 0; i < boxes.size(); ++i)
-            if (!w.boxes()[i].isStatic) boxes[i] = w.boxVelocity(static_cast<int>(i));
+            if (!w.rigidBodies()[i].isStatic) boxes[i] = w.bodyVelocity(static_cast<int>(i));
         drawVectors(f, particles, boxes, f.o.velocityArrowSeconds, f.o.colors.velocity);
     }
     if (f.o.forceArrows) {
@@ -589,7 +589,7 @@ void drawArrows(const Frame& f) {
             const Vec2 pull = w.springTension(i) * d.normalized();  // on a, toward b when stretched
             for (const auto& [end, force] : {std::pair{&s.a, pull}, std::pair{&s.b, Vec2(-pull)}}) {
                 if (end->kind == SpringEnd::Kind::Particle) particles[end->index] += force;
-                if (end->kind == SpringEnd::Kind::Box) boxes[end->index] += force;
+                if (end->kind == SpringEnd::Kind::Rigid) boxes[end->index] += force;
             }
         }
         // The joints' constraint forces (CONTRACT §6), on each body they hold.
@@ -625,8 +625,8 @@ void drawHighlights(const Frame& f) {
                 const double r = SceneRenderer::drawnRadius(w.particles()[i], ppm) + 3.0 * f.lw;
                 p.drawEllipse(f.screen(w.particlePosition(i)), r, r);
             }
-        for (int i = 0; i < static_cast<int>(w.boxes().size()); ++i)
-            if (marked(w.boxes()[i].id)) p.drawPolygon(boxPolygon(f, i));
+        for (int i = 0; i < static_cast<int>(w.rigidBodies().size()); ++i)
+            if (marked(w.rigidBodies()[i].id)) p.drawPolygon(boxPolygon(f, i));
         for (const Cloth& cloth : w.cloths())
             if (marked(cloth.id)) p.drawLines(clothMesh(f, cloth));
         for (const Spring& s : w.springs())
@@ -652,8 +652,8 @@ void drawLabels(const Frame& f) {
         p.drawText(box, (right > 0.0 ? Qt::AlignLeft : Qt::AlignHCenter) | Qt::AlignVCenter,
                    QString::fromStdString(id));
     };
-    for (int i = 0; i < static_cast<int>(w.boxes().size()); ++i)
-        label(w.boxes()[i].id, f.screen(w.boxPosition(i)), 0.0);
+    for (int i = 0; i < static_cast<int>(w.rigidBodies().size()); ++i)
+        label(w.rigidBodies()[i].id, f.screen(w.bodyPosition(i)), 0.0);
     for (int i = 0; i < static_cast<int>(w.particles().size()); ++i) {
         const Particle& particle = w.particles()[i];
         // Cloth nodes only when marked: thousands of "cloth[3,7]" would hide the cloth.

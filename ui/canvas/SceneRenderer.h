@@ -96,14 +96,14 @@ struct TrailHistory {
     // Appends the current positions. A repeated time adds nothing (a repaint without a step);
     // a time going back or a change in the number of objects (reset, edit) starts afresh.
     void record(const World& world) {
-        if (world.particles().size() != particleCount_ || world.boxes().size() != boxCount_ ||
+        if (world.particles().size() != particleCount_ || world.rigidBodies().size() != boxCount_ ||
             (count_ > 0 && world.time() < lastTime_))
             chooseTracks(world);
         if (count_ > 0 && world.time() == lastTime_) return;
         QPointF* row = samples_.data() + static_cast<std::size_t>(head_) * tracks_.size();
         for (std::size_t k = 0; k < tracks_.size(); ++k) {
             const Track& t = tracks_[k];
-            const Vec2 p = t.isBox ? world.boxPosition(t.index) : world.particlePosition(t.index);
+            const Vec2 p = t.isBox ? world.bodyPosition(t.index) : world.particlePosition(t.index);
             row[k] = QPointF(p.x(), p.y());
         }
         head_ = (head_ + 1) % capacity_;
@@ -132,7 +132,7 @@ private:
     void chooseTracks(const World& world) {
         clear();
         particleCount_ = world.particles().size();
-        boxCount_ = world.boxes().size();
+        boxCount_ = world.rigidBodies().size();
         int particles = 0, boxes = 0;
         for (std::size_t i = 0; i < particleCount_ && particles < maxTracks_; ++i)
             if (!world.particles()[i].pinned && world.particles()[i].cloth < 0) {
@@ -140,7 +140,7 @@ private:
                 ++particles;
             }
         for (std::size_t i = 0; i < boxCount_ && boxes < maxTracks_; ++i)
-            if (!world.boxes()[i].isStatic) {
+            if (!world.rigidBodies()[i].isStatic) {
                 tracks_.push_back({true, static_cast<int>(i)});
                 ++boxes;
             }
@@ -240,10 +240,10 @@ inline PickResult SceneRenderer::pick(const World& world, const ViewTransform& v
     const double tolerance = view.toMetres(tolerancePixels);
     // Dynamic boxes are drawn over static ones and later boxes over earlier: topmost first.
     for (const bool isStatic : {false, true})
-        for (i = static_cast<int>(world.boxes().size()) - 1; i >= 0; --i) {
-            const Box& box = world.boxes()[i];
+        for (i = static_cast<int>(world.rigidBodies().size()) - 1; i >= 0; --i) {
+            const RigidBody& box = world.rigidBodies()[i];
             if (box.isStatic != isStatic) continue;
-            const Vec2 local = rotation(-world.boxAngle(i)) * (point - world.boxPosition(i));
+            const Vec2 local = rotation(-world.bodyAngle(i)) * (point - world.bodyPosition(i));
             bool inside = false;
             if (box.shape == RigidShape::Disk) {
                 inside = local.norm() <= box.radius + tolerance;

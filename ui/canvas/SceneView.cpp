@@ -299,12 +299,12 @@ void SceneView::frameNow() const {
         const World& w = *world_;
         for (int i = 0; i < static_cast<int>(w.particles().size()); ++i)
             include(w.particlePosition(i), w.particles()[i].radius);
-        for (int i = 0; i < static_cast<int>(w.boxes().size()); ++i)
-            include(w.boxPosition(i), 0.5 * w.boxes()[i].size.norm());
+        for (int i = 0; i < static_cast<int>(w.rigidBodies().size()); ++i)
+            include(w.bodyPosition(i), 0.5 * w.rigidBodies()[i].size.norm());
         // A scene of planes alone (File > New: the ground) shows a classroom's worth of world
         // above them, kEmptyGroundWidth wide, instead of the few metres around a plane's point.
-        const bool onlyPlanes =
-            w.particles().empty() && w.boxes().empty() && w.springs().empty() && w.joints().empty();
+        const bool onlyPlanes = w.particles().empty() && w.rigidBodies().empty() &&
+                                w.springs().empty() && w.joints().empty();
         for (const Plane& plane : w.planes()) {
             include(plane.point, 0.0);
             if (!onlyPlanes) continue;

@@ -91,9 +91,9 @@ QString CanvasPresenter::describeSelection() const {
                         .arg(QLocale().toString(x.x(), 'f', 2), QLocale().toString(x.y(), 'f', 2),
                              QLocale().toString(v.x(), 'f', 2), QLocale().toString(v.y(), 'f', 2));
         }
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-        if (world.boxes()[static_cast<std::size_t>(i)].id == id) {
-            const Vec2 x = world.boxPosition(i), v = world.boxVelocity(i);
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+        if (world.rigidBodies()[static_cast<std::size_t>(i)].id == id) {
+            const Vec2 x = world.bodyPosition(i), v = world.bodyVelocity(i);
             text += QLatin1Char(' ') +
                     tr("Position %1, %2 m; velocity %3, %4 m/s.")
                         .arg(QLocale().toString(x.x(), 'f', 2), QLocale().toString(x.y(), 'f', 2),
@@ -244,12 +244,12 @@ QRectF CanvasPresenter::motionExtent() const {
                     lo[k] = std::min(lo[k], world.particlePosition(i)[k]);
                     hi[k] = std::max(hi[k], world.particlePosition(i)[k]);
                 }
-        for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i)
-            if (!world.boxes()[i].isStatic)
+        for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i)
+            if (!world.rigidBodies()[i].isStatic)
                 for (int k = 0; k < 2; ++k) {
-                    const double reach = 0.5 * world.boxes()[i].size.norm();
-                    lo[k] = std::min(lo[k], world.boxPosition(i)[k] - reach);
-                    hi[k] = std::max(hi[k], world.boxPosition(i)[k] + reach);
+                    const double reach = 0.5 * world.rigidBodies()[i].size.norm();
+                    lo[k] = std::min(lo[k], world.bodyPosition(i)[k] - reach);
+                    hi[k] = std::max(hi[k], world.bodyPosition(i)[k] + reach);
                 }
     };
     QElapsedTimer clock;
@@ -281,9 +281,9 @@ void CanvasPresenter::followNow() {
         const Particle& p = world.particles()[i];
         if (wanted(p.id, !p.pinned)) include(world.particlePosition(i), p.radius);
     }
-    for (int i = 0; i < static_cast<int>(world.boxes().size()); ++i) {
-        const Box& b = world.boxes()[i];
-        if (wanted(b.id, !b.isStatic)) include(world.boxPosition(i), 0.5 * b.size.norm());
+    for (int i = 0; i < static_cast<int>(world.rigidBodies().size()); ++i) {
+        const RigidBody& b = world.rigidBodies()[i];
+        if (wanted(b.id, !b.isStatic)) include(world.bodyPosition(i), 0.5 * b.size.norm());
     }
     if (!(lo[0] <= hi[0])) return;
     ui::ViewTransform v = view_.view();

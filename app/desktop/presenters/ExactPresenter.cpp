@@ -84,7 +84,7 @@ void ExactPresenter::rebuild() {
             std::vector<int> dofs;
             for (const Particle& p : start.particles())
                 if (p.dof >= 0 && p.cloth < 0 && reference_->covers(p.dof)) dofs.push_back(p.dof);
-            for (const Box& b : start.boxes())
+            for (const RigidBody& b : start.rigidBodies())
                 if (b.dof >= 0 && reference_->covers(b.dof)) dofs.push_back(b.dof);
             if (dofs.size() > static_cast<std::size_t>(kMaxPaths)) dofs.resize(kMaxPaths);
             for (const int dof : dofs) {
@@ -113,7 +113,7 @@ int ExactPresenter::phaseDof() const {
     for (const Particle& p : world.particles())
         if (p.id == id)
             return p.dof < 0 || coordinate == QLatin1String("angle") ? -1 : p.dof + axis;
-    for (const Box& b : world.boxes())
+    for (const RigidBody& b : world.rigidBodies())
         if (b.id == id)
             return b.dof < 0 ? -1 : b.dof + (coordinate == QLatin1String("angle") ? 2 : axis);
     return -1;
@@ -160,7 +160,7 @@ void ExactPresenter::refresh() {
         ghost.radius = p.radius;
         overlay.ghosts.append(ghost);
     }
-    for (const Box& b : world.boxes()) {
+    for (const RigidBody& b : world.rigidBodies()) {
         if (b.dof < 0 || !reference_->covers(b.dof) || ghosts++ >= kMaxPaths) continue;
         ui::ReferenceOverlay::Ghost ghost;
         ghost.centre = QPointF(reference_->position(b.dof, t), reference_->position(b.dof + 1, t));

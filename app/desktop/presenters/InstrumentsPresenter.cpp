@@ -53,7 +53,7 @@ QString objectKind(const World& world, const std::string& id) {
             return p.cloth >= 0 ? InstrumentsPresenter::tr("cloth node")
                    : p.pinned   ? InstrumentsPresenter::tr("pinned particle")
                                 : InstrumentsPresenter::tr("particle");
-    for (const Box& b : world.boxes()) {
+    for (const RigidBody& b : world.rigidBodies()) {
         if (b.id != id) continue;
         const QString shape = b.shape == RigidShape::Disk      ? InstrumentsPresenter::tr("disk")
                               : b.shape == RigidShape::Polygon ? InstrumentsPresenter::tr("polygon")
@@ -239,7 +239,7 @@ void InstrumentsPresenter::updateOffered() {
     }
     for (const QString& text : instruments)
         if (ProbeRecorder::parse(world, text, nullptr)) add(text);
-    std::size_t count = world.boxes().size();
+    std::size_t count = world.rigidBodies().size();
     for (const Particle& p : world.particles()) count += p.cloth < 0 ? 1 : 0;
     const bool all = count <= static_cast<std::size_t>(kMaxListedObjects);
     for (const std::string& text : listProbes(world)) {

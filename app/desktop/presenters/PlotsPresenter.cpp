@@ -136,8 +136,8 @@ QString PlotsPresenter::defaultPhaseCoordinate(const QString& id) const {
     Vec2 v = Vec2::Zero();
     for (std::size_t i = 0; i < w.particles().size(); ++i)
         if (w.particles()[i].id == name) v = w.particleVelocity(static_cast<int>(i));
-    for (std::size_t i = 0; i < w.boxes().size(); ++i)
-        if (w.boxes()[i].id == name) v = w.boxVelocity(static_cast<int>(i));
+    for (std::size_t i = 0; i < w.rigidBodies().size(); ++i)
+        if (w.rigidBodies()[i].id == name) v = w.bodyVelocity(static_cast<int>(i));
     if (v.squaredNorm() == 0.0) {
         const auto& gravity = document_.setup().effects.gravity;
         if (gravity) v = Vec2(gravity->g[0], gravity->g[1]);

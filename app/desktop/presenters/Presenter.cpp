@@ -14,4 +14,15 @@ QAction* addWindowAction(QWidget& window, const QString& name, const QString& te
     return action;
 }
 
+void addWindowActions(QWidget& to, const QWidget& window,
+                      std::initializer_list<const char*> names) {
+    for (const char* name : names) {
+        QAction* a =
+            *name ? window.findChild<QAction*>(QLatin1String(name), Qt::FindDirectChildrenOnly)
+                  : new QAction(&to);
+        a->setSeparator(!*name);
+        to.addAction(a);
+    }
+}
+
 }  // namespace phasebox

@@ -8,6 +8,8 @@
 #include <QObject>
 #include <QString>
 
+#include <initializer_list>
+
 QT_BEGIN_NAMESPACE
 class QAction;
 class QWidget;
@@ -19,6 +21,8 @@ namespace phasebox {
 // even with the menu bar hidden (presentation mode). Presenters add the actions of their views.
 QAction* addWindowAction(QWidget& window, const QString& name, const QString& text,
                          const QKeySequence& shortcut = {});
+// Adds the window's named actions, in order, to a menu or tool bar; "" is a separator.
+void addWindowActions(QWidget& to, const QWidget& window, std::initializer_list<const char*> names);
 
 class Presenter : public QObject {
     Q_OBJECT
