@@ -1445,6 +1445,49 @@
     </message>
 </context>
 <context>
+    <name>StabilityText</name>
+    <message>
+        <source>%1 (stable below %2 s)</source>
+        <translation>%1 (stabil unter %2 s)</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (below the linear limit %4 but above %5, the margin for penalty contacts): a contact that begins within a step can gain energy at every touch. Use dt/substeps below %6 s (%7 sub-steps).</source>
+        <translation>%1 hat bei einem Teilschritt von %2 s ω·h = %3 (unter der linearen Grenze %4, aber über %5, dem Spielraum für Strafkontakte): Ein Kontakt, der innerhalb eines Schritts beginnt, kann bei jeder Berührung Energie gewinnen. Wählen Sie dt/Teilschritte unter %6 s (%7 Teilschritte).</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (below the linear limit %4 but above %5, the margin for penalty contacts): a contact that begins within a step can gain energy at every touch. Use dt/substeps below %6 s (%7 sub-steps), or a method stable at this step: %8.</source>
+        <translation>%1 hat bei einem Teilschritt von %2 s ω·h = %3 (unter der linearen Grenze %4, aber über %5, dem Spielraum für Strafkontakte): Ein Kontakt, der innerhalb eines Schritts beginnt, kann bei jeder Berührung Energie gewinnen. Wählen Sie dt/Teilschritte unter %6 s (%7 Teilschritte) oder ein bei diesem Schritt stabiles Verfahren: %8.</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (stable below %4): it will blow up. Use dt/substeps below %5 s (%6 sub-steps, more for a margin).</source>
+        <translation>%1 hat bei einem Teilschritt von %2 s ω·h = %3 (stabil unter %4): Die Simulation wird explodieren. Wählen Sie dt/Teilschritte unter %5 s (%6 Teilschritte, mehr für einen Spielraum).</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (stable below %4): it will blow up. Use dt/substeps below %5 s (%6 sub-steps, more for a margin), or a method stable at this step: %7.</source>
+        <translation>%1 hat bei einem Teilschritt von %2 s ω·h = %3 (stabil unter %4): Die Simulation wird explodieren. Wählen Sie dt/Teilschritte unter %5 s (%6 Teilschritte, mehr für einen Spielraum) oder ein bei diesem Schritt stabiles Verfahren: %7.</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3: it gains energy at every step (its stiffest mode by a factor of about %4 per sub-step).</source>
+        <translation>%1 hat bei einem Teilschritt von %2 s ω·h = %3: Es gewinnt bei jedem Schritt Energie (seine steifste Schwingung um etwa den Faktor %4 je Teilschritt).</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3: it gains energy at every step (its stiffest mode by a factor of about %4 per sub-step). Use a method stable at this step: %5.</source>
+        <translation>%1 hat bei einem Teilschritt von %2 s ω·h = %3: Es gewinnt bei jedem Schritt Energie (seine steifste Schwingung um etwa den Faktor %4 je Teilschritt). Wählen Sie ein bei diesem Schritt stabiles Verfahren: %5.</translation>
+    </message>
+    <message>
+        <source>nothing in the scene oscillates</source>
+        <translation>nichts in der Szene schwingt</translation>
+    </message>
+    <message>
+        <source>%1 is stable at this step (ω·h = %2)</source>
+        <translation>%1 ist bei diesem Schritt stabil (ω·h = %2)</translation>
+    </message>
+    <message>
+        <source>Kinematic contacts cannot hold a stack (&quot;%1&quot; rests on &quot;%2&quot;): they only stop bodies moving into each other and push them apart, so the stack sinks into the floor. Use impulse contacts for stacks.</source>
+        <translation>Kinematische Kontakte können keinen Stapel tragen („%1“ liegt auf „%2“): Sie halten Körper nur davon ab, sich ineinander zu bewegen, und schieben sie auseinander, daher sinkt der Stapel in den Boden. Verwenden Sie für Stapel Impulskontakte.</translation>
+    </message>
+</context>
+<context>
     <name>phasebox</name>
     <message>
         <source>the clip</source>
@@ -3852,7 +3895,7 @@ die Pfeile ändern sie um den Faktor zehn</translation>
     </message>
     <message>
         <source>Filter by id or summary</source>
-        <translation>Nach Kennung oder Zusammenfassung filtern</translation>
+        <translation>Kennung oder Zusammenfassung</translation>
     </message>
     <message>
         <source>Filter objects</source>

@@ -25,7 +25,7 @@
     </message>
     <message>
         <source>correction</source>
-        <translation>correc.</translation>
+        <translation>corrección</translation>
     </message>
     <message>
         <source>time [s]</source>
@@ -1442,6 +1442,49 @@
         <source>Sleep</source>
         <extracomment>schema: simulation.sleep</extracomment>
         <translation>Reposo</translation>
+    </message>
+</context>
+<context>
+    <name>StabilityText</name>
+    <message>
+        <source>%1 (stable below %2 s)</source>
+        <translation>%1 (estable por debajo de %2 s)</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (below the linear limit %4 but above %5, the margin for penalty contacts): a contact that begins within a step can gain energy at every touch. Use dt/substeps below %6 s (%7 sub-steps).</source>
+        <translation>%1 con un subpaso de %2 s tiene ω·h = %3 (por debajo del límite lineal %4 pero por encima de %5, el margen para los contactos por penalización): un contacto que empieza dentro de un paso puede ganar energía en cada toque. Use dt/subpasos por debajo de %6 s (%7 subpasos).</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (below the linear limit %4 but above %5, the margin for penalty contacts): a contact that begins within a step can gain energy at every touch. Use dt/substeps below %6 s (%7 sub-steps), or a method stable at this step: %8.</source>
+        <translation>%1 con un subpaso de %2 s tiene ω·h = %3 (por debajo del límite lineal %4 pero por encima de %5, el margen para los contactos por penalización): un contacto que empieza dentro de un paso puede ganar energía en cada toque. Use dt/subpasos por debajo de %6 s (%7 subpasos) o un método estable con este paso: %8.</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (stable below %4): it will blow up. Use dt/substeps below %5 s (%6 sub-steps, more for a margin).</source>
+        <translation>%1 con un subpaso de %2 s tiene ω·h = %3 (estable por debajo de %4): la simulación explotará. Use dt/subpasos por debajo de %5 s (%6 subpasos, más para tener margen).</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (stable below %4): it will blow up. Use dt/substeps below %5 s (%6 sub-steps, more for a margin), or a method stable at this step: %7.</source>
+        <translation>%1 con un subpaso de %2 s tiene ω·h = %3 (estable por debajo de %4): la simulación explotará. Use dt/subpasos por debajo de %5 s (%6 subpasos, más para tener margen) o un método estable con este paso: %7.</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3: it gains energy at every step (its stiffest mode by a factor of about %4 per sub-step).</source>
+        <translation>%1 con un subpaso de %2 s tiene ω·h = %3: gana energía en cada paso (su modo más rígido, en un factor de aproximadamente %4 por subpaso).</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3: it gains energy at every step (its stiffest mode by a factor of about %4 per sub-step). Use a method stable at this step: %5.</source>
+        <translation>%1 con un subpaso de %2 s tiene ω·h = %3: gana energía en cada paso (su modo más rígido, en un factor de aproximadamente %4 por subpaso). Use un método estable con este paso: %5.</translation>
+    </message>
+    <message>
+        <source>nothing in the scene oscillates</source>
+        <translation>nada en la escena oscila</translation>
+    </message>
+    <message>
+        <source>%1 is stable at this step (ω·h = %2)</source>
+        <translation>%1 es estable con este paso (ω·h = %2)</translation>
+    </message>
+    <message>
+        <source>Kinematic contacts cannot hold a stack (&quot;%1&quot; rests on &quot;%2&quot;): they only stop bodies moving into each other and push them apart, so the stack sinks into the floor. Use impulse contacts for stacks.</source>
+        <translation>Los contactos cinemáticos no pueden sostener una pila («%1» descansa sobre «%2»): solo impiden que los cuerpos se muevan uno dentro del otro y los separan, así que la pila se hunde en el suelo. Use contactos por impulsos para las pilas.</translation>
     </message>
 </context>
 <context>

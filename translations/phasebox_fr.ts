@@ -1445,6 +1445,49 @@
     </message>
 </context>
 <context>
+    <name>StabilityText</name>
+    <message>
+        <source>%1 (stable below %2 s)</source>
+        <translation>%1 (stable en dessous de %2 s)</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (below the linear limit %4 but above %5, the margin for penalty contacts): a contact that begins within a step can gain energy at every touch. Use dt/substeps below %6 s (%7 sub-steps).</source>
+        <translation>%1 avec un sous-pas de %2 s a ω·h = %3 (sous la limite linéaire %4 mais au-dessus de %5, la marge pour les contacts par pénalité) : un contact qui commence au cours d&apos;un pas peut gagner de l&apos;énergie à chaque contact. Prenez dt/sous-pas en dessous de %6 s (%7 sous-pas).</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (below the linear limit %4 but above %5, the margin for penalty contacts): a contact that begins within a step can gain energy at every touch. Use dt/substeps below %6 s (%7 sub-steps), or a method stable at this step: %8.</source>
+        <translation>%1 avec un sous-pas de %2 s a ω·h = %3 (sous la limite linéaire %4 mais au-dessus de %5, la marge pour les contacts par pénalité) : un contact qui commence au cours d&apos;un pas peut gagner de l&apos;énergie à chaque contact. Prenez dt/sous-pas en dessous de %6 s (%7 sous-pas) ou une méthode stable à ce pas : %8.</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (stable below %4): it will blow up. Use dt/substeps below %5 s (%6 sub-steps, more for a margin).</source>
+        <translation>%1 avec un sous-pas de %2 s a ω·h = %3 (stable en dessous de %4) : la simulation va exploser. Prenez dt/sous-pas en dessous de %5 s (%6 sous-pas, davantage pour une marge).</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3 (stable below %4): it will blow up. Use dt/substeps below %5 s (%6 sub-steps, more for a margin), or a method stable at this step: %7.</source>
+        <translation>%1 avec un sous-pas de %2 s a ω·h = %3 (stable en dessous de %4) : la simulation va exploser. Prenez dt/sous-pas en dessous de %5 s (%6 sous-pas, davantage pour une marge) ou une méthode stable à ce pas : %7.</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3: it gains energy at every step (its stiffest mode by a factor of about %4 per sub-step).</source>
+        <translation>%1 avec un sous-pas de %2 s a ω·h = %3 : elle gagne de l&apos;énergie à chaque pas (son mode le plus raide, d&apos;un facteur d&apos;environ %4 par sous-pas).</translation>
+    </message>
+    <message>
+        <source>%1 at a sub-step of %2 s has ω·h = %3: it gains energy at every step (its stiffest mode by a factor of about %4 per sub-step). Use a method stable at this step: %5.</source>
+        <translation>%1 avec un sous-pas de %2 s a ω·h = %3 : elle gagne de l&apos;énergie à chaque pas (son mode le plus raide, d&apos;un facteur d&apos;environ %4 par sous-pas). Prenez une méthode stable à ce pas : %5.</translation>
+    </message>
+    <message>
+        <source>nothing in the scene oscillates</source>
+        <translation>rien n&apos;oscille dans la scène</translation>
+    </message>
+    <message>
+        <source>%1 is stable at this step (ω·h = %2)</source>
+        <translation>%1 est stable à ce pas (ω·h = %2)</translation>
+    </message>
+    <message>
+        <source>Kinematic contacts cannot hold a stack (&quot;%1&quot; rests on &quot;%2&quot;): they only stop bodies moving into each other and push them apart, so the stack sinks into the floor. Use impulse contacts for stacks.</source>
+        <translation>Les contacts cinématiques ne peuvent pas porter une pile (« %1 » repose sur « %2 ») : ils empêchent seulement les corps d&apos;entrer l&apos;un dans l&apos;autre et les écartent, donc la pile s&apos;enfonce dans le sol. Utilisez des contacts par impulsions pour les piles.</translation>
+    </message>
+</context>
+<context>
     <name>phasebox</name>
     <message>
         <source>the clip</source>
@@ -3852,7 +3895,7 @@ les flèches la changent d’un facteur dix</translation>
     </message>
     <message>
         <source>Filter by id or summary</source>
-        <translation>Filtrer par identifiant ou résumé</translation>
+        <translation>Filtrer : identifiant, résumé</translation>
     </message>
     <message>
         <source>Filter objects</source>

@@ -9,6 +9,7 @@
 #include "app/io/SceneIO.h"
 #include "physics/integrators/Integrator.h"
 #include "ui/panels/BuiltinText.h"
+#include "ui/panels/ShownNumber.h"
 #include "ui/plots/Charts.h"
 #include "ui/plots/WorkPrecisionChart.h"
 
@@ -26,6 +27,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -40,14 +42,16 @@
 namespace phasebox {
 
 namespace {
+// The window's numbers in its locale; the CSV export writes its own, '.'-decimal.
 QString formatDt(double dt) {
-    return QString::fromStdString(formatStep(dt));
+    return QString::fromStdString(formatStep(dt))
+        .replace(QLatin1Char('.'), ui::shownLocale().decimalPoint());
 }
 
 QString formatError(double e) {
     if (std::isinf(e)) return QObject::tr("diverged");
     if (std::isnan(e)) return QStringLiteral("–");
-    return QString::number(e, 'e', 2);
+    return ui::shownNumber(e, 'e', 2);
 }
 
 }  // namespace
@@ -55,8 +59,10 @@ QString formatError(double e) {
 AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
     setWindowTitle(tr("Accuracy Lab — what accuracy costs in time"));
     setObjectName(QStringLiteral("accuracyDialog"));
-    resize(1200, 800);
-    setMinimumSize(900, 620);
+    // As large as the study's table and chart like, within the screen (a 1024 x 700 projector).
+    const QSize room = screen() ? screen()->availableGeometry().size() : QSize(1200, 800);
+    resize(std::min(1200, room.width()), std::min(800, room.height()));
+    setMinimumSize(std::min(900, room.width()), std::min(620, room.height()));
 
     // Choices: which methods, which steps, how long.
     integrators_ = new QListWidget(this);
@@ -381,7 +387,7 @@ void AccuracyDialog::fillTable(const AccuracyResult& result) {
         // A run's order with what it is worth: the pair of steps it was measured on may be
         // unstable or at the floor, where the number is not the method's order.
         const OrderAssessment* a = assessmentOf(r.integrator);
-        QString order = r.order ? QString::number(*r.order, 'f', 2) : QString();
+        QString order = r.order ? ui::shownNumber(*r.order, 'f', 2) : QString();
         QString orderTip;
         if (r.diverged) {
             order = tr("diverged: unstable at this dt");
@@ -403,12 +409,12 @@ void AccuracyDialog::fillTable(const AccuracyResult& result) {
         }
         const QStringList cells = {QString::fromStdString(r.integrator),
                                    formatDt(r.dt),
-                                   r.tolerance ? QString::number(*r.tolerance, 'g', 2) : QString(),
+                                   r.tolerance ? ui::shownNumber(*r.tolerance, 'g', 2) : QString(),
                                    QString::number(r.steps),
                                    QString::number(r.forceEvals),
-                                   QString::number(r.cpuSeconds, 'g', 3),
+                                   ui::shownNumber(r.cpuSeconds, 'g', 3),
                                    formatError(r.positionError),
-                                   QString::number(r.energyDrift, 'e', 2),
+                                   ui::shownNumber(r.energyDrift, 'e', 2),
                                    order};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
@@ -423,7 +429,7 @@ void AccuracyDialog::fillTable(const AccuracyResult& result) {
         const QString tip = QString::fromStdString(a.explanation);
         const QStringList cells = {
             QString::fromStdString(a.integrator),
-            a.measured ? QString::number(*a.measured, 'f', 2) : QStringLiteral("–"),
+            a.measured ? ui::shownNumber(*a.measured, 'f', 2) : QStringLiteral("–"),
             a.theory > 0 ? QString::number(a.theory) : QString(), QString::fromStdString(a.note)};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
@@ -490,13 +496,14 @@ void AccuracyDialog::updateCheapest() {
         cheapest_->setText(tr("the scene has changed since this study: run it again to apply"));
         return;
     }
-    cheapest_->setText(tr("<b>%1</b> at dt %2%3: error %4 m in %5 s of CPU")
-                           .arg(QString::fromStdString(chosen_->integrator), formatDt(chosen_->dt),
-                                chosen_->tolerance
-                                    ? tr(", tolerance %1").arg(*chosen_->tolerance, 0, 'g', 2)
-                                    : QString(),
-                                formatError(chosen_->positionError))
-                           .arg(chosen_->cpuSeconds, 0, 'g', 3));
+    cheapest_->setText(
+        tr("<b>%1</b> at dt %2%3: error %4 m in %5 s of CPU")
+            .arg(QString::fromStdString(chosen_->integrator), formatDt(chosen_->dt),
+                 chosen_->tolerance
+                     ? tr(", tolerance %1").arg(ui::shownNumber(*chosen_->tolerance, 'g', 2))
+                     : QString(),
+                 formatError(chosen_->positionError))
+            .arg(ui::shownNumber(chosen_->cpuSeconds, 'g', 3)));
     apply_->setEnabled(true);
 }
 

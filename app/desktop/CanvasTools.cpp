@@ -6,6 +6,7 @@
 #include "physics/scene/SceneDesc.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QKeyEvent>
 #include <QLineF>
@@ -30,7 +31,7 @@ std::optional<std::pair<QString, QString>> positionKeys(ObjectKind kind) {
 }
 
 QString formatLength(double metres) {
-    return QString::number(metres, 'f', 2) + QStringLiteral(" m");
+    return ui::shownNumber(metres, 'f', 2) + QStringLiteral(" m");
 }
 
 // Why a corner cannot join the outline, in a user's words, from validatePolygonVertices().
@@ -338,7 +339,8 @@ void CanvasTools::showPreview(QPointF world) {
         case Tool::Particle:
             overlay.shape = ui::ToolOverlay::Arrow;
             overlay.text =
-                tr("v = %1 m/s").arg(std::hypot(d.x(), d.y()) * kVelocityPerMetre, 0, 'f', 2);
+                tr("v = %1 m/s")
+                    .arg(ui::shownNumber(std::hypot(d.x(), d.y()) * kVelocityPerMetre, 'f', 2));
             break;
         case Tool::Joint:
         case Tool::Spring: {

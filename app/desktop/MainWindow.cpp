@@ -264,8 +264,11 @@ void MainWindow::createDockWindows() {
         layout_->addDock(parameters_, tr("Parameters"), "parametersDock", Qt::LeftDockWidgetArea);
     QDockWidget* e =
         layout_->addDock(effects_, tr("Effects"), "effectsDock", Qt::LeftDockWidgetArea);
-    tabifyDockWidget(e,
+    // The scene's objects beside the parameters, and three tabs below: four in one row do not
+    // fit the left column at 1024 x 700 in German, Spanish or French.
+    tabifyDockWidget(p,
                      layout_->addDock(browser_, tr("Scene"), "sceneDock", Qt::LeftDockWidgetArea));
+    p->raise();
     e->raise();
     // The properties of the selection and the lesson's notes share the left column's lower
     // half with the effects (raised when an object is chosen): the right column is the plots'

@@ -6,6 +6,7 @@
 #include "physics/world/Probes.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QAction>
 #include <QKeyEvent>
@@ -224,9 +225,8 @@ double MeasureTools::rulerLength(int ruler) const {
 QString MeasureTools::rulerText(QPointF a, QPointF b) const {
     const QPointF d = b - a;
     return tr("%1 m\ndx %2  dy %3")
-        .arg((vec(b) - vec(a)).norm(), 0, 'f', 3)
-        .arg(d.x(), 0, 'f', 3)
-        .arg(d.y(), 0, 'f', 3);
+        .arg(ui::shownNumber((vec(b) - vec(a)).norm(), 'f', 3), ui::shownNumber(d.x(), 'f', 3),
+             ui::shownNumber(d.y(), 'f', 3));
 }
 
 QString MeasureTools::rulerLabel(int ruler) const {
@@ -240,7 +240,7 @@ double MeasureTools::protractorDegrees(int protractor) const {
 QString MeasureTools::protractorText(QPointF a, QPointF vertex, QPointF c) const {
     const double degrees =
         std::abs(signedAngle(vec(a), vec(vertex), vec(c))) * 180.0 / std::numbers::pi;
-    return tr("%1°").arg(degrees, 0, 'f', 1);
+    return tr("%1°").arg(ui::shownNumber(degrees, 'f', 1));
 }
 
 QString MeasureTools::protractorLabel(int protractor) const {

@@ -1,5 +1,7 @@
 #include "app/i18n/Language.h"
 
+#include "ui/plots/Charts.h"
+
 #include <QCoreApplication>
 #include <QLibraryInfo>
 #include <QLocale>
@@ -76,10 +78,13 @@ bool install(const QString& code) {
     translators.clear();
     current() = QStringLiteral("en");
     QLocale::setDefault(localeFor(QStringLiteral("en")));
+    // The charts' tick labels follow the window's numbers (the command line never comes here).
+    ui::setChartLocale(QLocale());
     if (code == QLatin1String("en")) return true;
     auto own = std::make_unique<QTranslator>();
     if (!own->load(QStringLiteral(":/i18n/phasebox_%1.qm").arg(code))) return false;
     QLocale::setDefault(localeFor(code));
+    ui::setChartLocale(QLocale());
     QCoreApplication::installTranslator(own.get());
     translators.push_back(std::move(own));
     // Qt's own strings (OK, Cancel, the file dialog) when the system has them installed.

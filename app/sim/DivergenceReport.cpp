@@ -1,8 +1,10 @@
 #include "app/sim/DivergenceReport.h"
 
+#include "app/i18n/AdviceText.h"
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/world/World.h"
 #include "ui/panels/BuiltinText.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QCoreApplication>
 #include <QStringList>
@@ -19,7 +21,7 @@ struct DivergenceText {
 };
 
 QString seconds(double t) {
-    return QString::number(t, 'g', 3) + QStringLiteral(" s");
+    return ui::shownNumber(t, 'g', 3) + QStringLiteral(" s");
 }
 
 // The engine's "what" (DivergenceGuard) in a user's words.
@@ -123,8 +125,8 @@ DivergenceReport describeDivergence(World& world) {
 
     QStringList details{QString::fromStdString(d.message())};
     if (!advice.message.empty())
-        details << DivergenceText::tr("Stability advisor: %1")
-                       .arg(QString::fromStdString(advice.message));
+        details
+            << DivergenceText::tr("Stability advisor: %1").arg(i18n::adviceText(advice, settings));
     report.details = details.join(QLatin1Char('\n'));
     return report;
 }

@@ -3,6 +3,7 @@
 #include "app/io/NumberFormat.h"
 #include "app/io/OutputFile.h"
 #include "physics/world/World.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QTextStream>
 
@@ -189,7 +190,7 @@ void Recorder::checkSettings(const World& world) {
         // The marker is where the new settings began: the start of this step.
         QString label = QStringLiteral("%1, dt %2")
                             .arg(QString::fromStdString(s.integrator))
-                            .arg(s.dt, 0, 'g', 4);
+                            .arg(ui::shownNumber(s.dt, 'g', 4));
         if (contacts) {
             const std::string_view model = contactModelName(s.contactModel);
             const QString contactLabel =

@@ -1,4 +1,5 @@
 #include "app/sim/RewindCommand.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QCoreApplication>
 
@@ -6,7 +7,7 @@ namespace phasebox {
 
 RewindCommand::RewindCommand(SimulationController& controller, SimulationController::Branch dropped)
     : QUndoCommand(QCoreApplication::translate("RewindCommand", "Play from t = %1 s")
-                       .arg(dropped.time, 0, 'f', 3)),
+                       .arg(ui::shownNumber(dropped.time, 'f', 3))),
       controller_(controller),
       other_(std::move(dropped)) {}
 

@@ -70,7 +70,7 @@ enum class ProbeKind : unsigned char {
 
 // An object a probe measures, resolved to its record.
 struct ProbeObject {
-    bool rigid = false;  // a rigid body (World::boxes()) or a particle (World::particles())
+    bool rigid = false;  // a rigid body (World::rigidBodies()) or a particle (World::particles())
     int index = -1;
 };
 

@@ -18,7 +18,9 @@
 #include <QChart>
 #include <QChartView>
 #include <QFile>
+#include <QLabel>
 #include <QLegend>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -183,21 +185,35 @@ void TestEnergyPlot::correctionLineIsDashedAndColouredApart() {
     }
 }
 
-// Six names do not fit one row of a narrow dock: the legend moves to the right side instead of
-// cutting them short, and comes back below the plot when the dock is wide again.
+// Six names do not fit one row of a narrow dock: the chart's legend gives way to the panel's
+// compact one below it, which holds every name whole and leaves the chart its whole width (a
+// legend down the side narrowed the time axis until its numbers were cut); back in a wide dock
+// the chart's own legend returns below the plot.
 void TestEnergyPlot::legendKeepsWholeNamesInANarrowDock() {
     const ui::EnergySample samples[] = {{0.0, 1.0, 2.0, 0.0, 0.0, 0.0},
                                         {1.0, 0.5, 2.0, -0.1, 0.01, 0.4}};
     ui::PlotsPanel panel;
-    panel.resize(400, 600);
+    panel.resize(300, 600);
     panel.show();
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
     panel.setEnergy(samples, {}, QStringLiteral("Energy"));
-    QCOMPARE(panel.energyView()->chart()->legend()->alignment(), Qt::AlignRight);
+    QChart* chart = panel.energyView()->chart();
+    QVERIFY(!chart->legend()->isVisible());
+    QTRY_VERIFY(panel.energyLegend()->isVisible());
+    const QString text = panel.energyLegend()->text();
+    for (const QLegendMarker* marker : chart->legend()->markers())
+        QVERIFY2(text.contains(marker->label()), qPrintable(marker->label()));
+    // The compact legend's rows fit the panel: its height for its width holds all of it.
+    QVERIFY(panel.energyLegend()->height() >=
+            panel.energyLegend()->heightForWidth(panel.energyLegend()->width()));
+    QVERIFY(chart->plotArea().width() > 0.6 * panel.energyView()->width());
     panel.resize(1400, 600);
-    QTRY_COMPARE(panel.energyView()->chart()->legend()->alignment(), Qt::AlignBottom);
-    panel.resize(400, 600);
-    QTRY_COMPARE(panel.energyView()->chart()->legend()->alignment(), Qt::AlignRight);
+    QTRY_VERIFY(chart->legend()->isVisible());
+    QCOMPARE(chart->legend()->alignment(), Qt::AlignBottom);
+    QTRY_VERIFY(!panel.energyLegend()->isVisible());
+    panel.resize(300, 600);
+    QTRY_VERIFY(!chart->legend()->isVisible());
+    QTRY_VERIFY(panel.energyLegend()->isVisible());
 }
 
 QTEST_MAIN(TestEnergyPlot)

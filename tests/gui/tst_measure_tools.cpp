@@ -41,6 +41,9 @@ struct Window {
     Window() {
         w.resize(1200, 800);
         w.show();
+        // The docks settle their sizes once shown (their tab bars are styled then): the canvas
+        // has its final size before a test fixes its view.
+        if (QTest::qWaitForWindowExposed(&w)) QCoreApplication::processEvents();
     }
     ui::SceneView* canvas() { return canvasOf(w); }
     MeasureTools* measure() { return measureToolsOf(w); }
@@ -48,14 +51,15 @@ struct Window {
         QString error;
         QVERIFY2(w.document().loadFromDesc(scene, {}, &error), qPrintable(error));
     }
-    // 50 px per metre with the world's origin on a whole pixel, so that the pixels of whole
-    // metres are exact and a drag between them measures exactly.
+    // 64 px per metre with the world's origin on a whole pixel, so that the pixels of whole
+    // metres are exact and a drag between them measures exactly (a power of two: the half
+    // pixel by which an odd-sized canvas's centre lies off the origin is exact in binary too).
     void exactView() {
         ui::ViewTransform v = canvas()->view();
         const QSizeF size = v.widgetSize();
-        v.setPixelsPerMetre(50.0);
-        v.setCentre(QPointF((0.5 * size.width() - std::round(0.5 * size.width())) / 50.0,
-                            (std::round(0.5 * size.height()) - 0.5 * size.height()) / 50.0));
+        v.setPixelsPerMetre(64.0);
+        v.setCentre(QPointF((0.5 * size.width() - std::round(0.5 * size.width())) / 64.0,
+                            (std::round(0.5 * size.height()) - 0.5 * size.height()) / 64.0));
         canvas()->setView(v);
     }
     // A scene of one particle, seen through exactView.

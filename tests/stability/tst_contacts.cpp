@@ -181,12 +181,12 @@ private slots:
         double sideways = 0.0, tilt = 0.0;
         for (int i = 0; i < count; ++i) {
             sideways =
-                std::max(sideways, std::abs(world->boxPosition(i).x() -
+                std::max(sideways, std::abs(world->bodyPosition(i).x() -
                                             scene.boxes[static_cast<std::size_t>(i)].position[0]));
-            tilt = std::max(tilt, std::abs(world->boxAngle(i)));
+            tilt = std::max(tilt, std::abs(world->bodyAngle(i)));
         }
         const double height = count * size;
-        const double shortening = height - (world->boxPosition(count - 1).y() + 0.5 * size);
+        const double shortening = height - (world->bodyPosition(count - 1).y() + 0.5 * size);
         qInfo("1 cm tower of %d after 5 s: sideways %.2e m, tilt %.2e rad, shortened by %.2f%%",
               count, sideways, tilt, 100.0 * shortening / height);
         QVERIFY(sideways < 0.01 * size);

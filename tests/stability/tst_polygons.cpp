@@ -217,10 +217,10 @@ private slots:
         for (int k = 0; k < 180; ++k) {
             QVERIFY(world->step());
             if (k >= 120)
-                fastestTurn = std::max(fastestTurn, std::abs(world->boxAngularVelocity(0)));
+                fastestTurn = std::max(fastestTurn, std::abs(world->bodyAngularVelocity(0)));
         }
-        const double tilt = std::abs(world->boxAngle(0));
-        const double depth = bottomToCentre - world->boxPosition(0).y();
+        const double tilt = std::abs(world->bodyAngle(0));
+        const double depth = bottomToCentre - world->bodyPosition(0).y();
         qInfo(
             "%s %g m: tilt %.2e rad, fastest turn in the last second %.2e rad/s, rest depth "
             "%.2e of its size",
@@ -228,7 +228,7 @@ private slots:
         QVERIFY2(tilt < 1e-3, qPrintable(QString::number(tilt)));
         QVERIFY2(fastestTurn < 1e-3, qPrintable(QString::number(fastestTurn)));
         QVERIFY2(std::abs(depth) < 5e-3 * size, qPrintable(QString::number(depth / size)));
-        QVERIFY(world->boxVelocity(0).norm() < 1e-3 * std::sqrt(9.81 * size) + 1e-12);
+        QVERIFY(world->bodyVelocity(0).norm() < 1e-3 * std::sqrt(9.81 * size) + 1e-12);
     }
 
     void fastSmallShapesDoNotTunnel_data() { addIntegrators(); }

@@ -1,4 +1,5 @@
 #include "ui/canvas/MeasureOverlay.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QCoreApplication>
 #include <QFontMetricsF>
@@ -247,13 +248,13 @@ void drawFreeBody(const Painter& g, const MeasureOverlay& o, QSize viewport) {
         legend << overlayText(QT_TRANSLATE_NOOP("MeasureOverlay", "Free body: %1, m = %2 kg"))
                       .arg(o.freeBodyName, MeasureRenderer::number(body.mass))
                << overlayText(QT_TRANSLATE_NOOP("MeasureOverlay", "forces: 1 px = %1 N, net %2 N"))
-                      .arg(newtonsPerPixel, 0, 'g', 3)
+                      .arg(shownNumber(newtonsPerPixel, 'g', 3))
                       .arg(MeasureRenderer::number(body.net().norm()))
                << (momentum == Vec2::Zero()
                        ? overlayText(QT_TRANSLATE_NOOP("MeasureOverlay", "momentum 0"))
                        : overlayText(
                              QT_TRANSLATE_NOOP("MeasureOverlay", "momentum: 1 px = %1 kg·m/s"))
-                             .arg(momentumPerPixel, 0, 'g', 3));
+                             .arg(shownNumber(momentumPerPixel, 'g', 3)));
     } else {
         legend << overlayText(
             QT_TRANSLATE_NOOP("MeasureOverlay", "Free body: select a moving body"));
@@ -295,8 +296,8 @@ double MeasureRenderer::arrowScale(double largest, double longestPixels) {
 QString MeasureRenderer::number(double value) {
     const double a = std::abs(value);
     if (a == 0.0) return QStringLiteral("0");
-    if (a >= 1000.0 || a < 0.01) return QString::number(value, 'g', 3);
-    return QString::number(value, 'f', a >= 100.0 ? 0 : a >= 10.0 ? 1 : 2);
+    if (a >= 1000.0 || a < 0.01) return shownNumber(value, 'g', 3);
+    return shownNumber(value, 'f', a >= 100.0 ? 0 : a >= 10.0 ? 1 : 2);
 }
 
 QColor MeasureRenderer::forceColor(BodyForce::Source source) {

@@ -1,6 +1,7 @@
 #include "ui/instruments/ProbeTableView.h"
 
 #include "ui/instruments/ProbePicker.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QFontDatabase>
 #include <QHBoxLayout>
@@ -70,7 +71,8 @@ QVariant ProbeTableModel::data(const QModelIndex& index, int role) const {
     // Seven significant digits at the column's largest value (which tells a conserved quantity
     // from one that drifts), the same decimals all down the column so that the points line up.
     const int decimals = decimals_.value(index.column(), 6);
-    return decimals < 0 ? QString::number(value, 'e', 6) : QString::number(value, 'f', decimals);
+    // Shown in the locale; Copy and Export CSV write the recorder's '.'-decimal numbers.
+    return decimals < 0 ? shownNumber(value, 'e', 6) : shownNumber(value, 'f', decimals);
 }
 
 QVariant ProbeTableModel::headerData(int section, Qt::Orientation orientation, int role) const {

@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
+#include <QResizeEvent>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -61,7 +62,7 @@ ReadoutView::ReadoutView(QWidget* parent) : QWidget(parent) {
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     table_->setSelectionMode(QAbstractItemView::SingleSelection);
     table_->setContextMenuPolicy(Qt::CustomContextMenu);
-    table_->horizontalHeader()->setSectionResizeMode(kQuantity, QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setSectionResizeMode(kQuantity, QHeaderView::Interactive);
     table_->horizontalHeader()->setSectionResizeMode(kValue, QHeaderView::Stretch);
     table_->horizontalHeader()->setSectionResizeMode(kUnit, QHeaderView::ResizeToContents);
     table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -108,6 +109,32 @@ void ReadoutView::setReadout(const QString& subject, const QString& state, bool 
         }
     }
     for (int r = 0; r < rows.size(); ++r) table_->item(r, kValue)->setText(joined(rows[r].values));
+    if (!sameRows) fitColumns();
+}
+
+void ReadoutView::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    fitColumns();
+}
+
+// The quantity column as wide as its longest name, but no wider than leaves the values room for
+// a pair's first number and the units theirs: a long name wraps at its spaces ("Betrag der /
+// Geschwindigkeit") rather than cut a value to "(−2,000…" (German names are long).
+void ReadoutView::fitColumns() {
+    const QFontMetrics names(table_->font());
+    const QFontMetrics digits(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    constexpr int kPad = 14;
+    int whole = names.horizontalAdvance(table_->horizontalHeaderItem(kQuantity)->text());
+    int word = 0;
+    for (const ReadoutRow& row : std::as_const(rows_)) {
+        whole = std::max(whole, names.horizontalAdvance(row.label));
+        for (const QString& w : row.label.split(QLatin1Char(' '), Qt::SkipEmptyParts))
+            word = std::max(word, names.horizontalAdvance(w));
+    }
+    const int value = digits.horizontalAdvance(QStringLiteral("(−0,00000;")) + kPad;
+    const int room = table_->viewport()->width() - table_->columnWidth(kUnit) - value;
+    table_->setColumnWidth(kQuantity, std::clamp(room, word + kPad, std::max(word, whole) + kPad));
+    table_->resizeRowsToContents();
 }
 
 void ReadoutView::showHint(const QString& hint) {

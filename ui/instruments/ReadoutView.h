@@ -48,8 +48,12 @@ signals:
     void graphRequested(const QString& probe);
     void periodRequested(const QString& probe);
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     void showMenu(const QPoint& position);
+    void fitColumns();
 
     QLabel* subject_ = nullptr;
     QLabel* state_ = nullptr;

@@ -2,6 +2,7 @@
 
 #include "ui/instruments/ProbeFormat.h"
 #include "ui/instruments/ProbePicker.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QFontDatabase>
 #include <QGridLayout>
@@ -39,9 +40,9 @@ void fillTimes(QTableWidget* table, const std::vector<double>& times, bool fromZ
     const QFont digits = QFontDatabase::systemFont(QFontDatabase::FixedFont);
     table->setRowCount(static_cast<int>(times.size()));
     for (int r = 0; r < static_cast<int>(times.size()); ++r) {
-        const QString cells[] = {QString::number(r + 1), QString::number(times[r], 'f', 4),
-                                 r > 0      ? QString::number(times[r] - times[r - 1], 'f', 4)
-                                 : fromZero ? QString::number(times[r], 'f', 4)
+        const QString cells[] = {QString::number(r + 1), shownNumber(times[r], 'f', 4),
+                                 r > 0      ? shownNumber(times[r] - times[r - 1], 'f', 4)
+                                 : fromZero ? shownNumber(times[r], 'f', 4)
                                             : QStringLiteral("—")};
         for (int c = 0; c < 3; ++c) {
             QTableWidgetItem* item = table->item(r, c);
@@ -161,7 +162,7 @@ int TimerView::crossingCount() const {
 }
 
 void TimerView::setStopwatch(double elapsed, bool running, const std::vector<double>& laps) {
-    stopwatch_->setText(QStringLiteral("%1 s").arg(elapsed, 0, 'f', 3));
+    stopwatch_->setText(QStringLiteral("%1 s").arg(shownNumber(elapsed, 'f', 3)));
     startStop_->setText(running ? tr("Stop") : tr("Start"));
     lap_->setEnabled(running);
     if (static_cast<int>(laps.size()) != laps_->rowCount()) {

@@ -3,6 +3,7 @@
 #include "physics/core/EffectNames.h"
 #include "physics/scene/SceneSchema.h"
 #include "ui/panels/BuiltinText.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -101,7 +102,7 @@ QString EffectsPanel::formatMs(double ms) {
     int decimals = std::max(0, 2 - static_cast<int>(std::floor(std::log10(value))));
     const double scale = std::pow(10.0, decimals);
     if (decimals > 0 && std::round(value * scale) >= 1000.0) --decimals;  // 9.996 → 10.0
-    return QString::number(value, 'f', std::min(decimals, 9)) +
+    return shownNumber(value, 'f', std::min(decimals, 9)) +
            (micro ? QStringLiteral(" µs") : QStringLiteral(" ms"));
 }
 
@@ -153,6 +154,8 @@ EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
     total_->setObjectName(QStringLiteral("total"));
     total_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     total_->setToolTip(tr("Time of one whole step: integrator, effects and contacts"));
+    // Beside the Add button it wraps rather than run under it in a narrow dock.
+    total_->setWordWrap(true);
 
     auto* bottom = new QHBoxLayout;
     bottom->addWidget(addButton_);
@@ -353,7 +356,12 @@ QTreeWidget* EffectsPanel::createStageView() {
     stages_->header()->setStretchLastSection(false);
     stages_->header()->setSectionResizeMode(kNameColumn, QHeaderView::Stretch);
     stages_->header()->setSectionResizeMode(kCostColumn, QHeaderView::Fixed);
-    stages_->header()->resizeSection(kCostColumn, tree_->header()->sectionSize(kCostColumn));
+    // Its costs have no "per step" of their own (the header says it): a narrower column leaves
+    // the stages' names whole ("Detectar colisiones").
+    stages_->header()->resizeSection(
+        kCostColumn, std::max(stages_->fontMetrics().horizontalAdvance(formatMs(0.0000421)),
+                              stages_->header()->fontMetrics().horizontalAdvance(tr("per step"))) +
+                         16);
     stages_->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     stages_->hide();  // until the first profile
     return stages_;

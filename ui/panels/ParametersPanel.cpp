@@ -4,6 +4,7 @@
 #include "physics/scene/SceneSchema.h"
 #include "ui/panels/BuiltinText.h"
 #include "ui/panels/PropertiesPanel.h"  // ScientificSpinBox
+#include "ui/panels/ShownNumber.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -60,8 +61,8 @@ QString presetLabel(double seconds) {
     if (std::abs(per - std::round(per)) < 1e-9)
         return ParametersPanel::tr("1/%1 s  (%2 s)")
             .arg(std::lround(per))
-            .arg(QString::number(seconds, 'g', 3));
-    return ParametersPanel::tr("%1 s").arg(seconds);
+            .arg(shownNumber(seconds, 'g', 3));
+    return ParametersPanel::tr("%1 s").arg(shownNumber(seconds));
 }
 }  // namespace
 

@@ -3,6 +3,7 @@
 #include "physics/scene/ObjectKinds.h"
 #include "physics/scene/SceneSchema.h"
 #include "ui/panels/DisplayText.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QHash>
 #include <QHeaderView>
@@ -28,7 +29,7 @@ constexpr int kGroupRole = Qt::UserRole + 1;  // group rows: the scene array's k
 
 // Three significant digits with the exponent as a person writes it: 0.05, 1e6, 2.5e-3.
 QString num(double value) {
-    QString text = QString::number(value, 'g', 3);
+    QString text = shownNumber(value, 'g', 3);
     const qsizetype e = text.indexOf(QLatin1Char('e'));
     if (e < 0) return text;
     QString exponent = text.mid(e + 1);
@@ -156,7 +157,10 @@ SceneBrowser::SceneBrowser(QWidget* parent) : QWidget(parent) {
     tree_->setUniformRowHeights(true);
     tree_->setAllColumnsShowFocus(true);
     tree_->header()->setSectionResizeMode(kIdColumn, QHeaderView::Interactive);
-    tree_->header()->setStretchLastSection(true);
+    // Summaries whole, as wide as the longest: a narrow dock scrolls sideways rather than cut
+    // them to "m 0,5 kg, r 0,…".
+    tree_->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    tree_->header()->setStretchLastSection(false);
     tree_->installEventFilter(this);
     connect(tree_, &QTreeWidget::itemSelectionChanged, this, &SceneBrowser::onTreeSelectionChanged);
 

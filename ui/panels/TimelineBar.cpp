@@ -1,4 +1,5 @@
 #include "ui/panels/TimelineBar.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QAction>
 #include <QHBoxLayout>
@@ -97,11 +98,13 @@ void TimelineBar::setFrames(int count, int shown, double shownTime, double endTi
     back_->setEnabled(shown > 0);
     start_->setEnabled(shown > 0);
     forward_->setEnabled(shown < count - 1);
-    time_->setText(tr("%1 / %2 s").arg(shownTime, 0, 'f', 3).arg(endTime, 0, 'f', 3));
+    time_->setText(
+        tr("%1 / %2 s").arg(shownNumber(shownTime, 'f', 3), shownNumber(endTime, 'f', 3)));
 }
 
 void TimelineBar::setMemory(std::size_t usedBytes, std::size_t budgetBytes) {
-    memory_->setText(tr("%1 MB of").arg(static_cast<double>(usedBytes) / kMiB, 0, 'f', 1));
+    memory_->setText(
+        tr("%1 MB of").arg(shownNumber(static_cast<double>(usedBytes) / kMiB, 'f', 1)));
     const QSignalBlocker block(budget_);
     budget_->setValue(static_cast<int>(budgetBytes / kMiB));
 }

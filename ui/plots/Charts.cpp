@@ -74,8 +74,14 @@ void attach(QChart* chart, QValueAxis* x, QValueAxis* y) {
     }
 }
 
+std::optional<QLocale>& storedChartLocale() {
+    static std::optional<QLocale> locale;
+    return locale;
+}
+
 QChart* newChart(const QString& title) {
     auto* chart = new QChart;
+    applyChartLocale(chart);
     chart->setTitle(title);
     chart->setAnimationOptions(QChart::NoAnimation);
     chart->legend()->setAlignment(Qt::AlignBottom);
@@ -83,6 +89,23 @@ QChart* newChart(const QString& title) {
     return chart;
 }
 }  // namespace
+
+void setChartLocale(const std::optional<QLocale>& locale) {
+    auto& stored = storedChartLocale();
+    stored = locale;
+    if (stored) stored->setNumberOptions(stored->numberOptions() | QLocale::OmitGroupSeparator);
+}
+
+const std::optional<QLocale>& chartLocale() {
+    return storedChartLocale();
+}
+
+void applyChartLocale(QChart* chart) {
+    if (const std::optional<QLocale>& locale = storedChartLocale(); locale && chart) {
+        chart->setLocale(*locale);
+        chart->setLocalizeNumbers(true);
+    }
+}
 
 QColor energyColor(int series) {
     // Okabe–Ito hues (ui/canvas/Appearance.h): kinetic blue against potential orange, drift

@@ -5,11 +5,13 @@
 
 #include <QByteArray>
 #include <QColor>
+#include <QLocale>
 #include <QPointF>
 #include <QSize>
 #include <QString>
 #include <QVector>
 
+#include <optional>
 #include <span>
 
 QT_BEGIN_NAMESPACE
@@ -73,6 +75,14 @@ void paintChart(QChart* chart, QPainter& painter, const QRectF& target);
 // Gives a finished chart the app's appearance (ui/canvas/Appearance.h: high contrast, line and
 // text scales); nothing with the default appearance, which the command line keeps.
 void applyChartAppearance(QChart* chart);
+
+// The locale of the charts' tick labels from now on. None, the default and the command line's,
+// writes them as C's printf does, with a decimal point; the app sets its language's, so that a
+// German axis reads "1,5" like the rest of the window. A chart's CSV never uses it.
+void setChartLocale(const std::optional<QLocale>& locale);
+const std::optional<QLocale>& chartLocale();
+// Gives a new chart that locale's tick labels (nothing while none is set).
+void applyChartLocale(QChart* chart);
 
 // The series colours, shared with the app's legends.
 // 0 kinetic, 1 potential, 2 total, 3 work_nc, 4 drift, 5 correction.

@@ -13,6 +13,7 @@
 #include <QLocale>
 #include <QMenu>
 #include <QPen>
+#include <QRegularExpression>
 #include <QScatterSeries>
 #include <QSplitter>
 #include <QTabWidget>
@@ -47,39 +48,99 @@ void applyPresentation(QChart* chart, bool presentation) {
     chart->setTitleFont(font);
 }
 
+// Set on a chart whose own legend the panel's compact one stands in for.
+constexpr char kCompactLegend[] = "phaseboxCompactLegend";
+// Set on a series that no legend names (the timeline's cursor). A marker's own visibility
+// cannot say it: a marker reads as hidden while its legend is, or before it is laid out.
+constexpr char kNoLegend[] = "phaseboxNoLegend";
+
+// A line's sample in the compact legend: solid, dashed or a dot, in the series' colour.
+QString legendEntry(QLegendMarker* marker) {
+    const auto* series = qobject_cast<const QXYSeries*>(marker->series());
+    const QPen pen = series ? series->pen() : QPen(marker->brush().color());
+    QString glyph = QStringLiteral("━━");
+    if (qobject_cast<const QScatterSeries*>(marker->series()) || (series && series->count() == 1))
+        glyph = QStringLiteral("●");
+    else if (pen.style() != Qt::SolidLine)
+        glyph = QStringLiteral("╍╍");
+    const QColor colour = series && series->count() == 1 ? series->color() : pen.color();
+    return QStringLiteral("<span style=\"color:%1\">%2</span>&nbsp;%3")
+        .arg(colour.name(), glyph, marker->label().toHtmlEscaped());
+}
+
 // A legend along the bottom is a single row, and Qt cuts its labels to "kine…" when the row
-// is wider than the view (six energy lines in a narrow dock). Then the legend goes down the
-// right side, where every name fits whole, at the cost of some plot width.
-void fitLegend(QChartView* view) {
-    QLegend* legend = view->chart()->legend();
-    if (!legend->isVisible()) return;
-    const QFontMetricsF metrics(legend->font());
-    qreal row = 0.0;
-    for (const QLegendMarker* marker : legend->markers()) {
-        // Label, marker (a line 1.5 font heights long) and the gaps around them.
-        if (marker->isVisible())
-            row += metrics.horizontalAdvance(marker->label()) + 4.0 * metrics.height();
-    }
-    const qreal margins = 4.0 * metrics.height();  // the chart's and the legend's own
-    if (row + margins <= view->width()) {
-        legend->setAlignment(Qt::AlignBottom);
+// is wider than the view (six energy lines in a narrow dock); down the side it takes the width
+// the time axis's numbers need. Where the row does not fit, the chart's legend hides and the
+// panel's compact one below the chart shows the same names whole, in as many rows as it needs.
+void fitLegend(QChartView* view, QLabel* compact) {
+    QChart* chart = view->chart();
+    QLegend* legend = chart->legend();
+    const bool wanted = legend->isVisible() || chart->property(kCompactLegend).toBool();
+    if (!wanted) {
+        if (compact) compact->hide();
         return;
     }
-    legend->setAlignment(Qt::AlignRight);
-    // Down the side Qt gives the legend only about a quarter of a narrow chart's width, marker
-    // included: a smaller type keeps the longest name whole rather than cut to
-    // "poten…" (German, Spanish and French names are longer than English ones).
-    QFont font = legend->font();
-    for (int shrink = 0; shrink < 10 && font.pointSizeF() > 6.0; ++shrink) {
-        const QFontMetricsF m(font);
-        qreal widest = 0.0;
-        for (const QLegendMarker* marker : legend->markers())
-            if (marker->isVisible())
-                widest = std::max(widest, m.horizontalAdvance(marker->label()));
-        if (widest <= 0.25 * view->width() - 2.5 * m.height()) break;
-        font.setPointSizeF(font.pointSizeF() * 0.9);
+    const QFontMetricsF metrics(legend->font());
+    qreal row = 0.0;
+    QStringList entries;
+    for (QLegendMarker* marker : legend->markers()) {
+        if (!marker->series() || marker->series()->property(kNoLegend).toBool()) continue;
+        // Label, marker (a line 1.5 font heights long) and the gaps around them.
+        row += metrics.horizontalAdvance(marker->label()) + 4.0 * metrics.height();
+        entries << legendEntry(marker);
     }
-    legend->setFont(font);
+    const qreal margins = 4.0 * metrics.height();  // the chart's and the legend's own
+    const bool fits = !compact || row + margins <= view->width();
+    legend->setAlignment(Qt::AlignBottom);
+    legend->setVisible(fits);
+    chart->setProperty(kCompactLegend, !fits);
+    if (!compact) return;
+    compact->setVisible(!fits);
+    if (fits) return;
+    compact->setFont(legend->font());
+    // Breaking spaces between the entries only, so that a name and its line stay together.
+    compact->setText(entries.join(QStringLiteral("&nbsp;&nbsp; ")));
+}
+
+// Qt cuts a tick label to "-…" when it is wider than the room between two ticks (a phase plot
+// in a narrow dock): fewer ticks along the bottom there, so that every number shows whole.
+void fitTicks(QChartView* view) {
+    QChart* chart = view->chart();
+    const QLocale locale = chart->localizeNumbers() ? chart->locale() : QLocale::c();
+    static const QRegularExpression precision(QStringLiteral("%\\.(\\d+)g"));
+    for (QAbstractAxis* a : chart->axes(Qt::Horizontal)) {
+        auto* axis = qobject_cast<QValueAxis*>(a);
+        if (!axis) continue;
+        const QRegularExpressionMatch match = precision.match(axis->labelFormat());
+        const int digits = match.hasMatch() ? match.captured(1).toInt() : 4;
+        const QFontMetricsF m(axis->labelsFont());
+        const qreal em = m.height();
+        // The plot's width: the view's less the vertical axis's labels and title and margins.
+        const qreal plot = view->width() - 8.0 * em -
+                           m.horizontalAdvance(locale.toString(axis->max(), 'g', digits));
+        int count = 5;
+        for (; count > 2; --count) {
+            qreal widest = 0.0;
+            for (int i = 0; i < count; ++i) {
+                const double v = axis->min() + i * (axis->max() - axis->min()) / (count - 1);
+                widest = std::max(widest, m.horizontalAdvance(locale.toString(v, 'g', digits)));
+            }
+            if (widest + 0.5 * em <= plot / (count - 1)) break;
+        }
+        axis->setTickCount(count);
+    }
+}
+
+// The compact legend's label under a chart.
+QLabel* compactLegend(QWidget* parent, const QString& objectName) {
+    auto* label = new QLabel(parent);
+    label->setObjectName(objectName);
+    label->setTextFormat(Qt::RichText);
+    label->setWordWrap(true);
+    label->setAlignment(Qt::AlignHCenter);
+    label->setContentsMargins(4, 0, 4, 2);
+    label->hide();
+    return label;
 }
 }  // namespace
 
@@ -121,12 +182,18 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
 
     // Energy on top, always in sight; phase space and the error estimate share the lower half.
     auto* splitter = new QSplitter(Qt::Vertical, this);
-    energyView_ = new QChartView(createEnergyChart({}, {}, tr("Energy")), splitter);
+    auto* energyBox = new QWidget(splitter);
+    auto* energyLayout = new QVBoxLayout(energyBox);
+    energyLayout->setContentsMargins(0, 0, 0, 0);
+    energyLayout->setSpacing(0);
+    energyView_ = new QChartView(createEnergyChart({}, {}, tr("Energy")), energyBox);
+    energyLegend_ = compactLegend(energyBox, QStringLiteral("energyLegend"));
+    energyLayout->addWidget(energyView_, 1);
+    energyLayout->addWidget(energyLegend_);
     lowerTabs_ = new QTabWidget(splitter);
     auto* phaseBox = new QWidget(lowerTabs_);
     auto* phaseLayout = new QVBoxLayout(phaseBox);
     phaseLayout->setContentsMargins(0, 0, 0, 0);
-    auto* coordinateRow = new QHBoxLayout;
     phaseHint_ = new QLabel(tr("Click an object on the canvas to plot its phase space."), phaseBox);
     phaseHint_->setWordWrap(true);
     coordinateBox_ = new QComboBox(phaseBox);
@@ -136,13 +203,17 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
     coordinateBox_->addItem(tr("angle against ω (boxes)"), QStringLiteral("angle"));
     connect(coordinateBox_, &QComboBox::activated, this,
             [this] { emit phaseCoordinateRequested(coordinateBox_->currentData().toString()); });
-    coordinateRow->addWidget(phaseHint_, 1);
-    coordinateRow->addWidget(coordinateBox_);
-    phaseLayout->addLayout(coordinateRow);
+    // The hint has a row of its own: beside the chooser a narrow dock left it a column of one
+    // or two words.
+    phaseLayout->addWidget(phaseHint_);
+    phaseLayout->addWidget(coordinateBox_);
     phaseView_ = new QChartView(
         createPhaseChart({}, QStringLiteral("x"), QStringLiteral("vx"), tr("Phase space")),
         phaseBox);
+    phaseLegend_ = compactLegend(phaseBox, QStringLiteral("phaseLegend"));
     phaseLayout->addWidget(phaseView_, 1);
+    phaseLayout->addWidget(phaseLegend_);
+    phaseLayout->addStretch(0);  // the hint and chooser at the top while no chart shows
     auto* errorBox = new QWidget(lowerTabs_);
     auto* errorLayout = new QVBoxLayout(errorBox);
     errorLayout->setContentsMargins(0, 0, 0, 0);
@@ -161,7 +232,7 @@ PlotsPanel::PlotsPanel(QWidget* parent) : QWidget(parent) {
     }
     lowerTabs_->addTab(phaseBox, tr("P&hase space"));
     lowerTabs_->addTab(errorBox, tr("Local e&rror"));
-    splitter->addWidget(energyView_);
+    splitter->addWidget(energyBox);
     splitter->addWidget(lowerTabs_);
     splitter->setStretchFactor(0, 1);
     splitter->setStretchFactor(1, 1);
@@ -172,7 +243,12 @@ void PlotsPanel::styleChart(QChartView* view) {
     view->setRenderHint(QPainter::Antialiasing);
     view->setMinimumHeight(120);
     applyPresentation(view->chart(), presentation_);
-    fitLegend(view);
+    fitLegend(view, legendOf(view));
+    fitTicks(view);
+}
+
+QLabel* PlotsPanel::legendOf(const QChartView* view) const {
+    return view == energyView_ ? energyLegend_ : view == phaseView_ ? phaseLegend_ : nullptr;
 }
 
 bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
@@ -180,7 +256,10 @@ bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
     // width here.
     if (event->type() == QEvent::Resize)
         for (QChartView* view : {energyView_, phaseView_, errorView_})
-            if (watched == view) fitLegend(view);
+            if (watched == view) {
+                fitLegend(view, legendOf(view));
+                fitTicks(view);
+            }
     return QWidget::eventFilter(watched, event);
 }
 
@@ -200,6 +279,7 @@ void addCursor(QChart* chart, QXYSeries* cursor, const QList<QPointF>& points) {
     cursor->attachAxis(x.first());
     cursor->attachAxis(y.first());
     // The legend names what was computed, not where the timeline is.
+    cursor->setProperty(kNoLegend, true);
     if (QLegend* legend = chart->legend())
         for (QLegendMarker* m : legend->markers(cursor)) m->setVisible(false);
 }
@@ -289,6 +369,7 @@ void PlotsPanel::setPhase(std::span<const PhaseSample> samples, const QString& c
     phaseHint_->setText(coordinateName.isEmpty()
                             ? tr("Click an object on the canvas to plot its phase space.")
                             : QString());
+    phaseHint_->setVisible(coordinateName.isEmpty());
     phaseView_->setVisible(!coordinateName.isEmpty());
     if (!samples.empty()) {
         const QLocale l;

@@ -85,6 +85,10 @@ public:
     QChartView* energyView() const { return energyView_; }
     QChartView* phaseView() const { return phaseView_; }
     QChartView* errorView() const { return errorView_; }
+    // The names of a chart's lines below it, in as many rows as they need, when one row under
+    // the chart would cut them (a narrow dock); hidden while the chart's own legend shows.
+    QLabel* energyLegend() const { return energyLegend_; }
+    QLabel* phaseLegend() const { return phaseLegend_; }
 
 signals:
     void clearRequested();
@@ -99,11 +103,14 @@ protected:
 
 private:
     void styleChart(QChartView* view);
+    QLabel* legendOf(const QChartView* view) const;
 
     QChartView* energyView_ = nullptr;
     QChartView* phaseView_ = nullptr;
     QChartView* errorView_ = nullptr;
     QLabel* errorHint_ = nullptr;
+    QLabel* energyLegend_ = nullptr;
+    QLabel* phaseLegend_ = nullptr;
     QLabel* phaseHint_ = nullptr;
     QComboBox* coordinateBox_ = nullptr;
     QTabWidget* lowerTabs_ = nullptr;

@@ -79,6 +79,7 @@ QChart* createProbeChart(const QVector<QPointF>& points, const QString& xTitle,
                          const QString& yTitle, const QString& title, bool timeAxis,
                          int maxXTicks) {
     auto* chart = new QChart;
+    applyChartLocale(chart);
     chart->setTitle(title);
     chart->setAnimationOptions(QChart::NoAnimation);
     chart->setBackgroundRoundness(0);

@@ -151,6 +151,7 @@ QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, con
 QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, const QString& title,
                                  const QFont& font) {
     auto* chart = new QChart;
+    applyChartLocale(chart);
     chart->setTitle(title);
     chart->setAnimationOptions(QChart::NoAnimation);
     chart->setBackgroundRoundness(0);

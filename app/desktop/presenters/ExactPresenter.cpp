@@ -7,6 +7,7 @@
 #include "physics/scene/SceneDesc.h"
 #include "physics/world/World.h"
 #include "ui/canvas/SceneView.h"
+#include "ui/panels/ShownNumber.h"
 #include "ui/plots/PlotsPanel.h"
 
 #include <QAction>
@@ -179,7 +180,7 @@ void ExactPresenter::refresh() {
             ? tr("dashed: exact solution (%1)").arg(kind())
             : tr("dashed: exact solution (%1) until t = %2 s, where a contact begins or ends")
                   .arg(kind())
-                  .arg(reference_->validUntil(), 0, 'f', 2);
+                  .arg(ui::shownNumber(reference_->validUntil(), 'f', 2));
     view_.setReferenceOverlay(overlay);
 }
 

@@ -14,6 +14,7 @@
 #include "ui/instruments/TimerView.h"
 #include "ui/panels/BuiltinText.h"
 #include "ui/panels/DisplayText.h"
+#include "ui/panels/ShownNumber.h"
 #include "ui/plots/ProbeChart.h"
 
 #include <QAction>
@@ -464,7 +465,8 @@ void InstrumentsPresenter::refreshReadouts() {
         addRow(tr("angle of %1").arg(joint), {joint + QStringLiteral(".angle")});
     }
     const bool live = document_.hasRun();
-    const QString state = live ? tr("live, t = %1 s").arg(world.time(), 0, 'f', 2) : tr("setup");
+    const QString state =
+        live ? tr("live, t = %1 s").arg(ui::shownNumber(world.time(), 'f', 2)) : tr("setup");
     view->setReadout(subject, state, live, rows);
 }
 
@@ -518,8 +520,8 @@ void InstrumentsPresenter::refreshGraph(int index) {
         note = tr("Press Play: %1 is recorded at every step.").arg(graph.y);
     else if (problem.isEmpty() && !points.isEmpty() && timeAxis &&
              points.front().x() > probes_.times().front())
-        note =
-            tr("Recorded since t = %1 s, when it was chosen.").arg(points.front().x(), 0, 'f', 2);
+        note = tr("Recorded since t = %1 s, when it was chosen.")
+                   .arg(ui::shownNumber(points.front().x(), 'f', 2));
     view->setMessage(problem.isEmpty() ? note : problem, !problem.isEmpty());
     const int yi = probes_.indexOf(graph.y);
     const QString unit =
@@ -566,7 +568,7 @@ void InstrumentsPresenter::refreshTimer() {
             tr("Mean interval between the upward crossings of %1 through %2 %3, the middle "
                "of its range [%4, %5] %3, each interpolated within its step.")
                 .arg(periodProbe_,
-                     QString::number(level, 'f', decimals).replace(QLatin1Char('-'), QChar(0x2212)),
+                     ui::shownNumber(level, 'f', decimals).replace(QLatin1Char('-'), QChar(0x2212)),
                      unit, ui::formatReading(s.min), ui::formatReading(s.max));
     }
     view->setPeriod(s.period, detail, crossings);
@@ -626,7 +628,7 @@ bool InstrumentsPresenter::exportGraph(int index, const QString& path, QString* 
             .arg(graph.y, graph.x.isEmpty() ? tr("time") : graph.x,
                  setup.name.empty() ? tr("Untitled") : ui::shownText(ui::sceneText(setup.name)),
                  QString::fromStdString(setup.simulation.integrator))
-            .arg(setup.simulation.dt, 0, 'g', 4);
+            .arg(ui::shownNumber(setup.simulation.dt, 'g', 4));
     std::unique_ptr<QChart> chart(ui::createProbeChart(
         graphPoints(graph), axisTitle(graph.x), axisTitle(graph.y), title, graph.x.isEmpty()));
     return writeChart(chart.get(), path, QSize(1200, 800), error);

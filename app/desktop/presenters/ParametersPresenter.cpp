@@ -1,11 +1,13 @@
 #include "app/desktop/presenters/ParametersPresenter.h"
 
 #include "app/document/Document.h"
+#include "app/i18n/AdviceText.h"
 #include "app/sim/SimulationController.h"
 #include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/SceneSchema.h"
 #include "ui/panels/ParametersPanel.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QAction>
 #include <QSettings>
@@ -114,25 +116,26 @@ void ParametersPresenter::showSettings() {
 void ParametersPresenter::updateAdvice() {
     const StabilityAdvice advice = adviseStability(document_.world(), 200);
     // The contact model's warning (kinematic contacts under a stack) stands beside the step's.
-    const QString contactWarning = QString::fromStdString(advice.contactWarning);
+    const QString contactWarning = i18n::contactWarningText(advice.contactWarning);
     if (advice.omegaMax <= 0.0) {
         panel_.setAdvice(contactWarning, !contactWarning.isEmpty());
         return;
     }
     // The largest stable step of every method, as the advisor computed them.
     QStringList details{tr("Largest stable sub-step (stiffest mode ω = %1 rad/s):")
-                            .arg(advice.omegaMax, 0, 'g', 4)};
+                            .arg(ui::shownNumber(advice.omegaMax, 'g', 4))};
     for (const StepLimit& limit : advice.limits) {
         const QString name = QString::fromLatin1(limit.integrator.data(),
                                                  static_cast<qsizetype>(limit.integrator.size()));
         const QString step = std::isinf(limit.maxDt) ? tr("any")
-                             : limit.maxDt == 0.0    ? tr("none")
-                                                     : tr("%1 s").arg(limit.maxDt, 0, 'g', 3);
+                             : limit.maxDt == 0.0
+                                 ? tr("none")
+                                 : tr("%1 s").arg(ui::shownNumber(limit.maxDt, 'g', 3));
         details << QStringLiteral("%1: %2").arg(name, step);
     }
-    // The advisor writes for a terminal (omega*h); the panel in the lecture's notation.
-    QString text = QString::fromStdString(advice.message)
-                       .replace(QLatin1String("omega*h"), QStringLiteral("ω·h"));
+    // The advisor writes English for a terminal (omega*h); the panel in the window's language
+    // and the lecture's notation.
+    QString text = i18n::adviceText(advice, document_.world().settings());
     if (!contactWarning.isEmpty())
         text = advice.currentStable ? contactWarning : text + QLatin1Char('\n') + contactWarning;
     panel_.setAdvice(text, !advice.currentStable || !contactWarning.isEmpty(),

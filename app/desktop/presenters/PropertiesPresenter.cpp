@@ -6,6 +6,7 @@
 #include "physics/scene/StateTransfer.h"
 #include "physics/world/World.h"
 #include "ui/panels/PropertiesPanel.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <variant>
 #include <vector>
@@ -62,11 +63,12 @@ void PropertiesPresenter::update(bool rebuild) {
     } else {
         panel_.updateValues(fields);
     }
-    const QString note =
-        live ? tr("Live at t = %1 s; Reset shows the setup").arg(world.time(), 0, 'f', 3)
-        : document_.hasRun()
-            ? tr("The setup's numbers (the run is at t = %1 s)").arg(world.time(), 0, 'f', 3)
-            : tr("Setup: the state at t = 0, what Reset returns to");
+    const QString note = live ? tr("Live at t = %1 s; Reset shows the setup")
+                                    .arg(ui::shownNumber(world.time(), 'f', 3))
+                         : document_.hasRun()
+                             ? tr("The setup's numbers (the run is at t = %1 s)")
+                                   .arg(ui::shownNumber(world.time(), 'f', 3))
+                             : tr("Setup: the state at t = 0, what Reset returns to");
     panel_.setStateNote(note, live);
 }
 

@@ -3,6 +3,7 @@
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
 #include "physics/world/World.h"
+#include "ui/panels/ShownNumber.h"
 
 #include <QLabel>
 #include <QStatusBar>
@@ -64,14 +65,15 @@ void StatusPresenter::reportUnsupportedEffects() {
 
 void StatusPresenter::refresh() {
     const double error = controller_.lastErrorEstimate();
-    error_->setText(std::isfinite(error) ? tr("local error ≈ %L1 m").arg(error, 0, 'g', 2)
-                                         : QString());
-    time_->setText(tr("t = %L1 s").arg(document_.world().time(), 0, 'g', 4));
+    error_->setText(std::isfinite(error)
+                        ? tr("local error ≈ %L1 m").arg(ui::shownNumber(error, 'g', 2))
+                        : QString());
+    time_->setText(tr("t = %L1 s").arg(ui::shownNumber(document_.world().time(), 'g', 4)));
     speed_->setText(controller_.isRunning() ? tr("real-time factor %L1 (speed %L2×)")
                                                   .arg(controller_.realTimeFactor(), 0, 'f', 2)
                                                   .arg(controller_.speed())
                                             : tr("paused (speed %L1×)").arg(controller_.speed()));
-    cost_->setText(tr("%L1 ms per step").arg(controller_.msPerStep(), 0, 'g', 3));
+    cost_->setText(tr("%L1 ms per step").arg(ui::shownNumber(controller_.msPerStep(), 'g', 3)));
 }
 
 }  // namespace phasebox
