@@ -3937,6 +3937,25 @@ die Pfeile ändern sie um den Faktor zehn</translation>
         <source>Joints</source>
         <translation>Gelenke</translation>
     </message>
+    <message>
+        <source>r %1 m</source>
+        <translation>r %1 m</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n vertices</source>
+        <translation>
+            <numerusform>%n Ecke</numerusform>
+            <numerusform>%n Ecken</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Disks</source>
+        <translation>Scheiben</translation>
+    </message>
+    <message>
+        <source>Polygons</source>
+        <translation>Polygone</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::ui::ScientificSpinBox</name>

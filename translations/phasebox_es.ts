@@ -3937,6 +3937,25 @@ las flechas la cambian en un factor diez</translation>
         <source>Joints</source>
         <translation>Uniones</translation>
     </message>
+    <message>
+        <source>r %1 m</source>
+        <translation>r %1 m</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n vertices</source>
+        <translation>
+            <numerusform>%n vértice</numerusform>
+            <numerusform>%n vértices</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Disks</source>
+        <translation>Discos</translation>
+    </message>
+    <message>
+        <source>Polygons</source>
+        <translation>Polígonos</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::ui::ScientificSpinBox</name>

@@ -3937,6 +3937,25 @@ les flèches la changent d’un facteur dix</translation>
         <source>Joints</source>
         <translation>Liaisons</translation>
     </message>
+    <message>
+        <source>r %1 m</source>
+        <translation>r %1 m</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n vertices</source>
+        <translation>
+            <numerusform>%n sommet</numerusform>
+            <numerusform>%n sommets</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Disks</source>
+        <translation>Disques</translation>
+    </message>
+    <message>
+        <source>Polygons</source>
+        <translation>Polygones</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::ui::ScientificSpinBox</name>

@@ -14,6 +14,7 @@
 #include "app/sim/SimulationController.h"
 #include "physics/scene/SceneLibrary.h"
 #include "physics/world/World.h"
+#include "tests/gui/MainWindowTestSupport.h"
 #include "tests/support/SceneBuilders.h"
 #include "ui/canvas/SceneView.h"
 #include "ui/plots/PlotsPanel.h"
@@ -35,6 +36,7 @@
 #include <vector>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 
@@ -136,7 +138,7 @@ private slots:
         QCOMPARE(w.controller().shownFrame(), -1);
         // The live world and the ghost both hold the recorded frame at the cursor, bit for bit.
         QCOMPARE(bitsOf(w.document().world()), bitsOf(recorded_[kCursor]));
-        const World* ghost = w.canvas()->ghost();
+        const World* ghost = canvasOf(w)->ghost();
         QVERIFY(ghost);
         QCOMPARE(bitsOf(*ghost), bitsOf(recorded_[kCursor]));
         QCOMPARE(button->defaultAction(), w.action("leaveCompare"));
@@ -151,7 +153,7 @@ private slots:
         const double omega = std::sqrt(kStiffness);
         for (int k = 1; k <= kRecordedSteps - kCursor; ++k) {
             QVERIFY(w.controller().advance(kDt));
-            const World* ghost = w.canvas()->ghost();
+            const World* ghost = canvasOf(w)->ghost();
             QVERIFY(ghost);
             // The ghost is the recorded frame of the same time.
             QCOMPARE(ghost->time(), w.document().world().time());
@@ -165,14 +167,14 @@ private slots:
             QVERIFY2(std::abs(live - e0) <= kDt * omega * e0, qPrintable(QString::number(live)));
         }
         // 70 steps on, the recorded run has gained (1.001)^70 − 1 = 7.2 %: they have parted.
-        const double ghostEnergy = totalOf(w.canvas()->ghost()->energy());
+        const double ghostEnergy = totalOf(canvasOf(w)->ghost()->energy());
         const double liveEnergy = totalOf(w.document().world().energy());
         QVERIFY(ghostEnergy - liveEnergy > 0.03 * e0);
 
         // The plots: the recorded run's total energy and phase trace under its method's name.
         w.refreshNow();
         const QString name = QStringLiteral("recorded: Explicit Euler");
-        const QXYSeries* energy = seriesNamed(w.plotsPanel()->energyView(), name);
+        const QXYSeries* energy = seriesNamed(plotsPanelOf(w)->energyView(), name);
         QVERIFY(energy);
         QVERIFY(energy->pen().style() == Qt::DashLine);
         QCOMPARE(energy->count(), kRecordedSteps - kCursor + 1);
@@ -180,7 +182,7 @@ private slots:
             QCOMPARE(energy->at(i).x(), recorded_[kCursor + i].time);
             QCOMPARE(energy->at(i).y(), totalOf(recorded_[kCursor + i].ledger));
         }
-        const QXYSeries* phase = seriesNamed(w.plotsPanel()->phaseView(), name);
+        const QXYSeries* phase = seriesNamed(plotsPanelOf(w)->phaseView(), name);
         QVERIFY(phase);
         QCOMPARE(phase->count(), kRecordedSteps - kCursor + 1);
         for (int i = 0; i < phase->count(); ++i) {
@@ -191,16 +193,16 @@ private slots:
         // Past the recording's end the ghost stays at its last frame, and says so.
         QVERIFY(w.controller().advance(0.2));
         QVERIFY(w.document().world().time() > recorded_.back().time);
-        QCOMPARE(bitsOf(*w.canvas()->ghost()), bitsOf(recorded_.back()));
-        QVERIFY(w.canvas()->ghostCaption().contains(QStringLiteral("ended")));
+        QCOMPARE(bitsOf(*canvasOf(w)->ghost()), bitsOf(recorded_.back()));
+        QVERIFY(canvasOf(w)->ghostCaption().contains(QStringLiteral("ended")));
 
         // Leaving compare mode removes the ghost from the canvas and the plots.
         w.action("leaveCompare")->trigger();
         w.refreshNow();
         QVERIFY(!compare_->run().isActive());
-        QVERIFY(!w.canvas()->ghost());
-        QCOMPARE(ghostSeriesCount(w.plotsPanel()->energyView()), 0);
-        QCOMPARE(ghostSeriesCount(w.plotsPanel()->phaseView()), 0);
+        QVERIFY(!canvasOf(w)->ghost());
+        QCOMPARE(ghostSeriesCount(plotsPanelOf(w)->energyView()), 0);
+        QCOMPARE(ghostSeriesCount(plotsPanelOf(w)->phaseView()), 0);
     }
 
     // Another dt: the ghost is matched by time, not by frame index.
@@ -219,11 +221,11 @@ private slots:
             for (int i = 0; i < static_cast<int>(recorded_.size()); ++i)
                 if (recorded_[i].time <= t + 1e-9) index = i;
             QCOMPARE(index, kCursor + k / 2);
-            QCOMPARE(bitsOf(*w.canvas()->ghost()), bitsOf(recorded_[index]));
+            QCOMPARE(bitsOf(*canvasOf(w)->ghost()), bitsOf(recorded_[index]));
         }
         // The legend names what differs: the recorded method and its dt.
         w.refreshNow();
-        QVERIFY(seriesNamed(w.plotsPanel()->energyView(),
+        QVERIFY(seriesNamed(plotsPanelOf(w)->energyView(),
                             QStringLiteral("recorded: Explicit Euler, dt 0.01 s")));
     }
 
@@ -234,9 +236,9 @@ private slots:
         const auto expectGone = [&w, this] {
             w.refreshNow();
             QVERIFY(!compare_->run().isActive());
-            QVERIFY(!w.canvas()->ghost());
-            QCOMPARE(ghostSeriesCount(w.plotsPanel()->energyView()), 0);
-            QCOMPARE(ghostSeriesCount(w.plotsPanel()->phaseView()), 0);
+            QVERIFY(!canvasOf(w)->ghost());
+            QCOMPARE(ghostSeriesCount(plotsPanelOf(w)->energyView()), 0);
+            QCOMPARE(ghostSeriesCount(plotsPanelOf(w)->phaseView()), 0);
         };
         // Undo: the comparison (rewind and switch of method) is one step; undoing it brings the
         // recorded run back, whole, and the ghost goes.
@@ -276,12 +278,12 @@ private slots:
         QVERIFY(w.controller().showFrame(10));
         w.refreshNow();
         QVERIFY(compare_->run().isActive());
-        QVERIFY(!w.canvas()->ghost());
-        QCOMPARE(ghostSeriesCount(w.plotsPanel()->energyView()), 0);  // cut at the cursor
+        QVERIFY(!canvasOf(w)->ghost());
+        QCOMPARE(ghostSeriesCount(plotsPanelOf(w)->energyView()), 0);  // cut at the cursor
         QVERIFY(w.controller().advance(kDt));
         w.refreshNow();
         QVERIFY(!compare_->run().isActive());
-        QVERIFY(!w.canvas()->ghost());
+        QVERIFY(!canvasOf(w)->ghost());
     }
 
     // The dialog proposes the method after the recorded one and keeps the recorded dt exactly
@@ -325,7 +327,7 @@ private slots:
         const auto before = bitsOf(w.document().world());
         QVERIFY(!compare_->start(symplectic));
         QCOMPARE(bitsOf(w.document().world()), before);
-        QVERIFY(!w.canvas()->ghost());
+        QVERIFY(!canvasOf(w)->ghost());
     }
 
 private:

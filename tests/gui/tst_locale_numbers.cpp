@@ -9,6 +9,7 @@
 #include "app/sim/Recorder.h"
 #include "app/sim/SimulationController.h"
 #include "physics/world/World.h"
+#include "tests/gui/MainWindowTestSupport.h"
 #include "ui/instruments/ReadoutView.h"
 #include "ui/plots/PlotsPanel.h"
 
@@ -29,6 +30,7 @@
 #include <QTest>
 
 using namespace phasebox;
+using namespace phasebox::testing::parts;
 
 namespace {
 const QRegularExpression kCommaNumber(QStringLiteral("^[−-]?\\d+,\\d+$"));
@@ -91,13 +93,13 @@ void TestLocaleNumbers::germanWindowShowsCommasAndWritesPoints() {
     QVERIFY2(commas >= 3, qPrintable(QString::number(commas)));
 
     // The plots again in front of the instruments that share their place.
-    w.plotsPanel()->window()->findChild<QDockWidget*>(QStringLiteral("plotsDock"))->raise();
+    plotsPanelOf(w)->window()->findChild<QDockWidget*>(QStringLiteral("plotsDock"))->raise();
     w.refreshNow();
     QCoreApplication::processEvents();
 
     // The energy plot's tick labels: the time axis runs over half a second, in steps of a
     // fraction of one, so some ticks have decimals, every one of them a comma.
-    const QStringList texts = drawnTexts(w.plotsPanel()->energyView());
+    const QStringList texts = drawnTexts(plotsPanelOf(w)->energyView());
     int tickCommas = 0;
     for (const QString& text : texts) {
         QVERIFY2(!kPointNumber.match(text).hasMatch(), qPrintable(texts.join(QLatin1Char('|'))));
@@ -134,7 +136,7 @@ void TestLocaleNumbers::germanWindowShowsCommasAndWritesPoints() {
     // number; a decimal comma would have split a field in two.
     const QString csvPath = dir.filePath(QStringLiteral("energy.csv"));
     QString error;
-    QVERIFY2(w.recorder().writeEnergyCsv(csvPath, &error), qPrintable(error));
+    QVERIFY2(recorderOf(w).writeEnergyCsv(csvPath, &error), qPrintable(error));
     const QStringList lines = readAll(csvPath).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     QVERIFY(lines.size() > 10);
     const qsizetype columns = lines.front().split(QLatin1Char(',')).size();
