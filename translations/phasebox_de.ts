@@ -2378,34 +2378,6 @@
 <context>
     <name>phasebox::InstrumentsPresenter</name>
     <message>
-        <source>cloth node</source>
-        <translation>Tuchknoten</translation>
-    </message>
-    <message>
-        <source>pinned particle</source>
-        <translation>fixiertes Teilchen</translation>
-    </message>
-    <message>
-        <source>particle</source>
-        <translation>Teilchen</translation>
-    </message>
-    <message>
-        <source>disk</source>
-        <translation>Scheibe</translation>
-    </message>
-    <message>
-        <source>polygon</source>
-        <translation>Vieleck</translation>
-    </message>
-    <message>
-        <source>box</source>
-        <translation>Quader</translation>
-    </message>
-    <message>
-        <source>static %1</source>
-        <translation>%1 (statisch)</translation>
-    </message>
-    <message>
         <source>&amp;Instruments</source>
         <translation>&amp;Instrumente</translation>
     </message>
@@ -2424,165 +2396,6 @@
     <message>
         <source>Probe Table as CSV…</source>
         <translation>Messwerttabelle als CSV…</translation>
-    </message>
-    <message>
-        <source>no graph %1</source>
-        <translation>kein Graph %1</translation>
-    </message>
-    <message>
-        <source>All %1 graphs are in use: close one first.</source>
-        <translation>Alle %1 Graphen sind belegt: schließen Sie zuerst einen.</translation>
-    </message>
-    <message>
-        <source>Click an object on the canvas to read its position, velocity, energy and momentum; Shift-click a second and a third for the distance and the angle between them.</source>
-        <translation>Klicken Sie ein Objekt auf der Zeichenfläche an, um Position, Geschwindigkeit, Energie und Impuls abzulesen; Umschalt-Klick auf ein zweites und drittes zeigt Abstand und Winkel zwischen ihnen.</translation>
-    </message>
-    <message>
-        <source>position (x, y)</source>
-        <translation>Position (x, y)</translation>
-    </message>
-    <message>
-        <source>velocity (vx, vy)</source>
-        <translation>Geschwindigkeit (vx, vy)</translation>
-    </message>
-    <message>
-        <source>speed</source>
-        <translation>Betrag der Geschwindigkeit</translation>
-    </message>
-    <message>
-        <source>angle</source>
-        <translation>Winkel</translation>
-    </message>
-    <message>
-        <source>angular velocity ω</source>
-        <translation>Winkelgeschwindigkeit ω</translation>
-    </message>
-    <message>
-        <source>kinetic energy</source>
-        <translation>kinetische Energie</translation>
-    </message>
-    <message>
-        <source>momentum (px, py)</source>
-        <translation>Impuls (px, py)</translation>
-    </message>
-    <message>
-        <source>angular momentum L</source>
-        <translation>Drehimpuls L</translation>
-    </message>
-    <message>
-        <source>contact force</source>
-        <translation>Kontaktkraft</translation>
-    </message>
-    <message>
-        <source>distance %1–%2</source>
-        <translation>Abstand %1–%2</translation>
-    </message>
-    <message>
-        <source>angle %1–%2–%3</source>
-        <translation>Winkel %1–%2–%3</translation>
-    </message>
-    <message>
-        <source>%1 (joint)</source>
-        <translation>%1 (Gelenk)</translation>
-    </message>
-    <message>
-        <source>constraint force of %1</source>
-        <translation>Zwangskraft von %1</translation>
-    </message>
-    <message>
-        <source>angle of %1</source>
-        <translation>Winkel von %1</translation>
-    </message>
-    <message>
-        <source>live, t = %1 s</source>
-        <translation>live, t = %1 s</translation>
-    </message>
-    <message>
-        <source>setup</source>
-        <translation>Anfangszustand</translation>
-    </message>
-    <message>
-        <source>time [s]</source>
-        <translation>Zeit [s]</translation>
-    </message>
-    <message>
-        <source>Pick a probe to plot, or type one (p0.x, system.total, distance(A,B), …).</source>
-        <translation>Wählen Sie eine Messgröße zum Plotten oder tippen Sie eine ein (p0.x, system.total, distance(A,B), …).</translation>
-    </message>
-    <message>
-        <source>%1 cannot be read in this scene (was its object deleted or renamed?)</source>
-        <translation>%1 kann in dieser Szene nicht gelesen werden (wurde sein Objekt gelöscht oder umbenannt?)</translation>
-    </message>
-    <message>
-        <source>Press Play: %1 is recorded at every step.</source>
-        <translation>Drücken Sie Start: %1 wird bei jedem Schritt aufgezeichnet.</translation>
-    </message>
-    <message>
-        <source>Recorded since t = %1 s, when it was chosen.</source>
-        <translation>Aufgezeichnet seit t = %1 s, als es gewählt wurde.</translation>
-    </message>
-    <message>
-        <source>Pick a probe (an object&apos;s x for a swing), then press Play: the period is the mean interval between its upward crossings of the middle of its range.</source>
-        <translation>Wählen Sie eine Messgröße (das x eines Objekts für eine Schwingung) und drücken Sie dann Start: die Periode ist der mittlere Abstand zwischen ihren Aufwärtsdurchgängen durch die Mitte ihres Bereichs.</translation>
-    </message>
-    <message>
-        <source>%1 cannot be read in this scene.</source>
-        <translation>%1 kann in dieser Szene nicht gelesen werden.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Waiting for two upward crossings of the middle of the range of %1 (%n so far).</source>
-        <translation>
-            <numerusform>Warte auf zwei Aufwärtsdurchgänge durch die Mitte des Bereichs von %1 (bisher %n).</numerusform>
-            <numerusform>Warte auf zwei Aufwärtsdurchgänge durch die Mitte des Bereichs von %1 (bisher %n).</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Mean interval between the upward crossings of %1 through %2 %3, the middle of its range [%4, %5] %3, each interpolated within its step.</source>
-        <translation>Mittlerer Abstand zwischen den Aufwärtsdurchgängen von %1 durch %2 %3, die Mitte seines Bereichs [%4, %5] %3, jeweils innerhalb des Schritts interpoliert.</translation>
-    </message>
-    <message>
-        <source>t [s]</source>
-        <translation>t [s]</translation>
-    </message>
-    <message>
-        <source>%1 (invalid)</source>
-        <translation>%1 (ungültig)</translation>
-    </message>
-    <message>
-        <source>graph %1 plots nothing: pick a probe first</source>
-        <translation>Graph %1 zeigt nichts: wählen Sie zuerst eine Messgröße</translation>
-    </message>
-    <message>
-        <source>%1 against %2 — %3 (%4, dt %5 s)</source>
-        <translation>%1 gegen %2 – %3 (%4, dt %5 s)</translation>
-    </message>
-    <message>
-        <source>time</source>
-        <translation>Zeit</translation>
-    </message>
-    <message>
-        <source>Export Graph</source>
-        <translation>Graph exportieren</translation>
-    </message>
-    <message>
-        <source>Export failed</source>
-        <translation>Export fehlgeschlagen</translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
-        <translation>%1 geschrieben</translation>
-    </message>
-    <message>
-        <source>Export Probe Table</source>
-        <translation>Messwerttabelle exportieren</translation>
-    </message>
-    <message>
-        <source>CSV (*.csv)</source>
-        <translation>CSV (*.csv)</translation>
-    </message>
-    <message>
-        <source>Untitled</source>
-        <translation>Unbenannt</translation>
     </message>
 </context>
 <context>
@@ -2948,6 +2761,28 @@ dx %2  dy %3</translation>
     </message>
 </context>
 <context>
+    <name>phasebox::PeriodTimerPresenter</name>
+    <message>
+        <source>Pick a probe (an object&apos;s x for a swing), then press Play: the period is the mean interval between its upward crossings of the middle of its range.</source>
+        <translation>Wählen Sie eine Messgröße (das x eines Objekts für eine Schwingung) und drücken Sie dann Start: die Periode ist der mittlere Abstand zwischen ihren Aufwärtsdurchgängen durch die Mitte ihres Bereichs.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read in this scene.</source>
+        <translation>%1 kann in dieser Szene nicht gelesen werden.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Waiting for two upward crossings of the middle of the range of %1 (%n so far).</source>
+        <translation>
+            <numerusform>Warte auf zwei Aufwärtsdurchgänge durch die Mitte des Bereichs von %1 (bisher %n).</numerusform>
+            <numerusform>Warte auf zwei Aufwärtsdurchgänge durch die Mitte des Bereichs von %1 (bisher %n).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Mean interval between the upward crossings of %1 through %2 %3, the middle of its range [%4, %5] %3, each interpolated within its step.</source>
+        <translation>Mittlerer Abstand zwischen den Aufwärtsdurchgängen von %1 durch %2 %3, die Mitte seines Bereichs [%4, %5] %3, jeweils innerhalb des Schritts interpoliert.</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::PlotsPresenter</name>
     <message>
         <source>The live error estimate is off (View menu).</source>
@@ -3023,10 +2858,96 @@ dx %2  dy %3</translation>
     </message>
 </context>
 <context>
+    <name>phasebox::ProbeGraphsPresenter</name>
+    <message>
+        <source>no graph %1</source>
+        <translation>kein Graph %1</translation>
+    </message>
+    <message>
+        <source>All %1 graphs are in use: close one first.</source>
+        <translation>Alle %1 Graphen sind belegt: schließen Sie zuerst einen.</translation>
+    </message>
+    <message>
+        <source>time [s]</source>
+        <translation>Zeit [s]</translation>
+    </message>
+    <message>
+        <source>Pick a probe to plot, or type one (p0.x, system.total, distance(A,B), …).</source>
+        <translation>Wählen Sie eine Messgröße zum Plotten oder tippen Sie eine ein (p0.x, system.total, distance(A,B), …).</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read in this scene (was its object deleted or renamed?)</source>
+        <translation>%1 kann in dieser Szene nicht gelesen werden (wurde sein Objekt gelöscht oder umbenannt?)</translation>
+    </message>
+    <message>
+        <source>Press Play: %1 is recorded at every step.</source>
+        <translation>Drücken Sie Start: %1 wird bei jedem Schritt aufgezeichnet.</translation>
+    </message>
+    <message>
+        <source>Recorded since t = %1 s, when it was chosen.</source>
+        <translation>Aufgezeichnet seit t = %1 s, als es gewählt wurde.</translation>
+    </message>
+    <message>
+        <source>graph %1 plots nothing: pick a probe first</source>
+        <translation>Graph %1 zeigt nichts: wählen Sie zuerst eine Messgröße</translation>
+    </message>
+    <message>
+        <source>%1 against %2 — %3 (%4, dt %5 s)</source>
+        <translation>%1 gegen %2 – %3 (%4, dt %5 s)</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>Export Graph</source>
+        <translation>Graph exportieren</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::ProbeRecorder</name>
     <message>
         <source>the CSV file</source>
         <translation>die CSV-Datei</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ProbeTablePresenter</name>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>%1 (invalid)</source>
+        <translation>%1 (ungültig)</translation>
+    </message>
+    <message>
+        <source>Export Probe Table</source>
+        <translation>Messwerttabelle exportieren</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 geschrieben</translation>
     </message>
 </context>
 <context>
@@ -3042,6 +2963,105 @@ dx %2  dy %3</translation>
     <message>
         <source>Setup: the state at t = 0, what Reset returns to</source>
         <translation>Anfangszustand: der Zustand bei t = 0, zu dem Zurücksetzen zurückkehrt</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ReadoutsPresenter</name>
+    <message>
+        <source>cloth node</source>
+        <translation>Tuchknoten</translation>
+    </message>
+    <message>
+        <source>pinned particle</source>
+        <translation>fixiertes Teilchen</translation>
+    </message>
+    <message>
+        <source>particle</source>
+        <translation>Teilchen</translation>
+    </message>
+    <message>
+        <source>disk</source>
+        <translation>Scheibe</translation>
+    </message>
+    <message>
+        <source>polygon</source>
+        <translation>Vieleck</translation>
+    </message>
+    <message>
+        <source>box</source>
+        <translation>Quader</translation>
+    </message>
+    <message>
+        <source>static %1</source>
+        <translation>%1 (statisch)</translation>
+    </message>
+    <message>
+        <source>Click an object on the canvas to read its position, velocity, energy and momentum; Shift-click a second and a third for the distance and the angle between them.</source>
+        <translation>Klicken Sie ein Objekt auf der Zeichenfläche an, um Position, Geschwindigkeit, Energie und Impuls abzulesen; Umschalt-Klick auf ein zweites und drittes zeigt Abstand und Winkel zwischen ihnen.</translation>
+    </message>
+    <message>
+        <source>position (x, y)</source>
+        <translation>Position (x, y)</translation>
+    </message>
+    <message>
+        <source>velocity (vx, vy)</source>
+        <translation>Geschwindigkeit (vx, vy)</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>Betrag der Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <source>angular velocity ω</source>
+        <translation>Winkelgeschwindigkeit ω</translation>
+    </message>
+    <message>
+        <source>kinetic energy</source>
+        <translation>kinetische Energie</translation>
+    </message>
+    <message>
+        <source>momentum (px, py)</source>
+        <translation>Impuls (px, py)</translation>
+    </message>
+    <message>
+        <source>angular momentum L</source>
+        <translation>Drehimpuls L</translation>
+    </message>
+    <message>
+        <source>contact force</source>
+        <translation>Kontaktkraft</translation>
+    </message>
+    <message>
+        <source>distance %1–%2</source>
+        <translation>Abstand %1–%2</translation>
+    </message>
+    <message>
+        <source>angle %1–%2–%3</source>
+        <translation>Winkel %1–%2–%3</translation>
+    </message>
+    <message>
+        <source>%1 (joint)</source>
+        <translation>%1 (Gelenk)</translation>
+    </message>
+    <message>
+        <source>constraint force of %1</source>
+        <translation>Zwangskraft von %1</translation>
+    </message>
+    <message>
+        <source>angle of %1</source>
+        <translation>Winkel von %1</translation>
+    </message>
+    <message>
+        <source>live, t = %1 s</source>
+        <translation>live, t = %1 s</translation>
+    </message>
+    <message>
+        <source>setup</source>
+        <translation>Anfangszustand</translation>
     </message>
 </context>
 <context>

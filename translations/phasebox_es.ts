@@ -2378,34 +2378,6 @@
 <context>
     <name>phasebox::InstrumentsPresenter</name>
     <message>
-        <source>cloth node</source>
-        <translation>nodo de tela</translation>
-    </message>
-    <message>
-        <source>pinned particle</source>
-        <translation>partícula fija</translation>
-    </message>
-    <message>
-        <source>particle</source>
-        <translation>partícula</translation>
-    </message>
-    <message>
-        <source>disk</source>
-        <translation>disco</translation>
-    </message>
-    <message>
-        <source>polygon</source>
-        <translation>polígono</translation>
-    </message>
-    <message>
-        <source>box</source>
-        <translation>caja</translation>
-    </message>
-    <message>
-        <source>static %1</source>
-        <translation>%1 (inmóvil)</translation>
-    </message>
-    <message>
         <source>&amp;Instruments</source>
         <translation>&amp;Instrumentos</translation>
     </message>
@@ -2424,165 +2396,6 @@
     <message>
         <source>Probe Table as CSV…</source>
         <translation>Tabla de sondas como CSV…</translation>
-    </message>
-    <message>
-        <source>no graph %1</source>
-        <translation>no hay gráfica %1</translation>
-    </message>
-    <message>
-        <source>All %1 graphs are in use: close one first.</source>
-        <translation>Las %1 gráficas están en uso: cierre una antes.</translation>
-    </message>
-    <message>
-        <source>Click an object on the canvas to read its position, velocity, energy and momentum; Shift-click a second and a third for the distance and the angle between them.</source>
-        <translation>Haga clic en un objeto del lienzo para leer su posición, velocidad, energía y cantidad de movimiento; Mayús+clic en un segundo y un tercero para la distancia y el ángulo entre ellos.</translation>
-    </message>
-    <message>
-        <source>position (x, y)</source>
-        <translation>posición (x, y)</translation>
-    </message>
-    <message>
-        <source>velocity (vx, vy)</source>
-        <translation>velocidad (vx, vy)</translation>
-    </message>
-    <message>
-        <source>speed</source>
-        <translation>rapidez</translation>
-    </message>
-    <message>
-        <source>angle</source>
-        <translation>ángulo</translation>
-    </message>
-    <message>
-        <source>angular velocity ω</source>
-        <translation>velocidad angular ω</translation>
-    </message>
-    <message>
-        <source>kinetic energy</source>
-        <translation>energía cinética</translation>
-    </message>
-    <message>
-        <source>momentum (px, py)</source>
-        <translation>cantidad de movimiento (px, py)</translation>
-    </message>
-    <message>
-        <source>angular momentum L</source>
-        <translation>momento angular L</translation>
-    </message>
-    <message>
-        <source>contact force</source>
-        <translation>fuerza de contacto</translation>
-    </message>
-    <message>
-        <source>distance %1–%2</source>
-        <translation>distancia %1–%2</translation>
-    </message>
-    <message>
-        <source>angle %1–%2–%3</source>
-        <translation>ángulo %1–%2–%3</translation>
-    </message>
-    <message>
-        <source>%1 (joint)</source>
-        <translation>%1 (unión)</translation>
-    </message>
-    <message>
-        <source>constraint force of %1</source>
-        <translation>fuerza de ligadura de %1</translation>
-    </message>
-    <message>
-        <source>angle of %1</source>
-        <translation>ángulo de %1</translation>
-    </message>
-    <message>
-        <source>live, t = %1 s</source>
-        <translation>en vivo, t = %1 s</translation>
-    </message>
-    <message>
-        <source>setup</source>
-        <translation>configuración inicial</translation>
-    </message>
-    <message>
-        <source>time [s]</source>
-        <translation>t [s]</translation>
-    </message>
-    <message>
-        <source>Pick a probe to plot, or type one (p0.x, system.total, distance(A,B), …).</source>
-        <translation>Elija una sonda para representar, o escriba una (p0.x, system.total, distance(A,B), …).</translation>
-    </message>
-    <message>
-        <source>%1 cannot be read in this scene (was its object deleted or renamed?)</source>
-        <translation>%1 no se puede leer en esta escena (¿se borró o se renombró su objeto?)</translation>
-    </message>
-    <message>
-        <source>Press Play: %1 is recorded at every step.</source>
-        <translation>Pulse Reproducir: %1 se registra en cada paso.</translation>
-    </message>
-    <message>
-        <source>Recorded since t = %1 s, when it was chosen.</source>
-        <translation>Registrado desde t = %1 s, cuando se eligió.</translation>
-    </message>
-    <message>
-        <source>Pick a probe (an object&apos;s x for a swing), then press Play: the period is the mean interval between its upward crossings of the middle of its range.</source>
-        <translation>Elija una sonda (la x de un objeto para una oscilación) y pulse Reproducir: el periodo es el intervalo medio entre sus cruces ascendentes por el centro de su rango.</translation>
-    </message>
-    <message>
-        <source>%1 cannot be read in this scene.</source>
-        <translation>%1 no se puede leer en esta escena.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Waiting for two upward crossings of the middle of the range of %1 (%n so far).</source>
-        <translation>
-            <numerusform>Esperando dos cruces ascendentes por el centro del rango de %1 (%n hasta ahora).</numerusform>
-            <numerusform>Esperando dos cruces ascendentes por el centro del rango de %1 (%n hasta ahora).</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Mean interval between the upward crossings of %1 through %2 %3, the middle of its range [%4, %5] %3, each interpolated within its step.</source>
-        <translation>Intervalo medio entre los cruces ascendentes de %1 por %2 %3, el centro de su rango [%4, %5] %3, cada uno interpolado dentro de su paso.</translation>
-    </message>
-    <message>
-        <source>t [s]</source>
-        <translation>t [s]</translation>
-    </message>
-    <message>
-        <source>%1 (invalid)</source>
-        <translation>%1 (no válida)</translation>
-    </message>
-    <message>
-        <source>graph %1 plots nothing: pick a probe first</source>
-        <translation>la gráfica %1 no representa nada: elija antes una sonda</translation>
-    </message>
-    <message>
-        <source>%1 against %2 — %3 (%4, dt %5 s)</source>
-        <translation>%1 frente a %2 — %3 (%4, dt %5 s)</translation>
-    </message>
-    <message>
-        <source>time</source>
-        <translation>tiempo</translation>
-    </message>
-    <message>
-        <source>Export Graph</source>
-        <translation>Exportar la gráfica</translation>
-    </message>
-    <message>
-        <source>Export failed</source>
-        <translation>Falló la exportación</translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
-        <translation>Escrito %1</translation>
-    </message>
-    <message>
-        <source>Export Probe Table</source>
-        <translation>Exportar la tabla de sondas</translation>
-    </message>
-    <message>
-        <source>CSV (*.csv)</source>
-        <translation>CSV (*.csv)</translation>
-    </message>
-    <message>
-        <source>Untitled</source>
-        <translation>Sin título</translation>
     </message>
 </context>
 <context>
@@ -2948,6 +2761,28 @@ dx %2  dy %3</translation>
     </message>
 </context>
 <context>
+    <name>phasebox::PeriodTimerPresenter</name>
+    <message>
+        <source>Pick a probe (an object&apos;s x for a swing), then press Play: the period is the mean interval between its upward crossings of the middle of its range.</source>
+        <translation>Elija una sonda (la x de un objeto para una oscilación) y pulse Reproducir: el periodo es el intervalo medio entre sus cruces ascendentes por el centro de su rango.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read in this scene.</source>
+        <translation>%1 no se puede leer en esta escena.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Waiting for two upward crossings of the middle of the range of %1 (%n so far).</source>
+        <translation>
+            <numerusform>Esperando dos cruces ascendentes por el centro del rango de %1 (%n hasta ahora).</numerusform>
+            <numerusform>Esperando dos cruces ascendentes por el centro del rango de %1 (%n hasta ahora).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Mean interval between the upward crossings of %1 through %2 %3, the middle of its range [%4, %5] %3, each interpolated within its step.</source>
+        <translation>Intervalo medio entre los cruces ascendentes de %1 por %2 %3, el centro de su rango [%4, %5] %3, cada uno interpolado dentro de su paso.</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::PlotsPresenter</name>
     <message>
         <source>The live error estimate is off (View menu).</source>
@@ -3023,10 +2858,96 @@ dx %2  dy %3</translation>
     </message>
 </context>
 <context>
+    <name>phasebox::ProbeGraphsPresenter</name>
+    <message>
+        <source>no graph %1</source>
+        <translation>no hay gráfica %1</translation>
+    </message>
+    <message>
+        <source>All %1 graphs are in use: close one first.</source>
+        <translation>Las %1 gráficas están en uso: cierre una antes.</translation>
+    </message>
+    <message>
+        <source>time [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>Pick a probe to plot, or type one (p0.x, system.total, distance(A,B), …).</source>
+        <translation>Elija una sonda para representar, o escriba una (p0.x, system.total, distance(A,B), …).</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read in this scene (was its object deleted or renamed?)</source>
+        <translation>%1 no se puede leer en esta escena (¿se borró o se renombró su objeto?)</translation>
+    </message>
+    <message>
+        <source>Press Play: %1 is recorded at every step.</source>
+        <translation>Pulse Reproducir: %1 se registra en cada paso.</translation>
+    </message>
+    <message>
+        <source>Recorded since t = %1 s, when it was chosen.</source>
+        <translation>Registrado desde t = %1 s, cuando se eligió.</translation>
+    </message>
+    <message>
+        <source>graph %1 plots nothing: pick a probe first</source>
+        <translation>la gráfica %1 no representa nada: elija antes una sonda</translation>
+    </message>
+    <message>
+        <source>%1 against %2 — %3 (%4, dt %5 s)</source>
+        <translation>%1 frente a %2 — %3 (%4, dt %5 s)</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>tiempo</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Sin título</translation>
+    </message>
+    <message>
+        <source>Export Graph</source>
+        <translation>Exportar la gráfica</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Falló la exportación</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Escrito %1</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::ProbeRecorder</name>
     <message>
         <source>the CSV file</source>
         <translation>el archivo CSV</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ProbeTablePresenter</name>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>%1 (invalid)</source>
+        <translation>%1 (no válida)</translation>
+    </message>
+    <message>
+        <source>Export Probe Table</source>
+        <translation>Exportar la tabla de sondas</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Falló la exportación</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Escrito %1</translation>
     </message>
 </context>
 <context>
@@ -3042,6 +2963,105 @@ dx %2  dy %3</translation>
     <message>
         <source>Setup: the state at t = 0, what Reset returns to</source>
         <translation>Configuración inicial: el estado en t = 0, al que vuelve Reiniciar</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ReadoutsPresenter</name>
+    <message>
+        <source>cloth node</source>
+        <translation>nodo de tela</translation>
+    </message>
+    <message>
+        <source>pinned particle</source>
+        <translation>partícula fija</translation>
+    </message>
+    <message>
+        <source>particle</source>
+        <translation>partícula</translation>
+    </message>
+    <message>
+        <source>disk</source>
+        <translation>disco</translation>
+    </message>
+    <message>
+        <source>polygon</source>
+        <translation>polígono</translation>
+    </message>
+    <message>
+        <source>box</source>
+        <translation>caja</translation>
+    </message>
+    <message>
+        <source>static %1</source>
+        <translation>%1 (inmóvil)</translation>
+    </message>
+    <message>
+        <source>Click an object on the canvas to read its position, velocity, energy and momentum; Shift-click a second and a third for the distance and the angle between them.</source>
+        <translation>Haga clic en un objeto del lienzo para leer su posición, velocidad, energía y cantidad de movimiento; Mayús+clic en un segundo y un tercero para la distancia y el ángulo entre ellos.</translation>
+    </message>
+    <message>
+        <source>position (x, y)</source>
+        <translation>posición (x, y)</translation>
+    </message>
+    <message>
+        <source>velocity (vx, vy)</source>
+        <translation>velocidad (vx, vy)</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>rapidez</translation>
+    </message>
+    <message>
+        <source>angle</source>
+        <translation>ángulo</translation>
+    </message>
+    <message>
+        <source>angular velocity ω</source>
+        <translation>velocidad angular ω</translation>
+    </message>
+    <message>
+        <source>kinetic energy</source>
+        <translation>energía cinética</translation>
+    </message>
+    <message>
+        <source>momentum (px, py)</source>
+        <translation>cantidad de movimiento (px, py)</translation>
+    </message>
+    <message>
+        <source>angular momentum L</source>
+        <translation>momento angular L</translation>
+    </message>
+    <message>
+        <source>contact force</source>
+        <translation>fuerza de contacto</translation>
+    </message>
+    <message>
+        <source>distance %1–%2</source>
+        <translation>distancia %1–%2</translation>
+    </message>
+    <message>
+        <source>angle %1–%2–%3</source>
+        <translation>ángulo %1–%2–%3</translation>
+    </message>
+    <message>
+        <source>%1 (joint)</source>
+        <translation>%1 (unión)</translation>
+    </message>
+    <message>
+        <source>constraint force of %1</source>
+        <translation>fuerza de ligadura de %1</translation>
+    </message>
+    <message>
+        <source>angle of %1</source>
+        <translation>ángulo de %1</translation>
+    </message>
+    <message>
+        <source>live, t = %1 s</source>
+        <translation>en vivo, t = %1 s</translation>
+    </message>
+    <message>
+        <source>setup</source>
+        <translation>configuración inicial</translation>
     </message>
 </context>
 <context>

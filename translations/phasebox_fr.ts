@@ -2378,34 +2378,6 @@
 <context>
     <name>phasebox::InstrumentsPresenter</name>
     <message>
-        <source>cloth node</source>
-        <translation>nœud de tissu</translation>
-    </message>
-    <message>
-        <source>pinned particle</source>
-        <translation>particule fixée</translation>
-    </message>
-    <message>
-        <source>particle</source>
-        <translation>particule</translation>
-    </message>
-    <message>
-        <source>disk</source>
-        <translation>disque</translation>
-    </message>
-    <message>
-        <source>polygon</source>
-        <translation>polygone</translation>
-    </message>
-    <message>
-        <source>box</source>
-        <translation>boîte</translation>
-    </message>
-    <message>
-        <source>static %1</source>
-        <translation>%1 (immobile)</translation>
-    </message>
-    <message>
         <source>&amp;Instruments</source>
         <translation>&amp;Instruments</translation>
     </message>
@@ -2424,165 +2396,6 @@
     <message>
         <source>Probe Table as CSV…</source>
         <translation>Tableau des sondes en CSV…</translation>
-    </message>
-    <message>
-        <source>no graph %1</source>
-        <translation>pas de graphique %1</translation>
-    </message>
-    <message>
-        <source>All %1 graphs are in use: close one first.</source>
-        <translation>Les %1 graphiques sont utilisés : fermez-en un d’abord.</translation>
-    </message>
-    <message>
-        <source>Click an object on the canvas to read its position, velocity, energy and momentum; Shift-click a second and a third for the distance and the angle between them.</source>
-        <translation>Cliquez un objet sur le canevas pour lire sa position, sa vitesse, son énergie et sa quantité de mouvement ; Maj-clic sur un deuxième et un troisième pour la distance et l’angle entre eux.</translation>
-    </message>
-    <message>
-        <source>position (x, y)</source>
-        <translation>position (x, y)</translation>
-    </message>
-    <message>
-        <source>velocity (vx, vy)</source>
-        <translation>vitesse (vx, vy)</translation>
-    </message>
-    <message>
-        <source>speed</source>
-        <translation>norme de la vitesse</translation>
-    </message>
-    <message>
-        <source>angle</source>
-        <translation>angle</translation>
-    </message>
-    <message>
-        <source>angular velocity ω</source>
-        <translation>vitesse angulaire ω</translation>
-    </message>
-    <message>
-        <source>kinetic energy</source>
-        <translation>énergie cinétique</translation>
-    </message>
-    <message>
-        <source>momentum (px, py)</source>
-        <translation>quantité de mouvement (px, py)</translation>
-    </message>
-    <message>
-        <source>angular momentum L</source>
-        <translation>moment cinétique L</translation>
-    </message>
-    <message>
-        <source>contact force</source>
-        <translation>force de contact</translation>
-    </message>
-    <message>
-        <source>distance %1–%2</source>
-        <translation>distance %1–%2</translation>
-    </message>
-    <message>
-        <source>angle %1–%2–%3</source>
-        <translation>angle %1–%2–%3</translation>
-    </message>
-    <message>
-        <source>%1 (joint)</source>
-        <translation>%1 (liaison)</translation>
-    </message>
-    <message>
-        <source>constraint force of %1</source>
-        <translation>force de liaison de %1</translation>
-    </message>
-    <message>
-        <source>angle of %1</source>
-        <translation>angle de %1</translation>
-    </message>
-    <message>
-        <source>live, t = %1 s</source>
-        <translation>en direct, t = %1 s</translation>
-    </message>
-    <message>
-        <source>setup</source>
-        <translation>état initial</translation>
-    </message>
-    <message>
-        <source>time [s]</source>
-        <translation>temps [s]</translation>
-    </message>
-    <message>
-        <source>Pick a probe to plot, or type one (p0.x, system.total, distance(A,B), …).</source>
-        <translation>Choisissez une sonde à tracer, ou tapez-en une (p0.x, system.total, distance(A,B), …).</translation>
-    </message>
-    <message>
-        <source>%1 cannot be read in this scene (was its object deleted or renamed?)</source>
-        <translation>%1 ne peut pas être lu dans cette scène (son objet a-t-il été supprimé ou renommé ?)</translation>
-    </message>
-    <message>
-        <source>Press Play: %1 is recorded at every step.</source>
-        <translation>Appuyez sur Lecture : %1 est enregistré à chaque pas.</translation>
-    </message>
-    <message>
-        <source>Recorded since t = %1 s, when it was chosen.</source>
-        <translation>Enregistré depuis t = %1 s, quand il a été choisi.</translation>
-    </message>
-    <message>
-        <source>Pick a probe (an object&apos;s x for a swing), then press Play: the period is the mean interval between its upward crossings of the middle of its range.</source>
-        <translation>Choisissez une sonde (le x d’un objet pour une oscillation), puis appuyez sur Lecture : la période est l’intervalle moyen entre ses passages montants par le milieu de sa plage.</translation>
-    </message>
-    <message>
-        <source>%1 cannot be read in this scene.</source>
-        <translation>%1 ne peut pas être lu dans cette scène.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Waiting for two upward crossings of the middle of the range of %1 (%n so far).</source>
-        <translation>
-            <numerusform>En attente de deux passages montants par le milieu de la plage de %1 (%n jusqu’ici).</numerusform>
-            <numerusform>En attente de deux passages montants par le milieu de la plage de %1 (%n jusqu’ici).</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Mean interval between the upward crossings of %1 through %2 %3, the middle of its range [%4, %5] %3, each interpolated within its step.</source>
-        <translation>Intervalle moyen entre les passages montants de %1 par %2 %3, le milieu de sa plage [%4, %5] %3, chacun interpolé dans son pas.</translation>
-    </message>
-    <message>
-        <source>t [s]</source>
-        <translation>t [s]</translation>
-    </message>
-    <message>
-        <source>%1 (invalid)</source>
-        <translation>%1 (invalide)</translation>
-    </message>
-    <message>
-        <source>graph %1 plots nothing: pick a probe first</source>
-        <translation>le graphique %1 ne trace rien : choisissez d’abord une sonde</translation>
-    </message>
-    <message>
-        <source>%1 against %2 — %3 (%4, dt %5 s)</source>
-        <translation>%1 en fonction de %2 — %3 (%4, dt %5 s)</translation>
-    </message>
-    <message>
-        <source>time</source>
-        <translation>temps</translation>
-    </message>
-    <message>
-        <source>Export Graph</source>
-        <translation>Exporter le graphique</translation>
-    </message>
-    <message>
-        <source>Export failed</source>
-        <translation>Échec de l’export</translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
-        <translation>%1 écrit</translation>
-    </message>
-    <message>
-        <source>Export Probe Table</source>
-        <translation>Exporter le tableau des sondes</translation>
-    </message>
-    <message>
-        <source>CSV (*.csv)</source>
-        <translation>CSV (*.csv)</translation>
-    </message>
-    <message>
-        <source>Untitled</source>
-        <translation>Sans titre</translation>
     </message>
 </context>
 <context>
@@ -2948,6 +2761,28 @@ dx %2  dy %3</translation>
     </message>
 </context>
 <context>
+    <name>phasebox::PeriodTimerPresenter</name>
+    <message>
+        <source>Pick a probe (an object&apos;s x for a swing), then press Play: the period is the mean interval between its upward crossings of the middle of its range.</source>
+        <translation>Choisissez une sonde (le x d’un objet pour une oscillation), puis appuyez sur Lecture : la période est l’intervalle moyen entre ses passages montants par le milieu de sa plage.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read in this scene.</source>
+        <translation>%1 ne peut pas être lu dans cette scène.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Waiting for two upward crossings of the middle of the range of %1 (%n so far).</source>
+        <translation>
+            <numerusform>En attente de deux passages montants par le milieu de la plage de %1 (%n jusqu’ici).</numerusform>
+            <numerusform>En attente de deux passages montants par le milieu de la plage de %1 (%n jusqu’ici).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Mean interval between the upward crossings of %1 through %2 %3, the middle of its range [%4, %5] %3, each interpolated within its step.</source>
+        <translation>Intervalle moyen entre les passages montants de %1 par %2 %3, le milieu de sa plage [%4, %5] %3, chacun interpolé dans son pas.</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::PlotsPresenter</name>
     <message>
         <source>The live error estimate is off (View menu).</source>
@@ -3023,10 +2858,96 @@ dx %2  dy %3</translation>
     </message>
 </context>
 <context>
+    <name>phasebox::ProbeGraphsPresenter</name>
+    <message>
+        <source>no graph %1</source>
+        <translation>pas de graphique %1</translation>
+    </message>
+    <message>
+        <source>All %1 graphs are in use: close one first.</source>
+        <translation>Les %1 graphiques sont utilisés : fermez-en un d’abord.</translation>
+    </message>
+    <message>
+        <source>time [s]</source>
+        <translation>temps [s]</translation>
+    </message>
+    <message>
+        <source>Pick a probe to plot, or type one (p0.x, system.total, distance(A,B), …).</source>
+        <translation>Choisissez une sonde à tracer, ou tapez-en une (p0.x, system.total, distance(A,B), …).</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read in this scene (was its object deleted or renamed?)</source>
+        <translation>%1 ne peut pas être lu dans cette scène (son objet a-t-il été supprimé ou renommé ?)</translation>
+    </message>
+    <message>
+        <source>Press Play: %1 is recorded at every step.</source>
+        <translation>Appuyez sur Lecture : %1 est enregistré à chaque pas.</translation>
+    </message>
+    <message>
+        <source>Recorded since t = %1 s, when it was chosen.</source>
+        <translation>Enregistré depuis t = %1 s, quand il a été choisi.</translation>
+    </message>
+    <message>
+        <source>graph %1 plots nothing: pick a probe first</source>
+        <translation>le graphique %1 ne trace rien : choisissez d’abord une sonde</translation>
+    </message>
+    <message>
+        <source>%1 against %2 — %3 (%4, dt %5 s)</source>
+        <translation>%1 en fonction de %2 — %3 (%4, dt %5 s)</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>temps</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Sans titre</translation>
+    </message>
+    <message>
+        <source>Export Graph</source>
+        <translation>Exporter le graphique</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Échec de l’export</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 écrit</translation>
+    </message>
+</context>
+<context>
     <name>phasebox::ProbeRecorder</name>
     <message>
         <source>the CSV file</source>
         <translation>le fichier CSV</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ProbeTablePresenter</name>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>%1 (invalid)</source>
+        <translation>%1 (invalide)</translation>
+    </message>
+    <message>
+        <source>Export Probe Table</source>
+        <translation>Exporter le tableau des sondes</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Échec de l’export</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 écrit</translation>
     </message>
 </context>
 <context>
@@ -3042,6 +2963,105 @@ dx %2  dy %3</translation>
     <message>
         <source>Setup: the state at t = 0, what Reset returns to</source>
         <translation>État initial : l’état à t = 0, auquel Réinitialiser revient</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::ReadoutsPresenter</name>
+    <message>
+        <source>cloth node</source>
+        <translation>nœud de tissu</translation>
+    </message>
+    <message>
+        <source>pinned particle</source>
+        <translation>particule fixée</translation>
+    </message>
+    <message>
+        <source>particle</source>
+        <translation>particule</translation>
+    </message>
+    <message>
+        <source>disk</source>
+        <translation>disque</translation>
+    </message>
+    <message>
+        <source>polygon</source>
+        <translation>polygone</translation>
+    </message>
+    <message>
+        <source>box</source>
+        <translation>boîte</translation>
+    </message>
+    <message>
+        <source>static %1</source>
+        <translation>%1 (immobile)</translation>
+    </message>
+    <message>
+        <source>Click an object on the canvas to read its position, velocity, energy and momentum; Shift-click a second and a third for the distance and the angle between them.</source>
+        <translation>Cliquez un objet sur le canevas pour lire sa position, sa vitesse, son énergie et sa quantité de mouvement ; Maj-clic sur un deuxième et un troisième pour la distance et l’angle entre eux.</translation>
+    </message>
+    <message>
+        <source>position (x, y)</source>
+        <translation>position (x, y)</translation>
+    </message>
+    <message>
+        <source>velocity (vx, vy)</source>
+        <translation>vitesse (vx, vy)</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>norme de la vitesse</translation>
+    </message>
+    <message>
+        <source>angle</source>
+        <translation>angle</translation>
+    </message>
+    <message>
+        <source>angular velocity ω</source>
+        <translation>vitesse angulaire ω</translation>
+    </message>
+    <message>
+        <source>kinetic energy</source>
+        <translation>énergie cinétique</translation>
+    </message>
+    <message>
+        <source>momentum (px, py)</source>
+        <translation>quantité de mouvement (px, py)</translation>
+    </message>
+    <message>
+        <source>angular momentum L</source>
+        <translation>moment cinétique L</translation>
+    </message>
+    <message>
+        <source>contact force</source>
+        <translation>force de contact</translation>
+    </message>
+    <message>
+        <source>distance %1–%2</source>
+        <translation>distance %1–%2</translation>
+    </message>
+    <message>
+        <source>angle %1–%2–%3</source>
+        <translation>angle %1–%2–%3</translation>
+    </message>
+    <message>
+        <source>%1 (joint)</source>
+        <translation>%1 (liaison)</translation>
+    </message>
+    <message>
+        <source>constraint force of %1</source>
+        <translation>force de liaison de %1</translation>
+    </message>
+    <message>
+        <source>angle of %1</source>
+        <translation>angle de %1</translation>
+    </message>
+    <message>
+        <source>live, t = %1 s</source>
+        <translation>en direct, t = %1 s</translation>
+    </message>
+    <message>
+        <source>setup</source>
+        <translation>état initial</translation>
     </message>
 </context>
 <context>

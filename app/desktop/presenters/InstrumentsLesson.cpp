@@ -2,12 +2,13 @@
 // (CONTRACT §7 `instruments`).
 
 #include "app/desktop/presenters/InstrumentsPresenter.h"
+#include "app/desktop/presenters/PeriodTimerPresenter.h"
+#include "app/desktop/presenters/ProbeGraphsPresenter.h"
+#include "app/desktop/presenters/ProbeTablePresenter.h"
+#include "app/desktop/presenters/StopwatchPresenter.h"
 #include "physics/scene/InstrumentsDesc.h"
 #include "ui/instruments/GraphsView.h"
 #include "ui/instruments/InstrumentsPanel.h"
-#include "ui/instruments/ProbePicker.h"
-#include "ui/instruments/ProbeTableView.h"
-#include "ui/instruments/TimerView.h"
 
 #include <algorithm>
 
@@ -32,16 +33,12 @@ void InstrumentsPresenter::applyInstruments(const InstrumentsDesc& in) {
     // The window has one period timer: it times the first; the others are kept for Save.
     savedTimers_.clear();
     for (const std::string& probe : in.timers) savedTimers_ << text(probe);
-    periodProbe_.clear();
-    panel_.timer()->picker()->setProbe({});
-    panel_.timer()->picker()->setInvalid({});
+    timer_->clear();
     if (!savedTimers_.isEmpty()) timeProbe(savedTimers_.front());
-    stopwatchUsed_ = in.stopwatch;
-    tableProbes_.clear();
-    for (const std::string& probe : in.probes)
-        if (!tableProbes_.contains(text(probe))) tableProbes_ << text(probe);
-    panel_.table()->picker()->setInvalid({});
-    panel_.table()->setOwnColumns(tableProbes_);
+    stopwatch_->setUsed(in.stopwatch);
+    QStringList columns;
+    for (const std::string& probe : in.probes) columns << text(probe);
+    table_->setColumns(columns);
     updateRecordedProbes();
     refresh();
 
@@ -58,13 +55,15 @@ void InstrumentsPresenter::applyInstruments(const InstrumentsDesc& in) {
 }
 
 void InstrumentsPresenter::collectInstruments(InstrumentsDesc& out) const {
-    for (const Graph& g : graphs_)
+    for (const ProbeGraphsPresenter::Graph& g : graphs_->graphs())
         if (!g.y.isEmpty()) out.graphs.push_back({g.y.toStdString(), g.x.toStdString()});
-    if (!periodProbe_.isEmpty()) out.timers.push_back(periodProbe_.toStdString());
+    const QString timed = timer_->probe();
+    if (!timed.isEmpty()) out.timers.push_back(timed.toStdString());
     for (qsizetype i = 1; i < savedTimers_.size(); ++i)
-        if (savedTimers_[i] != periodProbe_) out.timers.push_back(savedTimers_[i].toStdString());
-    out.stopwatch = stopwatchUsed_ || stopwatch_.isRunning() || !stopwatch_.laps().empty();
-    for (const QString& probe : tableProbes_) out.probes.push_back(probe.toStdString());
+        if (savedTimers_[i] != timed) out.timers.push_back(savedTimers_[i].toStdString());
+    const Stopwatch& watch = stopwatch_->stopwatch();
+    out.stopwatch = stopwatch_->used() || watch.isRunning() || !watch.laps().empty();
+    for (const QString& probe : table_->columns()) out.probes.push_back(probe.toStdString());
 }
 
 }  // namespace phasebox

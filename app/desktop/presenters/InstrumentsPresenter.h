@@ -9,17 +9,18 @@
 // was deleted or renamed is shown as invalid rather than read from another object. New, Open
 // (reopening a file: a revert) and Reset, all Document::sceneReset, clear every recording and the
 // stopwatch; an edit at the setup (t = 0) records the setup sample anew.
+//
+// Each instrument has a presenter of its own (ReadoutsPresenter, ProbeGraphsPresenter,
+// PeriodTimerPresenter, StopwatchPresenter, ProbeTablePresenter); this one owns them, follows the
+// document and the controller for them, keeps the pickers' offer and gathers the probes they
+// record.
 
 #include "app/desktop/presenters/Presenter.h"
 #include "app/sim/Stopwatch.h"
 
 #include <QElapsedTimer>
-#include <QPointF>
 #include <QString>
 #include <QStringList>
-#include <QVector>
-
-#include <vector>
 
 QT_BEGIN_NAMESPACE
 class QMenu;
@@ -31,9 +32,13 @@ struct InstrumentsDesc;
 class Document;
 class ProbeRecorder;
 class SimulationController;
+class ReadoutsPresenter;
+class ProbeGraphsPresenter;
+class PeriodTimerPresenter;
+class StopwatchPresenter;
+class ProbeTablePresenter;
 namespace ui {
 class InstrumentsPanel;
-class ProbePicker;
 }  // namespace ui
 
 class InstrumentsPresenter : public Presenter {
@@ -80,7 +85,7 @@ public:
     void applyInstruments(const InstrumentsDesc& instruments);
     void collectInstruments(InstrumentsDesc& instruments) const;
 
-    Stopwatch& stopwatch() { return stopwatch_; }
+    Stopwatch& stopwatch();
     void startStopStopwatch();
     void lapStopwatch();
     void resetStopwatch();
@@ -99,46 +104,26 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    struct Graph {
-        QString y, x;  // x empty: against time
-    };
-
     void onSceneReset();
     void onSceneEdited();
     void updateOffered();
     // The probes of every instrument, in the order the table shows them.
     void updateRecordedProbes();
-    // Parses text; on failure marks the picker (if any), says why and returns false.
-    bool check(const QString& text, ui::ProbePicker* picker, QString* error);
-
-    void refreshReadouts();
-    void refreshGraph(int index);
-    void refreshGraphs();
-    void refreshTimer();
-    void refreshStopwatch();
-    void refreshTable();
     void refreshShown();
-
-    // The samples of a graph: (time or x, y), NaN where a probe had none.
-    QVector<QPointF> graphPoints(const Graph& graph) const;
-    QString axisTitle(const QString& probe) const;
-    void exportGraphInteractively(int index, const QString& format);
-    void exportTableInteractively();
 
     ui::InstrumentsPanel& panel_;
     Document& document_;
     SimulationController& controller_;
     ProbeRecorder& probes_;
-    std::vector<Graph> graphs_;
-    QString periodProbe_;
-    QStringList savedTimers_;     // the lesson's period timers (the window times the first)
-    bool stopwatchUsed_ = false;  // the lesson times by hand
-    QStringList tableProbes_;
+    ReadoutsPresenter* readouts_;
+    ProbeGraphsPresenter* graphs_;
+    PeriodTimerPresenter* timer_;
+    StopwatchPresenter* stopwatch_;
+    ProbeTablePresenter* table_;
+    QStringList savedTimers_;  // the lesson's period timers (the window times the first)
     QStringList offered_;
     QStringList instrumentProbes_;
-    Stopwatch stopwatch_;
     QElapsedTimer sinceRefresh_;
-    long long clears_ = 0;  // recordings cleared, for the table's model
 };
 
 }  // namespace phasebox
