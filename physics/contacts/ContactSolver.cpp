@@ -57,12 +57,10 @@ Vec2 tangentOf(const Vec2& n) {
 // (More sub-steps would do the same at a cost for the whole scene; a rigid answer below a
 // size would make a small body's contacts behave unlike a large one's.)
 constexpr double kStiffHalfSize = 5e-3;
-// ContactStage sets a contact's deepOverlap to this share of the smaller body's half-size.
-constexpr double kDeepOverlapPerHalfSize = 0.1;
 constexpr double kMostSizeStiffness = 1000.0;
 
 double sizeStiffness(double deepOverlap) {
-    const double halfSize = deepOverlap / kDeepOverlapPerHalfSize;
+    const double halfSize = deepOverlap / ContactConstraint::kDeepOverlapFraction;
     if (!(halfSize > 0.0) || !(halfSize < kStiffHalfSize)) return 1.0;
     return std::min(std::sqrt(kStiffHalfSize / halfSize), kMostSizeStiffness);
 }

@@ -113,6 +113,9 @@ struct ContactConstraint {
     double stiffness = 1.0;  // multiplier of the contact hertz (see prepare())
     // Overlap beyond this is pathological (bodies spawned into each other, a pile started at
     // one point): it is pushed out in positions only, never by a velocity (deepPushOut()).
+    // ContactStage sets it to kDeepOverlapFraction of the smaller body's least half extent (a
+    // disk's radius).
+    static constexpr double kDeepOverlapFraction = 0.1;
     double deepOverlap = std::numeric_limits<double>::infinity();
     int pointCount = 0;
     ContactPoint points[2];

@@ -215,7 +215,7 @@ void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB
     const Extent a = colliderA >= 0 ? extent(colliderA)
                                     : Extent{Vec2::Zero(), std::numeric_limits<double>::infinity()};
     const Vec2 centerA = a.center, centerB = b.center;
-    c.deepOverlap = kDeepOverlapFraction * std::min(a.size, b.size);
+    c.deepOverlap = ContactConstraint::kDeepOverlapFraction * std::min(a.size, b.size);
     c.pointCount = m.pointCount;
     for (int k = 0; k < m.pointCount; ++k) {
         ContactPoint& p = c.points[k];

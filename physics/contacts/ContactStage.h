@@ -126,9 +126,6 @@ public:
     // And the most near ones (within the speculative margin or a swept box, not overlapping):
     // about six at rest, a few dozen for a fast body entering a dense pile.
     static constexpr int kNearPairCap = 32;
-    // Overlap deeper than this fraction of the smaller body's least half extent (a disk's
-    // radius) is pushed out in positions only (ContactConstraint::deepOverlap).
-    static constexpr double kDeepOverlapFraction = 0.1;
     const BroadPhase& broadPhase() const { return broadPhase_; }
 
 private:

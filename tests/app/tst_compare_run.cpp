@@ -10,6 +10,7 @@
 #include "app/sim/SimulationController.h"
 #include "physics/world/World.h"
 #include "tests/support/SceneBuilders.h"
+#include "tests/support/StateBits.h"
 
 #include <QTest>
 #include <QUndoStack>
@@ -19,6 +20,7 @@
 #include <vector>
 
 using namespace phasebox;
+using testing::stateBits;
 
 namespace {
 
@@ -33,22 +35,6 @@ SceneDesc springScene(bool sleep = false) {
     scene.simulation.dt = kDt;
     scene.simulation.sleep = sleep;
     return scene;
-}
-
-std::vector<std::uint64_t> bitsOf(const Vec& q, const Vec& u, double t, const EnergyLedger& e) {
-    std::vector<std::uint64_t> bits;
-    for (const Vec* v : {&q, &u})
-        for (Eigen::Index i = 0; i < v->size(); ++i)
-            bits.push_back(std::bit_cast<std::uint64_t>((*v)[i]));
-    for (double v : {t, e.kinetic, e.potential, e.workNc, e.drift, e.correction})
-        bits.push_back(std::bit_cast<std::uint64_t>(v));
-    return bits;
-}
-std::vector<std::uint64_t> bitsOf(const World& w) {
-    return bitsOf(w.positions(), w.velocities(), w.time(), w.energy());
-}
-std::vector<std::uint64_t> bitsOf(const FrameState& f) {
-    return bitsOf(f.q, f.u, f.time, f.ledger);
 }
 
 struct Session {
@@ -87,16 +73,17 @@ private slots:
         QVERIFY(run.isActive());
         QCOMPARE(run.recordedSettings().integrator, std::string("explicit_euler"));
         QCOMPARE(s.document.world().settings().integrator, std::string("symplectic_euler"));
-        QCOMPARE(bitsOf(s.document.world()), bitsOf(s.frames[30]));
+        QCOMPARE(stateBits(s.document.world()), stateBits(s.frames[30]));
         // The ghost's frames are the recording's, from the cursor on.
         QCOMPARE(static_cast<int>(run.frames().size()), 71);
-        for (int i = 0; i < 71; ++i) QCOMPARE(bitsOf(run.frames()[i]), bitsOf(s.frames[30 + i]));
+        for (int i = 0; i < 71; ++i)
+            QCOMPARE(stateBits(run.frames()[i]), stateBits(s.frames[30 + i]));
         // The new run replaces them in the recording; the whole change is one undo step.
         QCOMPARE(s.recording.frameCount(), 31);
         QCOMPARE(run.undoIndex(), s.document.undoStack()->index());
         s.document.undoStack()->undo();
         QCOMPARE(s.recording.frameCount(), 101);
-        QCOMPARE(bitsOf(s.document.world()), bitsOf(s.frames.back()));
+        QCOMPARE(stateBits(s.document.world()), stateBits(s.frames.back()));
         QCOMPARE(s.document.world().settings().integrator, std::string("explicit_euler"));
     }
 
@@ -116,11 +103,11 @@ private slots:
             if (i < 100) QCOMPARE(run.frameAt(s.frames[i + 1].time - 1e-12), i + 1 - 30);
             const World* ghost = run.ghostAt(s.frames[i].time + 0.5 * kDt);
             QVERIFY(ghost);
-            QCOMPARE(bitsOf(*ghost), bitsOf(s.frames[i]));
+            QCOMPARE(stateBits(*ghost), stateBits(s.frames[i]));
         }
         QVERIFY(!run.pastEnd(s.frames[100].time));
         QVERIFY(run.pastEnd(s.frames[100].time + kDt));
-        QCOMPARE(bitsOf(*run.ghostAt(5.0)), bitsOf(s.frames[100]));
+        QCOMPARE(stateBits(*run.ghostAt(5.0)), stateBits(s.frames[100]));
         // The recorded run's series come from the same frames.
         const Recorder& series = run.series(QStringLiteral("m"), QStringLiteral("x"));
         QCOMPARE(static_cast<int>(series.energySamples().size()), 71);
@@ -142,14 +129,14 @@ private slots:
         for (const bool sleep : {false, true}) {
             Session s(springScene(sleep));
             if (sleep) QVERIFY(s.controller.showFrame(30));
-            const auto before = bitsOf(s.document.world());
+            const auto before = stateBits(s.document.world());
             const int commands = s.document.undoStack()->count();
             CompareRun run;
             QString why;
             QVERIFY(!run.start(s.controller, s.document, s.with("symplectic_euler"), &why));
             QVERIFY(!why.isEmpty());
             QVERIFY(!run.isActive());
-            QCOMPARE(bitsOf(s.document.world()), before);
+            QCOMPARE(stateBits(s.document.world()), before);
             QCOMPARE(s.document.undoStack()->count(), commands);
         }
     }

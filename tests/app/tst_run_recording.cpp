@@ -7,6 +7,7 @@
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
 #include "physics/world/World.h"
+#include "tests/support/StateBits.h"
 
 #include <QTest>
 
@@ -15,26 +16,9 @@
 #include <vector>
 
 using namespace phasebox;
+using testing::stateBits;
 
 namespace {
-
-std::vector<std::uint64_t> bitsOf(const Vec& q, const Vec& u, double t, const EnergyLedger& e) {
-    std::vector<std::uint64_t> bits;
-    for (const Vec* v : {&q, &u})
-        for (Eigen::Index i = 0; i < v->size(); ++i)
-            bits.push_back(std::bit_cast<std::uint64_t>((*v)[i]));
-    for (double v : {t, e.kinetic, e.potential, e.workNc, e.drift, e.correction, e.maxAbsDrift})
-        bits.push_back(std::bit_cast<std::uint64_t>(v));
-    return bits;
-}
-
-std::vector<std::uint64_t> bitsOf(const World& w) {
-    return bitsOf(w.positions(), w.velocities(), w.time(), w.energy());
-}
-
-std::vector<std::uint64_t> bitsOf(const FrameState& f) {
-    return bitsOf(f.q, f.u, f.time, f.ledger);
-}
 
 // Runs the scene for steps steps, recording every one; reference[k] is the state after step k.
 struct RecordedRun {
@@ -46,11 +30,11 @@ struct RecordedRun {
         : world(buildWorld(scene).world), recording(budget) {
         recording.setKeyframeInterval(keyframeEvery);
         recording.record(*world);
-        reference.push_back(bitsOf(*world));
+        reference.push_back(stateBits(*world));
         for (int i = 0; i < steps; ++i) {
             world->step();
             recording.record(*world);
-            reference.push_back(bitsOf(*world));
+            reference.push_back(stateBits(*world));
         }
     }
 };
@@ -68,12 +52,12 @@ private slots:
         for (int i = 0; i <= 200; ++i) {
             const FrameState& f = run.recording.frame(i);
             QCOMPARE(f.stepCount, static_cast<long long>(i));
-            QVERIFY(bitsOf(f) == run.reference[static_cast<std::size_t>(i)]);
+            QVERIFY(stateBits(f) == run.reference[static_cast<std::size_t>(i)]);
         }
         // Shown frames are those states in the world itself, whatever the order.
         for (int i : {120, 3, 200, 77, 0}) {
             QVERIFY(run.recording.show(*run.world, i));
-            QVERIFY(bitsOf(*run.world) == run.reference[static_cast<std::size_t>(i)]);
+            QVERIFY(stateBits(*run.world) == run.reference[static_cast<std::size_t>(i)]);
             QCOMPARE(run.world->stepCount(), static_cast<long long>(i));
         }
         QCOMPARE(run.recording.frameAtOrBefore(run.recording.frame(77).time), 77);
@@ -90,10 +74,10 @@ private slots:
             RecordedRun run(scene, 150, RunRecording::kDefaultBudgetBytes, 40);
             for (long long step : {149LL, 0LL, 41LL, 80LL, 99LL}) {
                 QVERIFY(run.recording.restore(*run.world, step));
-                QVERIFY(bitsOf(*run.world) == run.reference[static_cast<std::size_t>(step)]);
+                QVERIFY(stateBits(*run.world) == run.reference[static_cast<std::size_t>(step)]);
                 for (long long k = step + 1; k <= std::min(step + 30, 150LL); ++k) {
                     QVERIFY(run.world->step());
-                    QVERIFY2(bitsOf(*run.world) == run.reference[static_cast<std::size_t>(k)],
+                    QVERIFY2(stateBits(*run.world) == run.reference[static_cast<std::size_t>(k)],
                              qPrintable(QStringLiteral("%1: step %2 from %3")
                                             .arg(integrator)
                                             .arg(k)
@@ -117,7 +101,7 @@ private slots:
         QCOMPARE(run.recording.frame(last - 50).stepCount, 1450LL);
         for (int i = 0; i <= last; ++i) {
             const FrameState& f = run.recording.frame(i);
-            QVERIFY(bitsOf(f) == run.reference[static_cast<std::size_t>(f.stepCount)]);
+            QVERIFY(stateBits(f) == run.reference[static_cast<std::size_t>(f.stepCount)]);
         }
         long long thinned = -1;
         for (int i = 1; i <= last && thinned < 0; ++i)
@@ -125,7 +109,7 @@ private slots:
                 thinned = run.recording.frame(i).stepCount - 1;
         QVERIFY(thinned > 0);
         QVERIFY(run.recording.restore(*run.world, thinned));
-        QVERIFY(bitsOf(*run.world) == run.reference[static_cast<std::size_t>(thinned)]);
+        QVERIFY(stateBits(*run.world) == run.reference[static_cast<std::size_t>(thinned)]);
         // A smaller budget thins at once.
         run.recording.setBudgetBytes(budget / 2);
         QVERIFY(run.recording.bytesUsed() <= budget / 2);
@@ -144,7 +128,7 @@ private slots:
         QCOMPARE(run.recording.keyframeCount(), 4);
         QCOMPARE(run.recording.bytesUsed(), bytes);
         QVERIFY(run.recording.restore(*run.world, 95));
-        QVERIFY(bitsOf(*run.world) == run.reference[95]);
+        QVERIFY(stateBits(*run.world) == run.reference[95]);
     }
 
     // A method switched live: a keyframe at the switch, so re-simulation after it runs the new
@@ -155,17 +139,17 @@ private slots:
         recording.setKeyframeInterval(1000);
         std::vector<std::vector<std::uint64_t>> reference;
         recording.record(*world);
-        reference.push_back(bitsOf(*world));
+        reference.push_back(stateBits(*world));
         for (int i = 1; i <= 80; ++i) {
             if (i == 41) world->setIntegrator("rk4");
             world->step();
             recording.record(*world);
-            reference.push_back(bitsOf(*world));
+            reference.push_back(stateBits(*world));
         }
         QCOMPARE(recording.keyframeCount(), 2);
         for (long long step : {75LL, 20LL, 41LL, 40LL}) {
             QVERIFY(recording.restore(*world, step));
-            QVERIFY(bitsOf(*world) == reference[static_cast<std::size_t>(step)]);
+            QVERIFY(stateBits(*world) == reference[static_cast<std::size_t>(step)]);
         }
     }
 

@@ -16,6 +16,7 @@
 #include "physics/world/World.h"
 #include "tests/gui/MainWindowTestSupport.h"
 #include "tests/support/SceneBuilders.h"
+#include "tests/support/StateBits.h"
 #include "ui/canvas/SceneView.h"
 #include "ui/plots/PlotsPanel.h"
 
@@ -36,6 +37,7 @@
 #include <vector>
 
 using namespace phasebox;
+using testing::stateBits;
 using namespace phasebox::testing::parts;
 
 namespace {
@@ -56,22 +58,6 @@ SceneDesc springScene() {
     scene.simulation.integrator = "explicit_euler";
     scene.simulation.dt = kDt;
     return scene;
-}
-
-std::vector<std::uint64_t> bitsOf(const Vec& q, const Vec& u, double t, const EnergyLedger& e) {
-    std::vector<std::uint64_t> bits;
-    for (const Vec* v : {&q, &u})
-        for (Eigen::Index i = 0; i < v->size(); ++i)
-            bits.push_back(std::bit_cast<std::uint64_t>((*v)[i]));
-    for (double v : {t, e.kinetic, e.potential, e.workNc, e.drift, e.correction})
-        bits.push_back(std::bit_cast<std::uint64_t>(v));
-    return bits;
-}
-std::vector<std::uint64_t> bitsOf(const World& w) {
-    return bitsOf(w.positions(), w.velocities(), w.time(), w.energy());
-}
-std::vector<std::uint64_t> bitsOf(const FrameState& f) {
-    return bitsOf(f.q, f.u, f.time, f.ledger);
 }
 
 double totalOf(const EnergyLedger& e) {
@@ -137,10 +123,10 @@ private slots:
         QCOMPARE(w.document().world().settings().integrator, std::string("symplectic_euler"));
         QCOMPARE(w.controller().shownFrame(), -1);
         // The live world and the ghost both hold the recorded frame at the cursor, bit for bit.
-        QCOMPARE(bitsOf(w.document().world()), bitsOf(recorded_[kCursor]));
+        QCOMPARE(stateBits(w.document().world()), stateBits(recorded_[kCursor]));
         const World* ghost = canvasOf(w)->ghost();
         QVERIFY(ghost);
-        QCOMPARE(bitsOf(*ghost), bitsOf(recorded_[kCursor]));
+        QCOMPARE(stateBits(*ghost), stateBits(recorded_[kCursor]));
         QCOMPARE(button->defaultAction(), w.action("leaveCompare"));
     }
 
@@ -157,7 +143,7 @@ private slots:
             QVERIFY(ghost);
             // The ghost is the recorded frame of the same time.
             QCOMPARE(ghost->time(), w.document().world().time());
-            QCOMPARE(bitsOf(*ghost), bitsOf(recorded_[kCursor + k]));
+            QCOMPARE(stateBits(*ghost), stateBits(recorded_[kCursor + k]));
             // Explicit Euler on a harmonic oscillator: E_(n+1) = (1 + h²ω²)·E_n exactly.
             const double expected = e0 * std::pow(1.0 + kDt * kDt * omega * omega, k);
             QVERIFY2(std::abs(totalOf(ghost->energy()) - expected) <= 1e-9 * expected,
@@ -193,7 +179,7 @@ private slots:
         // Past the recording's end the ghost stays at its last frame, and says so.
         QVERIFY(w.controller().advance(0.2));
         QVERIFY(w.document().world().time() > recorded_.back().time);
-        QCOMPARE(bitsOf(*canvasOf(w)->ghost()), bitsOf(recorded_.back()));
+        QCOMPARE(stateBits(*canvasOf(w)->ghost()), stateBits(recorded_.back()));
         QVERIFY(canvasOf(w)->ghostCaption().contains(QStringLiteral("ended")));
 
         // Leaving compare mode removes the ghost from the canvas and the plots.
@@ -211,7 +197,7 @@ private slots:
         SimulationDesc half = w.document().setup().simulation;
         half.dt = 0.5 * kDt;
         QVERIFY(compare_->start(half));
-        QCOMPARE(bitsOf(w.document().world()), bitsOf(recorded_[kCursor]));
+        QCOMPARE(stateBits(w.document().world()), stateBits(recorded_[kCursor]));
         for (int k = 1; k <= 40; ++k) {
             QVERIFY(w.controller().advance(0.5 * kDt));
             const double t = w.document().world().time();
@@ -221,7 +207,7 @@ private slots:
             for (int i = 0; i < static_cast<int>(recorded_.size()); ++i)
                 if (recorded_[i].time <= t + 1e-9) index = i;
             QCOMPARE(index, kCursor + k / 2);
-            QCOMPARE(bitsOf(*canvasOf(w)->ghost()), bitsOf(recorded_[index]));
+            QCOMPARE(stateBits(*canvasOf(w)->ghost()), stateBits(recorded_[index]));
         }
         // The legend names what differs: the recorded method and its dt.
         w.refreshNow();
@@ -249,7 +235,7 @@ private slots:
         w.document().undoStack()->undo();
         expectGone();
         QCOMPARE(w.document().world().settings().integrator, std::string("explicit_euler"));
-        QCOMPARE(bitsOf(w.document().world()), bitsOf(recorded_.back()));
+        QCOMPARE(stateBits(w.document().world()), stateBits(recorded_.back()));
 
         // Reset.
         QVERIFY(w.controller().showFrame(kCursor));
@@ -314,7 +300,7 @@ private slots:
         QCoreApplication::processEvents();
         QVERIFY(compare_->run().isActive());
         QCOMPARE(w.document().world().settings().integrator, std::string("symplectic_euler"));
-        QCOMPARE(bitsOf(w.document().world()), bitsOf(recorded_[kCursor]));
+        QCOMPARE(stateBits(w.document().world()), stateBits(recorded_[kCursor]));
     }
 
     // At the live end there is no recorded run ahead to compare with.
@@ -324,9 +310,9 @@ private slots:
         QVERIFY(!w.action("compareFromHere")->isEnabled());
         SimulationDesc symplectic = w.document().setup().simulation;
         symplectic.integrator = "symplectic_euler";
-        const auto before = bitsOf(w.document().world());
+        const auto before = stateBits(w.document().world());
         QVERIFY(!compare_->start(symplectic));
-        QCOMPARE(bitsOf(w.document().world()), before);
+        QCOMPARE(stateBits(w.document().world()), before);
         QVERIFY(!canvasOf(w)->ghost());
     }
 

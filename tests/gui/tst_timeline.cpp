@@ -11,6 +11,7 @@
 #include "app/sim/SimulationController.h"
 #include "physics/scene/SceneLibrary.h"
 #include "physics/world/World.h"
+#include "tests/support/StateBits.h"
 #include "ui/canvas/SceneView.h"
 #include "ui/instruments/ReadoutView.h"
 #include "ui/plots/PlotsPanel.h"
@@ -34,20 +35,10 @@
 #include <vector>
 
 using namespace phasebox;
+using testing::stateBits;
 using namespace phasebox::testing::parts;
 
 namespace {
-
-std::vector<std::uint64_t> bitsOf(const World& w) {
-    std::vector<std::uint64_t> bits;
-    for (const Vec* v : {&w.positions(), &w.velocities()})
-        for (Eigen::Index i = 0; i < v->size(); ++i)
-            bits.push_back(std::bit_cast<std::uint64_t>((*v)[i]));
-    const EnergyLedger& e = w.energy();
-    for (double v : {w.time(), e.kinetic, e.potential, e.workNc, e.drift, e.correction})
-        bits.push_back(std::bit_cast<std::uint64_t>(v));
-    return bits;
-}
 
 QString statusTime(MainWindow& w) {
     for (const QLabel* l : w.statusBar()->findChildren<QLabel*>())
@@ -106,7 +97,7 @@ public:
     Moment now() {
         w_.refreshNow();
         QCoreApplication::processEvents();
-        return {bitsOf(w_.document().world()), canvasOf(w_)->grab().toImage(), statusTime(w_),
+        return {stateBits(w_.document().world()), canvasOf(w_)->grab().toImage(), statusTime(w_),
                 readouts(w_)};
     }
     // Steps the run one step at a time, keeping every moment.

@@ -11,6 +11,7 @@
 #include "physics/scene/SceneLibrary.h"
 #include "physics/world/World.h"
 #include "physics/world/WorldSnapshot.h"
+#include "tests/support/StateBits.h"
 
 #include <QTest>
 
@@ -22,16 +23,9 @@ using namespace phasebox;
 
 namespace {
 
-// The state as bits, with the clock and the ledger: -0.0 and 0.0 differ here.
+// The state as bits (testing::stateBits) and the step count.
 std::vector<std::uint64_t> bitsOf(const World& world) {
-    std::vector<std::uint64_t> bits;
-    for (const Vec* v : {&world.positions(), &world.velocities()})
-        for (Eigen::Index i = 0; i < v->size(); ++i)
-            bits.push_back(std::bit_cast<std::uint64_t>((*v)[i]));
-    const EnergyLedger& e = world.energy();
-    for (double v :
-         {world.time(), e.kinetic, e.potential, e.workNc, e.drift, e.correction, e.maxAbsDrift})
-        bits.push_back(std::bit_cast<std::uint64_t>(v));
+    std::vector<std::uint64_t> bits = testing::stateBits(world);
     bits.push_back(static_cast<std::uint64_t>(world.stepCount()));
     return bits;
 }
