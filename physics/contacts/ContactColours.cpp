@@ -45,11 +45,14 @@ void ContactSolver::colourRows() {
     }
     // Each colour starts a new wide row; colourCount_ becomes each colour's next slot.
     int wideRows = 0;
+    colourWide_.resize(kColours + 1);
     for (int colour = 0; colour < kColours; ++colour) {
         const int n = colourCount_[colour];
         colourCount_[colour] = 4 * wideRows;
+        colourWide_[colour] = wideRows;
         wideRows += (n + 3) / 4;
     }
+    colourWide_[kColours] = wideRows;
     wide_.resize(wideRows);
     order_.assign(4 * wideRows, -1);
     for (WideRow& w : wide_) {

@@ -14,6 +14,12 @@ namespace phasebox {
 
 using namespace contact_impulse;
 
+template <class F>
+void ContactSolver::forChunks(std::size_t count, std::size_t grain, const F& fn) {
+    (void)grain;
+    if (count > 0) fn(std::size_t{0}, count);
+}
+
 namespace {
 using WideRow = ContactSolver::WideRow;
 using ContactSolverBody = ContactSolver::BodyState;
@@ -30,7 +36,7 @@ typedef double Lanes __attribute__((vector_size(32)));
 #pragma GCC pop_options
 #endif
 
-using WideLoop = void (*)(WideRow*, int, ContactSolverBody*);
+using WideLoop = void (*)(WideRow*, int, ContactSolverBody*, int);
 // Without AVX2 the rows are solved one by one in the same colour order (the portable build of
 // the four-lane loop, on SSE2 pairs, was slower than that).
 WideLoop chooseWideLoop() {
@@ -174,6 +180,7 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     order_.reserve(constraints + 4 * kColours);
     colourBits_.reserve(kColours * ((bodies + 63) / 64));
     colourCount_.reserve(kColours + 1);
+    colourWide_.reserve(kColours + 1);
 }
 
 void ContactSolver::buildRows(double hertz, double zeta, double h, double warmScale) {
@@ -270,47 +277,51 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
     // fixed within a phase, so this is done once for all its iterations.
     const double invH = 1.0 / h;
     const double maxPushOut = settings.pushOut;
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        Row& c = rows_[i];
-        const RowSetup& setup = setup_[i];
-        double compliance[2] = {0.0, 0.0};
-        bool active[2] = {true, true};
-        for (int k = 0; k < c.pointCount; ++k) {
-            RowPoint& p = c.p[k];
-            const double s = separation_[2 * i + k];
-            double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-            if (s > 0.0) {
-                // Speculative: close at most the gap. Only while solving: relaxing a gap would
-                // brake an approaching body a sub-step early (the next solve sees the gap anew).
-                bias = s * invH;
-                active[k] = useBias;
-            } else if (useBias) {
-                // The push of an overlap deeper than deepOverlap is that of deepOverlap: the rest
-                // is pushed out in positions (deepPushOut). In a pile each contact's push velocity
-                // adds up along chains of bodies (20 boxes started at one point left at 40 m/s).
-                const double depth = std::max(s, -setup.deepOverlap);
-                bias = std::max(setup.biasRate * depth, -setup.pushOutShare * maxPushOut);
-                massScale = setup.massScale;
-                impulseScale = setup.impulseScale;
-                compliance[k] = setup.compliance[k];
+    forChunks(rows_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            Row& c = rows_[i];
+            const RowSetup& setup = setup_[i];
+            double compliance[2] = {0.0, 0.0};
+            bool active[2] = {true, true};
+            for (int k = 0; k < c.pointCount; ++k) {
+                RowPoint& p = c.p[k];
+                const double s = separation_[2 * i + k];
+                double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+                if (s > 0.0) {
+                    // Speculative: close at most the gap. Only while solving: relaxing a gap would
+                    // brake an approaching body a sub-step early (the next solve sees the gap
+                    // anew).
+                    bias = s * invH;
+                    active[k] = useBias;
+                } else if (useBias) {
+                    // The push of an overlap deeper than deepOverlap is that of deepOverlap: the
+                    // rest is pushed out in positions (deepPushOut). In a pile each contact's push
+                    // velocity adds up along chains of bodies (20 boxes started at one point left
+                    // at 40 m/s).
+                    const double depth = std::max(s, -setup.deepOverlap);
+                    bias = std::max(setup.biasRate * depth, -setup.pushOutShare * maxPushOut);
+                    massScale = setup.massScale;
+                    impulseScale = setup.impulseScale;
+                    compliance[k] = setup.compliance[k];
+                }
+                p.bias = bias;
+                p.effectiveMass = active[k] ? setup.normalMass[k] * massScale : 0.0;
+                p.impulseScale = active[k] ? impulseScale : 0.0;
             }
-            p.bias = bias;
-            p.effectiveMass = active[k] ? setup.normalMass[k] * massScale : 0.0;
-            p.impulseScale = active[k] ? impulseScale : 0.0;
+            c.block = setup.blockable && active[0] && active[1];
+            if (c.block) {
+                const double a11 = c.k11 + compliance[0], a22 = c.k22 + compliance[1], a12 = c.k12;
+                const double invDet = 1.0 / (a11 * a22 - a12 * a12);
+                c.a12 = a12;
+                c.i11 = a22 * invDet;
+                c.i12 = -a12 * invDet;
+                c.i22 = a11 * invDet;
+                c.invA11 = 1.0 / a11;
+                c.invA22 = 1.0 / a22;
+            }
+            packPhase(i);
         }
-        c.block = setup.blockable && active[0] && active[1];
-        if (c.block) {
-            const double a11 = c.k11 + compliance[0], a22 = c.k22 + compliance[1], a12 = c.k12;
-            const double invDet = 1.0 / (a11 * a22 - a12 * a12);
-            c.a12 = a12;
-            c.i11 = a22 * invDet;
-            c.i12 = -a12 * invDet;
-            c.i22 = a11 * invDet;
-            c.invA11 = 1.0 / a11;
-            c.invA22 = 1.0 / a22;
-        }
-        packPhase(i);
-    }
+    });
 }
 
 namespace {
@@ -335,35 +346,40 @@ void ContactSolver::updateSeparations() {
     // Bodies hold still while the solver iterates (positions move once per inner sub-step), so
     // each point's separation is computed once per phase, not once per iteration: the rotations
     // alone (a sine and a cosine per body and point) were a quarter of the solver's time.
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-        const SolverBody& b = bodies_[i];
-        const Vec2 dp = b.startOffset + b.path + b.timeShift;
-        BodyMotion& m = motion_[i];
-        m.dx = dp.x();
-        m.dy = dp.y();
-        if (b.rotates) {
-            const double angle = b.startAngle + b.anglePath + b.angleTimeShift;
-            smallRotation(angle, m.cos, m.sin);
-        } else {
-            m.cos = 1.0;
-            m.sin = 0.0;
+    forChunks(bodies_.size(), kBodyGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            const SolverBody& b = bodies_[i];
+            const Vec2 dp = b.startOffset + b.path + b.timeShift;
+            BodyMotion& m = motion_[i];
+            m.dx = dp.x();
+            m.dy = dp.y();
+            if (b.rotates) {
+                const double angle = b.startAngle + b.anglePath + b.angleTimeShift;
+                smallRotation(angle, m.cos, m.sin);
+            } else {
+                m.cos = 1.0;
+                m.sin = 0.0;
+            }
         }
-    }
+    });
     const BodyMotion* motion = motion_.data();
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        const Row& c = rows_[i];
-        const BodyMotion& a = motion[c.a];
-        const BodyMotion& b = motion[c.b];
-        for (int k = 0; k < c.pointCount; ++k) {
-            const RowPoint& p = c.p[k];
-            // The anchors turn with their bodies: s = s₀ + n·(Δp_B − Δp_A), Δp = Δx + R(Δθ)·r − r.
-            double dx = 0.0 - (a.dx + ((a.cos * p.rAx - a.sin * p.rAy) - p.rAx));
-            double dy = 0.0 - (a.dy + ((a.sin * p.rAx + a.cos * p.rAy) - p.rAy));
-            dx += b.dx + ((b.cos * p.rBx - b.sin * p.rBy) - p.rBx);
-            dy += b.dy + ((b.sin * p.rBx + b.cos * p.rBy) - p.rBy);
-            separation_[2 * i + k] = p.baseSeparation + (c.nx * dx + c.ny * dy);
+    forChunks(rows_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            const Row& c = rows_[i];
+            const BodyMotion& a = motion[c.a];
+            const BodyMotion& b = motion[c.b];
+            for (int k = 0; k < c.pointCount; ++k) {
+                const RowPoint& p = c.p[k];
+                // The anchors turn with their bodies: s = s₀ + n·(Δp_B − Δp_A), Δp = Δx + R(Δθ)·r −
+                // r.
+                double dx = 0.0 - (a.dx + ((a.cos * p.rAx - a.sin * p.rAy) - p.rAx));
+                double dy = 0.0 - (a.dy + ((a.sin * p.rAx + a.cos * p.rAy) - p.rAy));
+                dx += b.dx + ((b.cos * p.rBx - b.sin * p.rBy) - p.rBx);
+                dy += b.dy + ((b.sin * p.rBx + b.cos * p.rBy) - p.rBy);
+                separation_[2 * i + k] = p.baseSeparation + (c.nx * dx + c.ny * dy);
+            }
         }
-    }
+    });
 }
 
 void ContactSolver::warmStart() {
@@ -432,12 +448,24 @@ inline bool solveBlock(Row& c, State& a, State& b) {
 }  // namespace
 
 void ContactSolver::solve() {
-    // The coloured rows four at a time, then those no colour took, one by one.
-    if (wideLoop) {
-        wideLoop(wide_.data(), static_cast<int>(wide_.size()), state_.data());
-    } else {
-        for (const int i : order_)
-            if (i >= 0) solveRow(rows_[i]);
+    // Colour by colour: the coloured rows four at a time (or one by one in the same order),
+    // then those no colour took, one by one.
+    const int world = static_cast<int>(bodies_.size());
+    for (int colour = 0; colour < kColours; ++colour) {
+        const std::size_t first = colourWide_[colour];
+        const std::size_t count = colourWide_[colour + 1] - first;
+        if (count == 0) continue;
+        if (wideLoop) {
+            forChunks(count, kWideGrain, [&](std::size_t from, std::size_t end) {
+                wideLoop(wide_.data() + first + from, static_cast<int>(end - from), state_.data(),
+                         world);
+            });
+        } else {
+            forChunks(4 * count, 4 * kWideGrain, [&](std::size_t from, std::size_t end) {
+                for (std::size_t slot = 4 * first + from; slot < 4 * first + end; ++slot)
+                    if (order_[slot] >= 0) solveRow(rows_[order_[slot]]);
+            });
+        }
     }
     for (const int i : overflow_) solveRow(rows_[i]);
 }
@@ -520,58 +548,66 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     bool moved = true;
     for (int i = 1; i <= n; ++i) {
         const double f = double(i) / n;
-        for (std::size_t k = 0; k < count; ++k) {
-            SolverBody& b = bodies_[k];
-            BodyState& s = state_[k];
-            s.vx += b.smoothDv.x() / n;
-            s.vy += b.smoothDv.y() / n;
-            s.w += b.smoothDw / n;
-            b.pushV = Vec2(s.vx, s.vy);  // before the bounces
-            b.pushW = s.w;
-        }
+        forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+            for (std::size_t k = first; k < end; ++k) {
+                SolverBody& b = bodies_[k];
+                BodyState& s = state_[k];
+                s.vx += b.smoothDv.x() / n;
+                s.vy += b.smoothDv.y() / n;
+                s.w += b.smoothDw / n;
+                b.pushV = Vec2(s.vx, s.vy);  // before the bounces
+                b.pushW = s.w;
+            }
+        });
         if (!bouncing_.empty()) {
             if (moved) updateSeparations();
             moved = bounce(hi, n, settings);
-            for (std::size_t k = 0; k < count; ++k) {
-                SolverBody& b = bodies_[k];
-                const BodyState& s = state_[k];
-                b.bounceDv += Vec2(s.vx, s.vy) - b.pushV;
-                b.bounceDw += s.w - b.pushW;
-            }
+            forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+                for (std::size_t k = first; k < end; ++k) {
+                    SolverBody& b = bodies_[k];
+                    const BodyState& s = state_[k];
+                    b.bounceDv += Vec2(s.vx, s.vy) - b.pushV;
+                    b.bounceDw += s.w - b.pushW;
+                }
+            });
         }
         if (moved) updateSeparations();
         warmStart();
         preparePhase(hi, true, settings);
         impulsesToPack_ = false;  // from here on the lanes hold the accumulated impulses
         for (int it = 0; it < iterations; ++it) solve();
-        for (std::size_t k = 0; k < count; ++k) {
-            SolverBody& b = bodies_[k];
-            const BodyState& s = state_[k];
-            const Vec2 v(s.vx, s.vy);
-            // Contact-induced velocity, bounces included: what the impulses added to the
-            // smooth path, which the integrator's positions do not know of.
-            b.shift += hi * (v - (b.v0 + f * b.smoothDv));
-            b.path += hi * v;
-            if (b.rotates) {
-                b.angleShift += hi * (s.w - (b.w0 + f * b.smoothDw));
-                b.anglePath += hi * s.w;
+        forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+            for (std::size_t k = first; k < end; ++k) {
+                SolverBody& b = bodies_[k];
+                const BodyState& s = state_[k];
+                const Vec2 v(s.vx, s.vy);
+                // Contact-induced velocity, bounces included: what the impulses added to the
+                // smooth path, which the integrator's positions do not know of.
+                b.shift += hi * (v - (b.v0 + f * b.smoothDv));
+                b.path += hi * v;
+                if (b.rotates) {
+                    b.angleShift += hi * (s.w - (b.w0 + f * b.smoothDw));
+                    b.anglePath += hi * s.w;
+                }
+                b.pushV = v;
+                b.pushW = s.w;
             }
-            b.pushV = v;
-            b.pushW = s.w;
-        }
+        });
         updateSeparations();
         moved = false;
         preparePhase(hi, false, settings);
         for (int it = 0; it < settings.relaxIterations; ++it) solve();
         unpackImpulses();
-        for (std::size_t k = 0; k < count; ++k) {
-            SolverBody& b = bodies_[k];
-            const BodyState& s = state_[k];
-            // What relax removed is the push-out's velocity: its displacement is the position
-            // correction (the energy ledger's `correction`).
-            b.pushOut += hi * (b.pushV - Vec2(s.vx, s.vy));
-            if (b.rotates) b.pushOutAngle += hi * (b.pushW - s.w);
-        }
+        forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+            for (std::size_t k = first; k < end; ++k) {
+                SolverBody& b = bodies_[k];
+                const BodyState& s = state_[k];
+                // What relax removed is the push-out's velocity: its displacement is the position
+                // correction (the energy ledger's `correction`).
+                b.pushOut += hi * (b.pushV - Vec2(s.vx, s.vy));
+                if (b.rotates) b.pushOutAngle += hi * (b.pushW - s.w);
+            }
+        });
     }
 
     deepPushOut(h, settings);
@@ -586,31 +622,34 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     // relax, keeps its whole displacement: that is its purpose; a bounce acts at the instant
     // of impact, not as a force over the step).
     const double excess = positionWeight - (n + 1.0) / (2.0 * n);
-    for (std::size_t k = 0; k < count; ++k) {
-        SolverBody& b = bodies_[k];
-        const BodyState& s = state_[k];
-        const Vec2 v(s.vx, s.vy);
-        const Vec2 dv = v - (b.v0 + b.smoothDv + b.bounceDv);
-        const Vec2 press = b.smoothDv - b.heldDv;
-        // Every velocity change here beyond the smooth step's is a contact impulse's, and so is
-        // the held forces' share of that step.
-        if (b.invMass > 0.0) b.stepImpulse += (v - (b.v0 + press)) / b.invMass;
-        // Only a force held over the step moves a body by the method's weight: what the
-        // contacts change beyond cancelling the smooth forces is an impact, which acts at once
-        // (an inelastic stop at 200 m/s would otherwise be moved ±0.1·h·Δv: through a thin wall
-        // under RK4, a metre short of it under symplectic Euler). The held forces moved it by
-        // the method's weight already; where the contacts turn out to have been an impact, that
-        // share is taken back to the impact's.
-        const double held = std::min(1.0, press.norm() / std::max((dv + b.heldDv).norm(), 1e-300));
-        const double weight = held * excess * h, heldBack = (held - 1.0) * excess * h;
-        q.segment<2>(b.dof) += b.shift + weight * dv + heldBack * b.heldDv + b.timeShift;
-        u.segment<2>(b.dof) = v;
-        if (b.rotates) {
-            const double dw = s.w - (b.w0 + b.smoothDw + b.bounceDw);
-            q[b.dof + 2] += b.angleShift + weight * dw + heldBack * b.heldDw + b.angleTimeShift;
-            u[b.dof + 2] = s.w;
+    forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t k = first; k < end; ++k) {
+            SolverBody& b = bodies_[k];
+            const BodyState& s = state_[k];
+            const Vec2 v(s.vx, s.vy);
+            const Vec2 dv = v - (b.v0 + b.smoothDv + b.bounceDv);
+            const Vec2 press = b.smoothDv - b.heldDv;
+            // Every velocity change here beyond the smooth step's is a contact impulse's, and so is
+            // the held forces' share of that step.
+            if (b.invMass > 0.0) b.stepImpulse += (v - (b.v0 + press)) / b.invMass;
+            // Only a force held over the step moves a body by the method's weight: what the
+            // contacts change beyond cancelling the smooth forces is an impact, which acts at once
+            // (an inelastic stop at 200 m/s would otherwise be moved ±0.1·h·Δv: through a thin wall
+            // under RK4, a metre short of it under symplectic Euler). The held forces moved it by
+            // the method's weight already; where the contacts turn out to have been an impact, that
+            // share is taken back to the impact's.
+            const double held =
+                std::min(1.0, press.norm() / std::max((dv + b.heldDv).norm(), 1e-300));
+            const double weight = held * excess * h, heldBack = (held - 1.0) * excess * h;
+            q.segment<2>(b.dof) += b.shift + weight * dv + heldBack * b.heldDv + b.timeShift;
+            u.segment<2>(b.dof) = v;
+            if (b.rotates) {
+                const double dw = s.w - (b.w0 + b.smoothDw + b.bounceDw);
+                q[b.dof + 2] += b.angleShift + weight * dw + heldBack * b.heldDw + b.angleTimeShift;
+                u[b.dof + 2] = s.w;
+            }
         }
-    }
+    });
 }
 
 void ContactSolver::storeImpulses(bool solved) {
@@ -655,17 +694,19 @@ void ContactSolver::packPhase(std::size_t i) {
 
 void ContactSolver::unpackImpulses() {
     if (!wideLoop) return;
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        const int at = slot_[i];
-        if (at < 0) continue;
-        Row& c = rows_[i];
-        const WideRow& w = wide_[at / 4];
-        const int l = at % 4;
-        for (int k = 0; k < c.pointCount; ++k) {
-            c.p[k].normalImpulse = w.p[k].normalImpulse[l];
-            c.p[k].tangentImpulse = w.p[k].tangentImpulse[l];
+    forChunks(rows_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            const int at = slot_[i];
+            if (at < 0) continue;
+            Row& c = rows_[i];
+            const WideRow& w = wide_[at / 4];
+            const int l = at % 4;
+            for (int k = 0; k < c.pointCount; ++k) {
+                c.p[k].normalImpulse = w.p[k].normalImpulse[l];
+                c.p[k].tangentImpulse = w.p[k].tangentImpulse[l];
+            }
         }
-    }
+    });
 }
 
 }  // namespace phasebox

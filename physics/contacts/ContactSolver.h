@@ -274,6 +274,16 @@ private:
         bool blockable;  // two points whose K is well conditioned
     };
 
+    // The passes over rows and bodies run as chunks of a range (fn(first, end)); the chunks
+    // never depend on the number of workers, and no two chunks of a pass touch the same row or
+    // dynamic body (a colour's rows share none), so the results are bit-identical however many
+    // workers take them.
+    static constexpr std::size_t kRowGrain = 256;
+    static constexpr std::size_t kBodyGrain = 512;
+    static constexpr std::size_t kWideGrain = 64;
+    template <class F>
+    void forChunks(std::size_t count, std::size_t grain, const F& fn);
+
     void loadBodies(const Vec& q0, const Vec& u0, const Vec& u);
     bool holding_ = false;  // this solveStep's holding
     // Sub-steps for this step: `base`, or more when the stack the warm-start impulses carry
@@ -317,6 +327,7 @@ private:
     std::vector<int> overflow_;       // rows no colour could take, solved after the wide ones
     std::vector<std::uint64_t> colourBits_;  // per colour, a bit per body: taken
     std::vector<int> colourCount_;           // rows per colour, then the first wide row
+    std::vector<int> colourWide_;            // per colour its first wide row, then the end
     // A row with restitution, with what its bounce passes read (fixed for the step): the
     // passes then touch this array, the row and the body states only.
     struct BounceRow {
