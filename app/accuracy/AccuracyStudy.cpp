@@ -230,6 +230,8 @@ std::optional<AccuracyRecord> measure(const SceneDesc& base, const IntegratorInf
     double spent = 0.0;
     for (int repeat = 0; repeat < std::max(1, options.maxRepeats); ++repeat) {
         auto world = buildWorld(scene).world;  // building is not part of the cost
+        // The cost is this thread's CPU time: the method's work all on it.
+        world->setWorkers(1);
         const RunOutcome run = runToEnd(*world, endTime, cancel);
         if (run.cancelled) {
             if (repeat == 0) return std::nullopt;

@@ -42,6 +42,7 @@ struct RenderOptions {
     int fps = 30;
     QSize size{1280, 720};
     bool plots = false;
+    int threads = 0;  // 0: every core
 };
 
 QString parseRenderOptions(const QStringList& args, RenderOptions& o) {
@@ -63,6 +64,7 @@ QString parseRenderOptions(const QStringList& args, RenderOptions& o) {
         bool ok = false;
         if (option.is("--threads")) {
             if (QString error = threadsProblem(v); !error.isEmpty()) return error;
+            o.threads = v.toInt();
         } else if (option.is("--out")) {
             if (QString error = noteOutputOption(a, v, outputsSeen); !error.isEmpty()) return error;
             o.out = v;
@@ -125,6 +127,7 @@ int renderCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     clip.fps = o.fps;
     clip.size = o.size;
     clip.plots = o.plots;
+    clip.workers = o.threads;
     if (const QString problem = clipOptionsProblem(*format, clip); !problem.isEmpty())
         return fail(err, problem);
     if (const QString problem = runLengthProblem(clip.from + clip.duration, scene.simulation.dt);

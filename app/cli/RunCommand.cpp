@@ -57,8 +57,8 @@ const char* kRunUsage =
     "                    force(JOINT) JOINT.angle contact_force(ID)\n"
     "  --plot-energy F   the energy plot as .png or .svg\n"
     "  --plot-phase ID.COORD F   phase plot of COORD (x, y or angle) of object ID\n"
-    "  --threads N       workers, 1 to 1024; every output but the timings is the same for\n"
-    "                    every N (this version steps on one worker)\n";
+    "  --threads N       workers, 1 to 1024, default every core; every output but the\n"
+    "                    timings is the same for every N (--json reports it as threads)\n";
 
 struct RunOptions {
     QString scene;
@@ -73,6 +73,7 @@ struct RunOptions {
     QString plotEnergy;
     QString phaseTarget, plotPhase;
     QStringList probes;  // as given, in command-line order
+    int threads = 0;     // the world's workers; 0: every core
 };
 
 // Splits "a,flag[1,2],b" at the commas outside brackets: cloth node ids hold commas.
@@ -142,6 +143,7 @@ QString parseOptions(const QStringList& args, RunOptions& o) {
         int n = 0;
         if (a == QLatin1String("--threads")) {
             if (!(error = threadsProblem(v)).isEmpty()) return error;
+            o.threads = v.toInt();
         } else if (a == QLatin1String("--integrator")) {
             if (!findIntegrator(v.toStdString()))
                 return QStringLiteral("--integrator: unknown integrator \"%1\"; known: %2")
@@ -480,6 +482,7 @@ QJsonObject jsonReport(const World& world, const SimulationDesc& sim, double dt,
         {"sleeping", world.sleepingBodies()},
         {"effects", effects},
         {"force_evaluations", static_cast<double>(world.forceEvaluations())},
+        {"threads", world.workers()},
     };
     if (!probes.probes.empty()) {
         // final is the probe in the state the report shows (after a divergence, the
@@ -743,6 +746,7 @@ int runCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
         return fail(err, lines.join(QLatin1Char('\n')));
     }
     World& world = *built.world;
+    world.setWorkers(o.threads);
     for (const std::string& name : built.unsupported)
         err << "phasebox-cli: warning: the effect \"" << QString::fromStdString(name)
             << "\" is not simulated yet and is ignored\n";

@@ -50,6 +50,7 @@ struct MotionSurvey {
 MotionSurvey surveyMotion(const SceneDesc& scene, const ClipOptions& o, int frames) {
     BuildResult built = buildWorld(scene);
     World& world = *built.world;
+    world.setWorkers(o.workers);
     const double dt = world.settings().dt;
     double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
     const auto include = [&](const Vec2& p, double reach) {
@@ -262,6 +263,7 @@ ClipResult renderClip(const SceneDesc& scene, const ClipOptions& o, const QStrin
     }
     BuildResult built = buildWorld(scene);
     World& world = *built.world;
+    world.setWorkers(o.workers);
     const double dt = world.settings().dt;
     FramePainter painter(scene, options, world);
     bool diverged = false;

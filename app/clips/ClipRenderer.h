@@ -36,6 +36,9 @@ struct ClipOptions {
     // The phase plot's object and coordinate (x, y or angle); empty: the particle (not of a
     // cloth) or body that travels farthest along x or y over the clip, along that axis.
     QString phaseObject, phaseCoordinate;
+    // The world's worker threads (World::setWorkers; 0: every core). The frames are the same
+    // for any number.
+    int workers = 0;
 };
 
 // The clip's frame count, round(duration·fps).

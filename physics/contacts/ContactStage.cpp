@@ -1,6 +1,7 @@
 #include "physics/contacts/ContactStage.h"
 
 #include "physics/core/Bodies.h"
+#include "physics/core/WorkerPool.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,21 @@ namespace {
 // grows its buffers in its first steps, a few doublings among thousands of contacts).
 constexpr std::size_t kReservedContacts = 4;
 constexpr std::size_t kMostReservedContacts = 4096;
+// Items a chunk of a shared loop (WorkerPool): a narrow-phase test costs a fraction of a
+// microsecond, a collider's shape and bounds a few tens of nanoseconds, handing a chunk to
+// another thread about a microsecond; a chunk is made worth tens of those, so that a scene of a
+// few hundred pairs stays on one thread.
+constexpr int kPairGrain = 128;
+constexpr int kColliderGrain = 512;
 }  // namespace
+
+template <class Fn>
+void ContactStage::forRange(int count, int grain, Fn&& fn) {
+    if (pool_)
+        pool_->parallelFor(count, grain, [&fn](int begin, int end, int) { fn(begin, end); });
+    else if (count > 0)
+        fn(0, count);
+}
 
 bool ContactStage::needed(const Bodies& bodies, bool particleCollisions) {
     int dynamicBodies = 0, disks = 0, boxes = static_cast<int>(bodies.rigidBodies.size());
@@ -228,8 +243,12 @@ void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB
 }
 
 void ContactStage::updateShapes(const Bodies& bodies, const Vec& q) {
-    const int count = static_cast<int>(colliders_.size());
-    for (int i = 0; i < count; ++i) {
+    forRange(static_cast<int>(colliders_.size()), kColliderGrain,
+             [&](int begin, int end) { updateShapes(bodies, q, begin, end); });
+}
+
+void ContactStage::updateShapes(const Bodies& bodies, const Vec& q, int begin, int end) {
+    for (int i = begin; i < end; ++i) {
         const Collider& c = colliders_[i];
         if (c.kind == Collider::Kind::Disk) {
             const Vec2 position = c.rigid ? bodies.rigidBodies[c.object].position
@@ -268,35 +287,39 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
     std::vector<double>& sweep = sweep_;
     sweep.assign(count, 0.0);
     motion_.assign(count, Motion{});
-    for (int i = 0; i < count; ++i) {
-        const Collider& c = colliders_[i];
-        bounds_[i] = c.kind == Collider::Kind::Disk      ? boundingBox(disks_[i])
-                     : c.kind == Collider::Kind::Polygon ? boundingBox(polygons_[i])
-                                                         : boundingBox(boxes_[i]);
-        if (c.dof >= 0) {
-            // The fastest the body moves in this frame: at its start, or at its end, the smooth
-            // forces' velocity change extrapolated from the first sub-step over the frame (a
-            // ball dropped from rest at dt = 1 s falls 9.81 m·s⁻¹·dt, not 0).
-            const double extrapolate = 1.0 / frameFraction;
-            auto reach = [&](int k) {
-                return std::max(std::abs(u[k]), std::abs(u[k] + extrapolate * (uNext[k] - u[k])));
-            };
-            double speed = std::hypot(reach(c.dof), reach(c.dof + 1));
-            Motion& motion = motion_[i];
-            motion.start = u.segment<2>(c.dof);
-            motion.end = motion.start + extrapolate * (uNext.segment<2>(c.dof) - motion.start);
-            if (c.kind == Collider::Kind::Box)
-                motion.turn = reach(c.dof + 2) * boxes_[i].halfExtents.norm() * dt;
-            if (c.kind == Collider::Kind::Polygon)
-                motion.turn = reach(c.dof + 2) * 0.5 * bodies.rigidBodies[c.object].size.x() * dt;
-            sweep[i] = speed * dt + motion.turn;
+    forRange(count, kColliderGrain, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            const Collider& c = colliders_[i];
+            bounds_[i] = c.kind == Collider::Kind::Disk      ? boundingBox(disks_[i])
+                         : c.kind == Collider::Kind::Polygon ? boundingBox(polygons_[i])
+                                                             : boundingBox(boxes_[i]);
+            if (c.dof >= 0) {
+                // The fastest the body moves in this frame: at its start, or at its end, the smooth
+                // forces' velocity change extrapolated from the first sub-step over the frame (a
+                // ball dropped from rest at dt = 1 s falls 9.81 m·s⁻¹·dt, not 0).
+                const double extrapolate = 1.0 / frameFraction;
+                auto reach = [&](int k) {
+                    return std::max(std::abs(u[k]),
+                                    std::abs(u[k] + extrapolate * (uNext[k] - u[k])));
+                };
+                double speed = std::hypot(reach(c.dof), reach(c.dof + 1));
+                Motion& motion = motion_[i];
+                motion.start = u.segment<2>(c.dof);
+                motion.end = motion.start + extrapolate * (uNext.segment<2>(c.dof) - motion.start);
+                if (c.kind == Collider::Kind::Box)
+                    motion.turn = reach(c.dof + 2) * boxes_[i].halfExtents.norm() * dt;
+                if (c.kind == Collider::Kind::Polygon)
+                    motion.turn =
+                        reach(c.dof + 2) * 0.5 * bodies.rigidBodies[c.object].size.x() * dt;
+                sweep[i] = speed * dt + motion.turn;
+            }
+            // With bodies asleep an awake one looks two frames ahead (findReachedSleepers()).
+            const double reach = asleepColliders_ > 0 ? 2.0 * sweep[i] : sweep[i];
+            const Vec2 grow = Vec2::Constant(settings.speculativeDistance + reach);
+            bounds_[i].lower -= grow;
+            bounds_[i].upper += grow;
         }
-        // With bodies asleep an awake one looks two frames ahead (findReachedSleepers()).
-        const double reach = asleepColliders_ > 0 ? 2.0 * sweep[i] : sweep[i];
-        const Vec2 grow = Vec2::Constant(settings.speculativeDistance + reach);
-        bounds_[i].lower -= grow;
-        bounds_[i].upper += grow;
-    }
+    });
     broadPhase_.findPairs(bounds_, pairs_,
                           {&pairLimited_, &pairSize_, kOverlappingPairCap, kNearPairCap});
 }
@@ -389,6 +412,58 @@ void ContactStage::sortByKey(std::vector<ContactConstraint>& constraints) {
     std::swap(constraints, sorted_);
 }
 
+void ContactStage::findContacts(const Bodies& bodies, const Vec& q, double dt,
+                                const ContactSettings& settings) {
+    // Every candidate pair's manifold into its own slot, in parallel, then every plane against
+    // every collider; the contacts are then made from the slots in order, serially (they number
+    // the solver's bodies as they come), so that nothing depends on how the loops were shared.
+    const int count = static_cast<int>(colliders_.size());
+    const int pairCount = static_cast<int>(pairs_.size());
+    const int planeTests = count * static_cast<int>(planes_.size());
+    found_.resize(static_cast<std::size_t>(pairCount + planeTests));
+    const std::vector<double>& sweep = sweep_;
+    forRange(pairCount, kPairGrain, [&](int begin, int end) {
+        for (int p = begin; p < end; ++p) {
+            const auto [i, j] = pairs_[p];
+            // How much closer the two can come in this step: their relative velocity (largest
+            // at the step's start or end, the change being linear in between) and their turns,
+            // not the sum of their speeds. Bodies moving together (a pile spreading out, boxes
+            // falling side by side) need no speculative contact with each other.
+            const Motion& a = motion_[i];
+            const Motion& b = motion_[j];
+            const double closing = std::sqrt(
+                std::max((b.start - a.start).squaredNorm(), (b.end - a.end).squaredNorm()));
+            const double margin = settings.speculativeDistance +
+                                  std::min(sweep[i] + sweep[j], closing * dt + a.turn + b.turn);
+            Found& f = found_[p];
+            f.hit = narrowPhase(bodies, i, j, margin, f.m, f.pair);
+        }
+    });
+    // Planes against every dynamic body (planes are infinite: not in the broad phase).
+    forRange(planeTests, kColliderGrain, [&](int begin, int end) {
+        for (int t = begin; t < end; ++t) {
+            const int k = t / count, i = t % count;
+            Found& f = found_[pairCount + t];
+            f.hit = narrowPhasePlane(k, i, settings.speculativeDistance + sweep[i], f.m, f.pair);
+        }
+    });
+    const auto pairKey = [](int first, int second) {
+        return (static_cast<std::uint64_t>(first) << 32) | static_cast<std::uint64_t>(second);
+    };
+    for (int p = 0; p < pairCount; ++p) {
+        const Found& f = found_[p];
+        if (f.hit)
+            addConstraint(pairKey(f.pair.a, f.pair.b), f.pair.a, f.pair.b, f.m, f.pair.friction,
+                          f.pair.restitution, q);
+    }
+    for (int t = 0; t < planeTests; ++t) {
+        const Found& f = found_[pairCount + t];
+        if (f.hit)
+            addConstraint(pairKey(count + t / count, t % count), -1, t % count, f.m,
+                          f.pair.friction, f.pair.restitution, q);
+    }
+}
+
 void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u,
                            const Vec& uNext, double frameFraction, double dt,
                            const ContactSettings& settings) {
@@ -402,33 +477,7 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
 
     findPairs(bodies, q, u, uNext, frameFraction, dt, settings);
     findReachedSleepers(bodies, settings);
-    const int count = static_cast<int>(colliders_.size());
-    const std::vector<double>& sweep = sweep_;
-    Manifold m;
-    PairContact pair;
-    const auto pairKey = [](int first, int second) {
-        return (static_cast<std::uint64_t>(first) << 32) | static_cast<std::uint64_t>(second);
-    };
-    for (const auto& [i, j] : pairs_) {
-        // How much closer the two can come in this step: their relative velocity (largest at
-        // the step's start or end, the change being linear in between) and their turns, not
-        // the sum of their speeds. Bodies moving together (a pile spreading out, boxes falling
-        // side by side) need no speculative contact with each other.
-        const Motion& a = motion_[i];
-        const Motion& b = motion_[j];
-        const double closing =
-            std::sqrt(std::max((b.start - a.start).squaredNorm(), (b.end - a.end).squaredNorm()));
-        const double margin = settings.speculativeDistance +
-                              std::min(sweep[i] + sweep[j], closing * dt + a.turn + b.turn);
-        if (narrowPhase(bodies, i, j, margin, m, pair))
-            addConstraint(pairKey(pair.a, pair.b), pair.a, pair.b, m, pair.friction,
-                          pair.restitution, q);
-    }
-    // Planes against every dynamic body (planes are infinite: not in the broad phase).
-    for (int k = 0; k < static_cast<int>(planes_.size()); ++k)
-        for (int i = 0; i < count; ++i)
-            if (narrowPhasePlane(k, i, settings.speculativeDistance + sweep[i], m, pair))
-                addConstraint(pairKey(count + k, i), -1, i, m, pair.friction, pair.restitution, q);
+    findContacts(bodies, q, dt, settings);
 
     // Warm start: carry the impulses of persisting contacts (same shapes, same features).
     std::vector<ContactConstraint>& now = solver_.constraints();

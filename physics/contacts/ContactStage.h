@@ -12,6 +12,7 @@
 namespace phasebox {
 
 struct Bodies;
+class WorkerPool;
 
 // Two shapes that overlap at a state, as the penalty and kinematic models see them: the bodies'
 // first state indices (−1 static or the world), the normal from A to B, the pair's material and
@@ -37,6 +38,13 @@ public:
 
     ContactStage(bool particleCollisions, double particleRestitution)
         : particleCollisions_(particleCollisions), particleRestitution_(particleRestitution) {}
+
+    // The threads the stage's loops share (the world's; null: the calling thread alone). Every
+    // result is bit-identical with or without it: each pair's manifold is found into its own
+    // slot and the contacts are then made from the slots in pair order. The solver reaches the
+    // same pool through pool().
+    void setPool(WorkerPool* pool) { pool_ = pool; }
+    WorkerPool* pool() const { return pool_; }
 
     // Rebuilds the collider list after the world's objects changed.
     void bind(const Bodies& bodies);
@@ -148,6 +156,10 @@ private:
         double friction = 0.0, restitution = 0.0;
     };
     void updateShapes(const Bodies& bodies, const Vec& q);
+    // collide()'s narrow phase: the contacts of the pairs found and of the planes.
+    void findContacts(const Bodies& bodies, const Vec& q, double dt,
+                      const ContactSettings& settings);
+    void updateShapes(const Bodies& bodies, const Vec& q, int begin, int end);
     bool narrowPhase(const Bodies& bodies, int i, int j, double margin, Manifold& m,
                      PairContact& pair) const;
     bool narrowPhasePlane(int k, int i, double margin, Manifold& m, PairContact& pair) const;
@@ -172,6 +184,18 @@ private:
     };
     std::vector<Motion> motion_;
     std::vector<std::pair<int, int>> pairs_;
+    // Per candidate pair, then per plane and collider: the narrow phase's answer, found in
+    // parallel and turned into contacts in order.
+    struct Found {
+        Manifold m;
+        PairContact pair;
+        bool hit = false;
+    };
+    std::vector<Found> found_;
+    WorkerPool* pool_ = nullptr;
+    // Runs fn(begin, end) over [0, count) in chunks of grain, shared when a pool is set.
+    template <class Fn>
+    void forRange(int count, int grain, Fn&& fn);
     std::vector<unsigned char> pairLimited_;  // per collider: disk pairs capped (PairCap)
     std::vector<double> pairSize_;            // per collider: disk radius, for the cap
     std::vector<HalfPlane> planes_;

@@ -2,6 +2,7 @@
 
 #include "physics/contacts/ContactStage.h"
 #include "physics/contacts/PenaltyContacts.h"
+#include "physics/core/WorkerPool.h"
 #include "physics/effects/SpringEffect.h"
 #include "physics/scene/SceneSchema.h"
 
@@ -19,10 +20,18 @@ namespace {
 using Clock = ProfileClock;
 }  // namespace
 
-World::World() {
+World::World() : pool_(std::make_unique<WorkerPool>()) {
     integrator_ = makeIntegrator(settings_.integrator);
 }
 World::~World() = default;
+
+void World::setWorkers(int workers) {
+    pool_->setWorkers(workers);
+}
+
+int World::workers() const {
+    return pool_->workers();
+}
 
 // ---- objects ------------------------------------------------------------------------------
 
@@ -530,6 +539,7 @@ std::string World::objectAtDof(int dof) const {
 bool World::step() {
     ensureLayout();
     divergence_.reset();
+    if (contacts_) contacts_->setPool(pool_.get());
     const int substeps = settings_.substeps * (joints_ ? jointSubstepsForFrame() : 1);
     const double h = settings_.dt / substeps;
     // With one sub-step the other state buffer keeps the frame start for free.

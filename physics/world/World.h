@@ -32,6 +32,7 @@ namespace phasebox {
 class ContactStage;
 class PenaltyContacts;
 class SpringEffect;
+class WorkerPool;
 
 struct SimulationSettings {
     std::string integrator = "symplectic_euler";
@@ -141,6 +142,14 @@ public:
     // E₀ of the divergence rule (CONTRACT §2): |drift| or |correction| above 10³ times this
     // diverges.
     double divergenceScale() const { return guard_.divergenceScale(); }
+
+    // The threads a step's large loops share (the collide stage's narrow phase, the contact
+    // solver): not part of the scene or the state, since every result is bit-identical for any
+    // number (CONTRACT §4). Default every core; 0 means every core. Small scenes run on the
+    // calling thread whatever the number (WorkerPool: a loop of one chunk is not shared).
+    void setWorkers(int workers);
+    int workers() const;
+    WorkerPool& workerPool() const { return *pool_; }
 
     double time() const { return clock_.time; }
     // Sets the clock (a rebuilt world continuing a run); steps count on from here.
@@ -290,6 +299,7 @@ private:
     std::vector<int> nonConservative_;   // those with power to account
     std::vector<double> effectSeconds_;  // parallel to effects_
 
+    std::unique_ptr<WorkerPool> pool_;
     std::unique_ptr<ContactStage> contacts_;
     std::unique_ptr<PenaltyContacts> penalty_;  // only under the penalty model
     Vec penaltyVelocity_;                       // u at the last pair search, for its sweep

@@ -43,7 +43,10 @@ private slots:
         for (const char* n : {"1", "2", "4"}) {
             const CliResult json = runCli({"run", scene, "--json", "--threads", n});
             QCOMPARE(json.status, 0);
-            const QJsonObject report = withoutTimings(QJsonDocument::fromJson(json.out).object());
+            QJsonObject report = withoutTimings(QJsonDocument::fromJson(json.out).object());
+            // The workers used are reported, and are all that differs.
+            QCOMPARE(report.value("threads").toInt(), QByteArray(n).toInt());
+            report.remove("threads");
             QVERIFY(report.contains("objects"));
             const CliResult csv = runCli({"run", scene, "--csv", "-", "--threads", n});
             QCOMPARE(csv.status, 0);

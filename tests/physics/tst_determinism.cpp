@@ -6,15 +6,20 @@
 //   - stepping in chunks, with every read-only query of the app in between (energies, costs,
 //     profile reset, state reads), against stepping at once;
 //   - a hash pinned in this file, so that a change of the bits between builds or commits is
-//     seen too (tst_contacts' runsAreBitIdentical only compares two runs of one process).
+//     seen too (tst_contacts' runsAreBitIdentical only compares two runs of one process);
+//   - at 1, 2 and 4 workers (World::setWorkers, CONTRACT §4), and the 100-row pyramid, whose
+//     loops are large enough to be shared, a few steps at each.
 //
 // A pinned hash changes whenever the physics changes on purpose (a new contact rule, another
 // order of force accumulation): the failure message prints the new value to paste in. A change
 // that nobody meant is exactly what this test is for.
 
+#include "physics/core/WorkerPool.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
 #include "physics/world/World.h"
+
+#include "tests/support/StateBits.h"
 
 #include <QTest>
 
@@ -161,6 +166,15 @@ private slots:
         QCOMPARE(done, kSteps);
         QCOMPARE(hex(hashOf(*chunked)), hex(reference));
 
+        // At 1, 2 and 4 workers.
+        for (int workers : {1, 2, 4}) {
+            auto shared = build(desc);
+            shared->setWorkers(workers);
+            QCOMPARE(shared->workers(), workers);
+            for (int k = 0; k < kSteps; ++k) QVERIFY(shared->step());
+            QCOMPARE(hex(hashOf(*shared)), hex(reference));
+        }
+
         // And the bits this build gives are the bits every build gave.
         if (std::uint64_t(pinned) != reference)
             QFAIL(qPrintable(QStringLiteral("%1 with %2 after %3 steps: state hash %4, pinned %5. "
@@ -169,6 +183,26 @@ private slots:
                                  .arg(scene, integrator)
                                  .arg(kSteps)
                                  .arg(hex(reference), hex(pinned))));
+    }
+
+    void largePyramidIsTheSameForAnyNumberOfWorkers() {
+        // 5,050 boxes: the contact stage's loops run in many chunks, shared when there are
+        // workers to share them.
+        const SceneDesc desc = scenes::pyramid(100);
+        constexpr int kPyramidSteps = 6;
+        std::vector<std::uint64_t> reference;
+        for (int workers : {1, 2, 4}) {
+            auto world = build(desc);
+            world->setWorkers(workers);
+            for (int k = 0; k < kPyramidSteps; ++k) QVERIFY(world->step());
+            QCOMPARE(world->workerPool().sharedLoops() > 0, workers > 1);
+            const std::vector<std::uint64_t> bits = testing::stateBits(*world);
+            if (reference.empty())
+                reference = bits;
+            else
+                QVERIFY2(bits == reference,
+                         qPrintable(QStringLiteral("%1 workers: another state").arg(workers)));
+        }
     }
 };
 

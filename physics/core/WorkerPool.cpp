@@ -1,0 +1,155 @@
+#include "physics/core/WorkerPool.h"
+
+#include <chrono>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
+namespace phasebox {
+
+namespace {
+
+// Set on a helper for its lifetime and on the calling thread while it runs a loop: a loop
+// started there runs serially (nesting would wait on the helpers that run it).
+thread_local bool tInsideLoop = false;
+
+// How long a helper keeps looking for the next loop before it sleeps: the step's loops follow
+// one another within microseconds, a frame's next step comes milliseconds later.
+constexpr auto kSpin = std::chrono::microseconds(50);
+
+void relax() {
+#if defined(__x86_64__) || defined(__i386__)
+    _mm_pause();
+#else
+    std::this_thread::yield();
+#endif
+}
+
+struct InsideLoop {
+    InsideLoop() { tInsideLoop = true; }
+    ~InsideLoop() { tInsideLoop = false; }
+};
+
+}  // namespace
+
+WorkerPool::WorkerPool(int workers) {
+    setWorkers(workers);
+}
+
+WorkerPool::~WorkerPool() {
+    stop();
+}
+
+int WorkerPool::allCores() {
+    const unsigned n = std::thread::hardware_concurrency();
+    return n == 0 ? 1 : static_cast<int>(n);
+}
+
+void WorkerPool::setWorkers(int workers) {
+    const int n = workers <= 0 ? allCores() : workers;
+    if (n == workers_ && (n == 1 || !helpers_.empty())) return;
+    stop();
+    workers_ = n;
+}
+
+bool WorkerPool::insideLoop() {
+    return tInsideLoop;
+}
+
+void WorkerPool::start() {
+    stopping_.store(false);
+    helpers_.reserve(static_cast<std::size_t>(workers_ - 1));
+    for (int w = 1; w < workers_; ++w) helpers_.emplace_back([this, w] { helperLoop(w); });
+}
+
+void WorkerPool::stop() {
+    if (helpers_.empty()) return;
+    stopping_.store(true, std::memory_order_seq_cst);
+    wake_.fetch_add(1, std::memory_order_seq_cst);
+    wake_.notify_all();
+    for (std::thread& t : helpers_) t.join();
+    helpers_.clear();
+    stopping_.store(false);
+}
+
+void WorkerPool::runChunk(int chunk, int worker) {
+    const int begin = chunk * grain_;
+    const int end = begin + grain_ < count_ ? begin + grain_ : count_;
+    try {
+        chunkFn_(body_, begin, end, worker);
+    } catch (...) {
+        const std::lock_guard<std::mutex> lock(failureMutex_);
+        if (failedChunk_ < 0 || chunk < failedChunk_) {
+            failedChunk_ = chunk;
+            failure_ = std::current_exception();
+        }
+    }
+}
+
+void WorkerPool::drain(int worker) {
+    for (;;) {
+        const std::uint64_t ticket = ticket_.fetch_add(1, std::memory_order_acq_rel);
+        const auto chunks = static_cast<std::uint32_t>(ticket >> 32);
+        const auto chunk = static_cast<std::uint32_t>(ticket);
+        if (chunk >= chunks) return;
+        runChunk(static_cast<int>(chunk), worker);
+        done_.fetch_add(1, std::memory_order_release);
+    }
+}
+
+void WorkerPool::run(int count, int grain, int chunks, ChunkFn chunkFn, void* body) {
+    if (helpers_.empty()) start();
+    ++sharedLoops_;
+    chunkFn_ = chunkFn;
+    body_ = body;
+    count_ = count;
+    grain_ = grain;
+    failedChunk_ = -1;
+    failure_ = nullptr;
+    done_.store(0, std::memory_order_relaxed);
+    // Publishing the ticket releases the description above to whoever claims a chunk.
+    ticket_.store(static_cast<std::uint64_t>(chunks) << 32, std::memory_order_seq_cst);
+    wake_.fetch_add(1, std::memory_order_seq_cst);
+    if (sleepers_.load(std::memory_order_seq_cst) > 0) wake_.notify_all();
+    {
+        const InsideLoop inside;
+        drain(0);
+    }
+    // The helpers' last chunks.
+    for (int spins = 0; done_.load(std::memory_order_acquire) < chunks; ++spins) {
+        if (spins < 256)
+            relax();
+        else
+            std::this_thread::yield();
+    }
+    if (failure_) {
+        std::exception_ptr failure = failure_;
+        failure_ = nullptr;
+        std::rethrow_exception(failure);
+    }
+}
+
+void WorkerPool::helperLoop(int worker) {
+    tInsideLoop = true;
+    std::uint32_t seen = 0;
+    for (;;) {
+        // Until a new loop is announced: spin a while, then sleep.
+        const auto spinUntil = std::chrono::steady_clock::now() + kSpin;
+        std::uint32_t now = wake_.load(std::memory_order_acquire);
+        for (int spins = 0; now == seen; ++spins) {
+            relax();
+            if ((spins & 63) == 63 && std::chrono::steady_clock::now() > spinUntil) {
+                sleepers_.fetch_add(1, std::memory_order_seq_cst);
+                if (wake_.load(std::memory_order_seq_cst) == seen) wake_.wait(seen);
+                sleepers_.fetch_sub(1, std::memory_order_seq_cst);
+            }
+            now = wake_.load(std::memory_order_acquire);
+        }
+        seen = now;
+        if (stopping_.load(std::memory_order_acquire)) return;
+        drain(worker);
+    }
+}
+
+}  // namespace phasebox
