@@ -1,7 +1,7 @@
 // The contact forces held over the method's step (CONTRACT §3: contacts act inside it): each
 // point's force from the last solve, the bound that keeps impacts out, the forces as the world
 // adds them to every evaluation, and their share of the smooth step as the solver takes it.
-#include "physics/contacts/ContactSolver.h"
+#include "physics/contacts/ContactChunks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,22 +50,24 @@ void ContactSolver::refreshHeld() {
     // within the step, so it is left to the solve after it, as an impact is.
     if (!(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) return;
     const double perSubstep = 1.0 / lastInnerH_, perStep = 1.0 / lastStepH_;
-    for (std::size_t i = 0; i < constraints_.size(); ++i) {
-        ContactConstraint& c = constraints_[i];
-        const bool held =
-            !(c.bodyA >= 0 && c.bodyB >= 0 && bodies_[c.bodyA].jointed && bodies_[c.bodyB].jointed);
-        for (int k = 0; k < c.pointCount; ++k) {
-            ContactPoint& p = c.points[k];
-            p.heldNormal = p.heldTangent = 0.0;
-            // Where the solver's path has left it (separation_ is of these rows).
-            if (!held || separation_[2 * i + k] < -c.deepOverlap) continue;
-            const Vec2 force = forceOf(p, perSubstep, perStep);
-            p.heldNormal = std::clamp(force.x(), 0.0, std::max(double(p.lastNormal), 0.0));
-            if (force.y() * p.lastTangent > 0.0)
-                p.heldTangent = std::copysign(
-                    std::min(std::abs(force.y()), std::abs(double(p.lastTangent))), force.y());
+    forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            ContactConstraint& c = constraints_[i];
+            const bool held = !(c.bodyA >= 0 && c.bodyB >= 0 && bodies_[c.bodyA].jointed &&
+                                bodies_[c.bodyB].jointed);
+            for (int k = 0; k < c.pointCount; ++k) {
+                ContactPoint& p = c.points[k];
+                p.heldNormal = p.heldTangent = 0.0;
+                // Where the solver's path has left it (separation_ is of these rows).
+                if (!held || separation_[2 * i + k] < -c.deepOverlap) continue;
+                const Vec2 force = forceOf(p, perSubstep, perStep);
+                p.heldNormal = std::clamp(force.x(), 0.0, std::max(double(p.lastNormal), 0.0));
+                if (force.y() * p.lastTangent > 0.0)
+                    p.heldTangent = std::copysign(
+                        std::min(std::abs(force.y()), std::abs(double(p.lastTangent))), force.y());
+            }
         }
-    }
+    });
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "physics/contacts/ContactSolver.h"
 
+#include "physics/contacts/ContactChunks.h"
 #include "physics/contacts/ContactImpulse.h"
 
 #include <algorithm>
@@ -13,12 +14,6 @@
 namespace phasebox {
 
 using namespace contact_impulse;
-
-template <class F>
-void ContactSolver::forChunks(std::size_t count, std::size_t grain, const F& fn) {
-    (void)grain;
-    if (count > 0) fn(std::size_t{0}, count);
-}
 
 namespace {
 using WideRow = ContactSolver::WideRow;
@@ -92,36 +87,44 @@ void ContactSolver::prepare() {
     for (const ContactConstraint& c : constraints_) {
         if (c.bodyA >= 0) ++bodies_[c.bodyA].contactCount;
         if (c.bodyB >= 0) ++bodies_[c.bodyB].contactCount;
-    }
-    for (ContactConstraint& c : constraints_) {
-        const SolverBody* a = c.bodyA >= 0 ? &bodies_[c.bodyA] : nullptr;
-        const SolverBody* b = c.bodyB >= 0 ? &bodies_[c.bodyB] : nullptr;
-        const double mA = a ? a->invMass : 0.0, iA = a ? a->invInertia : 0.0;
-        const double mB = b ? b->invMass : 0.0, iB = b ? b->invInertia : 0.0;
-        // A contact's stiffness follows the heavier of its bodies: the spring that holds a heavy
-        // box on a light one must be as stiff as for the heavy box, or the light one is
-        // squashed in (its effective mass sets the soft constraint's spring). Contacts with the
-        // static world are twice as stiff (Box2D v3): they carry whole stacks.
-        if (a && b) {
-            const double heavy = std::max(1.0 / a->invMass, 1.0 / b->invMass);
-            const double light = std::min(1.0 / a->invMass, 1.0 / b->invMass);
-            c.stiffness = std::sqrt(heavy / light);
+        if (c.bodyA >= 0 && c.bodyB >= 0) {
+            const double mA = bodies_[c.bodyA].invMass, mB = bodies_[c.bodyB].invMass;
+            const double heavy = std::max(1.0 / mA, 1.0 / mB);
+            const double light = std::min(1.0 / mA, 1.0 / mB);
             largestMassRatio_ = std::max(largestMassRatio_, heavy / light);
-        } else {
-            c.stiffness = 2.0;
-        }
-        c.stiffness *= sizeStiffness(c.deepOverlap);
-        const Vec2 t = tangentOf(c.normal);
-        for (int k = 0; k < c.pointCount; ++k) {
-            ContactPoint& p = c.points[k];
-            const double rnA = cross(p.anchorA, c.normal), rnB = cross(p.anchorB, c.normal);
-            const double kn = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-            p.normalMass = kn > 0.0 ? 1.0 / kn : 0.0;
-            const double rtA = cross(p.anchorA, t), rtB = cross(p.anchorB, t);
-            const double kt = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
-            p.tangentMass = kt > 0.0 ? 1.0 / kt : 0.0;
         }
     }
+    forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            ContactConstraint& c = constraints_[i];
+            const SolverBody* a = c.bodyA >= 0 ? &bodies_[c.bodyA] : nullptr;
+            const SolverBody* b = c.bodyB >= 0 ? &bodies_[c.bodyB] : nullptr;
+            const double mA = a ? a->invMass : 0.0, iA = a ? a->invInertia : 0.0;
+            const double mB = b ? b->invMass : 0.0, iB = b ? b->invInertia : 0.0;
+            // A contact's stiffness follows the heavier of its bodies: the spring that holds a
+            // heavy box on a light one must be as stiff as for the heavy box, or the light one is
+            // squashed in (its effective mass sets the soft constraint's spring). Contacts with the
+            // static world are twice as stiff (Box2D v3): they carry whole stacks.
+            if (a && b) {
+                const double heavy = std::max(1.0 / a->invMass, 1.0 / b->invMass);
+                const double light = std::min(1.0 / a->invMass, 1.0 / b->invMass);
+                c.stiffness = std::sqrt(heavy / light);
+            } else {
+                c.stiffness = 2.0;
+            }
+            c.stiffness *= sizeStiffness(c.deepOverlap);
+            const Vec2 t = tangentOf(c.normal);
+            for (int k = 0; k < c.pointCount; ++k) {
+                ContactPoint& p = c.points[k];
+                const double rnA = cross(p.anchorA, c.normal), rnB = cross(p.anchorB, c.normal);
+                const double kn = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+                p.normalMass = kn > 0.0 ? 1.0 / kn : 0.0;
+                const double rtA = cross(p.anchorA, t), rtB = cross(p.anchorB, t);
+                const double kt = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
+                p.tangentMass = kt > 0.0 ? 1.0 / kt : 0.0;
+            }
+        }
+    });
 }
 
 void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
@@ -131,20 +134,22 @@ void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
     deepShift_.resize(count + 1);  // sized here: a first deep overlap must not allocate
     state_[count] = {0.0, 0.0, 0.0, 0.0, 0.0};  // the static world
     motion_[count] = {0.0, 0.0, 1.0, 0.0};
-    for (std::size_t i = 0; i < count; ++i) {
-        SolverBody& b = bodies_[i];
-        b.v0 = u0.segment<2>(b.dof);
-        b.smoothDv = u.segment<2>(b.dof) - b.v0;
-        b.startOffset = q0.segment<2>(b.dof) - b.collidePosition;
-        b.shift = b.path = b.timeShift = b.pushOut = b.bounceDv = Vec2::Zero();
-        b.angleShift = b.anglePath = b.angleTimeShift = b.pushOutAngle = b.bounceDw = 0.0;
-        if (b.rotates) {
-            b.w0 = u0[b.dof + 2];
-            b.smoothDw = u[b.dof + 2] - b.w0;
-            b.startAngle = q0[b.dof + 2] - b.collideAngle;
+    forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            SolverBody& b = bodies_[i];
+            b.v0 = u0.segment<2>(b.dof);
+            b.smoothDv = u.segment<2>(b.dof) - b.v0;
+            b.startOffset = q0.segment<2>(b.dof) - b.collidePosition;
+            b.shift = b.path = b.timeShift = b.pushOut = b.bounceDv = Vec2::Zero();
+            b.angleShift = b.anglePath = b.angleTimeShift = b.pushOutAngle = b.bounceDw = 0.0;
+            if (b.rotates) {
+                b.w0 = u0[b.dof + 2];
+                b.smoothDw = u[b.dof + 2] - b.w0;
+                b.startAngle = q0[b.dof + 2] - b.collideAngle;
+            }
+            state_[i] = {b.v0.x(), b.v0.y(), b.w0, b.invMass, b.invInertia};
         }
-        state_[i] = {b.v0.x(), b.v0.y(), b.w0, b.invMass, b.invInertia};
-    }
+    });
 }
 
 double ContactSolver::smoothNormalChange(const Row& c, const RowPoint& p) const {
@@ -183,6 +188,69 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     colourWide_.reserve(kColours + 1);
 }
 
+void ContactSolver::buildRow(std::size_t i, double hertz, double zeta, double h, double warmScale) {
+    const int world = static_cast<int>(bodies_.size());
+    const ContactConstraint& c = constraints_[i];
+    Row& row = rows_[i];
+    RowSetup& setup = setup_[i];
+    row.a = c.bodyA >= 0 ? c.bodyA : world;
+    row.b = c.bodyB >= 0 ? c.bodyB : world;
+    row.pointCount = c.pointCount;
+    row.nx = c.normal.x();
+    row.ny = c.normal.y();
+    row.friction = c.friction;
+    const Softness soft = makeSoft(c.stiffness * hertz, zeta, h);
+    setup.deepOverlap = c.deepOverlap;
+    // The push-out speed is a body's, shared among its contacts: in a pile each contact's
+    // push adds up along chains of bodies (200 boxes started at one point left at 20 m/s
+    // with a whole 3 m/s per contact, 13 m/s shared).
+    setup.pushOutShare = 1.0 / std::max({1, c.bodyA >= 0 ? bodies_[c.bodyA].contactCount : 1,
+                                         c.bodyB >= 0 ? bodies_[c.bodyB].contactCount : 1});
+    setup.biasRate = soft.biasRate;
+    setup.massScale = soft.massScale;
+    setup.impulseScale = soft.impulseScale;
+    for (int k = 0; k < 2; ++k) {
+        RowPoint& r = row.p[k];
+        if (k >= c.pointCount) {
+            r = RowPoint{};
+            setup.normalMass[k] = setup.compliance[k] = 0.0;
+            separation_[2 * i + k] = 0.0;
+            continue;
+        }
+        const ContactPoint& p = c.points[k];
+        r.rAx = p.anchorA.x();
+        r.rAy = p.anchorA.y();
+        r.rBx = p.anchorB.x();
+        r.rBy = p.anchorB.y();
+        separation_[2 * i + k] = r.baseSeparation = p.baseSeparation;
+        setup.normalMass[k] = p.normalMass;
+        r.tangentMass = p.tangentMass;
+        // Converged, the soft update −m·s·(v_n + b) − r·λ = 0 is v_n + b + (r/(s·m))·λ = 0.
+        setup.compliance[k] = soft.impulseScale / (soft.massScale * p.normalMass);
+        r.normalImpulse = warmScale * p.normalImpulse;
+        r.tangentImpulse = warmScale * p.tangentImpulse;
+        const Vec2 held = holding_ ? Vec2(h * Vec2(p.heldNormal, p.heldTangent)) : Vec2::Zero();
+        r.heldNormal = held.x();
+        r.heldTangent = held.y();
+    }
+    setup.blockable = false;
+    row.k11 = row.k12 = row.k22 = 0.0;
+    if (c.pointCount == 2) {
+        const Vec2& n = c.normal;
+        const BodyState& a = state_[row.a];
+        const BodyState& b = state_[row.b];
+        const double mA = a.invMass, iA = a.invInertia;
+        const double mB = b.invMass, iB = b.invInertia;
+        const double rn1A = cross(c.points[0].anchorA, n), rn1B = cross(c.points[0].anchorB, n);
+        const double rn2A = cross(c.points[1].anchorA, n), rn2B = cross(c.points[1].anchorB, n);
+        row.k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+        row.k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+        row.k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+        // Nearly coincident points make K singular: the sequential solve handles them.
+        setup.blockable = !(row.k11 * row.k11 >= 1000.0 * (row.k11 * row.k22 - row.k12 * row.k12));
+    }
+}
+
 void ContactSolver::buildRows(double hertz, double zeta, double h, double warmScale) {
     impulsesToPack_ = true;  // the warm start's impulses, into the new lanes
     // What does not change within the step, once: the rows' masses, the block's K and its
@@ -192,67 +260,13 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
     setup_.resize(constraints_.size());
     separation_.resize(2 * constraints_.size());
     bouncing_.clear();
+    forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) buildRow(i, hertz, zeta, h, warmScale);
+    });
+    // The rows with restitution, in order (after every row is built).
     for (std::size_t i = 0; i < constraints_.size(); ++i) {
         const ContactConstraint& c = constraints_[i];
-        Row& row = rows_[i];
-        RowSetup& setup = setup_[i];
-        row.a = c.bodyA >= 0 ? c.bodyA : world;
-        row.b = c.bodyB >= 0 ? c.bodyB : world;
-        row.pointCount = c.pointCount;
-        row.nx = c.normal.x();
-        row.ny = c.normal.y();
-        row.friction = c.friction;
-        const Softness soft = makeSoft(c.stiffness * hertz, zeta, h);
-        setup.deepOverlap = c.deepOverlap;
-        // The push-out speed is a body's, shared among its contacts: in a pile each contact's
-        // push adds up along chains of bodies (200 boxes started at one point left at 20 m/s
-        // with a whole 3 m/s per contact, 13 m/s shared).
-        setup.pushOutShare = 1.0 / std::max({1, c.bodyA >= 0 ? bodies_[c.bodyA].contactCount : 1,
-                                             c.bodyB >= 0 ? bodies_[c.bodyB].contactCount : 1});
-        setup.biasRate = soft.biasRate;
-        setup.massScale = soft.massScale;
-        setup.impulseScale = soft.impulseScale;
-        for (int k = 0; k < 2; ++k) {
-            RowPoint& r = row.p[k];
-            if (k >= c.pointCount) {
-                r = RowPoint{};
-                setup.normalMass[k] = setup.compliance[k] = 0.0;
-                separation_[2 * i + k] = 0.0;
-                continue;
-            }
-            const ContactPoint& p = c.points[k];
-            r.rAx = p.anchorA.x();
-            r.rAy = p.anchorA.y();
-            r.rBx = p.anchorB.x();
-            r.rBy = p.anchorB.y();
-            separation_[2 * i + k] = r.baseSeparation = p.baseSeparation;
-            setup.normalMass[k] = p.normalMass;
-            r.tangentMass = p.tangentMass;
-            // Converged, the soft update −m·s·(v_n + b) − r·λ = 0 is v_n + b + (r/(s·m))·λ = 0.
-            setup.compliance[k] = soft.impulseScale / (soft.massScale * p.normalMass);
-            r.normalImpulse = warmScale * p.normalImpulse;
-            r.tangentImpulse = warmScale * p.tangentImpulse;
-            const Vec2 held = holding_ ? Vec2(h * Vec2(p.heldNormal, p.heldTangent)) : Vec2::Zero();
-            r.heldNormal = held.x();
-            r.heldTangent = held.y();
-        }
-        setup.blockable = false;
-        row.k11 = row.k12 = row.k22 = 0.0;
-        if (c.pointCount == 2) {
-            const Vec2& n = c.normal;
-            const BodyState& a = state_[row.a];
-            const BodyState& b = state_[row.b];
-            const double mA = a.invMass, iA = a.invInertia;
-            const double mB = b.invMass, iB = b.invInertia;
-            const double rn1A = cross(c.points[0].anchorA, n), rn1B = cross(c.points[0].anchorB, n);
-            const double rn2A = cross(c.points[1].anchorA, n), rn2B = cross(c.points[1].anchorB, n);
-            row.k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
-            row.k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
-            row.k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
-            // Nearly coincident points make K singular: the sequential solve handles them.
-            setup.blockable =
-                !(row.k11 * row.k11 >= 1000.0 * (row.k11 * row.k22 - row.k12 * row.k12));
-        }
+        const Row& row = rows_[i];
         if (c.restitution != 0.0) {
             BounceRow& bounce = bouncing_.emplace_back();  // no allocation once warm
             bounce.row = static_cast<int>(i);
@@ -518,13 +532,17 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     // (its own held force, read below, is already set).
     const double perSubstep = lengthsKnown ? 1.0 / lastInnerH_ : 0.0;
     const double perStep = lengthsKnown ? 1.0 / lastStepH_ : 0.0;
-    for (ContactConstraint& c : constraints_)
-        for (int k = 0; k < c.pointCount; ++k) {
-            ContactPoint& p = c.points[k];
-            const Vec2 force = forceOf(p, perSubstep, perStep);
-            p.lastNormal = static_cast<float>(force.x());
-            p.lastTangent = static_cast<float>(force.y());
+    forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            ContactConstraint& c = constraints_[i];
+            for (int k = 0; k < c.pointCount; ++k) {
+                ContactPoint& p = c.points[k];
+                const Vec2 force = forceOf(p, perSubstep, perStep);
+                p.lastNormal = static_cast<float>(force.x());
+                p.lastTangent = static_cast<float>(force.y());
+            }
         }
+    });
     loadBodies(q0, u0, u);
     holdBodies(h);
     const int base = innerSubsteps(h, settings);
@@ -653,17 +671,19 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
 }
 
 void ContactSolver::storeImpulses(bool solved) {
-    for (std::size_t i = 0; i < constraints_.size(); ++i) {
-        ContactConstraint& c = constraints_[i];
-        for (int k = 0; k < c.pointCount; ++k) {
-            ContactPoint& p = c.points[k];
-            p.normalImpulse = rows_[i].p[k].normalImpulse;
-            p.tangentImpulse = rows_[i].p[k].tangentImpulse;
-            if (!solved) continue;
-            p.solvedNormal = p.normalImpulse;
-            p.solvedTangent = p.tangentImpulse;
+    forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            ContactConstraint& c = constraints_[i];
+            for (int k = 0; k < c.pointCount; ++k) {
+                ContactPoint& p = c.points[k];
+                p.normalImpulse = rows_[i].p[k].normalImpulse;
+                p.tangentImpulse = rows_[i].p[k].tangentImpulse;
+                if (!solved) continue;
+                p.solvedNormal = p.normalImpulse;
+                p.solvedTangent = p.tangentImpulse;
+            }
         }
-    }
+    });
 }
 
 void ContactSolver::packPhase(std::size_t i) {

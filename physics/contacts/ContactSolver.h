@@ -32,6 +32,8 @@
 
 namespace phasebox {
 
+class WorkerPool;
+
 struct ContactSettings {
     int substeps = 0;         // inner sub-steps per step; 0 = the solver's choice (deep
                               // stacks get more: ContactSolver::stackSubsteps)
@@ -136,6 +138,9 @@ public:
     // Room for bodies and contact constraints up front, so that a scene's first steps do not
     // grow the buffers one doubling at a time (ContactStage::bind).
     void reserve(std::size_t bodies, std::size_t constraints);
+    // The threads the solver's passes share (null: the calling thread alone); the results are
+    // bit-identical either way (forChunks()).
+    void setPool(WorkerPool* pool) { pool_ = pool; }
     std::vector<SolverBody>& bodies() { return bodies_; }
     const std::vector<SolverBody>& bodies() const { return bodies_; }
     std::vector<ContactConstraint>& constraints() { return constraints_; }
@@ -283,6 +288,7 @@ private:
     static constexpr std::size_t kWideGrain = 64;
     template <class F>
     void forChunks(std::size_t count, std::size_t grain, const F& fn);
+    WorkerPool* pool_ = nullptr;
 
     void loadBodies(const Vec& q0, const Vec& u0, const Vec& u);
     bool holding_ = false;  // this solveStep's holding
@@ -290,6 +296,7 @@ private:
     // would sag further than kSagTarget at the base stiffness (after loadBodies).
     int stackSubsteps(double h, int base, const ContactSettings& settings);
     void buildRows(double hertz, double zeta, double h, double warmScale);
+    void buildRow(std::size_t i, double hertz, double zeta, double h, double warmScale);
     void warmStart();
     // Restitution in an inner sub-step of h, one of `substeps` of the step.
     bool bounce(double h, int substeps, const ContactSettings& settings);

@@ -43,7 +43,10 @@ public:
     // result is bit-identical with or without it: each pair's manifold is found into its own
     // slot and the contacts are then made from the slots in pair order. The solver reaches the
     // same pool through pool().
-    void setPool(WorkerPool* pool) { pool_ = pool; }
+    void setPool(WorkerPool* pool) {
+        pool_ = pool;
+        solver_.setPool(pool);
+    }
     WorkerPool* pool() const { return pool_; }
 
     // Rebuilds the collider list after the world's objects changed.
