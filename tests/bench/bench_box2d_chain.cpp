@@ -182,7 +182,10 @@ private:
 struct PhaseboxEngine {
     std::unique_ptr<World> w;
     long long failedSteps = 0;
-    explicit PhaseboxEngine(const SceneDesc& scene) : w(buildWorld(scene).world) {}
+    // One worker: the ratios to Box2D are of one thread each.
+    explicit PhaseboxEngine(const SceneDesc& scene) : w(buildWorld(scene).world) {
+        w->setWorkers(1);
+    }
     void step() {
         if (!w->step()) ++failedSteps;
     }

@@ -216,7 +216,10 @@ Standing standFor10s(Engine& engine, const Pose& setup, double dt, long long& fa
 // Uniform handles on the two engines, for the loops above and the timing below.
 struct PhaseboxEngine {
     std::unique_ptr<World> w;
-    explicit PhaseboxEngine(const SceneDesc& scene) : w(buildWorld(scene).world) {}
+    // One worker unless told (the ratios to Box2D are of one thread each).
+    explicit PhaseboxEngine(const SceneDesc& scene, int workers = 1) : w(buildWorld(scene).world) {
+        w->setWorkers(workers);
+    }
     bool step() { return w->step(); }
     const World& world() const { return *w; }
 };
@@ -233,15 +236,19 @@ struct Box2dEngine {
 
 // ---- measuring ----------------------------------------------------------------------------
 
-enum Candidate { kPhasebox, kBox2d, kBox2d24, kBox2dSleeping, kCandidates };
+enum Candidate { kPhasebox, kBox2d, kBox2d24, kBox2dSleeping, kPhaseboxTwo, kCandidates };
 constexpr const char* kCandidateLabel[kCandidates] = {
-    "Phasebox (format defaults, 1 step)",
+    "Phasebox (format defaults, 1 worker)",
     "Box2D 2.4.1, 8 vel + 3 pos it, no sleeping",
     "Box2D 2.4.1, 24 vel + 3 pos it, no sleeping",
     "Box2D 2.4.1, 8 + 3, sleeping on (its default)",
+    "Phasebox, 2 workers",
 };
 constexpr const char* kCandidateKey[kCandidates] = {"phasebox", "box2d", "box2d_24_iterations",
-                                                    "box2d_sleeping"};
+                                                    "box2d_sleeping", "phasebox_2_workers"};
+bool isPhasebox(int c) {
+    return c == kPhasebox || c == kPhaseboxTwo;
+}
 
 struct Timing {
     double msPerStep = 0.0;  // median over repeats
@@ -287,12 +294,15 @@ PyramidResult measure(int rows, int steps, int repeat) {
     }
 
     PhaseboxEngine phasebox(scene);
+    PhaseboxEngine phaseboxTwo(scene, 2);
+    PhaseboxEngine* phaseboxes[kCandidates] = {&phasebox, nullptr, nullptr, nullptr, &phaseboxTwo};
     Box2dEngine box2d(scene, {false, 8, 3});
     Box2dEngine box2d24(scene, {false, 24, 3});
     Box2dEngine box2dSleeping(scene, {true, 8, 3});
-    Box2dEngine* box2ds[kCandidates] = {nullptr, &box2d, &box2d24, &box2dSleeping};
+    Box2dEngine* box2ds[kCandidates] = {nullptr, &box2d, &box2d24, &box2dSleeping, nullptr};
     for (int k = 0; k < kWarmup; ++k) {
         if (!phasebox.step()) ++result.failedSteps;
+        phaseboxTwo.step();
         for (Box2dEngine* b : box2ds)
             if (b) b->step();
     }
@@ -302,12 +312,12 @@ PyramidResult measure(int rows, int steps, int repeat) {
         for (int c = 0; c < kCandidates; ++c) {
             Timing& t = result.timing[c];
             double b2Collide = 0.0, b2Solve = 0.0, b2Broadphase = 0.0, b2Toi = 0.0;
-            if (c == kPhasebox) phasebox.w->resetProfile();
+            if (isPhasebox(c)) phaseboxes[c]->w->resetProfile();
             startCountingAllocations();
             const auto start = Clock::now();
-            if (c == kPhasebox) {
+            if (isPhasebox(c)) {
                 for (int s = 0; s < steps; ++s)
-                    if (!phasebox.step()) ++result.failedSteps;
+                    if (!phaseboxes[c]->step()) ++result.failedSteps;
             } else {
                 for (int s = 0; s < steps; ++s) {
                     box2ds[c]->step();
@@ -343,7 +353,10 @@ PyramidResult measure(int rows, int steps, int repeat) {
     b.solveMs = median(solve);
     b.broadphaseMs = median(broadphase);
     b.toiMs = median(toi);
-    for (int c = kBox2d; c < kCandidates; ++c) {
+    Timing& two = result.timing[kPhaseboxTwo];
+    two.pairs = static_cast<long long>(phaseboxTwo.w->contacts()->contacts().size());
+    two.points = phaseboxTwo.w->contacts()->pointCount();
+    for (int c = kBox2d; c <= kBox2dSleeping; ++c) {
         box2ds[c]->w.contactCounts(result.timing[c].pairs, result.timing[c].points);
         result.timing[c].awake = box2ds[c]->w.awakeCount();
     }
@@ -381,6 +394,8 @@ void printTable(std::FILE* out, const std::vector<PyramidResult>& results, int s
                      p.msPerStep / r.timing[kBox2d24].msPerStep);
         std::fprintf(out, "  ratio Phasebox / Box2D (sleeping on)         %10.2fx\n",
                      p.msPerStep / r.timing[kBox2dSleeping].msPerStep);
+        std::fprintf(out, "  ratio Phasebox 2 workers / 1 worker          %10.2fx\n",
+                     r.timing[kPhaseboxTwo].msPerStep / p.msPerStep);
         std::fprintf(out,
                      "\n  after %.0f s from rest, metres (radians for tilt)%9s%10s%10s%10s%10s\n",
                      kStandSeconds, "|dp|max", "|dx|max", "lean", "tilt", "top dy");
@@ -429,7 +444,7 @@ std::string toJson(const std::vector<PyramidResult>& results, int steps, int rep
                 json.value("broadphase_ms", t.broadphaseMs);
                 json.value("toi_ms", t.toiMs);
             }
-            if (c != kPhasebox) json.value("awake_bodies", t.awake);
+            if (!isPhasebox(c)) json.value("awake_bodies", t.awake);
             json.endObject();
         }
         json.value("ratio_phasebox_box2d",
@@ -438,6 +453,8 @@ std::string toJson(const std::vector<PyramidResult>& results, int steps, int rep
                    r.timing[kPhasebox].msPerStep / r.timing[kBox2d24].msPerStep);
         json.value("ratio_phasebox_box2d_sleeping",
                    r.timing[kPhasebox].msPerStep / r.timing[kBox2dSleeping].msPerStep);
+        json.value("ratio_phasebox_2_workers_1_worker",
+                   r.timing[kPhaseboxTwo].msPerStep / r.timing[kPhasebox].msPerStep);
         const char* keys[3] = {"stand_phasebox", "stand_box2d", "stand_box2d_sleeping"};
         for (int k = 0; k < 3; ++k) {
             const Standing& s = r.stand[k];

@@ -90,6 +90,7 @@ PileResult measurePile(int count, int steps) {
     r.rssBeforeKb = statusKilobytes("VmHWM");
     BuildResult built = buildWorld(pileAtPoint(count));
     World& world = *built.world;
+    world.setWorkers(1);  // one thread (bench_threads measures the shared step)
     const auto start = Clock::now();
     for (int s = 0; s < steps; ++s) {
         world.step();
@@ -105,6 +106,7 @@ PileResult measurePile(int count, int steps) {
 double msPerStep(const SceneDesc& scene, int steps, int repeat) {
     BuildResult built = buildWorld(scene);
     World& world = *built.world;
+    world.setWorkers(1);
     for (int s = 0; s < 3; ++s) world.step();  // buffers grown, the sweep order settled
     std::vector<double> perStep;
     for (int r = 0; r < repeat; ++r) {
