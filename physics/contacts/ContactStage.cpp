@@ -321,7 +321,7 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
         }
     });
     broadPhase_.findPairs(bounds_, pairs_,
-                          {&pairLimited_, &pairSize_, kOverlappingPairCap, kNearPairCap});
+                          {&pairLimited_, &pairSize_, kOverlappingPairCap, kNearPairCap}, pool_);
 }
 
 bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin, Manifold& m,
