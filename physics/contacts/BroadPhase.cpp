@@ -1,5 +1,7 @@
 #include "physics/contacts/BroadPhase.h"
 
+#include "physics/core/WorkerPool.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -14,6 +16,14 @@ constexpr double kAxisSwitchRatio = 1.5;
 // Insertion sort moves each box past the boxes it overtook since the last call. Beyond this
 // many moves per box on average the order is scrambled and a full sort is cheaper.
 constexpr long long kRepairMovesPerBox = 8;
+
+// Positions of the order a chunk of the shared sweep takes (a box visits a few to a few hundred
+// others along the axis), and the overlaps per box a chunk keeps before it is swept again with
+// the caps applied as it goes (a box in a stack or a resting pile has at most a dozen).
+constexpr int kSweepGrain = 128;
+constexpr int kKeptPerBox = 24;
+// Fewer boxes are swept on the calling thread: their sweep costs about what handing it out does.
+constexpr int kSharedSweepBoxes = 512;
 
 }  // namespace
 
@@ -49,7 +59,7 @@ void BroadPhase::sortOrder(const std::vector<Aabb>& boxes, bool fresh) {
 }
 
 void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs,
-                           const PairCap& cap) {
+                           const PairCap& cap, WorkerPool* pool) {
     pairs.clear();
     candidatesVisited_ = 0;
     const int count = static_cast<int>(boxes.size());
@@ -78,7 +88,6 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
         pairCount_.assign(boxes.size(), 0);
         nearCount_.assign(boxes.size(), 0);
     }
-    const int axis = axis_, cross = 1 - axis_;
     // The positions in the order of the boxes that are not kApart: a kApart box (a particle
     // when particles do not collide) looks only at those, so that many particles piled at one
     // point beside a single rigid body cost a linear sweep, not a visit of every pair.
@@ -86,7 +95,6 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
     if (capped)
         for (int k = 0; k < count; ++k)
             if ((*cap.limited)[order_[k]] != PairCap::kApart) otherAt_.push_back(k);
-    std::size_t nextOther = 0;  // the first entry of otherAt_ after the current position
     // Whether a pair of limited box i and box j is kept (and counted against their caps).
     const auto admit = [&](int i, int j, const Aabb& box, const Aabb& o) {
         const unsigned char kindJ = (*cap.limited)[j];
@@ -111,42 +119,90 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
         return true;
     };
 
-    // The boxes that overlap box i along the axis and start no earlier than it are those that
-    // follow it in the order up to the first one starting beyond its upper bound; the other
-    // axis decides.
-    for (int k = 0; k < count; ++k) {
-        const int i = order_[k];
-        const Aabb& box = boxes[i];
-        const double upper = box.upper[axis];
+    const auto keep = [&](int i, int j) {
         const unsigned char kindI = capped ? (*cap.limited)[i] : PairCap::kFree;
-        const bool limitedI = kindI != PairCap::kFree;
-        while (nextOther < otherAt_.size() && otherAt_[nextOther] <= k) ++nextOther;
-        if (kindI == PairCap::kApart) {
-            std::size_t m = nextOther;
-            for (; m < otherAt_.size(); ++m) {
-                const int j = order_[otherAt_[m]];
-                const Aabb& o = boxes[j];
-                if (o.lower[axis] > upper) break;
-                if (o.lower[cross] > box.upper[cross] || box.lower[cross] > o.upper[cross])
-                    continue;
-                if (!admit(i, j, box, o)) continue;
-                pairs.emplace_back(std::min(i, j), std::max(i, j));
+        if (kindI != PairCap::kFree && !admit(i, j, boxes[i], boxes[j])) return;
+        pairs.emplace_back(std::min(i, j), std::max(i, j));
+    };
+    const auto firstOtherAfter = [&](int k) {
+        return static_cast<std::size_t>(std::upper_bound(otherAt_.begin(), otherAt_.end(), k) -
+                                        otherAt_.begin());
+    };
+    // The sweep in chunks of the order, each into its own buffer (shared among the pool's
+    // workers); the caps then take the overlaps in the order of the sweep.
+    const int chunkCount = WorkerPool::chunkCount(count, kSweepGrain);
+    if (chunks_.size() < static_cast<std::size_t>(chunkCount)) chunks_.resize(chunkCount);
+    const auto sweepChunks = [&](int beginChunk, int endChunk, int) {
+        for (int c = beginChunk; c < endChunk; ++c) {
+            Chunk& chunk = chunks_[c];
+            chunk.found.clear();
+            chunk.visited = 0;
+            chunk.overflowed = false;
+            const int begin = c * kSweepGrain, end = std::min(count, begin + kSweepGrain);
+            const std::size_t most = static_cast<std::size_t>(kKeptPerBox) * (end - begin);
+            std::size_t nextOther = firstOtherAfter(begin);
+            for (int k = begin; k < end && !chunk.overflowed; ++k) {
+                while (nextOther < otherAt_.size() && otherAt_[nextOther] <= k) ++nextOther;
+                chunk.visited += sweepFrom(boxes, cap, k, nextOther, [&](int i, int j) {
+                    if (chunk.found.size() >= most) chunk.overflowed = true;
+                    if (!chunk.overflowed) chunk.found.emplace_back(i, j);
+                });
             }
-            candidatesVisited_ += static_cast<long long>(m - nextOther);
+        }
+    };
+    if (pool && count >= kSharedSweepBoxes)
+        pool->parallelFor(chunkCount, 1, sweepChunks);
+    else
+        sweepChunks(0, chunkCount, 0);
+    for (int c = 0; c < chunkCount; ++c) {
+        Chunk& chunk = chunks_[c];
+        if (!chunk.overflowed) {
+            for (const auto& [i, j] : chunk.found) keep(i, j);
+            candidatesVisited_ += chunk.visited;
             continue;
         }
-        int l = k + 1;
-        for (; l < count; ++l) {
-            const int j = order_[l];
-            const Aabb& o = boxes[j];
-            if (o.lower[axis] > upper) break;
-            if (o.lower[cross] > box.upper[cross] || box.lower[cross] > o.upper[cross]) continue;
-            if (limitedI && !admit(i, j, box, o)) continue;
-            pairs.emplace_back(std::min(i, j), std::max(i, j));
+        const int begin = c * kSweepGrain, end = std::min(count, begin + kSweepGrain);
+        std::size_t nextOther = firstOtherAfter(begin);
+        for (int k = begin; k < end; ++k) {
+            while (nextOther < otherAt_.size() && otherAt_[nextOther] <= k) ++nextOther;
+            candidatesVisited_ += sweepFrom(boxes, cap, k, nextOther, keep);
         }
-        candidatesVisited_ += l - (k + 1);
     }
     sortPairs(pairs, count);
+}
+
+template <class Emit>
+long long BroadPhase::sweepFrom(const std::vector<Aabb>& boxes, const PairCap& cap, int k,
+                                std::size_t nextOther, Emit&& emit) const {
+    // The boxes that overlap box i along the axis and start no earlier than it are those that
+    // follow it in the order up to the first one starting beyond its upper bound; the other
+    // axis decides. A kApart box looks only at the others (otherAt_).
+    const int axis = axis_, cross = 1 - axis_;
+    const int count = static_cast<int>(order_.size());
+    const int i = order_[k];
+    const Aabb& box = boxes[i];
+    const double upper = box.upper[axis];
+    const auto overlaps = [&](const Aabb& o) {
+        return !(o.lower[cross] > box.upper[cross] || box.lower[cross] > o.upper[cross]);
+    };
+    if (cap.limited != nullptr && (*cap.limited)[i] == PairCap::kApart) {
+        std::size_t m = nextOther;
+        for (; m < otherAt_.size(); ++m) {
+            const int j = order_[otherAt_[m]];
+            const Aabb& o = boxes[j];
+            if (o.lower[axis] > upper) break;
+            if (overlaps(o)) emit(i, j);
+        }
+        return static_cast<long long>(m - nextOther);
+    }
+    int l = k + 1;
+    for (; l < count; ++l) {
+        const int j = order_[l];
+        const Aabb& o = boxes[j];
+        if (o.lower[axis] > upper) break;
+        if (overlaps(o)) emit(i, j);
+    }
+    return l - (k + 1);
 }
 
 void BroadPhase::reserve(std::size_t boxes, std::size_t pairs) {

@@ -20,6 +20,8 @@
 
 namespace phasebox {
 
+class WorkerPool;
+
 // An optional bound on the pairs a box may take part in, for piles: a body in a pile needs a
 // handful of neighbours, not the thousands whose boxes overlap when many bodies share one
 // point. Only pairs of two limited boxes are capped. Pairs whose shapes overlap (centre
@@ -49,8 +51,11 @@ public:
     // result does not depend on the sweep's internal order. With a cap, a pair of two limited
     // boxes is left out when either box has already reached its cap in the sweep's order (which
     // is deterministic). Allocation-free once the buffers have grown to the scene's size.
+    // With a pool the sweep is shared: each chunk of the order finds its boxes' overlaps into a
+    // buffer of its own, and the caps are then applied to them in the order of the sweep, so the
+    // pairs are those of one thread, bit for bit.
     void findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair<int, int>>& pairs,
-                   const PairCap& cap = {});
+                   const PairCap& cap = {}, WorkerPool* pool = nullptr);
 
     // The sweep axis of the last call (0 = x, 1 = y) and how many candidate boxes it visited
     // along that axis (the sweep's work; equal to the pair count only when the other axis
@@ -61,6 +66,22 @@ public:
 private:
     void sortOrder(const std::vector<Aabb>& boxes, bool fresh);
     void sortPairs(std::vector<std::pair<int, int>>& pairs, int count);
+    // The overlaps of the box at position k of the order that follow it (the other axis
+    // tested), as emit(i, j); returns how many boxes it visited along the axis. nextOther: the
+    // first entry of otherAt_ after k.
+    template <class Emit>
+    long long sweepFrom(const std::vector<Aabb>& boxes, const PairCap& cap, int k,
+                        std::size_t nextOther, Emit&& emit) const;
+
+    // A chunk of the shared sweep: its overlaps in sweep order, unless there were more than
+    // it keeps (a pile at one point, where nearly all are then capped away): the chunk is swept
+    // again with the caps applied as it goes.
+    struct Chunk {
+        std::vector<std::pair<int, int>> found;
+        long long visited = 0;
+        bool overflowed = false;
+    };
+    std::vector<Chunk> chunks_;
 
     std::vector<int> order_;      // indices sorted by lower bound on axis_, kept between calls
     std::vector<int> pairCount_;  // per box: overlapping capped partners taken in this call

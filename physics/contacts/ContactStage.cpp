@@ -4,6 +4,7 @@
 #include "physics/core/WorkerPool.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -20,6 +21,31 @@ constexpr std::size_t kMostReservedContacts = 4096;
 // few hundred pairs stays on one thread.
 constexpr int kPairGrain = 128;
 constexpr int kColliderGrain = 512;
+
+bool holds(const ContactPoint& p) {
+    return p.heldNormal != 0.0 || p.heldTangent != 0.0;
+}
+
+// The impulses of the points of old that the points of c continue (same feature ids), and
+// how many of those held a force (World::releaseHeldForces).
+void carryImpulses(const ContactConstraint& old, ContactConstraint& c, std::size_t& heldCarried) {
+    for (int k = 0; k < c.pointCount; ++k)
+        for (int l = 0; l < old.pointCount; ++l)
+            if (c.points[k].id == old.points[l].id) {
+                const ContactPoint& o = old.points[l];
+                ContactPoint& p = c.points[k];
+                heldCarried += holds(o);
+                p.normalImpulse = o.normalImpulse;
+                p.tangentImpulse = o.tangentImpulse;
+                p.solvedNormal = o.solvedNormal;
+                p.solvedTangent = o.solvedTangent;
+                p.lastNormal = o.lastNormal;
+                p.lastTangent = o.lastTangent;
+                p.heldNormal = o.heldNormal;
+                p.heldTangent = o.heldTangent;
+            }
+}
+
 }  // namespace
 
 template <class Fn>
@@ -199,15 +225,13 @@ int ContactStage::solverBodyFor(int collider, const Vec& q) {
     return index;
 }
 
-void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB, const Manifold& m,
-                                 double friction, double restitution, const Vec& q) {
-    ContactConstraint c;
+void ContactStage::fillConstraint(ContactConstraint& c, std::uint64_t key, int colliderA,
+                                  int colliderB, const Manifold& m, double friction,
+                                  double restitution) const {
     c.key = key;
     c.normal = m.normal;
     c.friction = friction;
     c.restitution = restitution;
-    c.bodyA = colliderA >= 0 ? solverBodyFor(colliderA, q) : -1;
-    c.bodyB = solverBodyFor(colliderB, q);
     // Each collider's centre, and its least half extent (a disk's radius, a polygon's
     // inradius): a tenth of the smaller one is an overlap no contact reaches in a resting
     // scene.
@@ -239,7 +263,6 @@ void ContactStage::addConstraint(std::uint64_t key, int colliderA, int colliderB
         p.baseSeparation = m.points[k].separation;
         p.id = m.points[k].id;
     }
-    solver_.constraints().push_back(c);
 }
 
 void ContactStage::updateShapes(const Bodies& bodies, const Vec& q) {
@@ -321,7 +344,7 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
         }
     });
     broadPhase_.findPairs(bounds_, pairs_,
-                          {&pairLimited_, &pairSize_, kOverlappingPairCap, kNearPairCap});
+                          {&pairLimited_, &pairSize_, kOverlappingPairCap, kNearPairCap}, pool_);
 }
 
 bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin, Manifold& m,
@@ -447,21 +470,33 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& q, double dt,
             f.hit = narrowPhasePlane(k, i, settings.speculativeDistance + sweep[i], f.m, f.pair);
         }
     });
+    // The contacts in slot order: numbered, with their solver bodies, here; filled in from
+    // their slots in parallel.
+    std::vector<ContactConstraint>& constraints = solver_.constraints();
+    madeFrom_.clear();
+    for (int s = 0; s < pairCount + planeTests; ++s) {
+        Found& f = found_[s];
+        if (!f.hit) continue;
+        if (s >= pairCount) f.pair.a = -1;  // a plane: the world is body A
+        ContactConstraint& c = constraints.emplace_back();
+        c.bodyA = f.pair.a >= 0 ? solverBodyFor(f.pair.a, q) : -1;
+        c.bodyB = solverBodyFor(f.pair.b, q);
+        madeFrom_.push_back(s);
+    }
     const auto pairKey = [](int first, int second) {
         return (static_cast<std::uint64_t>(first) << 32) | static_cast<std::uint64_t>(second);
     };
-    for (int p = 0; p < pairCount; ++p) {
-        const Found& f = found_[p];
-        if (f.hit)
-            addConstraint(pairKey(f.pair.a, f.pair.b), f.pair.a, f.pair.b, f.m, f.pair.friction,
-                          f.pair.restitution, q);
-    }
-    for (int t = 0; t < planeTests; ++t) {
-        const Found& f = found_[pairCount + t];
-        if (f.hit)
-            addConstraint(pairKey(count + t / count, t % count), -1, t % count, f.m,
-                          f.pair.friction, f.pair.restitution, q);
-    }
+    forRange(static_cast<int>(madeFrom_.size()), kPairGrain, [&](int begin, int end) {
+        for (int k = begin; k < end; ++k) {
+            const int s = madeFrom_[k];
+            const Found& f = found_[s];
+            const std::uint64_t key = s < pairCount
+                                          ? pairKey(f.pair.a, f.pair.b)
+                                          : pairKey(count + (s - pairCount) / count, f.pair.b);
+            fillConstraint(constraints[k], key, f.pair.a, f.pair.b, f.m, f.pair.friction,
+                           f.pair.restitution);
+        }
+    });
 }
 
 void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u,
@@ -484,32 +519,27 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
     sortByKey(now);
     // Whether every point that held a force found its successor: then the contacts account
     // for all the forces the method's step held (World::releaseHeldForces).
-    const auto holds = [](const ContactPoint& p) {
-        return p.heldNormal != 0.0 || p.heldTangent != 0.0;
-    };
-    std::size_t heldBefore = 0, heldCarried = 0;
+    std::size_t heldBefore = 0;
     for (const ContactConstraint& c : previous_)
         for (int k = 0; k < c.pointCount; ++k) heldBefore += holds(c.points[k]);
-    auto old = previous_.begin();
-    for (ContactConstraint& c : now) {
-        while (old != previous_.end() && old->key < c.key) ++old;
-        if (old == previous_.end()) break;
-        if (old->key != c.key) continue;
-        for (int k = 0; k < c.pointCount; ++k)
-            for (int l = 0; l < old->pointCount; ++l)
-                if (c.points[k].id == old->points[l].id) {
-                    heldCarried += holds(old->points[l]);
-                    c.points[k].normalImpulse = old->points[l].normalImpulse;
-                    c.points[k].tangentImpulse = old->points[l].tangentImpulse;
-                    c.points[k].solvedNormal = old->points[l].solvedNormal;
-                    c.points[k].solvedTangent = old->points[l].solvedTangent;
-                    c.points[k].lastNormal = old->points[l].lastNormal;
-                    c.points[k].lastTangent = old->points[l].lastTangent;
-                    c.points[k].heldNormal = old->points[l].heldNormal;
-                    c.points[k].heldTangent = old->points[l].heldTangent;
-                }
-    }
-    heldCarried_ = heldCarried == heldBefore;
+    // Each contact finds its predecessor by its key (both lists are sorted by key), in
+    // parallel; the carried count is a sum of integers, the same in any order.
+    std::atomic<std::size_t> carried{0};
+    forRange(static_cast<int>(now.size()), kPairGrain, [&](int begin, int end) {
+        std::size_t heldCarried = 0;
+        auto old = std::lower_bound(
+            previous_.begin(), previous_.end(), now[begin].key,
+            [](const ContactConstraint& c, std::uint64_t key) { return c.key < key; });
+        for (int n = begin; n < end; ++n) {
+            ContactConstraint& c = now[n];
+            while (old != previous_.end() && old->key < c.key) ++old;
+            if (old == previous_.end()) break;
+            if (old->key != c.key) continue;
+            carryImpulses(*old, c, heldCarried);
+        }
+        carried += heldCarried;
+    });
+    heldCarried_ = carried.load() == heldBefore;
     // Bodies' masses, now that the solver body list is complete.
     const Vec& invMass = inverseMass;
     for (SolverBody& b : solver_.bodies()) {
@@ -534,9 +564,25 @@ Vec2 ContactStage::colliderCenter(int i) const {
 const std::vector<TouchingManifold>& ContactStage::overlaps(const Bodies& bodies, const Vec& q) {
     updateShapes(bodies, q);
     touching_.clear();
-    Manifold m;
-    PairContact pair;
-    const auto add = [&]() {
+    // As collide(): each pair's and each plane test's manifold into its slot, in parallel,
+    // then the overlaps in slot order.
+    const int count = static_cast<int>(colliders_.size());
+    const int pairCount = static_cast<int>(pairs_.size());
+    const int planeTests = count * static_cast<int>(planes_.size());
+    found_.resize(static_cast<std::size_t>(pairCount + planeTests));
+    forRange(pairCount, kPairGrain, [&](int begin, int end) {
+        for (int p = begin; p < end; ++p) {
+            Found& f = found_[p];
+            f.hit = narrowPhase(bodies, pairs_[p].first, pairs_[p].second, 0.0, f.m, f.pair);
+        }
+    });
+    forRange(planeTests, kColliderGrain, [&](int begin, int end) {
+        for (int t = begin; t < end; ++t) {
+            Found& f = found_[pairCount + t];
+            f.hit = narrowPhasePlane(t / count, t % count, 0.0, f.m, f.pair);
+        }
+    });
+    const auto add = [&](const Manifold& m, const PairContact& pair) {
         TouchingManifold t;
         const bool world = pair.a < 0;
         t.dofA = world ? -1 : colliders_[pair.a].dof;
@@ -557,12 +603,8 @@ const std::vector<TouchingManifold>& ContactStage::overlaps(const Bodies& bodies
         }
         if (t.pointCount > 0) touching_.push_back(t);
     };
-    for (const auto& [i, j] : pairs_)
-        if (narrowPhase(bodies, i, j, 0.0, m, pair)) add();
-    const int count = static_cast<int>(colliders_.size());
-    for (int k = 0; k < static_cast<int>(planes_.size()); ++k)
-        for (int i = 0; i < count; ++i)
-            if (narrowPhasePlane(k, i, 0.0, m, pair)) add();
+    for (const Found& f : found_)
+        if (f.hit) add(f.m, f.pair);
     return touching_;
 }
 

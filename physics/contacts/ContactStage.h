@@ -168,8 +168,9 @@ private:
     bool narrowPhasePlane(int k, int i, double margin, Manifold& m, PairContact& pair) const;
     Vec2 colliderCenter(int i) const;
     int solverBodyFor(int collider, const Vec& q);
-    void addConstraint(std::uint64_t key, int colliderA, int colliderB, const Manifold& m,
-                       double friction, double restitution, const Vec& q);
+    // A contact's key, material and points from its manifold (colliderA −1: a plane).
+    void fillConstraint(ContactConstraint& c, std::uint64_t key, int colliderA, int colliderB,
+                        const Manifold& m, double friction, double restitution) const;
 
     bool particleCollisions_;
     double particleRestitution_;
@@ -195,6 +196,7 @@ private:
         bool hit = false;
     };
     std::vector<Found> found_;
+    std::vector<int> madeFrom_;  // per contact of this step: its slot in found_
     WorkerPool* pool_ = nullptr;
     // Runs fn(begin, end) over [0, count) in chunks of grain, shared when a pool is set.
     template <class Fn>
