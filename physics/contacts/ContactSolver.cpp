@@ -285,14 +285,17 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
     colourRows();
 }
 
-void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& settings) {
+void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& settings,
+                                 bool measure) {
     // Per point: the bias velocity and the soft parameters (a speculative point, or a
     // penetrating one during relax, is rigid); per row the block's inverse. Separations are
     // fixed within a phase, so this is done once for all its iterations.
     const double invH = 1.0 / h;
     const double maxPushOut = settings.pushOut;
+    if (measure) updateMotion();
     forChunks(rows_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
+            if (measure) rowSeparations(i);
             Row& c = rows_[i];
             const RowSetup& setup = setup_[i];
             double compliance[2] = {0.0, 0.0};
@@ -356,7 +359,7 @@ inline void smallRotation(double x, double& c, double& s) {
 }
 }  // namespace
 
-void ContactSolver::updateSeparations() {
+void ContactSolver::updateMotion() {
     // Bodies hold still while the solver iterates (positions move once per inner sub-step), so
     // each point's separation is computed once per phase, not once per iteration: the rotations
     // alone (a sine and a cosine per body and point) were a quarter of the solver's time.
@@ -376,23 +379,27 @@ void ContactSolver::updateSeparations() {
             }
         }
     });
-    const BodyMotion* motion = motion_.data();
+}
+
+void ContactSolver::rowSeparations(std::size_t i) {
+    const Row& c = rows_[i];
+    const BodyMotion& a = motion_[c.a];
+    const BodyMotion& b = motion_[c.b];
+    for (int k = 0; k < c.pointCount; ++k) {
+        const RowPoint& p = c.p[k];
+        // The anchors turn with their bodies: s = s₀ + n·(Δp_B − Δp_A), Δp = Δx + R(Δθ)·r − r.
+        double dx = 0.0 - (a.dx + ((a.cos * p.rAx - a.sin * p.rAy) - p.rAx));
+        double dy = 0.0 - (a.dy + ((a.sin * p.rAx + a.cos * p.rAy) - p.rAy));
+        dx += b.dx + ((b.cos * p.rBx - b.sin * p.rBy) - p.rBx);
+        dy += b.dy + ((b.sin * p.rBx + b.cos * p.rBy) - p.rBy);
+        separation_[2 * i + k] = p.baseSeparation + (c.nx * dx + c.ny * dy);
+    }
+}
+
+void ContactSolver::updateSeparations() {
+    updateMotion();
     forChunks(rows_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
-        for (std::size_t i = first; i < end; ++i) {
-            const Row& c = rows_[i];
-            const BodyMotion& a = motion[c.a];
-            const BodyMotion& b = motion[c.b];
-            for (int k = 0; k < c.pointCount; ++k) {
-                const RowPoint& p = c.p[k];
-                // The anchors turn with their bodies: s = s₀ + n·(Δp_B − Δp_A), Δp = Δx + R(Δθ)·r −
-                // r.
-                double dx = 0.0 - (a.dx + ((a.cos * p.rAx - a.sin * p.rAy) - p.rAx));
-                double dy = 0.0 - (a.dy + ((a.sin * p.rAx + a.cos * p.rAy) - p.rAy));
-                dx += b.dx + ((b.cos * p.rBx - b.sin * p.rBy) - p.rBx);
-                dy += b.dy + ((b.sin * p.rBx + b.cos * p.rBy) - p.rBy);
-                separation_[2 * i + k] = p.baseSeparation + (c.nx * dx + c.ny * dy);
-            }
-        }
+        for (std::size_t i = first; i < end; ++i) rowSeparations(i);
     });
 }
 
@@ -589,9 +596,8 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
                 }
             });
         }
-        if (moved) updateSeparations();
         warmStart();
-        preparePhase(hi, true, settings);
+        preparePhase(hi, true, settings, moved);
         impulsesToPack_ = false;  // from here on the lanes hold the accumulated impulses
         for (int it = 0; it < iterations; ++it) solve();
         forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
@@ -611,9 +617,8 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
                 b.pushW = s.w;
             }
         });
-        updateSeparations();
         moved = false;
-        preparePhase(hi, false, settings);
+        preparePhase(hi, false, settings, true);
         for (int it = 0; it < settings.relaxIterations; ++it) solve();
         unpackImpulses();
         forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {

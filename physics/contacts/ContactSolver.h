@@ -303,7 +303,9 @@ private:
     double smoothNormalChange(const Row& c, const RowPoint& p) const;
     static Softness makeSoft(double hertz, double zeta, double h);
     // The phase's per-row terms from the current separations (useBias: soft solve, else relax).
-    void preparePhase(double h, bool useBias, const ContactSettings& settings);
+    // measure: the bodies moved since the separations were taken: each row's are taken anew in
+    // the same pass (updateMotion() first).
+    void preparePhase(double h, bool useBias, const ContactSettings& settings, bool measure);
     void solve();
     void solveRow(Row& c);
     // Graph colours and the wide rows' step constants (after buildRows; ContactColours.cpp).
@@ -317,6 +319,8 @@ private:
     void unpackImpulses();
     // Separations with the bodies where the solver's path has taken them.
     void updateSeparations();
+    void updateMotion();                   // per body: motion_ from the solver's path
+    void rowSeparations(std::size_t row);  // per row point: separation_ from motion_
     // Removes overlap beyond each row's deepOverlap by moving the bodies apart along the
     // normal (no velocity), at most settings.pushOut·h per row and pass.
     void deepPushOut(double h, const ContactSettings& settings);
