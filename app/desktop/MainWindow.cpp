@@ -10,6 +10,7 @@
 #include "app/desktop/SceneFiles.h"
 #include "app/desktop/SceneLibraryMenu.h"
 #include "app/desktop/WindowLayout.h"
+#include "app/desktop/WorkerMenu.h"
 #include "app/desktop/presenters/AppearancePresenter.h"
 #include "app/desktop/presenters/CanvasPresenter.h"
 #include "app/desktop/presenters/ComparePresenter.h"
@@ -214,10 +215,14 @@ void MainWindow::createMenus() {
     addWindowActions(*file, *this, {"", "quit"});
     addWindowActions(*menuBar()->addMenu(tr("&Edit")), *this,
                      {"undo", "redo", "", "cut", "copy", "paste", "delete"});
-    addWindowActions(*menuBar()->addMenu(tr("&Simulation")), *this,
+    QMenu* simulation = menuBar()->addMenu(tr("&Simulation"));
+    addWindowActions(*simulation, *this,
                      {"play", "step", "reset", "", "frameBack", "frameForward", "jumpToStart",
                       "compareFromHere", "leaveCompare", "", "nextIntegrator", "previousIntegrator",
                       "doubleDt", "halveDt", "moreSubsteps", "fewerSubsteps", "faster", "slower"});
+    simulation->addSeparator();
+    auto* workers = new WorkerMenu(*simulation->addMenu(tr("&Worker Threads")), document_);
+    connect(workers, &WorkerMenu::message, status_, &StatusPresenter::showMessage);
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     tools->addActions(canvasPresenter_->toolActions());
     addWindowActions(*tools, *this,

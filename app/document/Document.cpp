@@ -63,6 +63,12 @@ Document::Document(QObject* parent) : QObject(parent) {
     connect(&undoStack_, &QUndoStack::cleanChanged, this,
             [this](bool clean) { emit modifiedChanged(!clean); });
     world_ = buildWorld(setup_).world;  // an empty world until newScene() or a load
+    world_->setWorkers(workers_);
+}
+
+void Document::setWorkers(int workers) {
+    workers_ = workers;
+    world_->setWorkers(workers_);
 }
 
 Document::~Document() {
@@ -111,6 +117,7 @@ void Document::replaceScene(SceneDesc scene, std::unique_ptr<World> world, QStri
     setup_ = std::move(scene);
     loadedInstruments_ = std::exchange(setup_.instruments, {});
     world_ = std::move(world);
+    world_->setWorkers(workers_);
     mouseSpring_ = nullptr;
     grab_.reset();
     unsupported_ = std::move(unsupported);
@@ -147,6 +154,7 @@ void Document::reset() {
     try {
         BuildResult built = buildWorld(setup_);
         world_ = std::move(built.world);
+        world_->setWorkers(workers_);
     } catch (const SceneError& e) {
         // Commands keep the setup valid; reaching this is a bug, but not one to crash on.
         qWarning("Document::reset: %s", e.what());
@@ -267,6 +275,7 @@ void Document::commitSetupEdit(const SetupEdit& edit, const QStringList& moved) 
         transferState(*world_, *built.world, keep);
     }
     world_ = std::move(built.world);
+    world_->setWorkers(workers_);
     unsupported_.clear();
     for (const std::string& name : built.unsupported) unsupported_ << QString::fromStdString(name);
     mouseSpring_ = nullptr;

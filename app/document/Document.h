@@ -47,6 +47,10 @@ public:
     // The live world. It is replaced by every edit, load, new scene and reset (sceneEdited or
     // sceneReset follows): never keep the reference across those.
     World& world() { return *world_; }
+    // The threads each of the document's worlds steps with (0: every core); not part of the
+    // scene, and no result depends on it but the timings (World::setWorkers).
+    void setWorkers(int workers);
+    int workers() const { return workers_; }
     const World& world() const { return *world_; }
     // Effects the scene lists that this engine does not simulate yet.
     QStringList unsupportedEffects() const { return unsupported_; }
@@ -185,6 +189,7 @@ private:
 
     SceneDesc setup_;
     std::unique_ptr<World> world_;
+    int workers_ = 0;
     QStringList unsupported_;
     QString filePath_;
     QUndoStack undoStack_;
