@@ -2317,6 +2317,10 @@
         <source>The integrator&apos;s own arithmetic</source>
         <translation>Die eigene Rechenarbeit des Integrators</translation>
     </message>
+    <message>
+        <source>Costs per step of the whole run: a recorded frame keeps no timing of its own.</source>
+        <translation>Kosten pro Schritt über den ganzen Lauf: ein aufgezeichnetes Bild hat keine eigene Zeitmessung.</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::ExactPresenter</name>
@@ -3194,6 +3198,10 @@ Die Datei auf der Festplatte (falls vorhanden) ist unverändert.</translation>
     <message>
         <source>%L1 ms per step</source>
         <translation>%L1 ms pro Schritt</translation>
+    </message>
+    <message>
+        <source>%L1 ms per step (live run)</source>
+        <translation>%L1 ms pro Schritt (aktueller Lauf)</translation>
     </message>
 </context>
 <context>

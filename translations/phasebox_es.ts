@@ -2317,6 +2317,10 @@
         <source>The integrator&apos;s own arithmetic</source>
         <translation>La aritmética propia del integrador</translation>
     </message>
+    <message>
+        <source>Costs per step of the whole run: a recorded frame keeps no timing of its own.</source>
+        <translation>Coste por paso de toda la ejecución: un fotograma grabado no guarda tiempos propios.</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::ExactPresenter</name>
@@ -3194,6 +3198,10 @@ El archivo en disco (si lo hay) no ha cambiado.</translation>
     <message>
         <source>%L1 ms per step</source>
         <translation>%L1 ms por paso</translation>
+    </message>
+    <message>
+        <source>%L1 ms per step (live run)</source>
+        <translation>%L1 ms por paso (ejecución en vivo)</translation>
     </message>
 </context>
 <context>

@@ -2317,6 +2317,10 @@
         <source>The integrator&apos;s own arithmetic</source>
         <translation>L’arithmétique propre de l’intégrateur</translation>
     </message>
+    <message>
+        <source>Costs per step of the whole run: a recorded frame keeps no timing of its own.</source>
+        <translation>Coûts par pas sur toute la simulation : une image enregistrée ne garde pas de mesure de temps propre.</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::ExactPresenter</name>
@@ -3194,6 +3198,10 @@ Le fichier sur le disque (s’il existe) n’a pas changé.</translation>
     <message>
         <source>%L1 ms per step</source>
         <translation>%L1 ms par pas</translation>
+    </message>
+    <message>
+        <source>%L1 ms per step (live run)</source>
+        <translation>%L1 ms par pas (simulation en cours)</translation>
     </message>
 </context>
 <context>
