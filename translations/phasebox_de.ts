@@ -1728,6 +1728,10 @@
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
+    <message>
+        <source>Step sizes, separated by semicolons; fractions such as 1/120 are fine. The adaptive methods sweep tolerances at the first dt instead.</source>
+        <translation>Schrittweiten, durch Semikolons getrennt; Brüche wie 1/120 sind erlaubt. Die adaptiven Verfahren durchlaufen stattdessen Toleranzen beim ersten dt.</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::AnimationExport</name>

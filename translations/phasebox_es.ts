@@ -1728,6 +1728,10 @@
         <source>Export failed</source>
         <translation>Falló la exportación</translation>
     </message>
+    <message>
+        <source>Step sizes, separated by semicolons; fractions such as 1/120 are fine. The adaptive methods sweep tolerances at the first dt instead.</source>
+        <translation>Pasos separados por punto y coma; se admiten fracciones como 1/120. Los métodos adaptativos recorren tolerancias en el primer dt.</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::AnimationExport</name>

@@ -1728,6 +1728,10 @@
         <source>Export failed</source>
         <translation>Échec de l’export</translation>
     </message>
+    <message>
+        <source>Step sizes, separated by semicolons; fractions such as 1/120 are fine. The adaptive methods sweep tolerances at the first dt instead.</source>
+        <translation>Pas séparés par des points-virgules ; les fractions comme 1/120 sont acceptées. Les méthodes adaptatives parcourent plutôt des tolérances au premier dt.</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::AnimationExport</name>
