@@ -284,7 +284,7 @@ void AccuracyDialog::setScene(const SceneDesc& scene) {
     dts_->setText(dtListText(defaultAccuracyDts(scene.simulation.dt)));
     // Long scenes make long studies: 60 runs of the whole duration. A few seconds show the
     // orders as well.
-    duration_->setText(QString::number(std::min(scene.simulation.duration, 5.0), 'g', 6));
+    duration_->setText(ui::shownNumber(std::min(scene.simulation.duration, 5.0), 'g', 6));
     summary_->setText(tr("Scene: %1. Press Run: every checked method runs the scene at every dt "
                          "on a copy; the open scene is not touched.")
                           .arg(ui::sceneText(scene.name).toHtmlEscaped()));
@@ -340,10 +340,10 @@ bool AccuracyDialog::run() {
         return false;
     }
     options.dts = *dts;
-    bool ok = false;
-    options.duration = duration_->text().toDouble(&ok);
+    const std::optional<double> duration = typedNumber(duration_->text().trimmed());
+    options.duration = duration.value_or(0.0);
     options.durationIsDefault = !duration_->isModified();
-    if (!ok || !(options.duration > 0.0) || options.duration > 1e5) {
+    if (!duration || !(options.duration > 0.0) || options.duration > 1e5) {
         summary_->setText(tr("Duration: a number of seconds > 0, please."));
         return false;
     }

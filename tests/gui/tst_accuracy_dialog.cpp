@@ -275,6 +275,20 @@ private slots:
         QString bad;
         QVERIFY(!AccuracyDialog::parseDtList(QStringLiteral("0,01, 0,005"), &bad));
         QCOMPARE(bad, QStringLiteral("0,01, 0,005"));
+        // A duration with a decimal comma runs, and so does one with a point.
+        {
+            MainWindow w;
+            QVERIFY(w.openFile(QStringLiteral(":/scenes/spring-oscillator.phasebox.json"), true));
+            w.action("accuracyLab")->trigger();
+            AccuracyDialog& dialog = *accuracyDialogOf(w);
+            setLine(dialog, 0, QStringLiteral("1/60; 0,008"));
+            choose(dialog, {"symplectic_euler"});
+            for (const QString& duration : {QStringLiteral("0,5"), QStringLiteral("0.25")}) {
+                setLine(dialog, 1, duration);
+                QVERIFY2(runStudy(dialog), qPrintable(duration));
+                QCOMPARE(dialog.study().result().records.size(), std::size_t{2});
+            }
+        }
         // The field's own text reads back as the same steps as in English.
         const QString german = AccuracyDialog::dtListText(defaults);
         QVERIFY2(german.contains(QStringLiteral("; ")), qPrintable(german));
