@@ -1728,6 +1728,10 @@
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
     </message>
+    <message>
+        <source>Step sizes, separated by semicolons; fractions such as 1/120 are fine. The adaptive methods sweep tolerances at the first dt instead.</source>
+        <translation>Schrittweiten, durch Semikolons getrennt; Brüche wie 1/120 sind erlaubt. Die adaptiven Verfahren durchlaufen stattdessen Toleranzen beim ersten dt.</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::AnimationExport</name>
@@ -2316,6 +2320,10 @@
     <message>
         <source>The integrator&apos;s own arithmetic</source>
         <translation>Die eigene Rechenarbeit des Integrators</translation>
+    </message>
+    <message>
+        <source>Costs per step of the whole run: a recorded frame keeps no timing of its own.</source>
+        <translation>Kosten pro Schritt über den ganzen Lauf: ein aufgezeichnetes Bild hat keine eigene Zeitmessung.</translation>
     </message>
 </context>
 <context>
@@ -3194,6 +3202,10 @@ Die Datei auf der Festplatte (falls vorhanden) ist unverändert.</translation>
     <message>
         <source>%L1 ms per step</source>
         <translation>%L1 ms pro Schritt</translation>
+    </message>
+    <message>
+        <source>%L1 ms per step (live run)</source>
+        <translation>%L1 ms pro Schritt (aktueller Lauf)</translation>
     </message>
 </context>
 <context>

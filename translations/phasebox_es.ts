@@ -1728,6 +1728,10 @@
         <source>Export failed</source>
         <translation>Falló la exportación</translation>
     </message>
+    <message>
+        <source>Step sizes, separated by semicolons; fractions such as 1/120 are fine. The adaptive methods sweep tolerances at the first dt instead.</source>
+        <translation>Pasos separados por punto y coma; se admiten fracciones como 1/120. Los métodos adaptativos recorren tolerancias en el primer dt.</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::AnimationExport</name>
@@ -2316,6 +2320,10 @@
     <message>
         <source>The integrator&apos;s own arithmetic</source>
         <translation>La aritmética propia del integrador</translation>
+    </message>
+    <message>
+        <source>Costs per step of the whole run: a recorded frame keeps no timing of its own.</source>
+        <translation>Coste por paso de toda la ejecución: un fotograma grabado no guarda tiempos propios.</translation>
     </message>
 </context>
 <context>
@@ -3194,6 +3202,10 @@ El archivo en disco (si lo hay) no ha cambiado.</translation>
     <message>
         <source>%L1 ms per step</source>
         <translation>%L1 ms por paso</translation>
+    </message>
+    <message>
+        <source>%L1 ms per step (live run)</source>
+        <translation>%L1 ms por paso (ejecución en vivo)</translation>
     </message>
 </context>
 <context>

@@ -1728,6 +1728,10 @@
         <source>Export failed</source>
         <translation>Échec de l’export</translation>
     </message>
+    <message>
+        <source>Step sizes, separated by semicolons; fractions such as 1/120 are fine. The adaptive methods sweep tolerances at the first dt instead.</source>
+        <translation>Pas séparés par des points-virgules ; les fractions comme 1/120 sont acceptées. Les méthodes adaptatives parcourent plutôt des tolérances au premier dt.</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::AnimationExport</name>
@@ -2316,6 +2320,10 @@
     <message>
         <source>The integrator&apos;s own arithmetic</source>
         <translation>L’arithmétique propre de l’intégrateur</translation>
+    </message>
+    <message>
+        <source>Costs per step of the whole run: a recorded frame keeps no timing of its own.</source>
+        <translation>Coûts par pas sur toute la simulation : une image enregistrée ne garde pas de mesure de temps propre.</translation>
     </message>
 </context>
 <context>
@@ -3194,6 +3202,10 @@ Le fichier sur le disque (s’il existe) n’a pas changé.</translation>
     <message>
         <source>%L1 ms per step</source>
         <translation>%L1 ms par pas</translation>
+    </message>
+    <message>
+        <source>%L1 ms per step (live run)</source>
+        <translation>%L1 ms par pas (simulation en cours)</translation>
     </message>
 </context>
 <context>

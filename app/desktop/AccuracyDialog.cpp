@@ -27,6 +27,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScreen>
 #include <QSplitter>
 #include <QTabWidget>
@@ -46,6 +47,23 @@ namespace {
 QString formatDt(double dt) {
     return QString::fromStdString(formatStep(dt))
         .replace(QLatin1Char('.'), ui::shownLocale().decimalPoint());
+}
+
+// A list of numbers whose decimal separator is a comma is separated by semicolons.
+bool commaIsDecimal() {
+    return ui::shownLocale().decimalPoint() == QStringLiteral(",");
+}
+
+// A number as typed: '.'-decimal, or in the window's locale; never with group separators
+// (C's would read "0,01" as 1).
+std::optional<double> typedNumber(const QString& text) {
+    bool ok = false;
+    for (QLocale locale : {QLocale::c(), ui::shownLocale()}) {
+        locale.setNumberOptions(locale.numberOptions() | QLocale::RejectGroupSeparator);
+        const double value = locale.toDouble(text, &ok);
+        if (ok) return value;
+    }
+    return std::nullopt;
 }
 
 QString formatError(double e) {
@@ -76,9 +94,12 @@ AccuracyDialog::AccuracyDialog(QWidget* parent) : QDialog(parent) {
     integrators_->setObjectName(QStringLiteral("integrators"));
     integrators_->setAccessibleName(tr("Integrators to study"));
     dts_ = new QLineEdit(this);
-    dts_->setToolTip(
-        tr("Step sizes, separated by commas; fractions such as 1/120 are fine. The "
-           "adaptive methods sweep tolerances at the first dt instead."));
+    dts_->setToolTip(commaIsDecimal()
+                         ? tr("Step sizes, separated by semicolons; fractions such as 1/120 are "
+                              "fine. The adaptive methods sweep tolerances at the first dt "
+                              "instead.")
+                         : tr("Step sizes, separated by commas; fractions such as 1/120 are fine. "
+                              "The adaptive methods sweep tolerances at the first dt instead."));
     duration_ = new QLineEdit(this);
     duration_->setToolTip(tr("Simulated seconds each run lasts; errors are measured at the end."));
     runButton_ = new QPushButton(tr("&Run"), this);
@@ -260,15 +281,45 @@ void AccuracyDialog::setCurrentScene(const SceneDesc& scene) {
 
 void AccuracyDialog::setScene(const SceneDesc& scene) {
     scene_ = scene;
-    QStringList dts;
-    for (double dt : defaultAccuracyDts(scene.simulation.dt)) dts << formatDt(dt);
-    dts_->setText(dts.join(QStringLiteral(", ")));
+    dts_->setText(dtListText(defaultAccuracyDts(scene.simulation.dt)));
     // Long scenes make long studies: 60 runs of the whole duration. A few seconds show the
     // orders as well.
-    duration_->setText(QString::number(std::min(scene.simulation.duration, 5.0), 'g', 6));
+    duration_->setText(ui::shownNumber(std::min(scene.simulation.duration, 5.0), 'g', 6));
     summary_->setText(tr("Scene: %1. Press Run: every checked method runs the scene at every dt "
                          "on a copy; the open scene is not touched.")
                           .arg(ui::sceneText(scene.name).toHtmlEscaped()));
+}
+
+std::optional<std::vector<double>> AccuracyDialog::parseDtList(const QString& text, QString* bad) {
+    const QRegularExpression separators(commaIsDecimal() ? QStringLiteral(";")
+                                                         : QStringLiteral("[;,]"));
+    std::vector<double> dts;
+    for (const QString& part : text.split(separators, Qt::SkipEmptyParts)) {
+        const QString step = part.trimmed();
+        if (step.isEmpty()) continue;
+        std::optional<double> value;
+        if (step.count(QLatin1Char('/')) == 1) {
+            const std::optional<double> a =
+                typedNumber(step.section(QLatin1Char('/'), 0, 0).trimmed());
+            const std::optional<double> b =
+                typedNumber(step.section(QLatin1Char('/'), 1, 1).trimmed());
+            if (a && b && *b != 0.0) value = *a / *b;
+        } else {
+            value = typedNumber(step);
+        }
+        if (!value || !(*value > 0.0) || *value > 1.0) {
+            if (bad) *bad = step;
+            return std::nullopt;
+        }
+        dts.push_back(*value);
+    }
+    return dts;
+}
+
+QString AccuracyDialog::dtListText(const std::vector<double>& dts) {
+    QStringList texts;
+    for (double dt : dts) texts << formatDt(dt);
+    return texts.join(commaIsDecimal() ? QStringLiteral("; ") : QStringLiteral(", "));
 }
 
 bool AccuracyDialog::run() {
@@ -281,30 +332,18 @@ bool AccuracyDialog::run() {
         summary_->setText(tr("Check at least one integrator."));
         return false;
     }
-    for (const QString& part : dts_->text().split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-        const QString text = part.trimmed();
-        bool ok = false;
-        double value = 0.0;
-        if (text.contains(QLatin1Char('/'))) {
-            bool okA = false, okB = false;
-            const double a = text.section(QLatin1Char('/'), 0, 0).toDouble(&okA);
-            const double b = text.section(QLatin1Char('/'), 1, 1).toDouble(&okB);
-            ok = okA && okB && b != 0.0;
-            value = ok ? a / b : 0.0;
-        } else {
-            value = text.toDouble(&ok);
-        }
-        if (!ok || !(value > 0.0) || value > 1.0) {
-            summary_->setText(
-                tr("dt list: \"%1\" is not a step in (0, 1] s.").arg(text.toHtmlEscaped()));
-            return false;
-        }
-        options.dts.push_back(value);
+    QString bad;
+    const std::optional<std::vector<double>> dts = parseDtList(dts_->text(), &bad);
+    if (!dts) {
+        summary_->setText(
+            tr("dt list: \"%1\" is not a step in (0, 1] s.").arg(bad.toHtmlEscaped()));
+        return false;
     }
-    bool ok = false;
-    options.duration = duration_->text().toDouble(&ok);
+    options.dts = *dts;
+    const std::optional<double> duration = typedNumber(duration_->text().trimmed());
+    options.duration = duration.value_or(0.0);
     options.durationIsDefault = !duration_->isModified();
-    if (!ok || !(options.duration > 0.0) || options.duration > 1e5) {
+    if (!duration || !(options.duration > 0.0) || options.duration > 1e5) {
         summary_->setText(tr("Duration: a number of seconds > 0, please."));
         return false;
     }

@@ -10,6 +10,7 @@
 #include <QFont>
 
 #include <optional>
+#include <vector>
 
 QT_BEGIN_NAMESPACE
 class QChartView;
@@ -43,6 +44,15 @@ public:
     bool run();
     void cancel();
     AccuracyStudy& study() { return study_; }
+
+    // The dt list as typed: steps in (0, 1] s, each a number or a fraction (1/120), '.' always
+    // a decimal point and the window's locale's decimal separator too ("0,01" in German);
+    // separated by ';', and by ',' where that is not the decimal separator. nullopt for any part
+    // that is no such step, *bad then holding it.
+    static std::optional<std::vector<double>> parseDtList(const QString& text,
+                                                          QString* bad = nullptr);
+    // Steps as the field shows them, in the window's locale, with that locale's separator.
+    static QString dtListText(const std::vector<double>& dts);
 
     // The cheapest finished run whose error is at most target (least CPU time), if any.
     std::optional<AccuracyRecord> cheapestFor(double targetError) const;

@@ -151,6 +151,17 @@ void SimulationController::flushRecorders() {
     if (probes_) probes_->flush();
 }
 
+double SimulationController::lastErrorEstimate() const {
+    if (shownFrame_ < 0 || !runRecording_) return lastError_;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (!recorder_) return nan;
+    const double t = runRecording_->frame(shownFrame_).time;
+    const std::vector<QPointF>& errors = recorder_->errorSamples();
+    const auto at = std::lower_bound(errors.begin(), errors.end(), t,
+                                     [](const QPointF& p, double time) { return p.x() < time; });
+    return at != errors.end() && at->x() == t ? at->y() : nan;
+}
+
 void SimulationController::estimateError() {
     if (!estimateErrors_ || msPerStep_ > kMaxEstimateStepMs) {
         lastError_ = std::numeric_limits<double>::quiet_NaN();

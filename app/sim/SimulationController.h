@@ -79,8 +79,10 @@ public:
     // kMaxEstimateStepMs, so a heavy scene does not slow down four-fold for it.
     void setEstimateErrors(bool on) { estimateErrors_ = on; }
     bool estimatesErrors() const { return estimateErrors_; }
-    // The last estimate (m or rad), NaN when none was made.
-    double lastErrorEstimate() const { return lastError_; }
+    // The estimate of the moment shown (m or rad): the last one at the live end; at a recorded
+    // frame the one made at its very time, NaN when none was made then (estimates are made once
+    // per displayed frame, not every step).
+    double lastErrorEstimate() const;
     static constexpr double kMaxEstimateStepMs = 4.0;
 
     static constexpr double kMinSpeed = 0.25;

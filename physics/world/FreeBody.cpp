@@ -66,8 +66,8 @@ std::optional<FreeBody> freeBodyOf(const World& world, std::string_view id) {
             const Joint& j = world.joints()[i];
             if (!on(j.a) && !on(j.b)) continue;
             Vec2 f = Vec2::Zero();
-            if (on(j.a)) f += joints->forceOnA(i);
-            if (on(j.b)) f += joints->forceOnB(i);
+            if (on(j.a)) f += world.jointForceOn(i, false);
+            if (on(j.b)) f += world.jointForceOn(i, true);
             body.forces.push_back({BodyForce::Source::Joint, j.id, f});
         }
     }

@@ -10,8 +10,11 @@
 //             the spring (World::springTension), as the spring effect applies it
 //   contact   World::contactForce: the contact impulses of the last step over dt (impulse and
 //             kinematic models), the penalty force at the current state (penalty)
-//   joints    JointSolver::forceOnA/forceOnB of each joint holding the body, at the last
+//   joints    World::jointForceOn of each joint holding the body, at the last
 //             derivative evaluation
+//
+// At a recorded frame the world shows (WorldSnapshot::show) the contact and joint forces are the
+// frame's, as the step that ended there left them.
 //
 // At rest the sum is zero up to the solvers' tolerance; in free flight it is m·a.
 

@@ -439,11 +439,8 @@ double evaluateProbe(const World& world, const Probe& probe) {
                                argumentPosition(world, probe, 2));
         case ProbeKind::JointAngle:
             return jointAngle(world, probe.joint).value_or(0.0);
-        case ProbeKind::JointForce: {
-            const JointSolver* joints = world.jointSolver();
-            if (!joints || probe.joint >= joints->jointCount()) return 0.0;
-            return joints->force(probe.joint);
-        }
+        case ProbeKind::JointForce:
+            return world.jointForce(probe.joint);
         case ProbeKind::ContactForce: {
             const ProbeObject& o = probe.objects[0];
             const int dof =

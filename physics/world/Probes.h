@@ -136,10 +136,11 @@ ProbeParse parseProbe(const World& world, std::string_view text);
 
 // The probe's value in the world's current state (SI units). A probe of a world whose objects
 // changed since it was parsed must be parsed again. force(JOINT) is the joint's constraint force
-// at the last derivative evaluation; contact_force(ID) the vector sum of the contact impulses on
-// the body over the last step divided by dt (0 when nothing touched it), as the impulse contact
-// solver books them (SolverBody::stepImpulse); the penalty and kinematic models do not book
-// theirs there, so under them it reads 0.
+// at the last derivative evaluation; contact_force(ID) the magnitude of World::contactForce: the
+// vector sum of the contact impulses on the body over the last step divided by dt (0 when
+// nothing touched it) as the impulse solver (SolverBody::stepImpulse) and the kinematic response
+// book them, the penalty force at the current state under penalty. At a recorded frame shown
+// (WorldSnapshot::show) both read the frame's forces (World::contactForce, World::jointForce).
 double evaluateProbe(const World& world, const Probe& probe);
 
 // The probe texts that parse against this world, for pickers that offer only valid probes: the

@@ -95,6 +95,7 @@ void World::commit() {
     if (!layoutDirty_) return;
     const bool hadLayout = committed_;
     committed_ = true;
+    showingFrame_ = false;
     if (!sleepRelayout_) resetSleep();  // an edit wakes every island
 
     dynamicParticles_.clear();
@@ -516,6 +517,7 @@ void World::setState(const Vec& q, const Vec& u) {
         throw std::invalid_argument("state size does not match the world's layout");
     q_[current_] = q;
     u_[current_] = u;
+    showingFrame_ = false;
 }
 
 std::string World::objectAtDof(int dof) const {
@@ -538,6 +540,7 @@ std::string World::objectAtDof(int dof) const {
 //   guard           divergence: a non-finite value or runaway energy restores a good frame
 bool World::step() {
     ensureLayout();
+    showingFrame_ = false;
     divergence_.reset();
     if (contacts_) contacts_->setPool(pool_.get());
     const int substeps = settings_.substeps * (joints_ ? jointSubstepsForFrame() : 1);

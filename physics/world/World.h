@@ -22,6 +22,7 @@
 #include "physics/world/Islands.h"
 #include "physics/world/StepProfile.h"
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -48,6 +49,26 @@ struct SimulationSettings {
     double contactDamping = 0.0;
     // simulation.sleep (CONTRACT §6): islands at rest leave the step until woken.
     bool sleep = false;
+};
+
+// The forces a recorded frame keeps besides the state, for the readouts that show them
+// (WorldSnapshot.h FrameState): the contact force on each body that had one in the step
+// (World::contactForce), by the body's first state index in increasing order, and each joint's
+// force (World::jointForce, jointForceOn). Bodies without a contact force are left out, so a
+// frame of a pile keeps a few numbers per touching body and none for the others.
+struct FrameForces {
+    std::vector<int> contactDofs;
+    std::vector<double> contactXY;  // x, y of each contact force, parallel to contactDofs
+    struct Joint {
+        double magnitude = 0.0;
+        Vec2 onA{0.0, 0.0}, onB{0.0, 0.0};
+    };
+    std::vector<Joint> joints;
+
+    std::size_t bytes() const {
+        return contactDofs.size() * sizeof(int) + contactXY.size() * sizeof(double) +
+               joints.size() * sizeof(Joint);
+    }
 };
 
 struct EffectCost {
@@ -83,6 +104,13 @@ public:
     const std::vector<Joint>& joints() const { return bodies_.joints; }
     // The joints' solver, or nullptr when the scene has none.
     const JointSolver* jointSolver() const { return joints_.get(); }
+    // Joint j's force (JointSolver::force) and its force on body a or b (forceOnA, forceOnB),
+    // at the last derivative evaluation, or as recorded in the frame shown
+    // (WorldSnapshot::show): what readouts and force arrows read. 0 without joints.
+    double jointForce(int j) const;
+    Vec2 jointForceOn(int j, bool onB) const;
+    // Whether a recorded frame is shown (WorldSnapshot::show) and not stepped on or edited since.
+    bool showsRecordedFrame() const { return showingFrame_; }
     // The joints' violation in the current state (zero without joints).
     JointErrors jointErrors() const;
 
@@ -125,6 +153,8 @@ public:
     // step (CONTRACT §7): the impulses it received over dt under the impulse and kinematic
     // models, the penalty force at the current state under penalty. Zero without contacts.
     Vec2 contactForce(int dof) const;
+    // Every body's nonzero contactForce (a -0.0 counts as nonzero), as a recorded frame keeps them.
+    void contactForces(FrameForces& out) const;
 
     // ---- settings and stepping --------------------------------------------------------
     // Throws std::invalid_argument for an unknown integrator or an out-of-range number;
@@ -362,6 +392,10 @@ private:
     double sleepingKinetic_ = 0.0, sleepingPotential_ = 0.0;
     bool sleepRelayout_ = false;  // commit() rebuilds for a change of islands, not an edit
     std::vector<double> keptEffectSeconds_;
+    // A recorded frame shown (WorldSnapshot::show): its forces answer contactForce and
+    // jointForce until the world steps, is set or rebuilt.
+    FrameForces shownForces_;
+    bool showingFrame_ = false;
 };
 
 }  // namespace phasebox

@@ -72,6 +72,13 @@ double World::contactPotential(const Vec& q) const {
 Vec2 World::contactForce(int dof) const {
     if (!contacts_ || layoutDirty_ || dof < 0 || dof + 1 >= layout_.dimension())
         return Vec2::Zero();
+    if (showingFrame_) {
+        const std::vector<int>& dofs = shownForces_.contactDofs;
+        const auto at = std::lower_bound(dofs.begin(), dofs.end(), dof);
+        if (at == dofs.end() || *at != dof) return Vec2::Zero();
+        const std::size_t k = 2 * static_cast<std::size_t>(at - dofs.begin());
+        return Vec2(shownForces_.contactXY[k], shownForces_.contactXY[k + 1]);
+    }
     switch (settings_.contactModel) {
         case ContactModel::Penalty:
             return penalty_ ? penalty_->forceOn(q_[current_], u_[current_], dof) : Vec2::Zero();
@@ -87,6 +94,47 @@ Vec2 World::contactForce(int dof) const {
     for (const SolverBody& b : contacts_->solver().bodies())
         if (b.dof == dof) return b.stepImpulse / settings_.dt;
     return Vec2::Zero();
+}
+
+void World::contactForces(FrameForces& out) const {
+    out.contactDofs.clear();
+    out.contactXY.clear();
+    if (!contacts_ || layoutDirty_) return;
+    // A -0.0 is kept too, so that a frame gives back the very bits contactForce() gave.
+    const auto keep = [&](int dof, const Vec2& f) {
+        if (f.x() == 0.0 && f.y() == 0.0 && !std::signbit(f.x()) && !std::signbit(f.y())) return;
+        out.contactDofs.push_back(dof);
+        out.contactXY.push_back(f.x());
+        out.contactXY.push_back(f.y());
+    };
+    const int dimension = layout_.dimension();
+    if (showingFrame_ || settings_.contactModel != ContactModel::Impulse) {
+        // Penalty: one evaluation for every body (each entry sums its terms in the order
+        // forceOn() does); kinematic and a shown frame: per body, as contactForce() reads them.
+        Vec penalty;
+        if (!showingFrame_ && settings_.contactModel == ContactModel::Penalty && penalty_) {
+            penalty = Vec::Zero(dimension);
+            penalty_->addForces(clock_.time, q_[current_], u_[current_], penalty);
+        }
+        const auto body = [&](int dof) {
+            keep(dof, penalty.size() > 0 ? Vec2(penalty.segment<2>(dof)) : contactForce(dof));
+        };
+        for (int dof = 0; dof < layout_.rigidBase(); dof += 2) body(dof);
+        for (int dof = layout_.rigidBase(); dof < dimension; dof += 3) body(dof);
+        return;
+    }
+    // Impulse: the solver's bodies, in the order of their state, the first of a dof as
+    // contactForce() finds it.
+    const std::vector<SolverBody>& bodies = contacts_->solver().bodies();
+    std::vector<std::pair<int, Vec2>> found;
+    found.reserve(bodies.size());
+    for (const SolverBody& b : bodies)
+        if (b.dof >= 0 && b.dof + 1 < dimension)
+            found.emplace_back(b.dof, b.stepImpulse / settings_.dt);
+    std::stable_sort(found.begin(), found.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t i = 0; i < found.size(); ++i)
+        if (i == 0 || found[i].first != found[i - 1].first) keep(found[i].first, found[i].second);
 }
 
 void World::findPenaltyPairs() {

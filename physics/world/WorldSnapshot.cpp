@@ -31,6 +31,13 @@ FrameState FrameState::of(const World& world) {
     f.time = world.time();
     f.stepCount = world.stepCount();
     f.ledger = world.energy();
+    world.contactForces(f.forces);
+    if (const JointSolver* joints = world.jointSolver()) {
+        f.forces.joints.resize(static_cast<std::size_t>(joints->jointCount()));
+        for (int j = 0; j < joints->jointCount(); ++j)
+            f.forces.joints[static_cast<std::size_t>(j)] = {
+                world.jointForce(j), world.jointForceOn(j, false), world.jointForceOn(j, true)};
+    }
     return f;
 }
 
@@ -43,6 +50,8 @@ bool WorldSnapshot::show(World& world, const FrameState& frame) {
     world.clock_.time = frame.time;
     world.clock_.stepCount = frame.stepCount;
     world.ledger_ = frame.ledger;
+    world.shownForces_ = frame.forces;
+    world.showingFrame_ = true;
     return true;
 }
 
@@ -142,6 +151,7 @@ bool WorldSnapshot::restoreInto(World& world) const {
     world.pulledSince_ = pulledSince_;
     world.integrator_->restoreCarriedState(integratorCarried_);
     world.integrator_->restoreStats(integratorStats_);
+    world.showingFrame_ = false;
     return true;
 }
 

@@ -24,17 +24,20 @@
 
 namespace phasebox {
 
-// What a recording keeps of every frame: enough to draw the world and to show its readouts
-// (the state, the clock and the ledger), not enough to step on from it.
+// What a recording keeps of every frame: enough to draw the world and to show every readout of
+// it (the state, the clock, the ledger, and the contact and joint forces the step left, which
+// the state does not give back), not enough to step on from it.
 struct FrameState {
     Vec q, u;
     double time = 0.0;
     long long stepCount = 0;
     EnergyLedger ledger;
+    FrameForces forces;
 
     static FrameState of(const World& world);
     std::size_t bytes() const {
-        return sizeof(FrameState) + static_cast<std::size_t>(q.size() + u.size()) * sizeof(double);
+        return sizeof(FrameState) + static_cast<std::size_t>(q.size() + u.size()) * sizeof(double) +
+               forces.bytes();
     }
 };
 
@@ -51,10 +54,10 @@ public:
     // untouched) when the world's objects are not the ones the snapshot was taken with.
     bool restoreInto(World& world) const;
 
-    // Shows a recorded frame: the world's state, clock and ledger become the frame's, so that
-    // drawing and every probe read that moment. What else the world carries (warm starts, the
-    // method's step size) stays as it was: restore a snapshot before stepping on. False when
-    // the frame is of other objects.
+    // Shows a recorded frame: the world's state, clock, ledger and forces (contactForce,
+    // jointForce) become the frame's, so that drawing and every probe read that moment. What else
+    // the world carries (warm starts, the method's step size) stays as it was: restore a snapshot
+    // before stepping on. False when the frame is of other objects.
     static bool show(World& world, const FrameState& frame);
 
     // Whether the world runs with the settings the snapshot holds (a recording takes a new

@@ -8,9 +8,12 @@
 #include "app/desktop/AccuracyDialog.h"
 #include "app/desktop/MainWindow.h"
 #include "app/document/Document.h"
+#include "ui/plots/Charts.h"
+#include "ui/plots/WorkPrecisionChart.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
 #include <QGraphicsScene>
@@ -19,7 +22,9 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QLocale>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -29,6 +34,8 @@
 #include <QValueAxis>
 
 #include <cmath>
+#include <memory>
+#include <vector>
 
 using namespace phasebox;
 using namespace phasebox::testing::parts;
@@ -72,6 +79,20 @@ QGraphicsTextItem* wholeTitle(QChartView* view, const QString& text) {
             t && t->isVisible() && t->toPlainText() == text)
             return t;
     return nullptr;
+}
+
+// The tick labels of a chart's axis in that orientation, when it is a decade axis.
+QStringList decadeLabels(QChart* chart, Qt::Orientation orientation) {
+    auto* axis = qobject_cast<QCategoryAxis*>(chart->axes(orientation).value(0));
+    return axis ? axis->categoriesLabels() : QStringList();
+}
+
+// Every label a power of ten as a reader writes it: 10, then a superscript exponent.
+bool allPowersOfTen(const QStringList& labels) {
+    static const QRegularExpression power(QStringLiteral("^10⁻?[⁰¹²³⁴⁵⁶⁷⁸⁹]+$"));
+    for (const QString& label : labels)
+        if (!power.match(label).hasMatch()) return false;
+    return !labels.isEmpty();
 }
 
 void savePicture(QWidget* widget, const QString& name) {
@@ -223,6 +244,70 @@ private slots:
                 qPrintable(at + QStringLiteral(": ") + texts.join(QLatin1Char(' '))));
             QVERIFY2(shown.size() >= 10, qPrintable(at));
         }
+    }
+
+    // The log axes read 10⁻⁶ in every language (not printf's 1e-06, nor German's 1E-06), and the
+    // dt list takes the locale's decimal comma ("0,01; 0,005" in German) as well as '.'.
+    void germanNumbersInTheLab() {
+        const auto dts = [](const char* text) {
+            return AccuracyDialog::parseDtList(QString::fromUtf8(text));
+        };
+        // The locale set below is put back however the test ends.
+        struct English {
+            English() { QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates)); }
+            ~English() {
+                ui::setChartLocale(std::nullopt);
+                QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+            }
+        } english_;
+        QVERIFY(dts("0.01, 0.005; 1/120") == (std::vector<double>{0.01, 0.005, 1.0 / 120.0}));
+        const std::vector<double> defaults = defaultAccuracyDts(1.0 / 60.0);
+        const std::optional<std::vector<double>> english =
+            AccuracyDialog::parseDtList(AccuracyDialog::dtListText(defaults));
+        QVERIFY(english && english->size() == defaults.size());
+
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        ui::setChartLocale(QLocale());
+        QVERIFY(dts("0,01; 0,005") == (std::vector<double>{0.01, 0.005}));
+        QVERIFY(dts("0.01; 0.005") == (std::vector<double>{0.01, 0.005}));
+        QVERIFY(dts("1/120; 0,0025") == (std::vector<double>{1.0 / 120.0, 0.0025}));
+        // A comma is the decimal separator here, so it separates nothing: refused whole.
+        QString bad;
+        QVERIFY(!AccuracyDialog::parseDtList(QStringLiteral("0,01, 0,005"), &bad));
+        QCOMPARE(bad, QStringLiteral("0,01, 0,005"));
+        // A duration with a decimal comma runs, and so does one with a point.
+        {
+            MainWindow w;
+            QVERIFY(w.openFile(QStringLiteral(":/scenes/spring-oscillator.phasebox.json"), true));
+            w.action("accuracyLab")->trigger();
+            AccuracyDialog& dialog = *accuracyDialogOf(w);
+            setLine(dialog, 0, QStringLiteral("1/60; 0,008"));
+            choose(dialog, {"symplectic_euler"});
+            for (const QString& duration : {QStringLiteral("0,5"), QStringLiteral("0.25")}) {
+                setLine(dialog, 1, duration);
+                QVERIFY2(runStudy(dialog), qPrintable(duration));
+                QCOMPARE(dialog.study().result().records.size(), std::size_t{2});
+            }
+        }
+        // The field's own text reads back as the same steps as in English.
+        const QString german = AccuracyDialog::dtListText(defaults);
+        QVERIFY2(german.contains(QStringLiteral("; ")), qPrintable(german));
+        QCOMPARE(AccuracyDialog::parseDtList(german), english);
+
+        const std::vector<ui::WorkPrecisionPoint> points = {
+            {QStringLiteral("rk4"), 1e-3, 1e-6, QStringLiteral("1/60")},
+            {QStringLiteral("rk4"), 1e-2, 1e-9, QStringLiteral("1/120")}};
+        std::unique_ptr<QChart> diagram(ui::createWorkPrecisionChart(points, QStringLiteral("t")));
+        const QStringList errors = decadeLabels(diagram.get(), Qt::Vertical);
+        QVERIFY2(allPowersOfTen(errors), qPrintable(errors.join(QLatin1Char(' '))));
+        QCOMPARE(errors, (QStringList{QStringLiteral("10⁻⁹"), QStringLiteral("10⁻⁸"),
+                                      QStringLiteral("10⁻⁷"), QStringLiteral("10⁻⁶")}));
+        QVERIFY(allPowersOfTen(decadeLabels(diagram.get(), Qt::Horizontal)));
+        const std::vector<QPointF> estimates = {{0.0, 2e-7}, {1.0, 3e-5}};
+        std::unique_ptr<QChart> error(ui::createErrorChart(estimates, QStringLiteral("e")));
+        QCOMPARE(decadeLabels(error.get(), Qt::Vertical),
+                 (QStringList{QStringLiteral("10⁻⁷"), QStringLiteral("10⁻⁶"),
+                              QStringLiteral("10⁻⁵"), QStringLiteral("10⁻⁴")}));
     }
 
     void roundOffFloorIsExplained() {

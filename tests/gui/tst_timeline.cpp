@@ -3,13 +3,16 @@
 // readout, the Instruments readouts of the selection and the plots' cursors (energy and phase);
 // stepping back and then forward frame by frame returns the same frames; Play from an earlier
 // moment goes on exactly as the run went on, and drops the later frames as one undoable step (Undo
-// brings them back).
+// brings them back). The contact forces follow the timeline too: at a frame the readouts, probes
+// and free body show the forces of the step that ended there, the very values they showed live.
 
 #include "MainWindowTestSupport.h"
 #include "app/desktop/MainWindow.h"
 #include "app/document/Document.h"
 #include "app/sim/SimulationController.h"
 #include "physics/scene/SceneLibrary.h"
+#include "physics/world/FreeBody.h"
+#include "physics/world/Probes.h"
 #include "physics/world/World.h"
 #include "tests/support/StateBits.h"
 #include "ui/canvas/SceneView.h"
@@ -19,10 +22,12 @@
 #include <QAction>
 #include <QChart>
 #include <QChartView>
+#include <QFile>
 #include <QLabel>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
 #include <QXYSeries>
@@ -32,6 +37,8 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 using namespace phasebox;
@@ -75,13 +82,70 @@ QStringList readouts(MainWindow& w) {
     const auto* view = w.findChild<ui::ReadoutView*>();
     if (!view) return {};
     QStringList out{view->subject(), view->state()};
-    // Every row that the state, clock and ledger give (contact force reads the contact solver's
-    // impulses, which a shown frame does not carry: see the user guide).
     for (const char* label :
          {"position (x, y)", "velocity (vx, vy)", "speed", "angle", "angular velocity ω",
-          "kinetic energy", "momentum (px, py)", "angular momentum L"})
+          "kinetic energy", "momentum (px, py)", "angular momentum L", "contact force"})
         out << view->valueText(QString::fromUtf8(label));
     return out;
+}
+
+// A box resting on the floor and a smaller one dropped onto it from 0.95 m above its top.
+QString writeDropScene(const QTemporaryDir& dir) {
+    const QString path = dir.filePath(QStringLiteral("drop.json"));
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) return {};
+    f.write(R"({"format": "phasebox-scene", "version": 2,
+        "simulation": {"dt": 0.016666666666666666},
+        "effects": {"gravity": {}},
+        "planes": [{"id": "ground", "point": [0, 0], "normal": [0, 1]}],
+        "boxes": [{"id": "base", "position": [0, 0.5], "size": [1, 1]},
+                  {"id": "drop", "position": [0, 2.2], "size": [0.5, 0.5]}]})");
+    return path;
+}
+
+// The bits of a vector of doubles.
+std::vector<std::uint64_t> bitsOf(const std::vector<double>& values) {
+    std::vector<std::uint64_t> bits;
+    for (double v : values) bits.push_back(std::bit_cast<std::uint64_t>(v));
+    return bits;
+}
+
+// What a moment shows of the contact forces: the readout's value and text of the selection
+// ("drop"), the probes of both boxes, the world's contact force vectors and the free body's
+// contact on the dropped box (the Measure tools' free-body view).
+struct Forces {
+    std::vector<double> values;
+    QString text;
+    QString error;  // the status bar's local error estimate
+};
+
+Forces contactForcesShown(MainWindow& w) {
+    w.refreshNow();
+    QCoreApplication::processEvents();
+    const World& world = w.document().world();
+    Forces f;
+    const auto* view = w.findChild<ui::ReadoutView*>();
+    for (double v : view->values(QStringLiteral("contact force"))) f.values.push_back(v);
+    f.text = view->valueText(QStringLiteral("contact force"));
+    for (const QLabel* l : w.statusBar()->findChildren<QLabel*>())
+        if (l->text().startsWith(QStringLiteral("local error"))) f.error = l->text();
+    for (const char* id : {"base", "drop"}) {
+        const ProbeParse probe =
+            parseProbe(world, std::string("contact_force(") + id + std::string(")"));
+        f.values.push_back(probe ? evaluateProbe(world, *probe.probe) : -1.0);
+    }
+    for (const RigidBody& b : world.rigidBodies()) {
+        const Vec2 force = world.contactForce(b.dof);
+        f.values.push_back(force.x());
+        f.values.push_back(force.y());
+    }
+    Vec2 contact = Vec2::Zero();
+    if (const std::optional<FreeBody> body = freeBodyOf(world, "drop"))
+        for (const BodyForce& force : body->forces)
+            if (force.source == BodyForce::Source::Contact) contact = force.force;
+    f.values.push_back(contact.x());
+    f.values.push_back(contact.y());
+    return f;
 }
 
 struct Moment {
@@ -211,6 +275,72 @@ private slots:
         w.document().undoStack()->redo();
         QCOMPARE(slider->maximum(), 131);
         QVERIFY(run.now().bits == run.moments[131].bits);
+    }
+
+    // A box dropped onto a box at rest: scrubbed to before the impact, to the impact and around
+    // it, every contact force shown is the one shown live at that step, bit for bit, and so is
+    // each step back and forward.
+    void contactForcesFollowTheTimeline() {
+        MainWindow& w = *window_;
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QVERIFY(w.openFile(writeDropScene(dir), true));
+        w.document().setSelection({QStringLiteral("drop")});
+        w.action("showInstruments")->trigger();
+        const double dt = w.document().world().settings().dt;
+        std::vector<Forces> live{contactForcesShown(w)};
+        constexpr int kSteps = 60;
+        for (int i = 0; i < kSteps; ++i) {
+            QVERIFY(w.controller().advance(dt));
+            live.push_back(contactForcesShown(w));
+        }
+        // The impact: the first step with a contact force on the dropped box (values[2]: its
+        // probe). Before it the box falls free and the one below rests on the floor.
+        int impact = -1;
+        for (int k = 0; k <= kSteps && impact < 0; ++k)
+            if (live[static_cast<std::size_t>(k)].values[2] > 0.0) impact = k;
+        QVERIFY2(impact > 5 && impact < kSteps - 5, qPrintable(QString::number(impact)));
+        const Forces& before = live[static_cast<std::size_t>(impact - 1)];
+        QCOMPARE(before.values[2], 0.0);
+        QVERIFY(before.values[1] > 0.0);
+        // The impact's force on the dropped box is far above its weight (an impulse over dt).
+        double dropWeight = 0.0;
+        for (const RigidBody& b : w.document().world().rigidBodies())
+            if (b.id == "drop") dropWeight = b.mass * 9.81;
+        QVERIFY(dropWeight > 0.0);
+        QVERIFY(live[static_cast<std::size_t>(impact)].values[2] > dropWeight);
+        QVERIFY(!live.back().error.isEmpty());  // an estimate every step at dt 1/60
+        QVERIFY(effectsPanelOf(w)->costNote().isEmpty());
+
+        auto* slider = w.findChild<QSlider*>(QStringLiteral("timelineSlider"));
+        QCOMPARE(slider->maximum(), kSteps);
+        const auto same = [&](int frame) {
+            const Forces shown = contactForcesShown(w);
+            const Forces& then = live[static_cast<std::size_t>(frame)];
+            return bitsOf(shown.values) == bitsOf(then.values) && shown.text == then.text &&
+                   shown.error == then.error && w.controller().shownFrame() == frame;
+        };
+        for (int frame : {impact - 1, impact, 0, impact + 1, 3, impact - 1, kSteps - 1}) {
+            slider->setValue(frame);
+            QVERIFY2(same(frame), qPrintable(QStringLiteral("frame %1").arg(frame)));
+        }
+        // The step costs are the run's, and say so: a frame keeps no timing.
+        QVERIFY(!effectsPanelOf(w)->costNote().isEmpty());
+        slider->setValue(impact + 3);
+        for (int k = 1; k <= 6; ++k) {
+            w.action("frameBack")->trigger();
+            QVERIFY2(same(impact + 3 - k), qPrintable(QStringLiteral("back %1").arg(k)));
+        }
+        for (int k = 1; k <= 6; ++k) {
+            w.action("frameForward")->trigger();
+            QVERIFY2(same(impact - 3 + k), qPrintable(QStringLiteral("forward %1").arg(k)));
+        }
+        // The live end again.
+        slider->setValue(kSteps);
+        QCOMPARE(w.controller().shownFrame(), -1);
+        QVERIFY(bitsOf(contactForcesShown(w).values) ==
+                bitsOf(live[static_cast<std::size_t>(kSteps)].values));
+        QVERIFY(effectsPanelOf(w)->costNote().isEmpty());
     }
 
     // The timeline fits under the canvas in a small window and shows the recording's memory.

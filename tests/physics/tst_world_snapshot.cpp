@@ -108,6 +108,63 @@ private slots:
         }
     }
 
+    // A frame shown gives back the forces the readouts read at that step (each body's contact
+    // force, each joint's force on its bodies), bit for bit, under every contact model; stepping
+    // on reads the live ones again.
+    void shownFrameGivesBackItsForces_data() {
+        QTest::addColumn<QString>("scene");
+        for (const char* name : {"pyramid", "chain", "rk45 pyramid", "penalty", "kinematic"})
+            QTest::newRow(name) << QString::fromLatin1(name);
+    }
+
+    void shownFrameGivesBackItsForces() {
+        QFETCH(QString, scene);
+        auto world = buildWorld(sceneNamed(scene)).world;
+        QVERIFY(world);
+        const auto forcesOf = [](const World& w) {
+            std::vector<std::uint64_t> bits;
+            const auto add = [&](double v) { bits.push_back(std::bit_cast<std::uint64_t>(v)); };
+            for (const Particle& p : w.particles())
+                for (double v : w.contactForce(p.dof)) add(v);
+            for (const RigidBody& b : w.rigidBodies())
+                for (double v : w.contactForce(b.dof)) add(v);
+            for (int j = 0; j < static_cast<int>(w.joints().size()); ++j) {
+                add(w.jointForce(j));
+                for (bool onB : {false, true})
+                    for (double v : w.jointForceOn(j, onB)) add(v);
+            }
+            return bits;
+        };
+        std::vector<FrameState> frames;
+        std::vector<std::vector<std::uint64_t>> live;
+        bool touched = false, pulled = false;
+        for (int i = 0; i < 90; ++i) {
+            world->step();
+            frames.push_back(FrameState::of(*world));
+            live.push_back(forcesOf(*world));
+            for (const RigidBody& b : world->rigidBodies())
+                touched = touched || world->contactForce(b.dof) != Vec2::Zero();
+            for (const Particle& p : world->particles())
+                touched = touched || world->contactForce(p.dof) != Vec2::Zero();
+            pulled = pulled || (!world->joints().empty() && world->jointForce(0) != 0.0);
+        }
+        QVERIFY(touched || pulled);  // the scene has forces to give back
+        for (int i : {0, 44, 13, 89, 70}) {
+            QVERIFY(WorldSnapshot::show(*world, frames[static_cast<std::size_t>(i)]));
+            QVERIFY(world->showsRecordedFrame());
+            QVERIFY2(forcesOf(*world) == live[static_cast<std::size_t>(i)],
+                     qPrintable(QStringLiteral("frame %1").arg(i)));
+        }
+        // A frame of a pile keeps the touching bodies' forces only.
+        const FrameState& last = frames.back();
+        QVERIFY(last.forces.contactDofs.size() <=
+                world->particles().size() + world->rigidBodies().size());
+        QVERIFY(last.bytes() >= sizeof(FrameState) + last.forces.bytes());
+        // Stepping on from the frame shown reads the live forces of the new step again.
+        world->step();
+        QVERIFY(!world->showsRecordedFrame());
+    }
+
     // Restoring twice from one snapshot, with other steps between, gives one answer: the
     // snapshot is not consumed or changed by a restore.
     void restoreIsRepeatable() {

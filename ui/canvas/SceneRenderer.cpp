@@ -596,8 +596,8 @@ void drawArrows(const Frame& f) {
         if (const JointSolver* joints = w.jointSolver()) {
             for (int i = 0; i < joints->jointCount(); ++i) {
                 const Joint& j = w.joints()[i];
-                for (const auto& [body, force] :
-                     {std::pair{&j.a, joints->forceOnA(i)}, std::pair{&j.b, joints->forceOnB(i)}}) {
+                for (const auto& [body, force] : {std::pair{&j.a, w.jointForceOn(i, false)},
+                                                  std::pair{&j.b, w.jointForceOn(i, true)}}) {
                     if (body->kind == JointBody::Kind::Particle) particles[body->index] += force;
                     if (body->kind == JointBody::Kind::Rigid) boxes[body->index] += force;
                 }

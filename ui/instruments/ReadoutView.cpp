@@ -162,6 +162,12 @@ QString ReadoutView::valueText(const QString& label) const {
     return {};
 }
 
+QVector<double> ReadoutView::values(const QString& label) const {
+    for (const ReadoutRow& row : rows_)
+        if (row.label == label) return row.values;
+    return {};
+}
+
 int ReadoutView::rowCount() const {
     return static_cast<int>(rows_.size());
 }

@@ -42,6 +42,8 @@ public:
     QString state() const;
     // The value column's text of the row with this label ("" when there is none).
     QString valueText(const QString& label) const;
+    // The values of the row with this label, as read (empty when there is none).
+    QVector<double> values(const QString& label) const;
     int rowCount() const;
 
 signals:

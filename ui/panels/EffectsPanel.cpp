@@ -157,6 +157,11 @@ EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
     // Beside the Add button it wraps rather than run under it in a narrow dock.
     total_->setWordWrap(true);
 
+    costNote_ = new QLabel;
+    costNote_->setObjectName(QStringLiteral("costNote"));
+    costNote_->setWordWrap(true);
+    costNote_->hide();
+
     auto* bottom = new QHBoxLayout;
     bottom->addWidget(addButton_);
     bottom->addStretch(1);
@@ -166,6 +171,7 @@ EffectsPanel::EffectsPanel(QWidget* parent) : QWidget(parent) {
     layout->setContentsMargins(6, 6, 6, 6);
     layout->addWidget(tree_, 1);
     layout->addWidget(createStageView());
+    layout->addWidget(costNote_);
     layout->addLayout(bottom);
     setMinimumWidth(220);
 
@@ -393,6 +399,15 @@ QString EffectsPanel::stageCostText(const QString& stage) const {
         if (stages_->topLevelItem(i)->data(kNameColumn, Qt::UserRole).toString() == stage)
             return stages_->topLevelItem(i)->text(kCostColumn);
     return {};
+}
+
+void EffectsPanel::setCostNote(const QString& note) {
+    costNote_->setText(note);
+    costNote_->setVisible(!note.isEmpty());
+}
+
+QString EffectsPanel::costNote() const {
+    return costNote_->text();
 }
 
 }  // namespace phasebox::ui

@@ -68,8 +68,11 @@ public:
     // the coarse view of which the effect rows are the finer one. Rows are updated in place.
     void setStageCosts(const std::vector<StageCost>& stages);
     QString stageCostText(const QString& stage) const;  // empty for an unknown stage
-    QStringList effectNames() const;                    // the rows' names, in order
-    QStringList addableEffects() const;                 // CONTRACT §1 effects not in the rows
+    // A line under the costs saying what they are of (empty: none, the live run's costs).
+    void setCostNote(const QString& note);
+    QString costNote() const;
+    QStringList effectNames() const;     // the rows' names, in order
+    QStringList addableEffects() const;  // CONTRACT §1 effects not in the rows
     bool isEnabled(const QString& name) const;
     QString costText(const QString& name) const;
     QString totalText() const;
@@ -101,6 +104,7 @@ private:
     QToolButton* addButton_ = nullptr;
     QMenu* addMenu_ = nullptr;
     QLabel* total_ = nullptr;
+    QLabel* costNote_ = nullptr;
     QIcon blankIndicator_;
     QHash<QString, QTreeWidgetItem*> items_;
     QHash<QString, bool> enabled_;  // the last state shown, to tell user toggles from updates

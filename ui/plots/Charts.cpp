@@ -4,13 +4,13 @@
 
 #include <QAbstractAxis>
 #include <QBuffer>
+#include <QCategoryAxis>
 #include <QChart>
 #include <QCoreApplication>
 #include <QGraphicsScene>
 #include <QImage>
 #include <QLegend>
 #include <QLineSeries>
-#include <QLogValueAxis>
 #include <QPainter>
 #include <QPen>
 #include <QSvgGenerator>
@@ -89,6 +89,31 @@ QChart* newChart(const QString& title) {
     return chart;
 }
 }  // namespace
+
+QString powerOfTen(int exponent) {
+    static const char16_t digits[] = u"⁰¹²³⁴⁵⁶⁷⁸⁹";
+    QString power;
+    for (int n = std::abs(exponent); n > 0 || power.isEmpty(); n /= 10)
+        power.prepend(QChar(digits[n % 10]));
+    if (exponent < 0) power.prepend(QChar(u'⁻'));
+    const QLocale locale = storedChartLocale().value_or(QLocale::c());
+    return locale.toString(10) + power;
+}
+
+QCategoryAxis* createDecadeAxis(double lo, double hi, int step) {
+    auto* axis = new QCategoryAxis;
+    axis->setRange(lo, hi);
+    step = std::max(step, 1);
+    // The categories end at the labelled powers; the first starts below the range, so that a
+    // power at lo is labelled too.
+    axis->setStartValue(lo - step);
+    axis->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+    axis->setMinorTickCount(0);
+    // Whole powers that are multiples of step, as a value axis anchored at 0 would tick them.
+    for (int n = static_cast<int>(std::ceil(lo / step)) * step; n <= hi; n += step)
+        axis->append(powerOfTen(n), n);
+    return axis;
+}
 
 void setChartLocale(const std::optional<QLocale>& locale) {
     auto& stored = storedChartLocale();
@@ -254,7 +279,7 @@ QChart* createErrorChart(std::span<const QPointF> samples, const QString& title)
     double tlo = std::numeric_limits<double>::infinity(), thi = -tlo, elo = tlo, ehi = -tlo;
     for (const QPointF& p : samples) {
         if (!(p.y() > 0.0) || !std::isfinite(p.y())) continue;
-        points.push_back(p);
+        points.push_back({p.x(), std::log10(p.y())});  // the error axis holds log10 of the error
         tlo = std::min(tlo, p.x());
         thi = std::max(thi, p.x());
         elo = std::min(elo, p.y());
@@ -267,14 +292,11 @@ QChart* createErrorChart(std::span<const QPointF> samples, const QString& title)
     auto* t = new QValueAxis;
     t->setTitleText(chartText(QT_TRANSLATE_NOOP("Charts", "time [s]")));
     fitTimeAxis(t, std::isfinite(tlo) ? tlo : 0.0, std::isfinite(thi) ? thi : 1.0);
-    auto* e = new QLogValueAxis;
-    e->setTitleText(chartText(QT_TRANSLATE_NOOP("Charts", "error [m]")));
-    e->setBase(10.0);
-    e->setLabelFormat(QStringLiteral("%.0e"));
     if (!std::isfinite(elo)) elo = ehi = 1e-6;
     // Whole decades around the samples, so the axis reads as orders of magnitude.
-    e->setRange(std::pow(10.0, std::floor(std::log10(elo))),
-                std::pow(10.0, std::ceil(std::log10(ehi)) + (ehi == elo ? 1 : 0)));
+    auto* e = createDecadeAxis(std::floor(std::log10(elo)),
+                               std::ceil(std::log10(ehi)) + (ehi == elo ? 1 : 0));
+    e->setTitleText(chartText(QT_TRANSLATE_NOOP("Charts", "error [m]")));
     chart->addAxis(t, Qt::AlignBottom);
     chart->addAxis(e, Qt::AlignLeft);
     series->attachAxis(t);

@@ -15,6 +15,7 @@
 #include <span>
 
 QT_BEGIN_NAMESPACE
+class QCategoryAxis;
 class QChart;
 class QPainter;
 class QRectF;
@@ -83,6 +84,14 @@ void setChartLocale(const std::optional<QLocale>& locale);
 const std::optional<QLocale>& chartLocale();
 // Gives a new chart that locale's tick labels (nothing while none is set).
 void applyChartLocale(QChart* chart);
+
+// 10ⁿ as a reader writes it ("10⁻⁶", "10³"), the 10 in the charts' locale's digits: the tick
+// labels of the log axes in every language (Qt Charts' own log axis writes printf's "1e-06",
+// or the locale's "1E-06").
+QString powerOfTen(int exponent);
+// An axis over log10 of the values, from lo to hi (log10 units), labelled powerOfTen at every
+// step-th whole power of ten between them, with a grid line there.
+QCategoryAxis* createDecadeAxis(double lo, double hi, int step = 1);
 
 // The series colours, shared with the app's legends.
 // 0 kinetic, 1 potential, 2 total, 3 work_nc, 4 drift, 5 correction.

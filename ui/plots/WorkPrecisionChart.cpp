@@ -4,6 +4,7 @@
 
 #include "ui/plots/Charts.h"
 
+#include <QCategoryAxis>
 #include <QChart>
 #include <QFont>
 #include <QGraphicsLayout>
@@ -11,7 +12,6 @@
 #include <QLegend>
 #include <QLineSeries>
 #include <QPen>
-#include <QValueAxis>
 
 #include <algorithm>
 #include <cmath>
@@ -48,19 +48,14 @@ Qt::PenStyle integratorLineStyle(const QString& name) {
 }
 
 // Half decades with a margin, so every point and its marker sit inside without a band of
-// empty decade, and grid lines at the powers of 10.
-void fitDecades(QValueAxis* axis, double lo, double hi) {
+// empty decade, and grid lines at the powers of 10. The axis holds log10 of the value and its
+// labels the value itself (10⁻⁶), as a student reads it, without a log axis that Qt Charts
+// cannot label a point on.
+QCategoryAxis* decadesAround(double lo, double hi) {
     if (!std::isfinite(lo) || !std::isfinite(hi)) lo = hi = 0.0;
     lo = std::floor(2.0 * (lo - 0.2)) / 2.0;
     hi = std::ceil(2.0 * (hi + 0.2)) / 2.0;
-    axis->setRange(lo, hi);
-    axis->setTickType(QValueAxis::TicksDynamic);
-    axis->setTickAnchor(0.0);
-    axis->setTickInterval(hi - lo > 12.0 ? 2.0 : 1.0);
-    axis->setMinorTickCount(0);
-    // The axis holds log10 of the value; "1e%.0f" prints the value itself (1e-6), as a
-    // student reads it, without a log axis that Qt Charts cannot label a point on.
-    axis->setLabelFormat(QStringLiteral("1e%.0f"));
+    return createDecadeAxis(lo, hi, hi - lo > 12.0 ? 2 : 1);
 }
 
 struct PointLabel {
@@ -213,12 +208,10 @@ QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, con
         chart->addSeries(series);
     }
 
-    auto* x = new QValueAxis;
+    QCategoryAxis* x = decadesAround(xlo, xhi);
     x->setTitleText(workPrecisionTimeTitle());
-    auto* y = new QValueAxis;
+    QCategoryAxis* y = decadesAround(ylo, yhi);
     y->setTitleText(workPrecisionErrorTitle());
-    fitDecades(x, xlo, xhi);
-    fitDecades(y, ylo, yhi);
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
     for (QAbstractSeries* s : chart->series()) {

@@ -32,7 +32,7 @@ QString workPrecisionTimeTitle();   // "CPU time [s], left is faster"
 // Line styles follow the registry: solid explicit, dashed implicit, dotted adaptive; each
 // integrator keeps its colour in every diagram. Text follows `font` (the widget's, larger in
 // presentation mode): tick labels and legend at its size, titles bold, dt labels a little
-// smaller. Tick labels read 1e-6, not -6: the axes are log10 of the values.
+// smaller. Tick labels read 10⁻⁶, not -6: the axes are log10 of the values.
 QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, const QString& title,
                                  const QFont& font);
 QChart* createWorkPrecisionChart(std::span<const WorkPrecisionPoint> points, const QString& title);

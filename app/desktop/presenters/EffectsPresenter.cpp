@@ -20,7 +20,7 @@ QString qs(std::string_view s) {
 
 EffectsPresenter::EffectsPresenter(ui::EffectsPanel& panel, Document& document,
                                    SimulationController& controller, QObject* parent)
-    : Presenter(parent), panel_(panel), document_(document) {
+    : Presenter(parent), panel_(panel), document_(document), controller_(controller) {
     connect(&document_, &Document::sceneReset, this, [this] {
         switchedOff_.clear();
         updateRows();
@@ -28,6 +28,7 @@ EffectsPresenter::EffectsPresenter(ui::EffectsPanel& panel, Document& document,
     connect(&document_, &Document::sceneEdited, this, &EffectsPresenter::updateRows);
     connect(&controller, &SimulationController::stepped, this, &EffectsPresenter::updateCosts);
     connect(&controller, &SimulationController::statsChanged, this, &EffectsPresenter::updateCosts);
+    connect(&controller, &SimulationController::frameShown, this, &EffectsPresenter::updateCosts);
     connect(&panel_, &ui::EffectsPanel::effectToggled, this, &EffectsPresenter::setEnabled);
     connect(&panel_, &ui::EffectsPanel::addEffectRequested, this, &EffectsPresenter::add);
 }
@@ -80,16 +81,21 @@ void EffectsPresenter::updateCosts() {
 
 void EffectsPresenter::showCosts() {
     const World& world = document_.world();
-    // A world that has not stepped shows no costs (what building it evaluated is no step).
-    panel_.setCosts(world.effectCosts(), world.stepCount(), world.integratorSeconds());
+    // Means over the steps the profile timed (a world that has not stepped shows none: what
+    // building it evaluated is no step), whichever frame the world shows.
     const StepProfile& profile = world.stepProfile();
+    panel_.setCosts(world.effectCosts(), profile.steps, world.integratorSeconds());
     std::vector<ui::StageCost> stages;
     for (int i = 0; i < StepProfile::kStageCount; ++i) {
         const std::string_view name = StepProfile::kStageNames[static_cast<std::size_t>(i)];
         stages.push_back({QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())),
-                          world.stepCount() > 0 && profile.ran(i) ? profile.msPerStep(i) : -1.0});
+                          profile.steps > 0 && profile.ran(i) ? profile.msPerStep(i) : -1.0});
     }
     panel_.setStageCosts(stages);
+    panel_.setCostNote(controller_.shownFrame() >= 0 && profile.steps > 0
+                           ? tr("Costs per step of the whole run: a recorded frame keeps no "
+                                "timing of its own.")
+                           : QString());
 }
 
 }  // namespace phasebox

@@ -2,7 +2,8 @@
 // The Effects dock: the effects the scene lists (a check box each, switched on and off as undo
 // steps), the stages the world runs because of what the scene holds (springs, contacts), and
 // what each costs per step while the simulation runs, with the step profile (World::stepProfile):
-// the cost of each stage of the step.
+// the cost of each stage of the step. Costs are means over the steps timed; a recorded frame
+// keeps no timing, so at a frame the timeline shows they stay the run's, and say so.
 
 #include "app/desktop/presenters/Presenter.h"
 
@@ -36,6 +37,7 @@ private:
 
     ui::EffectsPanel& panel_;
     Document& document_;
+    SimulationController& controller_;
     std::set<QString> switchedOff_;  // effects switched off this scene: shown unchecked
 };
 

@@ -40,6 +40,7 @@ StatusPresenter::StatusPresenter(QStatusBar& bar, Document& document,
     connect(&controller_, &SimulationController::stepped, this, &StatusPresenter::refresh);
     connect(&controller_, &SimulationController::statsChanged, this, &StatusPresenter::refresh);
     connect(&controller_, &SimulationController::runningChanged, this, &StatusPresenter::refresh);
+    connect(&controller_, &SimulationController::frameShown, this, &StatusPresenter::refresh);
 }
 
 void StatusPresenter::showMessage(const QString& text) {
@@ -73,7 +74,10 @@ void StatusPresenter::refresh() {
                                                   .arg(controller_.realTimeFactor(), 0, 'f', 2)
                                                   .arg(controller_.speed())
                                             : tr("paused (speed %L1×)").arg(controller_.speed()));
-    cost_->setText(tr("%L1 ms per step").arg(ui::shownNumber(controller_.msPerStep(), 'g', 3)));
+    // The cost is the live run's mean: a recorded frame keeps no timing of its own.
+    const QString cost = ui::shownNumber(controller_.msPerStep(), 'g', 3);
+    cost_->setText(controller_.shownFrame() >= 0 ? tr("%L1 ms per step (live run)").arg(cost)
+                                                 : tr("%L1 ms per step").arg(cost));
 }
 
 }  // namespace phasebox
