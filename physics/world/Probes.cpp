@@ -441,7 +441,7 @@ double evaluateProbe(const World& world, const Probe& probe) {
             return jointAngle(world, probe.joint).value_or(0.0);
         case ProbeKind::JointForce: {
             const JointSolver* joints = world.jointSolver();
-            if (!joints || probe.joint >= joints->jointCount()) return 0.0;
+            if (!joints || probe.joint >= static_cast<int>(world.joints().size())) return 0.0;
             return joints->force(probe.joint);
         }
         case ProbeKind::ContactForce: {
