@@ -231,22 +231,18 @@ void JointSolver::carryFrom(const JointSolver& old) {
         ropeShaken_[now] = old.ropeShaken_[was];
     }
     // A body that kept turning keeps the stiffness it held (one that slept, what it held then).
+    // Per rigid body: the stiffness it held at the last bind, as it turned then or slept.
     sleptStiffness_ = old.sleptStiffness_;
-    for (std::size_t s = 0; s < old.turningBodies_.size(); ++s) {
-        const int body = old.turningBodies_[s];
-        if (std::find(turningBodies_.begin(), turningBodies_.end(), body) != turningBodies_.end())
-            continue;
-        if (body >= static_cast<int>(sleptStiffness_.size())) sleptStiffness_.resize(body + 1, 0.0);
-        sleptStiffness_[body] = old.heldStiffness_[s];
-    }
-    for (std::size_t s = 0; s < turningBodies_.size(); ++s) {
-        const auto it =
-            std::find(old.turningBodies_.begin(), old.turningBodies_.end(), turningBodies_[s]);
-        if (it != old.turningBodies_.end())
-            heldStiffness_[s] = old.heldStiffness_[it - old.turningBodies_.begin()];
-        else if (turningBodies_[s] < static_cast<int>(old.sleptStiffness_.size()))
-            heldStiffness_[s] = old.sleptStiffness_[turningBodies_[s]];
-    }
+    const auto hold = [this](int body, double stiffness) {
+        if (body >= static_cast<int>(sleptStiffness_.size()))
+            sleptStiffness_.resize(static_cast<std::size_t>(body) + 1, 0.0);
+        sleptStiffness_[body] = stiffness;
+    };
+    for (std::size_t s = 0; s < old.turningBodies_.size(); ++s)
+        hold(old.turningBodies_[s], old.heldStiffness_[s]);
+    for (std::size_t s = 0; s < turningBodies_.size(); ++s)
+        if (turningBodies_[s] < static_cast<int>(sleptStiffness_.size()))
+            heldStiffness_[s] = sleptStiffness_[turningBodies_[s]];
     forcesKnown_ = old.forcesKnown_;
 }
 

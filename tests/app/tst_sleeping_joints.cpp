@@ -7,7 +7,7 @@
 //     body at rest can (kSleepSpeed·dt);
 //   - waking one link wakes the whole chain, a switch of method wakes it, and it sleeps again;
 //   - a bridge that has come to rest sleeps with its load, a box dropped onto it wakes it, and
-//     where the bridge ends is where it ends with sleeping off;
+//     where the bridge ends is where it ends with sleeping off; a ragdoll at rest sleeps;
 //   - an island a motor drives stays awake.
 
 #include "app/io/SceneIO.h"
@@ -213,6 +213,25 @@ private slots:
         const double apart = largestMove(positions(*on), positions(*off));
         qInfo("largest distance of a body from the sleeping-off run: %.3g m", apart);
         QVERIFY(apart < 0.005);
+    }
+
+    // The ragdoll example with the bridge's air drag: tumbled down the stairs, it comes to rest
+    // at the wall and falls asleep whole, its nine hinges (with limits) out of the solver.
+    void ragdollAtTheWallSleeps() {
+        SceneDesc s = load(QStringLiteral("ragdoll.phasebox.json"));
+        s.simulation.sleep = true;
+        DragDesc drag;
+        drag.linear = 2.0;
+        drag.angular = 0.5;
+        s.effects.drag = drag;
+        auto w = build(s);
+        const int limbs = dynamicBodies(*w);
+        QCOMPARE(limbs, 10);
+        while (w->sleepingBodies() < limbs && w->time() < 30.0) QVERIFY(w->step());
+        qInfo("the ragdoll fell asleep at %.3f s", w->time());
+        QCOMPARE(w->sleepingBodies(), limbs);
+        QCOMPARE(w->jointSolver()->jointCount(), 0);
+        QVERIFY(fastest(*w) < World::kSleepSpeed);
     }
 
     // A motor drives its island: an arm hanging at rest that a motor holds at speed 0 stays
