@@ -74,10 +74,6 @@
         <source>Compare from here</source>
         <translation>Von hier vergleichen</translation>
     </message>
-    <message>
-        <source>Compare needs sleeping off (simulation.sleep in the scene file): a recording does not hold the islands asleep.</source>
-        <translation>Vergleichen braucht ausgeschaltetes Schlafen (simulation.sleep in der Szenendatei): Eine Aufzeichnung enthält die schlafenden Inseln nicht.</translation>
-    </message>
 </context>
 <context>
     <name>DivergenceText</name>
@@ -3617,6 +3613,14 @@ die Pfeile ändern sie um den Faktor zehn</translation>
     <message>
         <source>Kinematic</source>
         <translation>Kinematisch</translation>
+    </message>
+    <message>
+        <source>Let resting &amp;bodies sleep</source>
+        <translation>Ruhende Körper &amp;schlafen lassen</translation>
+    </message>
+    <message>
+        <source>Bodies that have stayed at rest for half a second are no longer simulated, and are drawn dimmed, until something touches them, drags them or an edit wakes them: large resting piles cost almost nothing</source>
+        <translation>Körper, die eine halbe Sekunde lang in Ruhe waren, werden nicht mehr simuliert und blass gezeichnet, bis etwas sie berührt, sie gezogen werden oder eine Änderung sie weckt: große ruhende Stapel kosten dann fast nichts</translation>
     </message>
 </context>
 <context>

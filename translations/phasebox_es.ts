@@ -74,10 +74,6 @@
         <source>Compare from here</source>
         <translation>Comparar desde aquí</translation>
     </message>
-    <message>
-        <source>Compare needs sleeping off (simulation.sleep in the scene file): a recording does not hold the islands asleep.</source>
-        <translation>Comparar requiere el reposo desactivado (simulation.sleep en el archivo de la escena): una grabación no guarda las islas en reposo.</translation>
-    </message>
 </context>
 <context>
     <name>DivergenceText</name>
@@ -3617,6 +3613,14 @@ las flechas la cambian en un factor diez</translation>
     <message>
         <source>Kinematic</source>
         <translation>Cinemático</translation>
+    </message>
+    <message>
+        <source>Let resting &amp;bodies sleep</source>
+        <translation>Dormir los cuerpos en re&amp;poso</translation>
+    </message>
+    <message>
+        <source>Bodies that have stayed at rest for half a second are no longer simulated, and are drawn dimmed, until something touches them, drags them or an edit wakes them: large resting piles cost almost nothing</source>
+        <translation>Los cuerpos que han estado en reposo medio segundo dejan de simularse y se dibujan atenuados hasta que algo los toca, se arrastran o una edición los despierta: los montones grandes en reposo casi no cuestan nada</translation>
     </message>
 </context>
 <context>

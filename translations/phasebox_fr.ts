@@ -74,10 +74,6 @@
         <source>Compare from here</source>
         <translation>Comparer à partir d&apos;ici</translation>
     </message>
-    <message>
-        <source>Compare needs sleeping off (simulation.sleep in the scene file): a recording does not hold the islands asleep.</source>
-        <translation>La comparaison demande que la mise en sommeil soit désactivée (simulation.sleep dans le fichier de scène) : un enregistrement ne garde pas les îlots endormis.</translation>
-    </message>
 </context>
 <context>
     <name>DivergenceText</name>
@@ -3617,6 +3613,14 @@ les flèches la changent d’un facteur dix</translation>
     <message>
         <source>Kinematic</source>
         <translation>Cinématique</translation>
+    </message>
+    <message>
+        <source>Let resting &amp;bodies sleep</source>
+        <translation>Endormir les corps au re&amp;pos</translation>
+    </message>
+    <message>
+        <source>Bodies that have stayed at rest for half a second are no longer simulated, and are drawn dimmed, until something touches them, drags them or an edit wakes them: large resting piles cost almost nothing</source>
+        <translation>Les corps restés au repos une demi-seconde ne sont plus simulés et sont dessinés estompés jusqu&apos;à ce que quelque chose les touche, qu&apos;on les fasse glisser ou qu&apos;une modification les réveille : les grands tas au repos ne coûtent presque rien</translation>
     </message>
 </context>
 <context>

@@ -30,11 +30,6 @@ bool CompareRun::start(SimulationController& controller, Document& document,
             "CompareRun",
             "Drag the timeline to an earlier moment first: the run is compared "
             "from there."));
-    if (document.setup().simulation.sleep || document.world().settings().sleep)
-        return refuse(QCoreApplication::translate(
-            "CompareRun",
-            "Compare needs sleeping off (simulation.sleep in the scene file): a "
-            "recording does not hold the islands asleep."));
     const SimulationSettings* recorded = recording->settingsAt(recording->frame(from).stepCount);
     if (!recorded)
         return refuse(QCoreApplication::translate(

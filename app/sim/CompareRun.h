@@ -33,8 +33,9 @@ public:
     // Starts a comparison from the timeline's shown frame: keeps the recorded frames from it on
     // as the ghost, puts the live world into the whole state the run had there
     // (SimulationController::resumeFromShownFrame) and switches it to `settings`, as one undo
-    // step. False with *why (nothing changed) when no earlier frame is shown, the scene sleeps
-    // (a recording does not hold islands asleep) or the ghost cannot be built.
+    // step. False with *why (nothing changed) when no earlier frame is shown or the ghost
+    // cannot be built. With sleeping on, the frame's islands asleep come back asleep, and the
+    // switch of settings wakes them (CONTRACT §6).
     bool start(SimulationController& controller, Document& document, const SimulationDesc& settings,
                QString* why = nullptr);
     // Drops the ghost (the live run goes on).

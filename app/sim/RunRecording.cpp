@@ -29,9 +29,13 @@ void RunRecording::setKeyframeInterval(long long steps) {
 
 void RunRecording::record(const World& world) {
     const long long step = world.stepCount();
-    if (!frames_.empty() &&
-        (step <= frames_.back().stepCount || world.positions().size() != frames_.back().q.size()))
-        clear();
+    // Another layout of the state is another world (an edit), unless islands fell asleep or
+    // woke: then the frames hold which bodies slept (FrameState::sleepers).
+    const auto otherLayout = [&] {
+        const FrameState& last = frames_.back();
+        return world.positions().size() != last.q.size() && !world.sleepers() && !last.sleepers;
+    };
+    if (!frames_.empty() && (step <= frames_.back().stepCount || otherLayout())) clear();
     frames_.push_back(FrameState::of(world));
     frameBytes_ += frames_.back().bytes();
     // A keyframe where the settings changed too (a method switched live): re-simulation from a

@@ -175,10 +175,12 @@ JointErrors JointSolver::errors(const Vec& q) const {
 }
 
 Vec2 JointSolver::pointA(int joint, const Vec& q) const {
-    return evaluate(endA_[joint], q, q).p;
+    const int k = active_[joint];
+    return evaluate(k >= 0 ? endA_[k] : idle_[joint].a, q, q).p;
 }
 Vec2 JointSolver::pointB(int joint, const Vec& q) const {
-    return evaluate(endB_[joint], q, q).p;
+    const int k = active_[joint];
+    return evaluate(k >= 0 ? endB_[k] : idle_[joint].b, q, q).p;
 }
 
 }  // namespace phasebox

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <type_traits>
 #include <utility>
@@ -62,25 +63,44 @@ joints::End resolveEnd(const Bodies& bodies, const JointBody& body) {
 
 // ---- binding: ends and the joint graph ----------------------------------------------------
 
-void JointSolver::bind(const Bodies& bodies) {
-    joints_ = bodies.joints;
-    const int m = static_cast<int>(joints_.size());
+void JointSolver::bind(const Bodies& bodies, bool carry) {
+    std::unique_ptr<JointSolver> old;
+    if (carry) old = std::make_unique<JointSolver>(*this);
+    const int scene = static_cast<int>(bodies.joints.size());
+    joints_.clear();
+    active_.assign(scene, -1);
+    sceneIndex_.clear();
+    idle_.assign(scene, Idle{});
     endA_.clear();
     endB_.clear();
     hasMotors_ = hasInequalities_ = false;
     turningDofs_.clear();
+    turningBodies_.clear();
     std::map<int, int> slots;  // dof → slot
-    const auto withSlot = [&](End e) {
+    const auto withSlot = [&](End e, const JointBody& body) {
         if (e.turns) {
             const auto [it, added] = slots.try_emplace(e.dof, static_cast<int>(slots.size()));
-            if (added) turningDofs_.push_back(e.dof);
+            if (added) {
+                turningDofs_.push_back(e.dof);
+                turningBodies_.push_back(body.index);
+            }
             e.slot = it->second;
         }
         return e;
     };
-    for (const Joint& j : joints_) {
-        endA_.push_back(withSlot(resolveEnd(bodies, j.a)));
-        endB_.push_back(withSlot(resolveEnd(bodies, j.b)));
+    for (int i = 0; i < scene; ++i) {
+        const Joint& j = bodies.joints[i];
+        const End a = resolveEnd(bodies, j.a), b = resolveEnd(bodies, j.b);
+        if (a.dof < 0 && b.dof < 0) {
+            idle_[i].a = a;
+            idle_[i].b = b;
+            continue;
+        }
+        active_[i] = static_cast<int>(joints_.size());
+        sceneIndex_.push_back(i);
+        joints_.push_back(j);
+        endA_.push_back(withSlot(a, j.a));
+        endB_.push_back(withSlot(b, j.b));
         hasMotors_ =
             hasMotors_ || (j.hasMotor && takesTorque(endA_.back()) && takesTorque(endB_.back()));
         hasInequalities_ = hasInequalities_ || j.hasLimits || j.type == Joint::Type::Rope ||
@@ -91,18 +111,21 @@ void JointSolver::bind(const Bodies& bodies) {
     const auto arm = [](const JointBody& b) {
         return b.kind == JointBody::Kind::Rigid ? b.point.norm() : 0.0;
     };
-    for (const Joint& j : joints_)
+    // Over every joint of the scene, asleep or not: what the awake ones are solved with does
+    // not change when others fall asleep.
+    for (const Joint& j : bodies.joints)
         for (const double length : {j.length, j.radius, arm(j.a), arm(j.b)})
             if (length > 0.0) smallest = std::min(smallest, length);
     shakeReach_ = joints::kShakeReach * (std::isfinite(smallest) ? smallest : 1.0);
     // A rope counts as taut within kTautFraction of its length: SHAKE must leave less than
     // that, or a rope it held would read as slack in the next step.
     shakeCeiling_ = joints::kShakeCeiling;
-    for (const Joint& j : joints_)
+    for (const Joint& j : bodies.joints)
         if (j.type == Joint::Type::Rope)
             shakeCeiling_ = std::min(shakeCeiling_, 0.5 * tautBand(j.length));
     shakeTolerance_ = joints::kProjectionTolerance;
     projectionFloor_ = joints::kProjectionTolerance;
+    const int m = jointCount();
     rotations_.assign(turningDofs_.size(), Mat2::Identity());
     heldStiffness_.assign(turningDofs_.size(), 0.0);
     rows_.assign(m, Rows{});
@@ -172,7 +195,7 @@ void JointSolver::bind(const Bodies& bodies) {
         }
     // A weld holds the angle too, and a hinge at a limit: those have three rows.
     blockRows_ = 2;
-    for (const Joint& j : joints_)
+    for (const Joint& j : bodies.joints)
         if (j.type == Joint::Type::Weld || (j.type == Joint::Type::Hinge && j.hasLimits))
             blockRows_ = 3;
     for (const Hub& hub : hubs_)
@@ -185,6 +208,42 @@ void JointSolver::bind(const Bodies& bodies) {
     factoredValid_ = false;
     rowsQ_.resize(0);
     rotationsKnown_ = false;
+    if (old) carryFrom(*old);
+}
+
+void JointSolver::carryFrom(const JointSolver& old) {
+    const int scene = static_cast<int>(active_.size());
+    for (int i = 0; i < scene && i < static_cast<int>(old.active_.size()); ++i) {
+        const int was = old.active_[i], now = active_[i];
+        if (now < 0) {  // asleep now: what it held when it fell asleep, or before
+            idle_[i].force = old.force(i);
+            idle_[i].forceOn = {old.forceOnA(i), old.forceOnB(i)};
+            continue;
+        }
+        if (was < 0) {  // woken: the forces it held when it fell asleep
+            forces_[now] = old.idle_[i].force;
+            forceOn_[now] = old.idle_[i].forceOn;
+            continue;
+        }
+        forces_[now] = old.forces_[was];
+        forceOn_[now] = old.forceOn_[was];
+        lambda_[now] = old.lambda_[was];
+        ropeShaken_[now] = old.ropeShaken_[was];
+    }
+    // A body that kept turning keeps the stiffness it held (one that slept, what it held then).
+    // Per rigid body: the stiffness it held at the last bind, as it turned then or slept.
+    sleptStiffness_ = old.sleptStiffness_;
+    const auto hold = [this](int body, double stiffness) {
+        if (body >= static_cast<int>(sleptStiffness_.size()))
+            sleptStiffness_.resize(static_cast<std::size_t>(body) + 1, 0.0);
+        sleptStiffness_[body] = stiffness;
+    };
+    for (std::size_t s = 0; s < old.turningBodies_.size(); ++s)
+        hold(old.turningBodies_[s], old.heldStiffness_[s]);
+    for (std::size_t s = 0; s < turningBodies_.size(); ++s)
+        if (turningBodies_[s] < static_cast<int>(sleptStiffness_.size()))
+            heldStiffness_[s] = sleptStiffness_[turningBodies_[s]];
+    forcesKnown_ = old.forcesKnown_;
 }
 
 template <class Add>

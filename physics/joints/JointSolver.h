@@ -47,7 +47,15 @@ class JointSolver {
 public:
     // Resolves every joint's bodies to state indices (a static or pinned body is fixed where
     // it is) and builds the elimination order. Call after the world's layout is built.
-    void bind(const Bodies& bodies);
+    // A joint whose two ends are both fixed (bodies asleep, static or the world: a sleeping
+    // island's joints) has nothing to act on: it is left out of the system and costs nothing;
+    // its points and last forces are kept for drawing and the readouts.
+    // carry: the layout changed only because islands fell asleep or woke (World's sleeping):
+    // what the joints and bodies still held carry over by joint and body, so that a joint that
+    // sleeps and wakes, and one that stayed awake meanwhile, steps on as it would have.
+    void bind(const Bodies& bodies, bool carry = false);
+    // The joints in the system: those that hold a body with a state (not sleeping ones). The
+    // accessors below take a joint's index in the scene (Bodies::joints).
     int jointCount() const { return static_cast<int>(joints_.size()); }
     // Off-diagonal blocks of the factor L (pairs of joints coupled after elimination): the
     // pairs that share a body plus the fill. For chains and trees there is no fill.
@@ -171,11 +179,21 @@ public:
     JointErrors errors(const Vec& q) const;
     // The magnitude of joint i's constraint force at the last evaluation (N; a weld's or a
     // hinge's force on its point, a rod's, rope's or pulley's tension, a track's normal force).
-    double force(int joint) const { return forces_[joint]; }
+    // A joint left out of the system (asleep) keeps the force it had when it fell asleep.
+    double force(int joint) const {
+        const int k = active_[joint];
+        return k >= 0 ? forces_[k] : idle_[joint].force;
+    }
     // The constraint force on body a at its point, and on body b at its (N), at the last
     // evaluation: what force arrows draw.
-    Vec2 forceOnA(int joint) const { return forceOn_[joint][0]; }
-    Vec2 forceOnB(int joint) const { return forceOn_[joint][1]; }
+    Vec2 forceOnA(int joint) const {
+        const int k = active_[joint];
+        return k >= 0 ? forceOn_[k][0] : idle_[joint].forceOn[0];
+    }
+    Vec2 forceOnB(int joint) const {
+        const int k = active_[joint];
+        return k >= 0 ? forceOn_[k][1] : idle_[joint].forceOn[1];
+    }
     // World position of a joint's point on body a or b at q (for drawing).
     Vec2 pointA(int joint, const Vec& q) const;
     Vec2 pointB(int joint, const Vec& q) const;
@@ -248,7 +266,22 @@ private:
 
     void solve();
 
-    std::vector<Joint> joints_;
+    std::vector<Joint> joints_;  // those in the system
+    // Per scene joint: its index in joints_, or −1 for one left out (bind()); per joint in
+    // joints_: its scene index.
+    std::vector<int> active_, sceneIndex_;
+    // What a joint left out keeps: its fixed ends and its last forces.
+    struct Idle {
+        End a, b;
+        double force = 0.0;
+        std::array<Vec2, 2> forceOn{Vec2::Zero(), Vec2::Zero()};
+    };
+    std::vector<Idle> idle_;
+    // What bind(carry) carries over from the joints and bodies of the last bind().
+    void carryFrom(const JointSolver& old);
+    std::vector<int> turningBodies_;  // per slot: the turning body's index (Bodies::rigidBodies)
+    // Per rigid body asleep: the stiffness it held when it fell asleep (bind(carry)).
+    std::vector<double> sleptStiffness_;
     std::vector<int> turningDofs_;  // per slot: the turning body's first state index
     std::vector<Mat2> rotations_;   // per slot: R(θ) at rotationsQ_
     Vec rotationsQ_;                // the q of rotations_, where rotationsKnown_

@@ -61,8 +61,7 @@ std::optional<FreeBody> freeBodyOf(const World& world, std::string_view id) {
             return b.kind != JointBody::Kind::World &&
                    isBody(b.kind == JointBody::Kind::Rigid, b.index);
         };
-        for (int i = 0; i < joints->jointCount() && i < static_cast<int>(world.joints().size());
-             ++i) {
+        for (int i = 0; i < static_cast<int>(world.joints().size()); ++i) {
             const Joint& j = world.joints()[i];
             if (!on(j.a) && !on(j.b)) continue;
             Vec2 f = Vec2::Zero();

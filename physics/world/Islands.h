@@ -7,6 +7,8 @@
 // in which ties are added: the same scene sleeps the same way, bit for bit. Path halving keeps
 // finds nearly constant; no rank is kept (the lower-index rule already decides).
 
+#include "physics/core/Types.h"
+
 #include <utility>
 #include <vector>
 
@@ -36,6 +38,21 @@ public:
 
 private:
     std::vector<int> parent_;
+};
+
+// The bodies asleep at one moment (World::sleepers()): which they are, the state their records
+// keep while they sleep, and what of the ledger's energy they hold. Constant while the same
+// islands sleep, so every recorded frame of that stretch shares one.
+struct Sleepers {
+    struct Body {
+        bool rigid = false;
+        int index = -1;  // in Bodies::particles or Bodies::rigidBodies
+        Vec2 position{0.0, 0.0}, velocity{0.0, 0.0};
+        double angle = 0.0, angularVelocity = 0.0;
+    };
+    std::vector<Body> bodies;  // particles first, then rigid bodies, each by index
+    double kinetic = 0.0, potential = 0.0;
+    std::size_t bytes() const { return sizeof(Sleepers) + bodies.size() * sizeof(Body); }
 };
 
 }  // namespace phasebox

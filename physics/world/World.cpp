@@ -160,7 +160,7 @@ void World::commit() {
     configureContactModel();
     if (!bodies_.joints.empty()) {
         if (!joints_) joints_ = std::make_unique<JointSolver>();
-        joints_->bind(bodies_);
+        joints_->bind(bodies_, sleepRelayout_);
         jointScratch_.setZero(n);
         if (contacts_) {  // step(): the state the contacts start from, where both act
             beforeContactsQ_.setZero(n);

@@ -195,7 +195,9 @@ public:
     // is held as it was (the ledger books nothing for them). Contacts see them as static bodies.
     // The island wakes, exactly as it fell asleep, when an awake body comes within reach
     // (ContactStage::reachedSleepers), on an edit of the world (objects, effects) and when the
-    // method or the contact model is switched. An island held by a joint stays awake.
+    // method or the contact model is switched. Joints tie their bodies into one island, which
+    // sleeps with its joints (they leave the joint solver, JointSolver::bind, and come back with
+    // what they held); an island a motor drives stays awake.
     static constexpr double kSleepSpeed = 0.01;                                     // m/s
     static constexpr double kSleepTurnRate = 2.0 * 3.14159265358979323846 / 180.0;  // rad/s
     static constexpr double kSleepSeconds = 0.5;
@@ -206,6 +208,9 @@ public:
     // Wakes the island of one body (rigid: a RigidBody record, else a particle); false when it was
     // awake.
     bool wakeBody(bool rigid, int index);
+    // The bodies asleep now and what their records hold (nullptr when none sleeps): shared,
+    // so that a recording keeps one for every frame of a stretch in which the same islands sleep.
+    const std::shared_ptr<const Sleepers>& sleepers() const { return sleepers_; }
 
     // ---- diagnostics ------------------------------------------------------------------
     // Step doubling at the current state: one sub-step of h = dt/substeps against two of h/2
@@ -267,6 +272,12 @@ private:
     bool wakeIsland(int island);
     void relayoutForSleep();
     void resetSleep();
+    // The bodies s names asleep (their records set from it) and every other awake, the state
+    // rebuilt around them when that changes which bodies sleep (WorldSnapshot). All of them
+    // count as one island; the island ids and timers are the caller's to set.
+    void putToSleep(const std::shared_ptr<const Sleepers>& s);
+    // The layout rebuilt for the asleep flags of the records, the contacts and joints carried.
+    void rebuildForSleep();
     void ensureLayout() {
         if (layoutDirty_) commit();
     }
@@ -390,6 +401,7 @@ private:
     // What the bodies asleep hold of the ledger's kinetic and potential energy: constant while
     // they sleep, taken when the state was rebuilt around them.
     double sleepingKinetic_ = 0.0, sleepingPotential_ = 0.0;
+    std::shared_ptr<const Sleepers> sleepers_;
     bool sleepRelayout_ = false;  // commit() rebuilds for a change of islands, not an edit
     std::vector<double> keptEffectSeconds_;
     // A recorded frame shown (WorldSnapshot::show): its forces answer contactForce and

@@ -159,7 +159,7 @@ double World::jointForce(int j) const {
         return j >= 0 && j < static_cast<int>(shownForces_.joints.size())
                    ? shownForces_.joints[static_cast<std::size_t>(j)].magnitude
                    : 0.0;
-    return joints_ && j >= 0 && j < joints_->jointCount() ? joints_->force(j) : 0.0;
+    return joints_ && j >= 0 && j < static_cast<int>(joints().size()) ? joints_->force(j) : 0.0;
 }
 
 Vec2 World::jointForceOn(int j, bool onB) const {
@@ -168,7 +168,7 @@ Vec2 World::jointForceOn(int j, bool onB) const {
         const FrameForces::Joint& f = shownForces_.joints[static_cast<std::size_t>(j)];
         return onB ? f.onB : f.onA;
     }
-    if (!joints_ || j < 0 || j >= joints_->jointCount()) return Vec2::Zero();
+    if (!joints_ || j < 0 || j >= static_cast<int>(joints().size())) return Vec2::Zero();
     return onB ? joints_->forceOnB(j) : joints_->forceOnA(j);
 }
 

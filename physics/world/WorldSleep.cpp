@@ -1,6 +1,8 @@
 // Sleeping (simulation.sleep, CONTRACT §6): islands at rest leave the state until something
 // wakes them. A body asleep is out of the flat state like a static body, so the method, the
-// effects and the contact solve never see it: it costs nothing, as an absent effect does. Its
+// effects, the contact solve and the joint solver never see it (a joint between two fixed ends
+// leaves the joint solver's system, JointSolver::bind): it costs nothing, as an absent effect
+// does. Its
 // record keeps its position and velocity, and the ledger keeps its energy as a constant, so it
 // wakes exactly as it fell asleep and nothing is booked for it.
 //
@@ -13,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace phasebox {
 
@@ -28,6 +31,7 @@ void World::resetSleep() {
     islands_.reset(static_cast<int>(count));
     sleepingBodies_ = 0;
     sleepingKinetic_ = sleepingPotential_ = 0.0;
+    sleepers_.reset();
 }
 
 void World::wakeAll() {
@@ -109,7 +113,7 @@ void World::updateSleep() {
 }
 
 // Islands among the awake bodies; those whose every body has rested kSleepSeconds and that no
-// joint holds fall asleep. Returns whether any did.
+// motor drives fall asleep, their joints with them. Returns whether any did.
 bool World::fallAsleep() {
     const int particles = static_cast<int>(bodies_.particles.size());
     islands_.reset(static_cast<int>(restingSeconds_.size()));
@@ -161,9 +165,12 @@ bool World::fallAsleep() {
         double& rest = islandRest_[islands_.find(body)];
         rest = std::min(rest, restingSeconds_[body]);
     });
+    // A motor drives its island: stalled against a limit or a load it is slow, not at rest.
     for (const Joint& j : bodies_.joints)
-        for (const JointBody* end : {&j.a, &j.b})
-            if (const int body = jointEnd(*end); body >= 0) islandHeld_[islands_.find(body)] = 1;
+        if (j.hasMotor)
+            for (const JointBody* end : {&j.a, &j.b})
+                if (const int body = jointEnd(*end); body >= 0)
+                    islandHeld_[islands_.find(body)] = 1;
     bool any = false;
     each([&](int body) {
         const int root = islands_.find(body);
@@ -186,12 +193,7 @@ void World::relayoutForSleep() {
     const double kinetic = kineticEnergy(), potential = potentialEnergy();  // every body's
     sleepingKinetic_ = sleepingPotential_ = 0.0;
     storeStateInObjects();
-    keptEffectSeconds_ = effectSeconds_;
-    layoutDirty_ = true;
-    sleepRelayout_ = true;
-    commit();
-    sleepRelayout_ = false;
-    effectSeconds_ = keptEffectSeconds_;
+    rebuildForSleep();
     if (contacts_ && settings_.contactModel == ContactModel::Impulse) {
         // The contacts found again at once, on the new layout, with the impulses and held forces
         // carried: the next step holds what the last one held. A trial step (what follows a load
@@ -205,14 +207,77 @@ void World::relayoutForSleep() {
     }
     sleepingBodies_ = 0;
     for (const int island : sleepingIsland_) sleepingBodies_ += island >= 0;
+    sleepers_.reset();
     if (sleepingBodies_ > 0) {
         sleepingKinetic_ = kinetic - kineticEnergy();
         sleepingPotential_ = potential - potentialEnergy();
+        auto sleepers = std::make_shared<Sleepers>();
+        sleepers->bodies.reserve(static_cast<std::size_t>(sleepingBodies_));
+        for (int i = 0; i < static_cast<int>(bodies_.particles.size()); ++i)
+            if (const Particle& p = bodies_.particles[i]; p.asleep)
+                sleepers->bodies.push_back({false, i, p.position, p.velocity, 0.0, 0.0});
+        for (int i = 0; i < static_cast<int>(bodies_.rigidBodies.size()); ++i)
+            if (const RigidBody& b = bodies_.rigidBodies[i]; b.asleep)
+                sleepers->bodies.push_back(
+                    {true, i, b.position, b.velocity, b.angle, b.angularVelocity});
+        sleepers->kinetic = sleepingKinetic_;
+        sleepers->potential = sleepingPotential_;
+        sleepers_ = std::move(sleepers);
     } else {
         nextIsland_ = 0;
     }
     ledger_.carryOver(kinetic, potential);
     guard_.forgetGrowth();
+}
+
+void World::rebuildForSleep() {
+    keptEffectSeconds_ = effectSeconds_;
+    layoutDirty_ = true;
+    sleepRelayout_ = true;
+    commit();
+    sleepRelayout_ = false;
+    effectSeconds_ = keptEffectSeconds_;
+}
+
+void World::putToSleep(const std::shared_ptr<const Sleepers>& s) {
+    ensureLayout();
+    if (s == sleepers_) return;
+    storeStateInObjects();
+    const int particles = static_cast<int>(bodies_.particles.size());
+    bool changed = false;
+    const auto setAsleep = [&](bool& flag, bool asleep) {
+        changed = changed || flag != asleep;
+        flag = asleep;
+    };
+    std::vector<char> asleep(sleepingIsland_.size(), 0);
+    if (s)
+        for (const Sleepers::Body& b : s->bodies) {
+            const int body = b.rigid ? particles + b.index : b.index;
+            if (body < 0 || body >= static_cast<int>(asleep.size())) continue;
+            asleep[body] = 1;
+            if (b.rigid) {
+                RigidBody& r = bodies_.rigidBodies[b.index];
+                r.position = b.position;
+                r.velocity = b.velocity;
+                r.angle = b.angle;
+                r.angularVelocity = b.angularVelocity;
+            } else {
+                bodies_.particles[b.index].position = b.position;
+                bodies_.particles[b.index].velocity = b.velocity;
+            }
+        }
+    sleepingBodies_ = 0;
+    for (int i = 0; i < static_cast<int>(asleep.size()); ++i) {
+        setAsleep(
+            i < particles ? bodies_.particles[i].asleep : bodies_.rigidBodies[i - particles].asleep,
+            asleep[i] != 0);
+        sleepingIsland_[i] = asleep[i] ? 0 : -1;
+        sleepingBodies_ += asleep[i];
+    }
+    sleepingKinetic_ = s ? s->kinetic : 0.0;
+    sleepingPotential_ = s ? s->potential : 0.0;
+    sleepers_ = s;
+    if (changed) rebuildForSleep();
 }
 
 }  // namespace phasebox

@@ -8,6 +8,16 @@ std::size_t vectorBytes(const Vec& v) {
     return static_cast<std::size_t>(v.size()) * sizeof(double);
 }
 
+// Whether the world has the bodies sleepers names.
+bool holdsSleepers(const World& world, const std::shared_ptr<const Sleepers>& sleepers) {
+    if (!sleepers) return true;
+    for (const Sleepers::Body& b : sleepers->bodies) {
+        const std::size_t count = b.rigid ? world.rigidBodies().size() : world.particles().size();
+        if (b.index < 0 || static_cast<std::size_t>(b.index) >= count) return false;
+    }
+    return true;
+}
+
 bool sameSettings(const SimulationSettings& a, const SimulationSettings& b) {
     return a.integrator == b.integrator && a.dt == b.dt && a.substeps == b.substeps &&
            a.tolerance == b.tolerance && a.newtonIterations == b.newtonIterations &&
@@ -32,19 +42,24 @@ FrameState FrameState::of(const World& world) {
     f.stepCount = world.stepCount();
     f.ledger = world.energy();
     world.contactForces(f.forces);
-    if (const JointSolver* joints = world.jointSolver()) {
-        f.forces.joints.resize(static_cast<std::size_t>(joints->jointCount()));
-        for (int j = 0; j < joints->jointCount(); ++j)
+    if (world.jointSolver()) {
+        const int count = static_cast<int>(world.joints().size());
+        f.forces.joints.resize(static_cast<std::size_t>(count));
+        for (int j = 0; j < count; ++j)
             f.forces.joints[static_cast<std::size_t>(j)] = {
                 world.jointForce(j), world.jointForceOn(j, false), world.jointForceOn(j, true)};
     }
+    f.sleepers = world.sleepers();
     return f;
 }
 
 bool WorldSnapshot::show(World& world, const FrameState& frame) {
-    if (world.layoutDirty_ || world.layout_.dimension() != frame.q.size() ||
-        frame.u.size() != frame.q.size())
+    if (world.layoutDirty_ || frame.u.size() != frame.q.size() ||
+        !holdsSleepers(world, frame.sleepers))
         return false;
+    // The layout of the frame's sleepers first: the frame's q and u are of it.
+    world.putToSleep(frame.sleepers);
+    if (world.layout_.dimension() != frame.q.size()) return false;
     world.q_[world.current_] = frame.q;
     world.u_[world.current_] = frame.u;
     world.clock_.time = frame.time;
@@ -92,6 +107,14 @@ WorldSnapshot WorldSnapshot::take(const World& world) {
     s.pulledSince_ = world.pulledSince_;
     s.integratorCarried_ = world.integrator_->carriedState();
     s.integratorStats_ = world.integrator_->stats();
+    s.particles_ = world.bodies_.particles.size();
+    s.rigidBodies_ = world.bodies_.rigidBodies.size();
+    s.sleepers_ = world.sleepers_;
+    if (world.settings_.sleep) {
+        s.restingSeconds_ = world.restingSeconds_;
+        s.sleepingIsland_ = world.sleepingIsland_;
+    }
+    s.nextIsland_ = world.nextIsland_;
     // The contact stage and the joints' solver are estimated, not walked: the contact stage
     // keeps its constraints several times over (this step's, the previous step's for warm
     // starting, a sorted copy, the solver's own), and per collider a few records of about a
@@ -103,7 +126,9 @@ WorldSnapshot WorldSnapshot::take(const World& world) {
                vectorBytes(s.kinematicImpulse_) + vectorBytes(s.heldForce_) +
                vectorBytes(s.unappliedJointForce_) +
                (s.contacts_ ? sizeof(ContactStage) + 4 * constraints + 24 * perState : 0) +
-               (s.joints_ ? sizeof(JointSolver) + 8 * perState : 0);
+               (s.joints_ ? sizeof(JointSolver) + 8 * perState : 0) +
+               (s.sleepers_ ? s.sleepers_->bytes() : 0) +
+               s.restingSeconds_.size() * (sizeof(double) + sizeof(int));
     return s;
 }
 
@@ -112,17 +137,27 @@ bool WorldSnapshot::hasSettingsOf(const World& world) const {
 }
 
 bool WorldSnapshot::restoreInto(World& world) const {
-    // Sleeping rebuilds the state around the islands asleep (which bodies have degrees of
-    // freedom, their timers): not part of a snapshot yet, so a world that may sleep is refused
-    // rather than restored into a state it never had.
-    if (settings_.sleep || world.settings_.sleep || world.sleepingBodies_ > 0) return false;
-    if (world.layoutDirty_ || world.layout_.dimension() != dimension_ ||
+    if (world.layoutDirty_ || world.bodies_.particles.size() != particles_ ||
+        world.bodies_.rigidBodies.size() != rigidBodies_ ||
         (world.contacts_ != nullptr) != (contacts_ != nullptr) ||
         (world.joints_ != nullptr) != (joints_ != nullptr))
         return false;
+    // Without a sleeper on either side the layouts must match as they are; otherwise the
+    // layout is rebuilt around the snapshot's sleepers, and must then match.
+    if (!sleepers_ && !world.sleepers_ && world.layout_.dimension() != dimension_) return false;
     // Switching back to the saved settings rebuilds the method (and the contact model's
-    // parameters); what they carry is put back below.
-    if (!sameSettings(world.settings_, settings_)) world.setSettings(settings_);
+    // parameters); what they carry is put back below. A switch wakes every island: the
+    // sleepers are put back after it.
+    if (!sameSettings(world.settings_, settings_) || world.settings_.sleep != settings_.sleep)
+        world.setSettings(settings_);
+    world.putToSleep(sleepers_);
+    if (world.layout_.dimension() != dimension_) return false;
+    const std::size_t bodies = particles_ + rigidBodies_;
+    world.restingSeconds_ = restingSeconds_;
+    world.sleepingIsland_ = sleepingIsland_;
+    world.restingSeconds_.resize(bodies, 0.0);
+    world.sleepingIsland_.resize(bodies, -1);
+    world.nextIsland_ = nextIsland_;
     for (int b = 0; b < 2; ++b) {
         world.q_[b] = q_[b];
         world.u_[b] = u_[b];

@@ -10,8 +10,10 @@
 // A snapshot belongs to the world it was taken from and to that world's objects: it is not a
 // scene description. The settings (method, dt, contact model) are part of the state and come
 // back with it; an edit that adds or removes objects makes the earlier snapshots of that world
-// meaningless, and restoring one refuses (returns false). So does a world with
-// simulation.sleep on: the islands asleep and their timers are not in a snapshot yet.
+// meaningless, and restoring one refuses (returns false). With simulation.sleep on the
+// snapshot holds the sleep state too: which bodies sleep and what their records keep, the
+// islands they sleep in and every body's time at rest; restoring rebuilds the state's layout
+// around the bodies asleep then (a sleeping body has no degrees of freedom).
 
 #include "physics/contacts/ContactStage.h"
 #include "physics/joints/JointSolver.h"
@@ -33,6 +35,9 @@ struct FrameState {
     long long stepCount = 0;
     EnergyLedger ledger;
     FrameForces forces;
+    // The bodies asleep (nullptr when none): q and u are of the layout without them. Shared by
+    // the frames of a stretch in which the same islands sleep, so not counted in bytes().
+    std::shared_ptr<const Sleepers> sleepers;
 
     static FrameState of(const World& world);
     std::size_t bytes() const {
@@ -93,6 +98,12 @@ private:
     double pulledSince_ = 0.0;
     std::vector<double> integratorCarried_;
     IntegratorStats integratorStats_;
+    // The objects' counts, and the sleep state (World's sleeping section).
+    std::size_t particles_ = 0, rigidBodies_ = 0;
+    std::shared_ptr<const Sleepers> sleepers_;
+    std::vector<double> restingSeconds_;
+    std::vector<int> sleepingIsland_;
+    int nextIsland_ = 0;
     std::size_t bytes_ = 0;
 };
 

@@ -2,12 +2,14 @@
 // moment on, bit for bit, puts the live world into that moment's state with the new settings as
 // one undo step, pairs every later time with the last recorded frame at or before it (held at
 // the last one past the end), and gives the recorded run's energy and phase series from those
-// frames. It refuses without an earlier moment and in a scene that sleeps, changing nothing.
+// frames. It refuses without an earlier moment, changing nothing; a scene that sleeps compares
+// from a moment asleep.
 
 #include "app/document/Document.h"
 #include "app/sim/CompareRun.h"
 #include "app/sim/RunRecording.h"
 #include "app/sim/SimulationController.h"
+#include "physics/scene/SceneLibrary.h"
 #include "physics/world/World.h"
 #include "tests/support/SceneBuilders.h"
 #include "tests/support/StateBits.h"
@@ -125,20 +127,47 @@ private slots:
         QVERIFY(!run.ghostAt(s.frames[50].time));
     }
 
-    void refusedWithoutAnEarlierMomentOrWhenSleeping() {
-        for (const bool sleep : {false, true}) {
-            Session s(springScene(sleep));
-            if (sleep) QVERIFY(s.controller.showFrame(30));
-            const auto before = stateBits(s.document.world());
-            const int commands = s.document.undoStack()->count();
-            CompareRun run;
-            QString why;
-            QVERIFY(!run.start(s.controller, s.document, s.with("symplectic_euler"), &why));
-            QVERIFY(!why.isEmpty());
-            QVERIFY(!run.isActive());
-            QCOMPARE(stateBits(s.document.world()), before);
-            QCOMPARE(s.document.undoStack()->count(), commands);
-        }
+    void refusedWithoutAnEarlierMoment() {
+        Session s(springScene());
+        const auto before = stateBits(s.document.world());
+        const int commands = s.document.undoStack()->count();
+        CompareRun run;
+        QString why;
+        QVERIFY(!run.start(s.controller, s.document, s.with("symplectic_euler"), &why));
+        QVERIFY(!why.isEmpty());
+        QVERIFY(!run.isActive());
+        QCOMPARE(stateBits(s.document.world()), before);
+        QCOMPARE(s.document.undoStack()->count(), commands);
+    }
+
+    // With sleeping on, a moment when the pile was asleep compares too: the live world starts
+    // from every body's state then (the switch of method wakes them) and the ghost shows the
+    // recorded frames, sleepers and all.
+    void comparesFromAMomentAsleep() {
+        SceneDesc scene = scenes::pyramid(3);
+        scene.simulation.sleep = true;
+        scene.simulation.dt = kDt;
+        Session s(scene, 200);
+        int shown = -1;
+        for (int i = 0; i < static_cast<int>(s.frames.size()) && shown < 0; ++i)
+            if (s.frames[static_cast<std::size_t>(i)].sleepers) shown = i + 10;
+        QVERIFY2(shown > 0 && shown < 190, "the pyramid did not fall asleep");
+        QVERIFY(s.controller.showFrame(shown));
+        QCOMPARE(s.document.world().sleepingBodies(), 6);
+        std::vector<std::uint64_t> then;
+        testing::appendBodyBits(s.document.world(), then, false);
+        CompareRun run;
+        QString why;
+        QVERIFY2(run.start(s.controller, s.document, s.with("velocity_verlet"), &why),
+                 qPrintable(why));
+        QCOMPARE(s.document.world().sleepingBodies(), 0);  // the switch woke it
+        std::vector<std::uint64_t> now;
+        testing::appendBodyBits(s.document.world(), now, false);
+        QVERIFY(now == then);
+        QVERIFY(run.frames().front().sleepers);
+        for (std::size_t i = 0; i < run.frames().size(); ++i)
+            QCOMPARE(stateBits(run.frames()[i]),
+                     stateBits(s.frames[static_cast<std::size_t>(shown) + i]));
     }
 };
 

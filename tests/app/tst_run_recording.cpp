@@ -153,6 +153,29 @@ private slots:
         }
     }
 
+    // With sleeping on the state's layout changes as the pile falls asleep: the recording goes
+    // on through it, every frame is the run's state, and a restore on either side retraces it.
+    void recordsThroughFallingAsleep() {
+        SceneDesc scene = scenes::pyramid(5);
+        scene.simulation.sleep = true;
+        RecordedRun run(scene, 150, RunRecording::kDefaultBudgetBytes, 40);
+        QCOMPARE(run.recording.frameCount(), 151);
+        QVERIFY(run.world->sleepingBodies() == 15);
+        QVERIFY(run.recording.frame(150).sleepers);
+        QVERIFY(!run.recording.frame(1).sleepers);
+        for (int i = 0; i <= 150; ++i)
+            QVERIFY(stateBits(run.recording.frame(i)) ==
+                    run.reference[static_cast<std::size_t>(i)]);
+        for (long long step : {10LL, 149LL, 45LL}) {
+            QVERIFY(run.recording.restore(*run.world, step));
+            QVERIFY(stateBits(*run.world) == run.reference[static_cast<std::size_t>(step)]);
+            for (long long k = step + 1; k <= 150; ++k) {
+                QVERIFY(run.world->step());
+                QVERIFY(stateBits(*run.world) == run.reference[static_cast<std::size_t>(k)]);
+            }
+        }
+    }
+
     // A clock that does not move on starts the recording over.
     void aResetStartsOver() {
         RecordedRun run(scenes::pyramid(3), 20, RunRecording::kDefaultBudgetBytes, 10);

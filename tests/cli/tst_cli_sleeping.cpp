@@ -1,6 +1,6 @@
 // phasebox-cli and sleeping (CONTRACT §6): `--json` reports `sleeping`, the number of bodies
-// asleep at the end (0 with sleeping off); a version 1 file that asks for sleep is read as
-// version 2.
+// asleep at the end (0 with sleeping off), jointed ones included; a version 1 file that asks for
+// sleep is read as version 2.
 
 #include "CliTestSupport.h"
 
@@ -57,6 +57,21 @@ private slots:
         // A switch of method on the command line is made before the run: it sleeps the same.
         const QJsonObject rk4 = runJson(dir.filePath("on.json"), {"--integrator", "rk4"});
         QCOMPARE(rk4["sleeping"].toInt(), 2);
+    }
+
+    // Bodies asleep with their joints count as well: three links hanging at rest from a hinge.
+    void jointedSleepersAreCounted() {
+        QTemporaryDir dir;
+        const QByteArray chain = R"({"format": "phasebox-scene", "version": 2,
+               "simulation": {"sleep": true}, "effects": {"gravity": {}},
+               "boxes": [{"id": "l0", "position": [0, -0.25], "size": [0.1, 0.5]},
+                         {"id": "l1", "position": [0, -0.75], "size": [0.1, 0.5]},
+                         {"id": "l2", "position": [0, -1.25], "size": [0.1, 0.5]}],
+               "joints": [{"type": "hinge", "a": "l0", "anchor": [0, 0]},
+                          {"type": "hinge", "a": "l1", "b": "l0", "anchor": [0, -0.5]},
+                          {"type": "hinge", "a": "l2", "b": "l1", "anchor": [0, -1]}]})";
+        const QJsonObject report = runJson(writeFile(dir, "chain.json", chain));
+        QCOMPARE(report["sleeping"].toInt(), 3);
     }
 
     void versionOneFileWithSleepIsReadAsVersionTwo() {

@@ -5,6 +5,8 @@
 // moment goes on exactly as the run went on, and drops the later frames as one undoable step (Undo
 // brings them back). The contact forces follow the timeline too: at a frame the readouts, probes
 // and free body show the forces of the step that ended there, the very values they showed live.
+// With sleeping on, frames from before and after a pile fell asleep show as they were, the
+// sleepers dimmed.
 
 #include "MainWindowTestSupport.h"
 #include "app/desktop/MainWindow.h"
@@ -234,6 +236,48 @@ private slots:
         QVERIFY(run.now().bits == run.moments.back().bits);
         QCOMPARE(w.controller().shownFrame(), -1);
         QVERIFY(std::isnan(energyCursor(w)));
+    }
+
+    // With sleeping on, the layout of the state changes as the pile falls asleep: frames from
+    // either side show as they were, every body's state bit for bit and the canvas picture the
+    // same (the sleepers dimmed where they slept).
+    void scrubAcrossFallingAsleep() {
+        MainWindow& w = *window_;
+        SceneDesc scene = scenes::pyramid(5);
+        scene.simulation.sleep = true;
+        QVERIFY(w.document().loadFromDesc(scene));
+        const auto bodies = [&w] {
+            std::vector<std::uint64_t> bits;
+            testing::appendBodyBits(w.document().world(), bits);
+            return bits;
+        };
+        Run run(w);
+        run.moments.push_back(run.now());
+        std::vector<std::vector<std::uint64_t>> states{bodies()};
+        int asleepAt = -1;
+        constexpr int kSteps = 150, kBoxes = 15;
+        for (int i = 1; i <= kSteps; ++i) {
+            run.steps(1);
+            states.push_back(bodies());
+            if (asleepAt < 0 && w.document().world().sleepingBodies() == kBoxes) asleepAt = i;
+        }
+        QVERIFY2(asleepAt > 0 && asleepAt < kSteps - 10, "the pyramid did not fall asleep");
+        auto* slider = w.findChild<QSlider*>(QStringLiteral("timelineSlider"));
+        QVERIFY(slider);
+        for (int frame : {asleepAt + 5, 3, asleepAt - 1, kSteps, asleepAt, 0}) {
+            slider->setValue(frame);
+            const Moment shown = run.now();
+            const auto index = static_cast<std::size_t>(frame);
+            QVERIFY2(shown.bits == run.moments[index].bits,
+                     qPrintable(QStringLiteral("frame %1").arg(frame)));
+            QVERIFY(bodies() == states[index]);
+            QCOMPARE(w.document().world().sleepingBodies(), frame >= asleepAt ? kBoxes : 0);
+            QVERIFY2(shown.canvas == run.moments[index].canvas,
+                     qPrintable(QStringLiteral("canvas at frame %1").arg(frame)));
+        }
+        // Asleep the boxes are drawn dimmed: the picture is not the one of the moment before.
+        QVERIFY(run.moments[static_cast<std::size_t>(asleepAt)].canvas !=
+                run.moments[static_cast<std::size_t>(asleepAt - 1)].canvas);
     }
 
     void stepBackThenForwardReturnsTheSameFrames() {

@@ -27,6 +27,30 @@ inline std::vector<std::uint64_t> stateBits(const World& w) {
     return stateBits(w.positions(), w.velocities(), w.time(), w.energy());
 }
 
+// Every body's state as the world reports it (a body asleep: its record) and whether it
+// sleeps: what stateBits leaves out when bodies sleep (they are out of q and u).
+// withSleep false: the state alone.
+inline void appendBodyBits(const World& w, std::vector<std::uint64_t>& bits,
+                           bool withSleep = true) {
+    const auto add = [&](double v) { bits.push_back(std::bit_cast<std::uint64_t>(v)); };
+    for (int i = 0; i < static_cast<int>(w.particles().size()); ++i) {
+        for (const Vec2& v : {w.particlePosition(i), w.particleVelocity(i)}) {
+            add(v.x());
+            add(v.y());
+        }
+        if (withSleep) bits.push_back(w.particles()[static_cast<std::size_t>(i)].asleep);
+    }
+    for (int i = 0; i < static_cast<int>(w.rigidBodies().size()); ++i) {
+        for (const Vec2& v : {w.bodyPosition(i), w.bodyVelocity(i)}) {
+            add(v.x());
+            add(v.y());
+        }
+        add(w.bodyAngle(i));
+        add(w.bodyAngularVelocity(i));
+        if (withSleep) bits.push_back(w.rigidBodies()[static_cast<std::size_t>(i)].asleep);
+    }
+}
+
 inline std::vector<std::uint64_t> stateBits(const FrameState& f) {
     return stateBits(f.q, f.u, f.time, f.ledger);
 }

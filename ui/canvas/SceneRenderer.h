@@ -225,7 +225,7 @@ inline PickResult SceneRenderer::pick(const World& world, const ViewTransform& v
     if (i >= 0) return {PickResult::Particle, i, world.particles()[i].id};
 
     const JointSolver* joints = world.jointSolver();
-    const int jointCount = joints ? joints->jointCount() : 0;
+    const int jointCount = joints ? static_cast<int>(world.joints().size()) : 0;
     i = nearest(jointCount, [&](int k) {
         const Joint::Type t = world.joints()[k].type;
         if (t != Joint::Type::Hinge && t != Joint::Type::Weld) return kMiss;

@@ -7,6 +7,7 @@
 #include "ui/panels/ShownNumber.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QEvent>
 #include <QFormLayout>
@@ -248,9 +249,20 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     connect(speedBox_, &QComboBox::currentIndexChanged, this,
             [this] { emit speedChanged(speed()); });
 
+    sleepBox_ = new QCheckBox(tr("Let resting &bodies sleep"));
+    sleepBox_->setObjectName(QStringLiteral("sleep"));
+    sleepBox_->setToolTip(
+        tr("Bodies that have stayed at rest for half a second are no longer simulated, and are "
+           "drawn dimmed, until something touches them, drags them or an edit wakes them: "
+           "large resting piles cost almost nothing"));
+    connect(sleepBox_, &QCheckBox::toggled, this, &ParametersPanel::sleepChanged);
+
     // ---- form ----------------------------------------------------------------------------
     auto* form = new QFormLayout;
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    // Rows a little closer than the style's spacing: the lower tabs (Properties) keep their
+    // height with the sleep switch's row added.
+    form->setVerticalSpacing(std::max(0, form->verticalSpacing() - 2));
     form->setLabelAlignment(Qt::AlignRight | Qt::AlignVCenter);
     auto addRow = [form](const QString& text, QWidget* field, QLayout* fieldLayout = nullptr) {
         auto* label = new QLabel(text);
@@ -270,6 +282,7 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     addRow(tr("&Contacts:"), contactModelBox_);
     stiffnessLabel_ = addRow(tr("Sti&ffness:"), stiffnessBox_, stiffnessRow);
     contactDampingLabel_ = addRow(tr("Dam&ping:"), contactDampingBox_);
+    form->addRow(sleepBox_);  // across both columns: the label is the box's own text
     addRow(tr("Sp&eed:"), speedBox_);
 
     // ---- stability advisor ---------------------------------------------------------------
@@ -315,7 +328,8 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     setTabOrder(contactModelBox_, stiffnessBox_);
     setTabOrder(stiffnessBox_, automaticStiffnessButton_);
     setTabOrder(automaticStiffnessButton_, contactDampingBox_);
-    setTabOrder(contactDampingBox_, speedBox_);
+    setTabOrder(contactDampingBox_, sleepBox_);
+    setTabOrder(sleepBox_, speedBox_);
 
     setMinimumWidth(240);
     setSimulation(SimulationDesc{});
@@ -329,6 +343,7 @@ void ParametersPanel::setSimulation(const SimulationDesc& simulation) {
     const QSignalBlocker blockNewton(newtonBox_);
     const QSignalBlocker blockModel(contactModelBox_);
     const QSignalBlocker blockDamping(contactDampingBox_);
+    const QSignalBlocker blockSleep(sleepBox_);
 
     const int index = integratorBox_->findData(QString::fromStdString(simulation.integrator));
     if (index >= 0) integratorBox_->setCurrentIndex(index);
@@ -347,6 +362,7 @@ void ParametersPanel::setSimulation(const SimulationDesc& simulation) {
     newtonBox_->setValue(simulation.newtonIterations);
     contactModelBox_->setCurrentIndex(static_cast<int>(simulation.contactModel));
     contactDampingBox_->setValue(simulation.contactDamping);
+    sleepBox_->setChecked(simulation.sleep);
     if (simulation.contactStiffness) setContactStiffness(*simulation.contactStiffness, false);
     updateEnabledFields();
 }

@@ -13,6 +13,7 @@
 
 QT_BEGIN_NAMESPACE
 class QAction;
+class QCheckBox;
 class QComboBox;
 class QLabel;
 class QSpinBox;
@@ -69,6 +70,7 @@ signals:
     void contactModelChanged(phasebox::ContactModel model);
     void contactStiffnessChanged(double stiffness);  // 0: automatic
     void contactDampingChanged(double damping);
+    void sleepChanged(bool sleep);  // simulation.sleep
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -90,6 +92,7 @@ private:
     QLabel* newtonLabel_ = nullptr;
     QComboBox* speedBox_ = nullptr;
     QComboBox* contactModelBox_ = nullptr;
+    QCheckBox* sleepBox_ = nullptr;
     ScientificSpinBox* stiffnessBox_ = nullptr;
     QToolButton* automaticStiffnessButton_ = nullptr;
     QLabel* stiffnessLabel_ = nullptr;

@@ -51,6 +51,8 @@ ParametersPresenter::ParametersPresenter(ui::ParametersPanel& panel, Document& d
     });
     connect(&panel_, &ui::ParametersPanel::contactDampingChanged, this,
             [this](double c) { change([&](auto& s) { s.contactDamping = c; }); });
+    connect(&panel_, &ui::ParametersPanel::sleepChanged, this,
+            [this](bool sleep) { change([&](auto& s) { s.sleep = sleep; }); });
 }
 
 void ParametersPresenter::createActions(QWidget& window) {
