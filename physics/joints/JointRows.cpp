@@ -52,6 +52,21 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
     const End& ea = endA_[k];
     const End& eb = endB_[k];
     const EndState a = evaluate(ea, q, u, cached), b = evaluate(eb, q, u, cached);
+    // The centripetal part of each point's acceleration, −ω²·arm: J̇·u of a point row.
+    const Vec2 centripetalA = -a.omega * a.omega * a.arm, centripetalB = -b.omega * b.omega * b.arm;
+    if (!jacobian && (j.type == Joint::Type::Hinge || j.type == Joint::Type::Weld)) {
+        // Rows at the q of their J (evaluateRows: equalities only, so no hinge has limits): a
+        // hinge's and a weld's C and J stand, and of the rest only the point rows' J̇·u changes
+        // with the velocities (the angle row's is 0). The same arithmetic as pinRows.
+        for (int i = 0; i < 2; ++i) r.bias[i] = (centripetalA - centripetalB)[i];
+        return;
+    }
+    const bool limited = j.type == Joint::Type::Hinge && j.hasLimits && mode != Mode::Dynamics &&
+                         ea.rigid && eb.rigid && (ea.turns || eb.turns);
+    if (jacobian && j.type == Joint::Type::Hinge && !limited) {
+        pointRowsOf(j, ea, eb, a, b, centripetalA - centripetalB, r);
+        return;
+    }
     r.count = 0;
     if (jacobian) {
         r.ja.setZero();
@@ -60,8 +75,6 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
     r.c.setZero();
     r.bias.setZero();
     r.target.setZero();
-    // The centripetal part of each point's acceleration, −ω²·arm: J̇·u of a point row.
-    const Vec2 centripetalA = -a.omega * a.omega * a.arm, centripetalB = -b.omega * b.omega * b.arm;
     const joints::RowsInput in{.joint = j,
                                .endA = ea,
                                .endB = eb,
@@ -104,6 +117,35 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
     if (eb.dof < 0) r.jb.setZero();
     if (!ea.turns) r.ja.col(2).setZero();
     if (!eb.turns) r.jb.col(2).setZero();
+}
+
+void JointSolver::pointRowsOf(const Joint& j, const End& ea, const End& eb, const EndState& a,
+                              const EndState& b, const Vec2& centripetal, Rows& r) {
+    // What rowsOf() makes of pinRows() alone, entry for entry (the rows of an end that is fixed
+    // or does not turn zeroed as there), written once instead of zeroed and overwritten.
+    const Vec2 c = a.p - b.p - j.offset;
+    for (int i = 0; i < 2; ++i) {
+        const Vec2 axis = i == 0 ? Vec2(1.0, 0.0) : Vec2(0.0, 1.0);
+        if (ea.dof < 0) {
+            r.ja.row(i).setZero();
+        } else {
+            r.ja.row(i) = joints::pointRow(axis, a.arm, 1.0);
+            if (!ea.turns) r.ja(i, 2) = 0.0;
+        }
+        if (eb.dof < 0) {
+            r.jb.row(i).setZero();
+        } else {
+            r.jb.row(i) = joints::pointRow(axis, b.arm, -1.0);
+            if (!eb.turns) r.jb(i, 2) = 0.0;
+        }
+        r.c[i] = c[i];
+        r.bias[i] = centripetal[i];
+    }
+    r.ja.row(2).setZero();
+    r.jb.row(2).setZero();
+    r.c[2] = r.bias[2] = 0.0;
+    r.target.setZero();
+    r.count = 2;
 }
 
 inline JointSolver::Vec3 JointSolver::violationOf(int k, const Vec& q) const {

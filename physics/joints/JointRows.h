@@ -76,6 +76,14 @@ struct ViolationInput {
     }
 };
 
+// v's entries from row count on set to zero (the rows a joint does not use). Branches, not a
+// loop: a loop from count became a call to memset for one or two doubles.
+inline void zeroFrom(Vec3& v, int count) {
+    if (count <= 0) v[0] = 0.0;
+    if (count <= 1) v[1] = 0.0;
+    if (count <= 2) v[2] = 0.0;
+}
+
 // A row of J for a point's motion along n: [n, arm × n], scaled.
 inline Eigen::RowVector3d pointRow(const Vec2& n, const Vec2& arm, double scale) {
     return Eigen::RowVector3d(scale * n.x(), scale * n.y(), scale * cross(arm, n));

@@ -133,7 +133,7 @@ bool JointSolver::shakeAlongEnd(double h, Vec& q, Vec& u, const Vec& weights) {
         factor(weights);
         for (int k = 0; k < jointCount(); ++k) {
             rhs_[k] = -rows_[k].c;
-            for (int i = rows_[k].count; i < 3; ++i) rhs_[k][i] = 0.0;
+            joints::zeroFrom(rhs_[k], rows_[k].count);
         }
         solve();
         applyShakeImpulse(h, weights, q, u);

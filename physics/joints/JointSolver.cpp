@@ -425,7 +425,7 @@ void JointSolver::solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, 
         for (int k = 0; k < jointCount(); ++k) {
             const Rows& r = rows_[k];
             rhs_[k] = -(jTimes(k, accel) + r.bias);
-            for (int i = r.count; i < 3; ++i) rhs_[k][i] = 0.0;
+            joints::zeroFrom(rhs_[k], r.count);
         }
         solve();
         if (!hasInequalities_) break;
@@ -450,7 +450,7 @@ void JointSolver::solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, 
     forcesKnown_ = true;
     for (int k = 0; k < jointCount(); ++k) {
         const Rows& r = rows_[k];
-        for (int i = r.count; i < 3; ++i) lambda_[k][i] = 0.0;
+        joints::zeroFrom(lambda_[k], r.count);
         const Joint::Type type = joints_[k].type;
         forces_[k] = type == Joint::Type::Hinge || type == Joint::Type::Weld
                          ? lambda_[k].head<2>().norm()
@@ -511,7 +511,7 @@ void JointSolver::solveFor(const Vec& invMass, Vec& x, double scale, Target targ
         rhs_[k] = target == Target::Violation ? Vec3(-rows_[k].c)
                   : target == Target::Rate    ? Vec3(rows_[k].target - jTimes(k, u))
                                               : Vec3(-jTimes(k, u));
-        for (int i = rows_[k].count; i < 3; ++i) rhs_[k][i] = 0.0;
+        joints::zeroFrom(rhs_[k], rows_[k].count);
     }
     solve();
     addJTranspose(invMass, scale, x);

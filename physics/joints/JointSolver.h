@@ -227,6 +227,10 @@ private:
     // rows' J of this q stand).
     void rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& rows, bool cached = false,
                 bool jacobian = true) const;
+    // rowsOf() with the Jacobian for a hinge's two point rows alone (no limit row), its ends at
+    // a and b; centripetal: a's centripetal acceleration less b's.
+    static void pointRowsOf(const Joint& j, const End& ea, const End& eb, const EndState& a,
+                            const EndState& b, const Vec2& centripetal, Rows& r);
     // The equality rows' C of joint k at q (as rowsOf in Position mode computes it, without
     // the Jacobian), the rotations cached: what each SHAKE iteration needs.
     Vec3 violationOf(int k, const Vec& q) const;

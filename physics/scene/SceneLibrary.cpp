@@ -284,6 +284,26 @@ SceneDesc clusteredBodies(int count, unsigned seed) {
     return scene;
 }
 
+SceneDesc hingedChain(int links) {
+    SceneDesc s = contactScene(name("Chain of ", links) + " hinged boxes",
+                               "Boxes hinged end to end, released level: the chain swings down "
+                               "and its end whips. Watch the hinges hold.");
+    s.effects.gravity = GravityDesc{{0.0, -10.0}};
+    for (int i = 0; i < links; ++i) {
+        BoxDesc b = box(name("b", i), 0.5 + i, 20.0, 1.0, 0.25);
+        b.density = 20.0;
+        b.friction = 0.2;
+        JointDesc hinge;
+        hinge.type = JointType::Hinge;
+        hinge.a = i == 0 ? b.id : name("b", i - 1);
+        if (i > 0) hinge.b = b.id;  // the first box's hinge holds it to the world
+        hinge.anchor = Point2{static_cast<double>(i), 20.0};
+        s.boxes.push_back(b);
+        s.joints.push_back(hinge);
+    }
+    return s;
+}
+
 SceneDesc cloth(int n, double structuralStiffness) {
     SceneDesc s;
     s.name = name("Cloth ", n) + "x" + std::to_string(n);
@@ -326,6 +346,7 @@ const std::vector<NamedScene>& library() {
         {"cradle", "Newton's cradle of 5 balls", [] { return newtonsCradle(5, 1.0); }},
         {"bullet", "0.05 m disk at 200 m/s against a 0.1 m wall", [] { return bullet(200); }},
         {"dominoes", "row of 30 dominoes", [] { return dominoes(30); }},
+        {"chain100", "chain of 100 hinged boxes whipping down", [] { return hingedChain(100); }},
         {"cloth", "40 x 40 cloth, structural stiffness 2e4, implicit Euler",
          [] { return cloth(40, 2e4); }},
     };

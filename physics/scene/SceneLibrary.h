@@ -38,6 +38,12 @@ SceneDesc bullet(double speed);
 // A row of `count` dominoes (0.1 × 1 m, 0.5 m apart), the first one tipped over.
 SceneDesc dominoes(int count);
 
+// `links` hinged boxes of 1 m × 0.25 m (density 20, friction 0.2) laid end to end along y = 20 m,
+// box i centred at x = 0.5 + i and hinged to the next at their shared end, the first to the world
+// at the origin; released from rest under g = 10 m/s² it swings down and whips. No ground. The
+// chain Box2D's benchmarks swing (its "chain" sample), so that the two can be timed side by side.
+SceneDesc hingedChain(int links);
+
 // `count` bodies of masses 0.5–2 kg under their mutual gravity (G = 1, no softening): three
 // Gaussian clusters of different widths and a uniform background, so that a Barnes–Hut tree
 // sees dense cores, sparse outskirts and empty cells (a uniform cloud alone is the easy case).
