@@ -2615,6 +2615,10 @@
         <source>The run as an MP4 or animated GIF clip, optionally with the plots</source>
         <translation>Der Lauf als MP4- oder animierter GIF-Clip, wahlweise mit den Diagrammen</translation>
     </message>
+    <message>
+        <source>&amp;Worker Threads</source>
+        <translation>&amp;Arbeits-Threads</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::MeasureTools</name>
@@ -3217,6 +3221,34 @@ Die Datei auf der Festplatte (falls vorhanden) ist unverändert.</translation>
     <message>
         <source>Jump to Start</source>
         <translation>Zum Anfang springen</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::WorkerMenu</name>
+    <message numerus="yes">
+        <source>&amp;Every Core (%n threads)</source>
+        <translation>
+            <numerusform>&amp;Alle Kerne (%n Thread)</numerusform>
+            <numerusform>&amp;Alle Kerne (%n Threads)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n Thread(s)</source>
+        <translation>
+            <numerusform>%n Thread</numerusform>
+            <numerusform>%n Threads</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The step shares its work among every core.</source>
+        <translation>Der Schritt verteilt seine Arbeit auf alle Kerne.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The step runs on %n thread(s).</source>
+        <translation>
+            <numerusform>Der Schritt läuft auf %n Thread.</numerusform>
+            <numerusform>Der Schritt läuft auf %n Threads.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -2615,6 +2615,10 @@
         <source>The run as an MP4 or animated GIF clip, optionally with the plots</source>
         <translation>La simulación como clip MP4 o GIF animado, con las gráficas si se desea</translation>
     </message>
+    <message>
+        <source>&amp;Worker Threads</source>
+        <translation>&amp;Hilos de trabajo</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::MeasureTools</name>
@@ -3217,6 +3221,34 @@ El archivo en disco (si lo hay) no ha cambiado.</translation>
     <message>
         <source>Jump to Start</source>
         <translation>Saltar al inicio</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::WorkerMenu</name>
+    <message numerus="yes">
+        <source>&amp;Every Core (%n threads)</source>
+        <translation>
+            <numerusform>&amp;Todos los núcleos (%n hilo)</numerusform>
+            <numerusform>&amp;Todos los núcleos (%n hilos)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n Thread(s)</source>
+        <translation>
+            <numerusform>%n hilo</numerusform>
+            <numerusform>%n hilos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The step shares its work among every core.</source>
+        <translation>El paso reparte su trabajo entre todos los núcleos.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The step runs on %n thread(s).</source>
+        <translation>
+            <numerusform>El paso se ejecuta en %n hilo.</numerusform>
+            <numerusform>El paso se ejecuta en %n hilos.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -2615,6 +2615,10 @@
         <source>The run as an MP4 or animated GIF clip, optionally with the plots</source>
         <translation>La simulation en clip MP4 ou GIF animé, avec les graphiques si souhaité</translation>
     </message>
+    <message>
+        <source>&amp;Worker Threads</source>
+        <translation>&amp;Fils d&apos;exécution</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::MeasureTools</name>
@@ -3217,6 +3221,34 @@ Le fichier sur le disque (s’il existe) n’a pas changé.</translation>
     <message>
         <source>Jump to Start</source>
         <translation>Aller au début</translation>
+    </message>
+</context>
+<context>
+    <name>phasebox::WorkerMenu</name>
+    <message numerus="yes">
+        <source>&amp;Every Core (%n threads)</source>
+        <translation>
+            <numerusform>&amp;Tous les cœurs (%n fil)</numerusform>
+            <numerusform>&amp;Tous les cœurs (%n fils)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n Thread(s)</source>
+        <translation>
+            <numerusform>%n fil</numerusform>
+            <numerusform>%n fils</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The step shares its work among every core.</source>
+        <translation>Le pas répartit son travail sur tous les cœurs.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The step runs on %n thread(s).</source>
+        <translation>
+            <numerusform>Le pas s&apos;exécute sur %n fil.</numerusform>
+            <numerusform>Le pas s&apos;exécute sur %n fils.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
