@@ -221,8 +221,8 @@ void MainWindow::createMenus() {
                       "compareFromHere", "leaveCompare", "", "nextIntegrator", "previousIntegrator",
                       "doubleDt", "halveDt", "moreSubsteps", "fewerSubsteps", "faster", "slower"});
     simulation->addSeparator();
-    auto* workers = new WorkerMenu(*simulation->addMenu(tr("&Worker Threads")), document_);
-    connect(workers, &WorkerMenu::message, status_, &StatusPresenter::showMessage);
+    workerMenu_ = new WorkerMenu(*simulation->addMenu(tr("&Worker Threads")), document_);
+    connect(workerMenu_, &WorkerMenu::message, status_, &StatusPresenter::showMessage);
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     tools->addActions(canvasPresenter_->toolActions());
     addWindowActions(*tools, *this,

@@ -47,6 +47,7 @@ class Autosave;
 class CanvasTools;
 class DivergenceNotice;
 class HelpWindows;
+class WorkerMenu;
 class MeasureTools;
 class TimelinePresenter;
 class WindowLayout;
@@ -142,6 +143,7 @@ private:
     QList<Presenter*> presenters_;  // every view's, for refreshNow()
     CanvasPresenter* canvasPresenter_ = nullptr;
     AppearancePresenter* appearance_ = nullptr;
+    WorkerMenu* workerMenu_ = nullptr;  // Simulation > Worker Threads
     ParametersPresenter* parametersPresenter_ = nullptr;
     PlotsPresenter* plotsPresenter_ = nullptr;
     ExactPresenter* exactPresenter_ = nullptr;

@@ -6,6 +6,7 @@
 #include "app/desktop/SceneFiles.h"
 #include "app/desktop/SettingsGuard.h"
 #include "app/desktop/WindowLayout.h"
+#include "app/desktop/WorkerMenu.h"
 #include "app/desktop/presenters/AppearancePresenter.h"
 #include "app/desktop/presenters/CanvasPresenter.h"
 #include "app/desktop/presenters/InstrumentsPresenter.h"
@@ -170,6 +171,7 @@ void MainWindow::readSettings() {
     parametersPresenter_->readSettings(settings);
     canvasPresenter_->readSettings(settings);
     appearance_->readSettings(settings);
+    workerMenu_->readSettings(settings);
 }
 
 void MainWindow::writeSettings() {

@@ -28,26 +28,46 @@ void WorkerMenu::store(QSettings& settings, int workers) {
 
 WorkerMenu::WorkerMenu(QMenu& menu, Document& document) : QObject(&menu), document_(document) {
     menu.setObjectName(QStringLiteral("workerMenu"));
+    menu_ = &menu;
+    group_ = new QActionGroup(&menu);
+    offer(0);
+    offer(1);
     const int cores = WorkerPool::allCores();
-    const int chosen = stored(QSettings());
-    auto* group = new QActionGroup(&menu);
-    // Every core, then one thread, then powers of two up to the cores (and the stored choice,
-    // should it be more than this machine has).
-    QList<int> counts{0, 1};
-    for (int n = 2; n <= std::max(cores, chosen); n *= 2) counts << n;
-    if (cores > 1 && !counts.contains(cores)) counts << cores;
-    if (chosen > 0 && !counts.contains(chosen)) counts << chosen;
-    std::sort(counts.begin() + 1, counts.end());
-    for (const int n : std::as_const(counts)) {
-        QAction* a = menu.addAction(n == 0 ? tr("&Every Core (%n threads)", nullptr, cores)
-                                           : tr("%n Thread(s)", nullptr, n));
-        a->setCheckable(true);
-        a->setChecked(n == chosen);
-        a->setObjectName(QStringLiteral("workers_%1").arg(n));
-        group->addAction(a);
-        connect(a, &QAction::triggered, this, [this, n] { choose(n); });
+    for (int n = 2; n <= cores; n *= 2) offer(n);
+    offer(cores);
+    check(0);
+}
+
+void WorkerMenu::offer(int workers) {
+    // Every core first, then the counts in order, each once.
+    QList<QAction*> actions = menu_->actions();
+    int at = 0;
+    for (; at < actions.size(); ++at) {
+        const int n = actions[at]->data().toInt();
+        if (n == workers) return;
+        if (workers > 0 && n > workers) break;
     }
-    document_.setWorkers(chosen);
+    const int cores = WorkerPool::allCores();
+    auto* a = new QAction(workers == 0 ? tr("&Every Core (%n threads)", nullptr, cores)
+                                       : tr("%n Thread(s)", nullptr, workers),
+                          menu_);
+    a->setCheckable(true);
+    a->setData(workers);
+    a->setObjectName(QStringLiteral("workers_%1").arg(workers));
+    group_->addAction(a);
+    menu_->insertAction(at < actions.size() ? actions[at] : nullptr, a);
+    connect(a, &QAction::triggered, this, [this, workers] { choose(workers); });
+}
+
+void WorkerMenu::check(int workers) {
+    for (QAction* a : menu_->actions()) a->setChecked(a->data().toInt() == workers);
+}
+
+void WorkerMenu::readSettings(const QSettings& settings) {
+    const int workers = stored(settings);
+    offer(workers);  // a count stored on a machine with more cores
+    check(workers);
+    document_.setWorkers(workers);
 }
 
 void WorkerMenu::choose(int workers) {

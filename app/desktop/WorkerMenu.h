@@ -6,6 +6,7 @@
 #include <QObject>
 
 QT_BEGIN_NAMESPACE
+class QActionGroup;
 class QMenu;
 class QSettings;
 QT_END_NAMESPACE
@@ -19,8 +20,11 @@ class WorkerMenu : public QObject {
 
 public:
     // Fills menu (object name "workerMenu"; its actions "workers_0" for every core, then
-    // "workers_1", "workers_2", …) and applies the stored choice to document.
+    // "workers_1", "workers_2", … up to the cores), every core checked.
     WorkerMenu(QMenu& menu, Document& document);
+    // The stored choice, checked and applied to the document (with the window's other
+    // settings, once the settings files are known to be safe to read: SettingsGuard).
+    void readSettings(const QSettings& settings);
 
     // The stored choice (0: every core), and storing one.
     static int stored(const QSettings& settings);
@@ -31,8 +35,12 @@ signals:
 
 private:
     void choose(int workers);
+    void offer(int workers);  // an action for the count, in order, unless there is one
+    void check(int workers);
 
     Document& document_;
+    QMenu* menu_ = nullptr;
+    QActionGroup* group_ = nullptr;
 };
 
 }  // namespace phasebox
