@@ -403,25 +403,39 @@ void ContactSolver::updateSeparations() {
     });
 }
 
+void ContactSolver::warmRow(std::size_t i) {
+    const Row& c = rows_[i];
+    const int world = static_cast<int>(bodies_.size());
+    // The static world is in many rows of a colour: it is left as it is (zero velocity; its
+    // zero inverse masses would leave it so), so that a colour's rows write disjoint bodies.
+    BodyState* a = c.a == world ? nullptr : &state_[c.a];
+    BodyState* b = c.b == world ? nullptr : &state_[c.b];
+    const double tx = c.ny, ty = -c.nx;
+    for (int k = 0; k < c.pointCount; ++k) {
+        const RowPoint& p = c.p[k];
+        const double n = p.normalImpulse - p.heldNormal;
+        const double t = p.tangentImpulse - p.heldTangent;
+        const double px = n * c.nx + t * tx;
+        const double py = n * c.ny + t * ty;
+        if (a) removeImpulse(*a, p.rAx, p.rAy, px, py);
+        if (b) applyImpulse(*b, p.rBx, p.rBy, px, py);
+    }
+}
+
 void ContactSolver::warmStart() {
     // The accumulated impulses, less what the held forces already gave in this inner sub-step
     // (the smooth step's share): Box2D's warm start, of which the method's step took its part.
-    BodyState* state = state_.data();
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        const Row& c = rows_[i];
-        BodyState& a = state[c.a];
-        BodyState& b = state[c.b];
-        const double tx = c.ny, ty = -c.nx;
-        for (int k = 0; k < c.pointCount; ++k) {
-            const RowPoint& p = c.p[k];
-            const double n = p.normalImpulse - p.heldNormal;
-            const double t = p.tangentImpulse - p.heldTangent;
-            const double px = n * c.nx + t * tx;
-            const double py = n * c.ny + t * ty;
-            removeImpulse(a, p.rAx, p.rAy, px, py);
-            applyImpulse(b, p.rBx, p.rBy, px, py);
-        }
+    // In the sweep's order, colour by colour (a colour's rows share no dynamic body), then the
+    // rows no colour took.
+    for (int colour = 0; colour < kColours; ++colour) {
+        const std::size_t first = 4 * static_cast<std::size_t>(colourWide_[colour]);
+        const std::size_t count = 4 * static_cast<std::size_t>(colourWide_[colour + 1]) - first;
+        forChunks(count, kRowGrain, [&](std::size_t from, std::size_t end) {
+            for (std::size_t slot = first + from; slot < first + end; ++slot)
+                if (order_[slot] >= 0) warmRow(static_cast<std::size_t>(order_[slot]));
+        });
     }
+    for (const int i : overflow_) warmRow(static_cast<std::size_t>(i));
 }
 
 namespace {

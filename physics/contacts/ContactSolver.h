@@ -298,6 +298,7 @@ private:
     void buildRows(double hertz, double zeta, double h, double warmScale);
     void buildRow(std::size_t i, double hertz, double zeta, double h, double warmScale);
     void warmStart();
+    void warmRow(std::size_t row);
     // Restitution in an inner sub-step of h, one of `substeps` of the step.
     bool bounce(double h, int substeps, const ContactSettings& settings);
     double smoothNormalChange(const Row& c, const RowPoint& p) const;

@@ -56,7 +56,7 @@ std::optional<FreeBody> freeBodyOf(const World& world, std::string_view id) {
     if (contact != Vec2::Zero())
         body.forces.push_back({BodyForce::Source::Contact, "contact", contact});
 
-    if (const JointSolver* joints = world.jointSolver()) {
+    if (world.jointSolver()) {
         const auto on = [&](const JointBody& b) {
             return b.kind != JointBody::Kind::World &&
                    isBody(b.kind == JointBody::Kind::Rigid, b.index);

@@ -593,7 +593,7 @@ void drawArrows(const Frame& f) {
             }
         }
         // The joints' constraint forces (CONTRACT §6), on each body they hold.
-        if (const JointSolver* joints = w.jointSolver()) {
+        if (w.jointSolver()) {
             for (int i = 0; i < static_cast<int>(w.joints().size()); ++i) {
                 const Joint& j = w.joints()[i];
                 for (const auto& [body, force] : {std::pair{&j.a, w.jointForceOn(i, false)},
