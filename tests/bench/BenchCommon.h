@@ -3,6 +3,8 @@
 // a compiler barrier, and a small JSON writer. Header-only because each bench_*.cpp is its
 // own executable (tests/bench/CMakeLists.txt globs them) and there is no bench library.
 
+#include "physics/scene/SceneDesc.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -155,5 +157,15 @@ private:
     std::string out_;
     bool needComma_ = false;
 };
+
+// count particles started at one point, with particle collisions on and nothing else (no
+// gravity): the worst start a pile can have (bench_piles, bench_threads).
+inline SceneDesc pileAtPoint(int count) {
+    SceneDesc s;
+    s.name = "Pile at a point";
+    s.effects.particleCollisions = ParticleCollisionsDesc{};
+    for (int i = 0; i < count; ++i) s.particles.push_back(ParticleDesc{});
+    return s;
+}
 
 }  // namespace phasebox::bench

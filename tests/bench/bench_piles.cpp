@@ -54,14 +54,6 @@ long long statusKilobytes(const char* field) {
     return value;
 }
 
-SceneDesc pileAtPoint(int count) {
-    SceneDesc s;
-    s.name = "Pile at a point";
-    s.effects.particleCollisions = ParticleCollisionsDesc{};
-    for (int i = 0; i < count; ++i) s.particles.push_back(ParticleDesc{});
-    return s;
-}
-
 SceneDesc line(int count, bool vertical) {
     SceneDesc s;
     s.name = vertical ? "Column" : "Row";

@@ -32,14 +32,6 @@ namespace {
 using namespace phasebox;
 using namespace phasebox::bench;
 
-SceneDesc pileAtPoint(int count) {
-    SceneDesc s;
-    s.name = "Pile at a point";
-    s.effects.particleCollisions = ParticleCollisionsDesc{};
-    for (int i = 0; i < count; ++i) s.particles.push_back(ParticleDesc{});
-    return s;
-}
-
 struct Timing {
     std::vector<double> collideMs, stepMs;
 };
