@@ -20,7 +20,7 @@ constexpr long long kRepairMovesPerBox = 8;
 // Positions of the order a chunk of the shared sweep takes (a box visits a few to a few hundred
 // others along the axis), and the overlaps per box a chunk keeps before it is swept again with
 // the caps applied as it goes (a box in a stack or a resting pile has at most a dozen).
-constexpr int kSweepGrain = 128;
+constexpr int kSweepGrain = 512;
 constexpr int kKeptPerBox = 24;
 // Fewer boxes are swept on the calling thread: their sweep costs about what handing it out does.
 constexpr int kSharedSweepBoxes = 512;

@@ -282,11 +282,12 @@ private:
     // The passes over rows and bodies run as chunks of a range (fn(first, end)); the chunks
     // never depend on the number of workers, and no two chunks of a pass touch the same row or
     // dynamic body (a colour's rows share none), so the results are bit-identical however many
-    // workers take them. A chunk is some 20 µs of work, well above the hand-off to a worker
-    // (about a microsecond), so that a small scene stays on one thread: a pass of a few short
-    // chunks per inner sub-step costs more in hand-offs than it saves.
-    static constexpr std::size_t kRowGrain = 1024;
-    static constexpr std::size_t kBodyGrain = 2048;
+    // workers take them. A chunk is tens of microseconds of work, well above the hand-off to a
+    // worker (about a microsecond while it spins, tens when it must be woken), so that small
+    // and middling scenes stay on one thread: passes of a few short chunks per inner sub-step,
+    // with serial work between them, cost more in hand-offs than they save.
+    static constexpr std::size_t kRowGrain = 4096;
+    static constexpr std::size_t kBodyGrain = 4096;
     static constexpr std::size_t kWideGrain = 256;
     template <class F>
     void forChunks(std::size_t count, std::size_t grain, const F& fn);

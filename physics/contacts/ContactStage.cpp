@@ -19,8 +19,8 @@ constexpr std::size_t kMostReservedContacts = 4096;
 // microsecond, a collider's shape and bounds a few tens of nanoseconds, handing a chunk to
 // another thread about a microsecond; a chunk is made worth tens of those, so that a scene of a
 // few hundred pairs stays on one thread.
-constexpr int kPairGrain = 128;
-constexpr int kColliderGrain = 512;
+constexpr int kPairGrain = 512;
+constexpr int kColliderGrain = 2048;
 
 bool holds(const ContactPoint& p) {
     return p.heldNormal != 0.0 || p.heldTangent != 0.0;
