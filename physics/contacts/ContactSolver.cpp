@@ -506,10 +506,12 @@ void ContactSolver::solve() {
 }
 
 void ContactSolver::solveRow(Row& c) {
-    BodyState* state = state_.data();
+    // On copies, written back to every body but the static world: rows of one colour may be
+    // solved by several workers at once, and the world is in many of them.
+    const int world = static_cast<int>(bodies_.size());
+    BodyState a = state_[c.a];
+    BodyState b = state_[c.b];
     {
-        BodyState& a = state[c.a];
-        BodyState& b = state[c.b];
         if (!c.block || !solveBlock(c, a, b)) {
             for (int k = 0; k < c.pointCount; ++k) {
                 RowPoint& p = c.p[k];
@@ -538,6 +540,8 @@ void ContactSolver::solveRow(Row& c) {
             applyImpulse(b, p.rBx, p.rBy, impulse * tx, impulse * ty);
         }
     }
+    if (c.a != world) state_[c.a] = a;
+    if (c.b != world) state_[c.b] = b;
 }
 
 void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Vec& u,
