@@ -89,6 +89,10 @@ void ContactSolver::colourRows() {
             q.rBx[l] = p.rBx;
             q.rBy[l] = p.rBy;
             q.tangentMass[l] = p.tangentMass;
+            q.normalImpulse[l] = p.normalImpulse;
+            q.tangentImpulse[l] = p.tangentImpulse;
+            q.heldNormal[l] = p.heldNormal;
+            q.heldTangent[l] = p.heldTangent;
         }
     }
 }

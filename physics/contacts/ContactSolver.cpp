@@ -34,13 +34,15 @@ typedef double Lanes __attribute__((vector_size(32)));
 using WideLoop = void (*)(WideRow*, int, ContactSolverBody*, int);
 // Without AVX2 the rows are solved one by one in the same colour order (the portable build of
 // the four-lane loop, on SSE2 pairs, was slower than that).
-WideLoop chooseWideLoop() {
+WideLoop chooseWideLoop(bool warm) {
 #ifdef PHASEBOX_WIDE_CONTACTS
-    if (__builtin_cpu_supports("avx2")) return avx2::solveWideLoop;
+    if (__builtin_cpu_supports("avx2")) return warm ? avx2::warmWideLoop : avx2::solveWideLoop;
 #endif
+    (void)warm;
     return nullptr;
 }
-const WideLoop wideLoop = chooseWideLoop();
+const WideLoop wideLoop = chooseWideLoop(false);
+const WideLoop wideWarm = chooseWideLoop(true);
 }  // namespace
 
 namespace {
@@ -252,7 +254,6 @@ void ContactSolver::buildRow(std::size_t i, double hertz, double zeta, double h,
 }
 
 void ContactSolver::buildRows(double hertz, double zeta, double h, double warmScale) {
-    impulsesToPack_ = true;  // the warm start's impulses, into the new lanes
     // What does not change within the step, once: the rows' masses, the block's K and its
     // conditioning, the softness (each contact's stiffness multiplier: see prepare()).
     const int world = static_cast<int>(bodies_.size());
@@ -427,7 +428,17 @@ void ContactSolver::warmStart() {
     // (the smooth step's share): Box2D's warm start, of which the method's step took its part.
     // In the sweep's order, colour by colour (a colour's rows share no dynamic body), then the
     // rows no colour took.
+    const int world = static_cast<int>(bodies_.size());
     for (int colour = 0; colour < kColours; ++colour) {
+        if (wideWarm) {
+            const std::size_t first = colourWide_[colour];
+            const std::size_t count = colourWide_[colour + 1] - first;
+            forChunks(count, kWideGrain, [&](std::size_t from, std::size_t end) {
+                wideWarm(wide_.data() + first + from, static_cast<int>(end - from), state_.data(),
+                         world);
+            });
+            continue;
+        }
         const std::size_t first = 4 * static_cast<std::size_t>(colourWide_[colour]);
         const std::size_t count = 4 * static_cast<std::size_t>(colourWide_[colour + 1]) - first;
         forChunks(count, kRowGrain, [&](std::size_t from, std::size_t end) {
@@ -616,7 +627,6 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         }
         warmStart();
         preparePhase(hi, true, settings, moved);
-        impulsesToPack_ = false;  // from here on the lanes hold the accumulated impulses
         for (int it = 0; it < iterations; ++it) solve();
         forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
             for (std::size_t k = first; k < end; ++k) {
@@ -638,7 +648,6 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         moved = false;
         preparePhase(hi, false, settings, true);
         for (int it = 0; it < settings.relaxIterations; ++it) solve();
-        unpackImpulses();
         forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
             for (std::size_t k = first; k < end; ++k) {
                 SolverBody& b = bodies_[k];
@@ -651,6 +660,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         });
     }
 
+    unpackImpulses();
     deepPushOut(h, settings);
     // The accumulated impulses, for the next step's warm start, all of them the solve's.
     storeImpulses(true);
@@ -729,9 +739,6 @@ void ContactSolver::packPhase(std::size_t i) {
         q.bias[l] = used ? p.bias : 0.0;
         q.effectiveMass[l] = used ? p.effectiveMass : 0.0;
         q.impulseScale[l] = used ? p.impulseScale : 0.0;
-        if (!impulsesToPack_) continue;
-        q.normalImpulse[l] = used ? p.normalImpulse : 0.0;
-        q.tangentImpulse[l] = used ? p.tangentImpulse : 0.0;
     }
 }
 

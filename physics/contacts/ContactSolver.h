@@ -227,6 +227,7 @@ public:
             double rAx[4], rAy[4], rBx[4], rBy[4];
             double bias[4], effectiveMass[4], impulseScale[4];  // the phase's
             double tangentMass[4], normalImpulse[4], tangentImpulse[4];
+            double heldNormal[4], heldTangent[4];  // what the held force gives per sub-step
         } p[2];
     };
     static constexpr int kColours = 24;
@@ -314,12 +315,11 @@ private:
     void solveRow(Row& c);
     // Graph colours and the wide rows' step constants (after buildRows; ContactColours.cpp).
     void colourRows();
-    // The phase's terms of row i into its wide lane (and the accumulated impulses, the first
-    // time in a step: after that the lanes hold them through the phases, and rows_ has them only
-    // after unpackImpulses()).
+    // The phase's terms of row i into its wide lane. The lanes hold the coloured rows'
+    // accumulated impulses from colourRows() to the end of the step (warm start, solve and
+    // relax read and write them there); rows_ has them only after unpackImpulses().
     void packPhase(std::size_t i);
-    bool impulsesToPack_ = true;
-    // The wide rows' accumulated impulses back into rows_ (after a phase).
+    // The wide rows' accumulated impulses back into rows_ (after the inner sub-steps).
     void unpackImpulses();
     // Separations with the bodies where the solver's path has taken them.
     void updateSeparations();
