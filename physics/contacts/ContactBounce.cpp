@@ -63,7 +63,7 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
             bool hit[2] = {false, false};
             const auto measure = [&](int k) {
                 const RowPoint& p = c.p[k];
-                const double s = separation_[2 * i + k];
+                const double s = separationOf(i, k);
                 const double vn = relativeVelocity(a, b, p.rAx, p.rAy, p.rBx, p.rBy, c.nx, c.ny);
                 sep[k] = s;
                 hit[k] = false;

@@ -1,6 +1,6 @@
 // The contact rows' graph colouring (Box2D v3's): the order the sweeps take, and the coloured rows
 // side by side four at a time for the wide sweep (ContactWideLoop.inc), with what is fixed for the
-// step in each lane (the phases' terms are packed by ContactSolver::packPhase).
+// step in each lane (the phases' terms by ContactSolver::prepareWide, ContactLanes.cpp).
 #include "physics/contacts/ContactSolver.h"
 
 #include <algorithm>
@@ -54,6 +54,7 @@ void ContactSolver::colourRows() {
     }
     colourWide_[kColours] = wideRows;
     wide_.resize(wideRows);
+    wideSetup_.resize(4 * static_cast<std::size_t>(wideRows));
     order_.assign(4 * wideRows, -1);
     for (WideRow& w : wide_) {
         w = WideRow{};
@@ -93,7 +94,10 @@ void ContactSolver::colourRows() {
             q.tangentImpulse[l] = p.tangentImpulse;
             q.heldNormal[l] = p.heldNormal;
             q.heldTangent[l] = p.heldTangent;
+            q.baseSeparation[l] = q.separation[l] = p.baseSeparation;
         }
+        w.points[l] = c.pointCount;
+        wideSetup_[at] = setup_[i];
     }
 }
 

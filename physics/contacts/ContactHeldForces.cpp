@@ -59,7 +59,7 @@ void ContactSolver::refreshHeld() {
                 ContactPoint& p = c.points[k];
                 p.heldNormal = p.heldTangent = 0.0;
                 // Where the solver's path has left it (separation_ is of these rows).
-                if (!held || separation_[2 * i + k] < -c.deepOverlap) continue;
+                if (!held || separationOf(i, k) < -c.deepOverlap) continue;
                 const Vec2 force = forceOf(p, perSubstep, perStep);
                 p.heldNormal = std::clamp(force.x(), 0.0, std::max(double(p.lastNormal), 0.0));
                 if (force.y() * p.lastTangent > 0.0)

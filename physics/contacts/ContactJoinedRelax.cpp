@@ -110,7 +110,7 @@ void ContactSolver::buildJoinedRows(int n) {
             joined_.push_back(r);
         };
         for (int k = 0; k < c.pointCount; ++k)
-            if (c.p[k].effectiveMass != 0.0) add(k, true);
+            if (effectiveMassOf(i, k) != 0.0) add(k, true);
         if (c.friction > 0.0)
             for (int k = 0; k < c.pointCount; ++k) add(k, false);
     }

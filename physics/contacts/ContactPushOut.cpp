@@ -17,7 +17,7 @@ void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
     bool any = false;
     for (std::size_t i = 0; i < rows_.size() && !any; ++i)
         for (int k = 0; k < rows_[i].pointCount; ++k)
-            any = any || separation_[2 * i + k] < -setup_[i].deepOverlap;
+            any = any || separationOf(i, k) < -setup_[i].deepOverlap;
     if (!any) return;
     deepShift_.assign(bodies_.size() + 1, Vec2::Zero());
     const double step = settings.pushOut * h;
@@ -28,7 +28,7 @@ void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
             const double moved = n.dot(deepShift_[c.b] - deepShift_[c.a]);
             double deepest = 0.0;
             for (int k = 0; k < c.pointCount; ++k)
-                deepest = std::min(deepest, separation_[2 * i + k] + moved);
+                deepest = std::min(deepest, separationOf(i, k) + moved);
             const double excess = -(deepest + setup_[i].deepOverlap);
             if (!(excess > 0.0)) continue;
             const double wA = c.a < world ? state_[c.a].invMass : 0.0;

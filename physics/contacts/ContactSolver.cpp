@@ -18,6 +18,9 @@ using namespace contact_impulse;
 namespace {
 using WideRow = ContactSolver::WideRow;
 using ContactSolverBody = ContactSolver::BodyState;
+using RowSetup = ContactSolver::RowSetup;
+using BodyMotion = ContactSolver::BodyMotion;
+using PhaseTerms = ContactSolver::PhaseTerms;
 
 // The wide sweep where AVX2 is there (chosen at run time; the build is generic x86-64). No
 // fused multiply-add: each lane does the scalar row's operations (solveRow) in the same order.
@@ -32,6 +35,8 @@ typedef double Lanes __attribute__((vector_size(32)));
 #endif
 
 using WideLoop = void (*)(WideRow*, int, ContactSolverBody*, int);
+using WideMeasure = void (*)(WideRow*, int, const BodyMotion*);
+using WidePrepare = void (*)(WideRow*, int, const RowSetup*, const BodyMotion*, const PhaseTerms&);
 // Without AVX2 the rows are solved one by one in the same colour order (the portable build of
 // the four-lane loop, on SSE2 pairs, was slower than that).
 WideLoop chooseWideLoop(bool warm) {
@@ -43,6 +48,14 @@ WideLoop chooseWideLoop(bool warm) {
 }
 const WideLoop wideLoop = chooseWideLoop(false);
 const WideLoop wideWarm = chooseWideLoop(true);
+// The lanes' separations and phase terms (with the wide sweep only).
+#ifdef PHASEBOX_WIDE_CONTACTS
+const WideMeasure wideMeasure = avx2::measureWideLoop;
+const WidePrepare widePrepare = avx2::prepareWideLoop;
+#else
+const WideMeasure wideMeasure = nullptr;
+const WidePrepare widePrepare = nullptr;
+#endif
 }  // namespace
 
 namespace {
@@ -257,6 +270,7 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
     // What does not change within the step, once: the rows' masses, the block's K and its
     // conditioning, the softness (each contact's stiffness multiplier: see prepare()).
     const int world = static_cast<int>(bodies_.size());
+    lanesHold_ = wideLoop != nullptr;
     rows_.resize(constraints_.size());
     setup_.resize(constraints_.size());
     separation_.resize(2 * constraints_.size());
@@ -291,55 +305,46 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
     // Per point: the bias velocity and the soft parameters (a speculative point, or a
     // penetrating one during relax, is rigid); per row the block's inverse. Separations are
     // fixed within a phase, so this is done once for all its iterations.
-    const double invH = 1.0 / h;
-    const double maxPushOut = settings.pushOut;
+    const PhaseTerms terms{1.0 / h, settings.pushOut, useBias};
     if (measure) updateMotion();
+    if (lanesHold_) {
+        forChunks(wide_.size(), kWideGrain, [&](std::size_t first, std::size_t end) {
+            widePrepare(wide_.data() + first, static_cast<int>(end - first),
+                        wideSetup_.data() + 4 * first, measure ? motion_.data() : nullptr, terms);
+        });
+        for (const int i : overflow_) prepareRow(static_cast<std::size_t>(i), terms, measure);
+        return;
+    }
     forChunks(rows_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
-        for (std::size_t i = first; i < end; ++i) {
-            if (measure) rowSeparations(i);
-            Row& c = rows_[i];
-            const RowSetup& setup = setup_[i];
-            double compliance[2] = {0.0, 0.0};
-            bool active[2] = {true, true};
-            for (int k = 0; k < c.pointCount; ++k) {
-                RowPoint& p = c.p[k];
-                const double s = separation_[2 * i + k];
-                double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-                if (s > 0.0) {
-                    // Speculative: close at most the gap. Only while solving: relaxing a gap would
-                    // brake an approaching body a sub-step early (the next solve sees the gap
-                    // anew).
-                    bias = s * invH;
-                    active[k] = useBias;
-                } else if (useBias) {
-                    // The push of an overlap deeper than deepOverlap is that of deepOverlap: the
-                    // rest is pushed out in positions (deepPushOut). In a pile each contact's push
-                    // velocity adds up along chains of bodies (20 boxes started at one point left
-                    // at 40 m/s).
-                    const double depth = std::max(s, -setup.deepOverlap);
-                    bias = std::max(setup.biasRate * depth, -setup.pushOutShare * maxPushOut);
-                    massScale = setup.massScale;
-                    impulseScale = setup.impulseScale;
-                    compliance[k] = setup.compliance[k];
-                }
-                p.bias = bias;
-                p.effectiveMass = active[k] ? setup.normalMass[k] * massScale : 0.0;
-                p.impulseScale = active[k] ? impulseScale : 0.0;
-            }
-            c.block = setup.blockable && active[0] && active[1];
-            if (c.block) {
-                const double a11 = c.k11 + compliance[0], a22 = c.k22 + compliance[1], a12 = c.k12;
-                const double invDet = 1.0 / (a11 * a22 - a12 * a12);
-                c.a12 = a12;
-                c.i11 = a22 * invDet;
-                c.i12 = -a12 * invDet;
-                c.i22 = a11 * invDet;
-                c.invA11 = 1.0 / a11;
-                c.invA22 = 1.0 / a22;
-            }
-            packPhase(i);
-        }
+        for (std::size_t i = first; i < end; ++i) prepareRow(i, terms, measure);
     });
+}
+
+void ContactSolver::prepareRow(std::size_t i, const PhaseTerms& terms, bool measure) {
+    if (measure) rowSeparations(i);
+    Row& c = rows_[i];
+    const RowSetup& setup = setup_[i];
+    double compliance[2] = {0.0, 0.0};
+    bool active[2] = {true, true};
+    for (int k = 0; k < c.pointCount; ++k) {
+        RowPoint& p = c.p[k];
+        const PointTerms t = pointTerms(separation_[2 * i + k], setup, k, terms);
+        active[k] = t.active;
+        compliance[k] = t.compliance;
+        p.bias = t.bias;
+        p.effectiveMass = t.effectiveMass;
+        p.impulseScale = t.impulseScale;
+    }
+    c.block = setup.blockable && active[0] && active[1];
+    if (c.block) {
+        const BlockTerms b = blockTerms(c.k11, c.k12, c.k22, compliance);
+        c.a12 = b.a12;
+        c.i11 = b.i11;
+        c.i12 = b.i12;
+        c.i22 = b.i22;
+        c.invA11 = b.invA11;
+        c.invA22 = b.invA22;
+    }
 }
 
 namespace {
@@ -399,6 +404,13 @@ void ContactSolver::rowSeparations(std::size_t i) {
 
 void ContactSolver::updateSeparations() {
     updateMotion();
+    if (lanesHold_) {
+        forChunks(wide_.size(), kWideGrain, [&](std::size_t first, std::size_t end) {
+            wideMeasure(wide_.data() + first, static_cast<int>(end - first), motion_.data());
+        });
+        for (const int i : overflow_) rowSeparations(static_cast<std::size_t>(i));
+        return;
+    }
     forChunks(rows_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) rowSeparations(i);
     });
@@ -719,31 +731,8 @@ void ContactSolver::storeImpulses(bool solved) {
     });
 }
 
-void ContactSolver::packPhase(std::size_t i) {
-    const int at = slot_[i];
-    if (at < 0 || !wideLoop) return;
-    const Row& c = rows_[i];
-    WideRow& w = wide_[at / 4];
-    const int l = at % 4;
-    w.block[l] = c.block ? 1.0 : 0.0;
-    w.a12[l] = c.block ? c.a12 : 0.0;
-    w.i11[l] = c.block ? c.i11 : 0.0;
-    w.i12[l] = c.block ? c.i12 : 0.0;
-    w.i22[l] = c.block ? c.i22 : 0.0;
-    w.invA11[l] = c.block ? c.invA11 : 0.0;
-    w.invA22[l] = c.block ? c.invA22 : 0.0;
-    for (int k = 0; k < 2; ++k) {
-        const RowPoint& p = c.p[k];
-        WideRow::Point& q = w.p[k];
-        const bool used = k < c.pointCount;
-        q.bias[l] = used ? p.bias : 0.0;
-        q.effectiveMass[l] = used ? p.effectiveMass : 0.0;
-        q.impulseScale[l] = used ? p.impulseScale : 0.0;
-    }
-}
-
 void ContactSolver::unpackImpulses() {
-    if (!wideLoop) return;
+    if (!lanesHold_) return;
     forChunks(rows_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             const int at = slot_[i];

@@ -26,6 +26,7 @@
 #include "physics/contacts/Geometry.h"
 #include "physics/core/Types.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -220,6 +221,7 @@ public:
     // with zero masses.
     struct alignas(32) WideRow {
         int a[4], b[4];
+        int points[4];  // each lane's point count (0: an unused lane)
         double nx[4], ny[4], friction[4], mA[4], iA[4], mB[4], iB[4];
         double k11[4], k12[4], k22[4];
         double a12[4], i11[4], i12[4], i22[4], invA11[4], invA22[4], block[4];  // the phase's
@@ -228,18 +230,33 @@ public:
             double bias[4], effectiveMass[4], impulseScale[4];  // the phase's
             double tangentMass[4], normalImpulse[4], tangentImpulse[4];
             double heldNormal[4], heldTangent[4];  // what the held force gives per sub-step
+            double baseSeparation[4];
+            double separation[4];  // where the solver's path is now (separationOf())
         } p[2];
     };
     static constexpr int kColours = 24;
-
-private:
-    struct Softness {
-        double biasRate, massScale, impulseScale;
-    };
     // Where a body is now relative to where its contacts were found: Δp and R(Δθ), once per
     // solver phase.
     struct BodyMotion {
         double dx, dy, cos, sin;
+    };
+    // What the phases are built from, per row (cold: read once per phase).
+    struct RowSetup {
+        double biasRate, massScale, impulseScale;
+        double normalMass[2], compliance[2];
+        double deepOverlap;
+        double pushOutShare;
+        bool blockable;  // two points whose K is well conditioned
+    };
+    // A phase's constants: 1/h, the push-out speed, and whether it is a soft solve (else relax).
+    struct PhaseTerms {
+        double invH, maxPushOut;
+        bool useBias;
+    };
+
+private:
+    struct Softness {
+        double biasRate, massScale, impulseScale;
     };
     // A contact point as the iterations see it. The phase terms (bias, effectiveMass,
     // impulseScale) depend only on the separation, which is fixed within a phase (a soft solve
@@ -271,14 +288,6 @@ private:
         double a12, i11, i12, i22, invA11, invA22;
         RowPoint p[2];
     };
-    // What the phases are built from, per row (cold: read once per phase).
-    struct RowSetup {
-        double biasRate, massScale, impulseScale;
-        double normalMass[2], compliance[2];
-        double deepOverlap;
-        double pushOutShare;
-        bool blockable;  // two points whose K is well conditioned
-    };
 
     // The passes over rows and bodies run as chunks of a range (fn(first, end)); the chunks
     // never depend on the number of workers, and no two chunks of a pass touch the same row or
@@ -309,18 +318,69 @@ private:
     static Softness makeSoft(double hertz, double zeta, double h);
     // The phase's per-row terms from the current separations (useBias: soft solve, else relax).
     // measure: the bodies moved since the separations were taken: each row's are taken anew in
-    // the same pass (updateMotion() first).
+    // the same pass (updateMotion() first). The coloured rows' terms go straight into their
+    // lanes (ContactWideLoop.inc), the others' into rows_ (prepareRow()).
     void preparePhase(double h, bool useBias, const ContactSettings& settings, bool measure);
+    void prepareRow(std::size_t i, const PhaseTerms& terms, bool measure);
+    // Row i's point k's separation where the solver's path is now: in its lane for a coloured
+    // row (with the wide sweep), else in separation_.
+    double separationOf(std::size_t i, int k) const {
+        const int at = slot_[i];
+        return at >= 0 && lanesHold_ ? wide_[at / 4].p[k].separation[at % 4]
+                                     : separation_[2 * i + k];
+    }
+    // Row i's point k's effective mass in the last phase (0: inactive), likewise.
+    double effectiveMassOf(std::size_t i, int k) const {
+        const int at = slot_[i];
+        return at >= 0 && lanesHold_ ? wide_[at / 4].p[k].effectiveMass[at % 4]
+                                     : rows_[i].p[k].effectiveMass;
+    }
+    bool lanesHold_ = false;  // the wide sweep is there: the lanes hold the coloured rows
     void solve();
     void solveRow(Row& c);
     // Graph colours and the wide rows' step constants (after buildRows; ContactColours.cpp).
     void colourRows();
-    // The phase's terms of row i into its wide lane. The lanes hold the coloured rows'
-    // accumulated impulses from colourRows() to the end of the step (warm start, solve and
-    // relax read and write them there); rows_ has them only after unpackImpulses().
-    void packPhase(std::size_t i);
-    // The wide rows' accumulated impulses back into rows_ (after the inner sub-steps).
+    // The lanes hold the coloured rows' accumulated impulses from colourRows() to the end of
+    // the step (warm start, solve and relax read and write them there); rows_ has them only
+    // after unpackImpulses() (after the inner sub-steps).
     void unpackImpulses();
+    // A point's terms in a phase, from its separation s (the same arithmetic for a row and a
+    // lane).
+    struct PointTerms {
+        double bias, effectiveMass, impulseScale, compliance;
+        bool active;
+    };
+    static PointTerms pointTerms(double s, const RowSetup& setup, int k, const PhaseTerms& terms) {
+        PointTerms t{0.0, 0.0, 0.0, 0.0, true};
+        double massScale = 1.0, impulseScale = 0.0;
+        if (s > 0.0) {
+            // Speculative: close at most the gap. Only while solving: relaxing a gap would
+            // brake an approaching body a sub-step early (the next solve sees the gap anew).
+            t.bias = s * terms.invH;
+            t.active = terms.useBias;
+        } else if (terms.useBias) {
+            // The push of an overlap deeper than deepOverlap is that of deepOverlap: the rest is
+            // pushed out in positions (deepPushOut). In a pile each contact's push velocity adds
+            // up along chains of bodies (20 boxes started at one point left at 40 m/s).
+            const double depth = std::max(s, -setup.deepOverlap);
+            t.bias = std::max(setup.biasRate * depth, -setup.pushOutShare * terms.maxPushOut);
+            massScale = setup.massScale;
+            impulseScale = setup.impulseScale;
+            t.compliance = setup.compliance[k];
+        }
+        t.effectiveMass = t.active ? setup.normalMass[k] * massScale : 0.0;
+        t.impulseScale = t.active ? impulseScale : 0.0;
+        return t;
+    }
+    // The block's A = K + diag(compliance): a12, A⁻¹ and the single-point fallbacks 1/a11, 1/a22.
+    struct BlockTerms {
+        double a12, i11, i12, i22, invA11, invA22;
+    };
+    static BlockTerms blockTerms(double k11, double k12, double k22, const double compliance[2]) {
+        const double a11 = k11 + compliance[0], a22 = k22 + compliance[1], a12 = k12;
+        const double invDet = 1.0 / (a11 * a22 - a12 * a12);
+        return {a12, a22 * invDet, -a12 * invDet, a11 * invDet, 1.0 / a11, 1.0 / a22};
+    }
     // Separations with the bodies where the solver's path has taken them.
     void updateSeparations();
     void updateMotion();                   // per body: motion_ from the solver's path
@@ -331,15 +391,16 @@ private:
 
     std::vector<SolverBody> bodies_;
     std::vector<ContactConstraint> constraints_;
-    std::vector<BodyState> state_;    // bodies_.size() + 1 (the static world last)
-    std::vector<BodyMotion> motion_;  // likewise
-    std::vector<Row> rows_;           // per constraint, in constraints_'s order
-    std::vector<RowSetup> setup_;     // likewise
-    std::vector<double> separation_;  // per row point (2 per row), where the path is now
-    std::vector<WideRow> wide_;       // the coloured rows, colour by colour
-    std::vector<int> slot_;           // per row: 4·wide row + lane, or −1 (solved alone)
-    std::vector<int> order_;          // per wide slot: its row, or −1 (the sweep order)
-    std::vector<int> overflow_;       // rows no colour could take, solved after the wide ones
+    std::vector<BodyState> state_;     // bodies_.size() + 1 (the static world last)
+    std::vector<BodyMotion> motion_;   // likewise
+    std::vector<Row> rows_;            // per constraint, in constraints_'s order
+    std::vector<RowSetup> setup_;      // likewise
+    std::vector<RowSetup> wideSetup_;  // per wide slot (4·wide row + lane), its row's
+    std::vector<double> separation_;   // per row point (2 per row), where the path is now
+    std::vector<WideRow> wide_;        // the coloured rows, colour by colour
+    std::vector<int> slot_;            // per row: 4·wide row + lane, or −1 (solved alone)
+    std::vector<int> order_;           // per wide slot: its row, or −1 (the sweep order)
+    std::vector<int> overflow_;        // rows no colour could take, solved after the wide ones
     std::vector<std::uint64_t> colourBits_;  // per colour, a bit per body: taken
     std::vector<int> colourCount_;           // rows per colour, then the first wide row
     std::vector<int> colourWide_;            // per colour its first wide row, then the end
