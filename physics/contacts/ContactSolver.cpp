@@ -308,7 +308,7 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
     const PhaseTerms terms{1.0 / h, settings.pushOut, useBias};
     if (measure) updateMotion();
     if (lanesHold_) {
-        forChunks(wide_.size(), kWideGrain, [&](std::size_t first, std::size_t end) {
+        forChunks(wide_.size(), kWideLightGrain, [&](std::size_t first, std::size_t end) {
             widePrepare(wide_.data() + first, static_cast<int>(end - first),
                         wideSetup_.data() + 4 * first, measure ? motion_.data() : nullptr, terms);
         });
@@ -405,7 +405,7 @@ void ContactSolver::rowSeparations(std::size_t i) {
 void ContactSolver::updateSeparations() {
     updateMotion();
     if (lanesHold_) {
-        forChunks(wide_.size(), kWideGrain, [&](std::size_t first, std::size_t end) {
+        forChunks(wide_.size(), kWideLightGrain, [&](std::size_t first, std::size_t end) {
             wideMeasure(wide_.data() + first, static_cast<int>(end - first), motion_.data());
         });
         for (const int i : overflow_) rowSeparations(static_cast<std::size_t>(i));
@@ -445,7 +445,7 @@ void ContactSolver::warmStart() {
         if (wideWarm) {
             const std::size_t first = colourWide_[colour];
             const std::size_t count = colourWide_[colour + 1] - first;
-            forChunks(count, kWideGrain, [&](std::size_t from, std::size_t end) {
+            forChunks(count, kWideLightGrain, [&](std::size_t from, std::size_t end) {
                 wideWarm(wide_.data() + first + from, static_cast<int>(end - from), state_.data(),
                          world);
             });

@@ -299,6 +299,9 @@ private:
     static constexpr std::size_t kRowGrain = 4096;
     static constexpr std::size_t kBodyGrain = 4096;
     static constexpr std::size_t kWideGrain = 256;
+    // Wide rows per chunk of the lighter wide passes (warm start, separations, phase terms): as
+    // many rows as kRowGrain.
+    static constexpr std::size_t kWideLightGrain = kRowGrain / 4;
     template <class F>
     void forChunks(std::size_t count, std::size_t grain, const F& fn);
     WorkerPool* pool_ = nullptr;
