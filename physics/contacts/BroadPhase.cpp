@@ -82,6 +82,14 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
         std::iota(order_.begin(), order_.end(), 0);
     }
     sortOrder(boxes, fresh);
+    const int cross = 1 - axis_;
+    sortedBoxes_.resize(boxes.size());
+    upper_.resize(boxes.size());
+    for (int k = 0; k < count; ++k) {
+        const Aabb& b = boxes[order_[k]];
+        sortedBoxes_[k] = {b.lower[axis_], b.lower[cross], b.upper[cross], order_[k]};
+        upper_[k] = b.upper[axis_];
+    }
 
     const bool capped = cap.limited != nullptr;
     if (capped) {
@@ -143,7 +151,7 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
             std::size_t nextOther = firstOtherAfter(begin);
             for (int k = begin; k < end && !chunk.overflowed; ++k) {
                 while (nextOther < otherAt_.size() && otherAt_[nextOther] <= k) ++nextOther;
-                chunk.visited += sweepFrom(boxes, cap, k, nextOther, [&](int i, int j) {
+                chunk.visited += sweepFrom(cap, k, nextOther, [&](int i, int j) {
                     if (chunk.found.size() >= most) chunk.overflowed = true;
                     if (!chunk.overflowed) chunk.found.emplace_back(i, j);
                 });
@@ -165,48 +173,48 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
         std::size_t nextOther = firstOtherAfter(begin);
         for (int k = begin; k < end; ++k) {
             while (nextOther < otherAt_.size() && otherAt_[nextOther] <= k) ++nextOther;
-            candidatesVisited_ += sweepFrom(boxes, cap, k, nextOther, keep);
+            candidatesVisited_ += sweepFrom(cap, k, nextOther, keep);
         }
     }
     sortPairs(pairs, count);
 }
 
 template <class Emit>
-long long BroadPhase::sweepFrom(const std::vector<Aabb>& boxes, const PairCap& cap, int k,
-                                std::size_t nextOther, Emit&& emit) const {
+long long BroadPhase::sweepFrom(const PairCap& cap, int k, std::size_t nextOther,
+                                Emit&& emit) const {
     // The boxes that overlap box i along the axis and start no earlier than it are those that
     // follow it in the order up to the first one starting beyond its upper bound; the other
     // axis decides. A kApart box looks only at the others (otherAt_).
-    const int axis = axis_, cross = 1 - axis_;
     const int count = static_cast<int>(order_.size());
-    const int i = order_[k];
-    const Aabb& box = boxes[i];
-    const double upper = box.upper[axis];
-    const auto overlaps = [&](const Aabb& o) {
-        return !(o.lower[cross] > box.upper[cross] || box.lower[cross] > o.upper[cross]);
+    const Sorted* sorted = sortedBoxes_.data();
+    const int i = sorted[k].box;
+    const double upper = upper_[k];
+    const double crossLower = sorted[k].crossLower, crossUpper = sorted[k].crossUpper;
+    const auto overlaps = [&](const Sorted& o) {
+        return !(o.crossLower > crossUpper || crossLower > o.crossUpper);
     };
     if (cap.limited != nullptr && (*cap.limited)[i] == PairCap::kApart) {
         std::size_t m = nextOther;
         for (; m < otherAt_.size(); ++m) {
-            const int j = order_[otherAt_[m]];
-            const Aabb& o = boxes[j];
-            if (o.lower[axis] > upper) break;
-            if (overlaps(o)) emit(i, j);
+            const Sorted& o = sorted[otherAt_[m]];
+            if (o.lower > upper) break;
+            if (overlaps(o)) emit(i, o.box);
         }
         return static_cast<long long>(m - nextOther);
     }
     int l = k + 1;
     for (; l < count; ++l) {
-        const int j = order_[l];
-        const Aabb& o = boxes[j];
-        if (o.lower[axis] > upper) break;
-        if (overlaps(o)) emit(i, j);
+        const Sorted& o = sorted[l];
+        if (o.lower > upper) break;
+        if (overlaps(o)) emit(i, o.box);
     }
     return l - (k + 1);
 }
 
 void BroadPhase::reserve(std::size_t boxes, std::size_t pairs) {
     order_.reserve(boxes);
+    sortedBoxes_.reserve(boxes);
+    upper_.reserve(boxes);
     pairCount_.reserve(boxes);
     nearCount_.reserve(boxes);
     otherAt_.reserve(boxes);

@@ -70,8 +70,7 @@ private:
     // tested), as emit(i, j); returns how many boxes it visited along the axis. nextOther: the
     // first entry of otherAt_ after k.
     template <class Emit>
-    long long sweepFrom(const std::vector<Aabb>& boxes, const PairCap& cap, int k,
-                        std::size_t nextOther, Emit&& emit) const;
+    long long sweepFrom(const PairCap& cap, int k, std::size_t nextOther, Emit&& emit) const;
 
     // A chunk of the shared sweep: its overlaps in sweep order, unless there were more than
     // it keeps (a pile at one point, where nearly all are then capped away): the chunk is swept
@@ -83,7 +82,16 @@ private:
     };
     std::vector<Chunk> chunks_;
 
-    std::vector<int> order_;      // indices sorted by lower bound on axis_, kept between calls
+    std::vector<int> order_;  // indices sorted by lower bound on axis_, kept between calls
+    // The bounds the sweep reads, in the order's sequence (this call): one contiguous stream
+    // instead of a jump through order_ into the boxes for every candidate visited.
+    struct Sorted {
+        double lower;                   // on axis_
+        double crossLower, crossUpper;  // on the other axis
+        int box;
+    };
+    std::vector<Sorted> sortedBoxes_;
+    std::vector<double> upper_;   // per position of the order: the box's upper bound on axis_
     std::vector<int> pairCount_;  // per box: overlapping capped partners taken in this call
     std::vector<int> nearCount_;  // per box: near capped partners taken in this call
     std::vector<int> otherAt_;    // positions in order_ of the boxes not kApart (this call)
