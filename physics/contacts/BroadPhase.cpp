@@ -32,6 +32,7 @@ constexpr int kSharedSweepBoxes = 512;
 constexpr int kMinBandedBoxes = 256;
 constexpr int kMinBands = 4;
 constexpr int kMaxBands = 4096;
+constexpr int kBandSample = 64;  // boxes whose median extent sets the bands' height
 
 }  // namespace
 
@@ -263,7 +264,11 @@ void BroadPhase::buildBands(int count) {
     bandCount_ = 0;
     if (count < kMinBandedBoxes) return;
     double low = std::numeric_limits<double>::infinity(), high = -low;
-    extents_.resize(count);
+    // The median of a sample of the boxes spread over the order: the bands change only the
+    // work, never the pairs.
+    const int stride = std::max(1, count / kBandSample);
+    extents_.clear();
+    extents_.reserve(2 * kBandSample);  // count / stride < 2 · kBandSample
     for (int k = 0; k < count; ++k) {
         const Sorted& o = sortedBoxes_[k];
         if (!std::isfinite(o.lower) || !std::isfinite(upper_[k]) || !std::isfinite(o.crossLower) ||
@@ -271,9 +276,9 @@ void BroadPhase::buildBands(int count) {
             return;
         low = std::min(low, o.crossLower);
         high = std::max(high, o.crossUpper);
-        extents_[k] = o.crossUpper - o.crossLower;
+        if (k % stride == 0) extents_.push_back(o.crossUpper - o.crossLower);
     }
-    const auto middle = extents_.begin() + count / 2;
+    const auto middle = extents_.begin() + extents_.size() / 2;
     std::nth_element(extents_.begin(), middle, extents_.end());
     const double height = std::max(2.0 * *middle, (high - low) / kMaxBands);
     if (!(height > 0.0) || !((high - low) / height >= kMinBands)) return;
@@ -283,9 +288,12 @@ void BroadPhase::buildBands(int count) {
     // The bands' boxes in the order's sequence (counted, then placed), and where each box
     // stands in each of its bands; a box across more than kMaxBandsPerBox bands is wide and
     // in none of them (it sweeps, and is found, as before).
-    // Room for every box in kMaxBandsPerBox bands: nothing grows as boxes cross bands.
+    // Room for every box in kMaxBandsPerBox bands and for the most bands: nothing grows as
+    // boxes cross bands or the bands' count changes.
     bandEntries_.reserve(static_cast<std::size_t>(kMaxBandsPerBox) * count);
     wide_.reserve(count);
+    bandStart_.reserve(kMaxBands + 1);
+    bandFill_.reserve(kMaxBands + 1);
     bandStart_.assign(bandCount_ + 1, 0);
     firstBand_.resize(count);
     lastBand_.resize(count);

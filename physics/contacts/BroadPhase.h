@@ -5,8 +5,10 @@
 // costs what a row costs along x. The order of the boxes by their lower bound on that axis is
 // kept from call to call and repaired by insertion sort, which is nearly linear when bodies
 // move a little per step; a full sort takes over when the axis changes or the repair grows
-// long (an exploding pile scrambles the order). Planes are not in it (they are infinite; the
-// world tests them against every body).
+// long (an exploding pile scrambles the order). In a broad heap the other axis is cut into bands
+// (buildBands()) so that a box visits its neighbours, not the heap's whole width; the overlaps
+// still come out in the sweep's order. Planes are not in it (they are infinite; the world tests
+// them against every body).
 //
 // Rejected: a uniform grid (one cell size cannot serve a 100 m ground box and 5 cm disks) and
 // a dynamic AABB tree (more code and state than the scenes here need). Known limit: boxes that
