@@ -5,8 +5,10 @@
 // costs what a row costs along x. The order of the boxes by their lower bound on that axis is
 // kept from call to call and repaired by insertion sort, which is nearly linear when bodies
 // move a little per step; a full sort takes over when the axis changes or the repair grows
-// long (an exploding pile scrambles the order). Planes are not in it (they are infinite; the
-// world tests them against every body).
+// long (an exploding pile scrambles the order). In a broad heap the other axis is cut into bands
+// (buildBands()) so that a box visits its neighbours, not the heap's whole width; the overlaps
+// still come out in the sweep's order. Planes are not in it (they are infinite; the world tests
+// them against every body).
 //
 // Rejected: a uniform grid (one cell size cannot serve a 100 m ground box and 5 cm disks) and
 // a dynamic AABB tree (more code and state than the scenes here need). Known limit: boxes that
@@ -64,14 +66,16 @@ public:
     long long candidatesVisited() const { return candidatesVisited_; }
 
 private:
+    // The sweep axis, the order along it (sortOrder()), the bounds in its sequence and the
+    // bands, for this call.
+    void arrange(const std::vector<Aabb>& boxes);
     void sortOrder(const std::vector<Aabb>& boxes, bool fresh);
     void sortPairs(std::vector<std::pair<int, int>>& pairs, int count);
     // The overlaps of the box at position k of the order that follow it (the other axis
-    // tested), as emit(i, j); returns how many boxes it visited along the axis. nextOther: the
-    // first entry of otherAt_ after k.
+    // tested), as emit(i, j), until emit returns false (box i takes no further pair); returns
+    // how many boxes it visited along the axis. nextOther: the first entry of otherAt_ after k.
     template <class Emit>
-    long long sweepFrom(const std::vector<Aabb>& boxes, const PairCap& cap, int k,
-                        std::size_t nextOther, Emit&& emit) const;
+    long long sweepFrom(const PairCap& cap, int k, std::size_t nextOther, Emit&& emit) const;
 
     // A chunk of the shared sweep: its overlaps in sweep order, unless there were more than
     // it keeps (a pile at one point, where nearly all are then capped away): the chunk is swept
@@ -83,11 +87,51 @@ private:
     };
     std::vector<Chunk> chunks_;
 
-    std::vector<int> order_;      // indices sorted by lower bound on axis_, kept between calls
-    std::vector<int> pairCount_;  // per box: overlapping capped partners taken in this call
-    std::vector<int> nearCount_;  // per box: near capped partners taken in this call
-    std::vector<int> otherAt_;    // positions in order_ of the boxes not kApart (this call)
-    std::vector<int> firstOf_;    // per box + 1: where its pairs start (sorting)
+    std::vector<int> order_;  // indices sorted by lower bound on axis_, kept between calls
+    // The bounds the sweep reads, in the order's sequence (this call): one contiguous stream
+    // instead of a jump through order_ into the boxes for every candidate visited.
+    struct Sorted {
+        double lower;                   // on axis_
+        double crossLower, crossUpper;  // on the other axis
+        int box;
+    };
+    std::vector<Sorted> sortedBoxes_;
+    std::vector<double> upper_;  // per position of the order: the box's upper bound on axis_
+
+    // Bands of the cross axis, so that a box in a broad heap (a pyramid) visits its neighbours
+    // in its bands, not every box of the heap's width along the sweep axis: each band lists
+    // the boxes that reach into it in the order's sequence. None when they do not pay.
+    void buildBands(int count);
+    int bandOf(double cross) const;
+    struct Scratch;
+    template <class Emit>
+    long long sweepBox(const PairCap& cap, int k, std::size_t nextOther, Scratch& buffers,
+                       Emit&& emit) const;
+    static constexpr int kMaxBandsPerBox = 4;
+    struct BandEntry {
+        double lower;
+        double crossLower, crossUpper;
+        int position;   // in the order
+        int firstBand;  // the first band the box reaches into
+    };
+    int bandCount_ = 0;  // 0: no bands this call
+    double bandLow_ = 0.0, bandHeight_ = 1.0;
+    std::vector<int> bandStart_, bandFill_;  // per band + 1: where its entries start
+    std::vector<BandEntry> bandEntries_;
+    std::vector<int> firstBand_, lastBand_;  // per position (firstBand_ −1: wide)
+    std::vector<int> slots_;                 // per position, kMaxBandsPerBox: its entry per band
+    std::vector<int> wide_;                  // positions of the wide boxes
+    // Per worker: one box's overlaps in the bands, put in the order's sequence (room for every
+    // box, so that no call allocates once the count is reached).
+    struct Scratch {
+        std::vector<int> found, merged;
+    };
+    std::vector<Scratch> scratch_;
+    std::vector<double> extents_;  // scratch: the boxes' cross extents
+    std::vector<int> pairCount_;   // per box: overlapping capped partners taken in this call
+    std::vector<int> nearCount_;   // per box: near capped partners taken in this call
+    std::vector<int> otherAt_;     // positions in order_ of the boxes not kApart (this call)
+    std::vector<int> firstOf_;     // per box + 1: where its pairs start (sorting)
     std::vector<std::pair<int, int>> sorted_;  // the pairs by (i, j), before the swap
     int axis_ = 0;
     long long candidatesVisited_ = 0;

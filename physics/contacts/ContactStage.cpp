@@ -26,6 +26,17 @@ bool holds(const ContactPoint& p) {
     return p.heldNormal != 0.0 || p.heldTangent != 0.0;
 }
 
+std::size_t heldPoints(const ContactConstraint& c) {
+    std::size_t held = 0;
+    for (int k = 0; k < c.pointCount; ++k) held += holds(c.points[k]);
+    return held;
+}
+
+// A contact's key: its pair of colliders (a plane's number after the colliders' as the first).
+std::uint64_t pairKey(int first, int second) {
+    return (static_cast<std::uint64_t>(first) << 32) | static_cast<std::uint64_t>(second);
+}
+
 // The impulses of the points of old that the points of c continue (same feature ids), and
 // how many of those held a force (World::releaseHeldForces).
 void carryImpulses(const ContactConstraint& old, ContactConstraint& c, std::size_t& heldCarried) {
@@ -208,7 +219,7 @@ void ContactStage::findReachedSleepers(const Bodies& bodies, const ContactSettin
     for (const auto& [i, j] : pairs_) reachSleeper(bodies, i, j, settings.speculativeDistance);
 }
 
-int ContactStage::solverBodyFor(int collider, const Vec& q) {
+int ContactStage::solverBodyFor(int collider, const Vec& q, const Vec& inverseMass) {
     const Collider& c = colliders_[collider];
     if (c.dof < 0) return -1;
     int& index = bodyOfCollider_[collider];
@@ -221,6 +232,8 @@ int ContactStage::solverBodyFor(int collider, const Vec& q) {
     b.jointed = c.jointed;
     b.collidePosition = q.segment<2>(c.dof);
     if (b.rotates) b.collideAngle = q[c.dof + 2];
+    b.invMass = inverseMass[b.dof];
+    b.invInertia = b.rotates ? inverseMass[b.dof + 2] : 0.0;
     bodies.push_back(b);
     return index;
 }
@@ -435,8 +448,8 @@ void ContactStage::sortByKey(std::vector<ContactConstraint>& constraints) {
     std::swap(constraints, sorted_);
 }
 
-void ContactStage::findContacts(const Bodies& bodies, const Vec& q, double dt,
-                                const ContactSettings& settings) {
+void ContactStage::findContacts(const Bodies& bodies, const Vec& q, const Vec& inverseMass,
+                                double dt, const ContactSettings& settings) {
     // Every candidate pair's manifold into its own slot, in parallel, then every plane against
     // every collider; the contacts are then made from the slots in order, serially (they number
     // the solver's bodies as they come), so that nothing depends on how the loops were shared.
@@ -470,82 +483,115 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& q, double dt,
             f.hit = narrowPhasePlane(k, i, settings.speculativeDistance + sweep[i], f.m, f.pair);
         }
     });
-    // The contacts in slot order: numbered, with their solver bodies, here; filled in from
-    // their slots in parallel.
-    std::vector<ContactConstraint>& constraints = solver_.constraints();
+    // The contacts in slot order: numbered, with their solver bodies and keys, here; built
+    // from their slots in parallel.
     madeFrom_.clear();
+    std::uint64_t lastKey = 0;
+    keysAscending_ = true;
     for (int s = 0; s < pairCount + planeTests; ++s) {
         Found& f = found_[s];
         if (!f.hit) continue;
         if (s >= pairCount) f.pair.a = -1;  // a plane: the world is body A
-        ContactConstraint& c = constraints.emplace_back();
-        c.bodyA = f.pair.a >= 0 ? solverBodyFor(f.pair.a, q) : -1;
-        c.bodyB = solverBodyFor(f.pair.b, q);
-        madeFrom_.push_back(s);
+        Made made;
+        made.slot = s;
+        made.bodyA = f.pair.a >= 0 ? solverBodyFor(f.pair.a, q, inverseMass) : -1;
+        made.bodyB = solverBodyFor(f.pair.b, q, inverseMass);
+        made.key = s < pairCount ? pairKey(f.pair.a, f.pair.b)
+                                 : pairKey(count + (s - pairCount) / count, f.pair.b);
+        if (!madeFrom_.empty() && made.key <= lastKey) keysAscending_ = false;
+        lastKey = made.key;
+        madeFrom_.push_back(made);
     }
-    const auto pairKey = [](int first, int second) {
-        return (static_cast<std::uint64_t>(first) << 32) | static_cast<std::uint64_t>(second);
-    };
-    forRange(static_cast<int>(madeFrom_.size()), kPairGrain, [&](int begin, int end) {
-        for (int k = begin; k < end; ++k) {
-            const int s = madeFrom_[k];
-            const Found& f = found_[s];
-            const std::uint64_t key = s < pairCount
-                                          ? pairKey(f.pair.a, f.pair.b)
-                                          : pairKey(count + (s - pairCount) / count, f.pair.b);
-            fillConstraint(constraints[k], key, f.pair.a, f.pair.b, f.m, f.pair.friction,
-                           f.pair.restitution);
-        }
-    });
+    // Every element is rebuilt whole below: those the vector holds already are not cleared
+    // first (a contact is a few hundred bytes; one pass over them instead of two).
+    std::vector<ContactConstraint>& constraints = solver_.constraints();
+    constraints.resize(madeFrom_.size());
+}
+
+void ContactStage::buildContacts(int begin, int end) {
+    std::vector<ContactConstraint>& constraints = solver_.constraints();
+    for (int k = begin; k < end; ++k) {
+        const Made& made = madeFrom_[k];
+        const Found& f = found_[made.slot];
+        ContactConstraint& c = constraints[k];
+        c = ContactConstraint{};
+        c.bodyA = made.bodyA;
+        c.bodyB = made.bodyB;
+        fillConstraint(c, made.key, f.pair.a, f.pair.b, f.m, f.pair.friction, f.pair.restitution);
+    }
+}
+
+std::size_t ContactStage::carryChunk(int begin, int end, std::size_t& heldBefore) {
+    // Each contact finds its predecessor by its key (both lists are sorted by key). The chunk
+    // owns the contacts of previous_ from its first key up to the next chunk's first key, and
+    // counts those that held a force on the way.
+    std::vector<ContactConstraint>& now = solver_.constraints();
+    const int count = static_cast<int>(now.size());
+    const auto byKey = [](const ContactConstraint& c, std::uint64_t key) { return c.key < key; };
+    auto old = std::lower_bound(previous_.begin(), previous_.end(), now[begin].key, byKey);
+    // The next chunk's first key (from madeFrom_ while that chunk may still be building).
+    const auto last =
+        end == count ? previous_.end()
+                     : std::lower_bound(old, previous_.end(),
+                                        keysAscending_ ? madeFrom_[end].key : now[end].key, byKey);
+    std::size_t carried = 0;
+    heldBefore = 0;
+    for (int n = begin; n < end; ++n) {
+        ContactConstraint& c = now[n];
+        while (old != last && old->key < c.key) heldBefore += heldPoints(*old++);
+        if (old != last && old->key == c.key) carryImpulses(*old, c, carried);
+    }
+    while (old != last) heldBefore += heldPoints(*old++);
+    return carried;
 }
 
 void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const Vec& q, const Vec& u,
                            const Vec& uNext, double frameFraction, double dt,
                            const ContactSettings& settings) {
     // Last step's constraints, with their accumulated impulses, for warm starting (or those
-    // rebind() carried over a change of islands).
+    // rebind() carried over a change of islands). The new ones are written over what the
+    // vector holds (findContacts()).
     if (!carried_) std::swap(previous_, solver_.constraints());
     carried_ = false;
-    solver_.constraints().clear();
     solver_.bodies().clear();
     std::fill(bodyOfCollider_.begin(), bodyOfCollider_.end(), -1);
 
     findPairs(bodies, q, u, uNext, frameFraction, dt, settings);
     findReachedSleepers(bodies, settings);
-    findContacts(bodies, q, dt, settings);
+    findContacts(bodies, q, inverseMass, dt, settings);
 
-    // Warm start: carry the impulses of persisting contacts (same shapes, same features).
+    // The contacts are built from their slots, and carry the impulses of persisting contacts
+    // (same shapes, same features) for the warm start: in the same pass when they come sorted
+    // by key (pairs in order, each its lower collider first), else after sorting them. Whether
+    // every point that held a force found its successor: then the contacts account for all the
+    // forces the method's step held (World::releaseHeldForces). Both counts are sums of
+    // integers, the same in any order.
     std::vector<ContactConstraint>& now = solver_.constraints();
-    sortByKey(now);
-    // Whether every point that held a force found its successor: then the contacts account
-    // for all the forces the method's step held (World::releaseHeldForces).
-    std::size_t heldBefore = 0;
-    for (const ContactConstraint& c : previous_)
-        for (int k = 0; k < c.pointCount; ++k) heldBefore += holds(c.points[k]);
-    // Each contact finds its predecessor by its key (both lists are sorted by key), in
-    // parallel; the carried count is a sum of integers, the same in any order.
-    std::atomic<std::size_t> carried{0};
-    forRange(static_cast<int>(now.size()), kPairGrain, [&](int begin, int end) {
-        std::size_t heldCarried = 0;
-        auto old = std::lower_bound(
-            previous_.begin(), previous_.end(), now[begin].key,
-            [](const ContactConstraint& c, std::uint64_t key) { return c.key < key; });
-        for (int n = begin; n < end; ++n) {
-            ContactConstraint& c = now[n];
-            while (old != previous_.end() && old->key < c.key) ++old;
-            if (old == previous_.end()) break;
-            if (old->key != c.key) continue;
-            carryImpulses(*old, c, heldCarried);
-        }
-        carried += heldCarried;
-    });
-    heldCarried_ = carried.load() == heldBefore;
-    // Bodies' masses, now that the solver body list is complete.
-    const Vec& invMass = inverseMass;
-    for (SolverBody& b : solver_.bodies()) {
-        b.invMass = invMass[b.dof];
-        b.invInertia = b.rotates ? invMass[b.dof + 2] : 0.0;
+    const int made = static_cast<int>(now.size());
+    std::atomic<std::size_t> carried{0}, heldBefore{0};
+    const auto carry = [&](int begin, int end) {
+        std::size_t held = 0;
+        carried += carryChunk(begin, end, held);
+        heldBefore += held;
+    };
+    if (keysAscending_) {
+        forRange(made, kPairGrain, [&](int begin, int end) {
+            buildContacts(begin, end);
+            carry(begin, end);
+        });
+    } else {
+        forRange(made, kPairGrain, [&](int begin, int end) { buildContacts(begin, end); });
+        sortByKey(now);
+        forRange(made, kPairGrain, carry);
     }
+    // The contacts of previous_ before the first key found (all of them when none was).
+    const auto beforeFirst =
+        made == 0 ? previous_.end()
+                  : std::lower_bound(
+                        previous_.begin(), previous_.end(), now.front().key,
+                        [](const ContactConstraint& c, std::uint64_t key) { return c.key < key; });
+    for (auto old = previous_.begin(); old != beforeFirst; ++old) heldBefore += heldPoints(*old);
+    heldCarried_ = carried.load() == heldBefore.load();
     solver_.prepare();
 }
 

@@ -160,14 +160,18 @@ private:
     };
     void updateShapes(const Bodies& bodies, const Vec& q);
     // collide()'s narrow phase: the contacts of the pairs found and of the planes.
-    void findContacts(const Bodies& bodies, const Vec& q, double dt,
+    void findContacts(const Bodies& bodies, const Vec& q, const Vec& inverseMass, double dt,
                       const ContactSettings& settings);
+    // collide()'s contacts [begin, end) from their slots, and the warm start of those contacts
+    // (returns the points carried that held a force; heldBefore: those of previous_ passed).
+    void buildContacts(int begin, int end);
+    std::size_t carryChunk(int begin, int end, std::size_t& heldBefore);
     void updateShapes(const Bodies& bodies, const Vec& q, int begin, int end);
     bool narrowPhase(const Bodies& bodies, int i, int j, double margin, Manifold& m,
                      PairContact& pair) const;
     bool narrowPhasePlane(int k, int i, double margin, Manifold& m, PairContact& pair) const;
     Vec2 colliderCenter(int i) const;
-    int solverBodyFor(int collider, const Vec& q);
+    int solverBodyFor(int collider, const Vec& q, const Vec& inverseMass);
     // A contact's key, material and points from its manifold (colliderA −1: a plane).
     void fillConstraint(ContactConstraint& c, std::uint64_t key, int colliderA, int colliderB,
                         const Manifold& m, double friction, double restitution) const;
@@ -196,7 +200,15 @@ private:
         bool hit = false;
     };
     std::vector<Found> found_;
-    std::vector<int> madeFrom_;  // per contact of this step: its slot in found_
+    // Per contact of this step: its slot in found_, solver bodies and key; and whether the
+    // keys came in ascending order.
+    struct Made {
+        int slot = 0;
+        int bodyA = -1, bodyB = -1;
+        std::uint64_t key = 0;
+    };
+    std::vector<Made> madeFrom_;
+    bool keysAscending_ = true;
     WorkerPool* pool_ = nullptr;
     // Runs fn(begin, end) over [0, count) in chunks of grain, shared when a pool is set.
     template <class Fn>

@@ -31,7 +31,8 @@ Vec2 localCorner(const Vec2& halfExtents, int i) {
 
 // A convex shape's corners and outward face normals (a box's four, a polygon's up to 16),
 // counter-clockwise, relative to an origin near the pair (so that large coordinates cancel
-// before anything is multiplied). Face i runs from corner i to corner i + 1.
+// before anything is multiplied). Face i runs from corner i to corner i + 1. A box's count is
+// fixed, so that its pair tests unroll.
 struct PlacedShape {
     int count = 4;
     Vec2 corners[kMaxPolygonVertices];
@@ -39,10 +40,17 @@ struct PlacedShape {
     int next(int i) const { return i + 1 == count ? 0 : i + 1; }
 };
 
-PlacedShape placeBox(const OrientedBox& box, const Vec2& origin) {
+struct PlacedBox {
+    static constexpr int count = 4;
+    Vec2 corners[4];
+    Vec2 normals[4];
+    static int next(int i) { return (i + 1) & 3; }
+};
+
+PlacedBox placeBox(const OrientedBox& box, const Vec2& origin) {
     const Mat2& r = box.rotation;
     const Vec2 center = box.center - origin;
-    PlacedShape placed;
+    PlacedBox placed;
     for (int i = 0; i < 4; ++i) {
         placed.corners[i] = center + r * localCorner(box.halfExtents, i);
         placed.normals[i] = r * Vec2(kFaceNormal[i][0], kFaceNormal[i][1]);
@@ -64,7 +72,8 @@ PlacedShape placePolygon(const OrientedPolygon& polygon, const Vec2& origin) {
 
 // The face of `box` along whose normal `other` lies farthest out, and that separation (the
 // depth of `other`'s deepest corner below the face's plane; negative when overlapping).
-double maxSeparation(const PlacedShape& box, const PlacedShape& other, int& bestFace) {
+template <class Box, class Other>
+double maxSeparation(const Box& box, const Other& other, int& bestFace) {
     double best = -std::numeric_limits<double>::infinity();
     bestFace = 0;
     for (int i = 0; i < box.count; ++i) {
@@ -136,7 +145,11 @@ Vec2 coincidentNormal(std::uint32_t a, std::uint32_t b) {
 }
 
 bool coincident(const Vec2& a, const Vec2& b) {
-    return !((b - a).norm() > kMinLength);
+    // The square root only near the threshold: far from it the squared length decides alike.
+    const double squared = (b - a).squaredNorm();
+    if (squared > 4.0 * kMinLength * kMinLength) return false;
+    if (squared < 0.25 * kMinLength * kMinLength) return true;
+    return !(std::sqrt(squared) > kMinLength);
 }
 
 bool collideDisks(const Disk& a, const Disk& b, double margin, Manifold& m,
@@ -233,33 +246,11 @@ bool collidePlaneBox(const HalfPlane& a, const OrientedBox& b, double margin, Ma
 }
 
 namespace {
-// Separating axes over both shapes' face normals, then the incident face clipped against the
-// reference face's side planes: up to two points. smallest: the smaller shape's least half
-// extent (a polygon's inradius), which bounds the reference-face bias.
-bool collidePlaced(const PlacedShape& boxA, const PlacedShape& boxB, const Vec2& origin,
-                   double smallest, bool centresCoincide, const Vec2& whenCoincident, double margin,
-                   Manifold& m) {
-    m.pointCount = 0;
-    int faceA = 0, faceB = 0;
-    const double separationA = maxSeparation(boxA, boxB, faceA);
-    if (!(separationA < margin)) return false;  // no clipped point can be closer than this
-    const double separationB = maxSeparation(boxB, boxA, faceB);
-    if (!(separationB < margin)) return false;
-
-    const double bias = std::min(kReferenceFaceBias, 0.01 * smallest);
-    bool referenceIsB = separationB > separationA + bias;
-    if (centresCoincide) {
-        referenceIsB = false;
-        double nearest = -std::numeric_limits<double>::infinity();
-        for (int i = 0; i < boxA.count; ++i)
-            if (boxA.normals[i].dot(whenCoincident) > nearest) {
-                nearest = boxA.normals[i].dot(whenCoincident);
-                faceA = i;
-            }
-    }
-    const PlacedShape& reference = referenceIsB ? boxB : boxA;
-    const PlacedShape& incident = referenceIsB ? boxA : boxB;
-    const int referenceFace = referenceIsB ? faceB : faceA;
+// The incident face of the other shape clipped against the reference face's side planes: up to
+// two points.
+template <class Reference, class Incident>
+bool clipIncident(const Reference& reference, const Incident& incident, int referenceFace,
+                  bool referenceIsB, const Vec2& origin, double margin, Manifold& m) {
     const Vec2& normal = reference.normals[referenceFace];
 
     // The incident face is the one most anti-parallel to the reference normal: its edge is the
@@ -293,6 +284,35 @@ bool collidePlaced(const PlacedShape& boxA, const PlacedShape& boxB, const Vec2&
     }
     return m.pointCount > 0;
 }
+
+// Separating axes over both shapes' face normals, then the incident face clipped against the
+// reference face's side planes: up to two points. smallest: the smaller shape's least half
+// extent (a polygon's inradius), which bounds the reference-face bias.
+template <class ShapeA, class ShapeB>
+bool collidePlaced(const ShapeA& boxA, const ShapeB& boxB, const Vec2& origin, double smallest,
+                   bool centresCoincide, const Vec2& whenCoincident, double margin, Manifold& m) {
+    m.pointCount = 0;
+    int faceA = 0, faceB = 0;
+    const double separationA = maxSeparation(boxA, boxB, faceA);
+    if (!(separationA < margin)) return false;  // no clipped point can be closer than this
+    const double separationB = maxSeparation(boxB, boxA, faceB);
+    if (!(separationB < margin)) return false;
+
+    const double bias = std::min(kReferenceFaceBias, 0.01 * smallest);
+    bool referenceIsB = separationB > separationA + bias;
+    if (centresCoincide) {
+        referenceIsB = false;
+        double nearest = -std::numeric_limits<double>::infinity();
+        for (int i = 0; i < boxA.count; ++i)
+            if (boxA.normals[i].dot(whenCoincident) > nearest) {
+                nearest = boxA.normals[i].dot(whenCoincident);
+                faceA = i;
+            }
+    }
+    return referenceIsB ? clipIncident(boxB, boxA, faceB, true, origin, margin, m)
+                        : clipIncident(boxA, boxB, faceA, false, origin, margin, m);
+}
+
 }  // namespace
 
 bool collideBoxes(const OrientedBox& a, const OrientedBox& b, double margin, Manifold& m,

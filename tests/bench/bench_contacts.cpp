@@ -1,8 +1,8 @@
 // bench_contacts: what World::step() costs in contact-heavy scenes, and how much of it is the
 // contact stage (broad phase, narrow phase, sequential impulses), in steady state.
 //
-// Scenes: the 20- and 40-row pyramids and the tower of 40 from the scene library (the scenes
-// the stability suite checks and the app opens), 1,000 boxes of random sizes rained into a
+// Scenes: the 20-, 40- and 100-row pyramids and the tower of 40 from the scene library (the
+// scenes the stability suite checks and the app opens), 1,000 boxes of random sizes rained into a
 // 30 m container, and 10,000 disks (radius 0.05 m, particle collisions on) piled up by gravity
 // in a 10 m box. Each is stepped until it has settled (a fixed warm-up for the stacks, which
 // also primes the warm start; "until nothing moves faster than a threshold" for the rain and
@@ -10,14 +10,17 @@
 //
 // Per scene: ms per step (median over repeats, and the slowest single timed step), contact
 // constraints and points, the share of the step spent in the contact stage (the world's
-// "contacts" profile entry over the wall time of the steps), and heap allocations per timed
-// step (steady state must allocate nothing).
+// "contacts" profile entry over the wall time of the steps), the step's "collide" stage alone
+// (broad phase, narrow phase, the contacts made and warm-started), and heap allocations per
+// timed step (steady state must allocate nothing). The collide stage of the 100-row pyramid is
+// printed on a line of its own.
 //
 //   bench_contacts [--steps N] [--repeat N] [--json] [--quick] [--scene KEY]...
 //
-// --scene runs only the named scenes (keys: pyramid20 pyramid40 tower40 rain1000 disks10000),
-// e.g. under a profiler. --quick shortens warm-up and timing and skips the 10,000 disks unless
-// named. With --json the table goes to stderr and stdout carries one JSON object.
+// --scene runs only the named scenes (keys: pyramid20 pyramid40 pyramid100 tower40 rain1000
+// disks10000), e.g. under a profiler. --quick shortens warm-up and timing and skips the 100-row
+// pyramid and the 10,000 disks unless named. With --json the table goes to stderr and stdout
+// carries one JSON object.
 
 #include "AllocationCounter.h"
 #include "BenchCommon.h"
@@ -142,6 +145,8 @@ struct SceneResult {
     double timedPeakMs = 0.0;                          // slowest single timed step
     double contactMsPerStep = 0.0;                     // median over repeats
     double contactShare = 0.0;                         // median over repeats
+    double collideMsPerStep = 0.0;                     // the "collide" stage, median
+    int workers = 1;                                   // the world's threads
     long long constraints = 0, points = 0;             // after the timed steps
     long long minConstraints = 0, maxConstraints = 0;  // over the timed repeats
     AllocationCounts allocations;                      // over all timed steps
@@ -194,7 +199,7 @@ SceneResult measure(const SceneSpec& spec, int steps, int repeat, bool quick) {
     // Timed repeats. Everything the loop touches is allocated before counting starts, and
     // effectCosts() (which builds a vector of names) is read after it stops.
     std::vector<double> stepMs(static_cast<std::size_t>(steps));
-    std::vector<double> perStep, contactMs, share;
+    std::vector<double> perStep, contactMs, share, collideMs;
     result.minConstraints = constraintCount(world);
     result.maxConstraints = result.minConstraints;
     for (int r = 0; r < repeat; ++r) {
@@ -217,6 +222,7 @@ SceneResult measure(const SceneSpec& spec, int steps, int repeat, bool quick) {
         perStep.push_back(1e3 * wall / steps);
         contactMs.push_back(1e3 * contacts / steps);
         share.push_back(contacts / wall);
+        collideMs.push_back(world.stepProfile().msPerStep(static_cast<int>(StepStage::Collide)));
         result.timedPeakMs =
             std::max(result.timedPeakMs, *std::max_element(stepMs.begin(), stepMs.end()));
         const long long n = constraintCount(world);
@@ -226,6 +232,8 @@ SceneResult measure(const SceneSpec& spec, int steps, int repeat, bool quick) {
     result.msPerStep = median(perStep);
     result.contactMsPerStep = median(contactMs);
     result.contactShare = median(share);
+    result.collideMsPerStep = median(collideMs);
+    result.workers = world.workers();
     result.constraints = constraintCount(world);
     result.points = world.contacts() ? world.contacts()->pointCount() : 0;
     return result;
@@ -267,6 +275,9 @@ void printTable(std::FILE* out, const std::vector<SceneResult>& results, int ste
         "  slowest timed step, ms", [](const SceneResult& r) { return r.timedPeakMs; }, "%12.3f");
     row(
         "  of which contacts, ms", [](const SceneResult& r) { return r.contactMsPerStep; },
+        "%12.3f");
+    row(
+        "  of which the collide stage, ms", [](const SceneResult& r) { return r.collideMsPerStep; },
         "%12.3f");
     row(
         "  contact share of the step", [](const SceneResult& r) { return 100.0 * r.contactShare; },
@@ -329,6 +340,7 @@ std::string toJson(const std::vector<SceneResult>& results, int steps, int repea
         json.value("timed_peak_ms", r.timedPeakMs);
         json.value("contacts_ms_per_step", r.contactMsPerStep);
         json.value("contact_share", r.contactShare);
+        json.value("collide_ms_per_step", r.collideMsPerStep);
         json.value("constraints", r.constraints);
         json.value("constraints_min", r.minConstraints);
         json.value("constraints_max", r.maxConstraints);
@@ -371,6 +383,8 @@ int main(int argc, char** argv) {
          kStackWarmup, 0.0, false},
         {"pyramid40", "pyramid of 40 rows", [] { return scenes::pyramid(40); }, kStackWarmup,
          kStackWarmup, 0.0, false},
+        {"pyramid100", "pyramid of 100 rows", [] { return scenes::pyramid(100); }, kStackWarmup,
+         kStackWarmup, 0.0, true},
         {"tower40", "tower of 40", [] { return scenes::tower(40); }, kStackWarmup, kStackWarmup,
          0.0, false},
         {"rain1000", "1,000 boxes rained into a container", [] { return rain(1000); }, 360, 1200,
@@ -396,6 +410,11 @@ int main(int argc, char** argv) {
     }
 
     printTable(options.json ? stderr : stdout, results, steps, repeat);
+    for (const SceneResult& r : results)
+        if (std::strcmp(r.spec->key, "pyramid100") == 0)
+            std::fprintf(options.json ? stderr : stdout,
+                         "\ncollide stage of the 100-row pyramid: %.3f ms per step (%d workers)\n",
+                         r.collideMsPerStep, r.workers);
     if (options.json) std::printf("%s\n", toJson(results, steps, repeat).c_str());
     return 0;
 }
