@@ -45,6 +45,7 @@
 #include <QLabel>
 #include <QLineSeries>
 #include <QProcess>
+#include <QSlider>
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -250,8 +251,8 @@ private slots:
         saveTabPictures(window, QStringLiteral("free"));
     }
 
-    // Readouts: the live state while running, labelled with the time, and the setup after
-    // Reset, labelled so.
+    // Readouts: the live state while running, labelled with the time, a moment the timeline
+    // shows labelled as recorded, and the setup after Reset, labelled so.
     void readoutShowsLiveStateWhileRunningAndSetupAfterReset() {
         Window window;
         window.load(springScene(50.0, 2.0));
@@ -278,6 +279,27 @@ private slots:
         QCOMPARE(
             readouts->valueText(QStringLiteral("position (x, y)")),
             QStringLiteral("(%1, %2)").arg(ui::formatReading(x.x()), ui::formatReading(x.y())));
+
+        // An earlier moment on the timeline: named as recorded, with its time, and read then.
+        const double liveTime = world.time();
+        const QString livePosition = readouts->valueText(QStringLiteral("position (x, y)"));
+        auto* timeline = window.w.findChild<QSlider*>(QStringLiteral("timelineSlider"));
+        QVERIFY(timeline && timeline->maximum() > 4);
+        timeline->setValue(timeline->maximum() / 2);
+        QVERIFY(world.time() > 0.0 && world.time() < liveTime);
+        QCOMPARE(readouts->state(),
+                 QStringLiteral("recorded, t = %1 s").arg(world.time(), 0, 'f', 3));
+        const Vec2 then = world.particlePosition(0);
+        QCOMPARE(readouts->valueText(QStringLiteral("position (x, y)")),
+                 QStringLiteral("(%1, %2)")
+                     .arg(ui::formatReading(then.x()), ui::formatReading(then.y())));
+        timeline->setValue(0);  // the setup's frame is a recorded moment too
+        QCOMPARE(readouts->state(), QStringLiteral("recorded, t = 0.000 s"));
+        QCOMPARE(readouts->valueText(QStringLiteral("position (x, y)")),
+                 QStringLiteral("(0.50000, 0)"));
+        timeline->setValue(timeline->maximum());  // the live end again
+        QCOMPARE(readouts->state(), QStringLiteral("live, t = %1 s").arg(liveTime, 0, 'f', 2));
+        QCOMPARE(readouts->valueText(QStringLiteral("position (x, y)")), livePosition);
 
         // Reset: the setup again.
         window.w.action("reset")->trigger();

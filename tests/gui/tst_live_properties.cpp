@@ -1,6 +1,7 @@
 // Properties while it runs (issue #37): at the setup the panel shows the setup, labelled so;
 // once the clock has left 0 it shows the live state of the run (the numbers the canvas draws),
-// labelled live with the time, and Reset brings the setup back. A rigid body's every field
+// labelled live with the time (at an earlier moment the timeline shows, that moment's state,
+// labelled recorded with its time), and Reset brings the setup back. A rigid body's every field
 // fits the dock of a window at its first size, and at 1024 x 700 every page of the
 // Instruments dock fits its width (nothing cut at the right edge).
 
@@ -18,6 +19,7 @@
 #include <QDockWidget>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QSlider>
 #include <QStandardPaths>
 #include <QTest>
 
@@ -88,6 +90,22 @@ private slots:
         // At rest on the floor after 3 s: the live y is the resting height, -1.7 m.
         QVERIFY(w.controller().advance(3.0));
         w.refreshNow();
+        QVERIFY(std::abs(shown(panel, "position.y") + 1.7) < 2e-3);
+        const QString liveNote = panel->stateNote();
+
+        // An earlier moment on the timeline: its state, named as recorded.
+        auto* timeline = w.findChild<QSlider*>(QStringLiteral("timelineSlider"));
+        QVERIFY(timeline);
+        timeline->setValue(timeline->maximum() / 10);
+        QVERIFY(world.time() > 0.0 && world.time() < 1.0);
+        QVERIFY2(panel->stateNote().startsWith(
+                     QStringLiteral("Recorded at t = %1 s").arg(world.time(), 0, 'f', 3)),
+                 qPrintable(panel->stateNote()));
+        QVERIFY(panel->showsLiveState());
+        QVERIFY(std::abs(shown(panel, "position.y") - world.bodyPosition(0).y()) < 1e-3);
+        QVERIFY(world.bodyPosition(0).y() > -1.6);  // still falling then
+        timeline->setValue(timeline->maximum());
+        QCOMPARE(panel->stateNote(), liveNote);
         QVERIFY(std::abs(shown(panel, "position.y") + 1.7) < 2e-3);
 
         w.action(QStringLiteral("reset"))->trigger();

@@ -10,9 +10,11 @@
 #include <QGraphicsScene>
 #include <QImage>
 #include <QLegend>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QPainter>
 #include <QPen>
+#include <QScatterSeries>
 #include <QSvgGenerator>
 #include <QValueAxis>
 #include <QXYSeries>
@@ -130,6 +132,50 @@ void applyChartLocale(QChart* chart) {
         chart->setLocale(*locale);
         chart->setLocalizeNumbers(true);
     }
+}
+
+namespace {
+void addCursor(QChart* chart, QXYSeries* cursor, const QList<QPointF>& points) {
+    const QList<QAbstractAxis*> x = chart->axes(Qt::Horizontal);
+    const QList<QAbstractAxis*> y = chart->axes(Qt::Vertical);
+    if (x.isEmpty() || y.isEmpty()) {
+        delete cursor;
+        return;
+    }
+    cursor->setName(QLatin1String(kCursorName));
+    cursor->append(points);
+    chart->addSeries(cursor);
+    cursor->attachAxis(x.first());
+    cursor->attachAxis(y.first());
+    // The legend names what was computed, not where the timeline is.
+    cursor->setProperty(kNoLegend, true);
+    if (QLegend* legend = chart->legend())
+        for (QLegendMarker* m : legend->markers(cursor)) m->setVisible(false);
+}
+}  // namespace
+
+void addTimeCursor(QChart* chart, double t, const QColor& colour) {
+    const auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).value(0));
+    if (!y || !std::isfinite(t)) return;
+    auto* line = new QLineSeries;
+    line->setPen(QPen(colour, 1.5, Qt::DashLine));
+    addCursor(chart, line, {{t, y->min()}, {t, y->max()}});
+}
+
+void addPointCursor(QChart* chart, QPointF point, const QColor& colour) {
+    if (!std::isfinite(point.x()) || !std::isfinite(point.y())) return;
+    auto* dot = new QScatterSeries;
+    dot->setMarkerSize(11.0);
+    dot->setColor(colour);
+    addCursor(chart, dot, {point});
+}
+
+QVector<QPointF> chartCursor(const QChart* chart) {
+    if (!chart) return {};
+    for (QAbstractSeries* s : chart->series())
+        if (s->name() == QLatin1String(kCursorName))
+            if (const auto* series = qobject_cast<const QXYSeries*>(s)) return series->points();
+    return {};
 }
 
 QColor energyColor(int series) {
