@@ -1,6 +1,7 @@
 #include "ui/plots/Charts.h"
 
 #include "ui/canvas/Appearance.h"
+#include "ui/plots/ProbeChart.h"
 
 #include <QAbstractAxis>
 #include <QBuffer>
@@ -309,7 +310,10 @@ QChart* createEnergyChart(std::span<const EnergySample> samples,
     auto* y = new QValueAxis;
     y->setTitleText(chartText(QT_TRANSLATE_NOOP("Charts", "energy [J]")));
     fitTimeAxis(x, tMin, tMax);
-    fitAxis(y, lo, hi);
+    // Ticks on whole multiples of 1, 2 or 5 × 10^k, labelled with as many decimals as the step
+    // needs: "14000, 16000" where printf's %g would write "1.4e+04" (ProbeChart.h).
+    const auto [ylo, yhi] = paddedRange(lo, hi);
+    applyNiceTicks(y, ylo, yhi, 5);
     for (const PlotMarker& m : markers)
         addSeries(chart, {{m.t, y->min()}, {m.t, y->max()}}, m.label, QColor(0x80, 0x80, 0x80), 1.2,
                   Qt::DashLine);
