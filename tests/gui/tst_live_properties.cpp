@@ -164,6 +164,38 @@ private slots:
                                     .arg(scroll->horizontalScrollBar()->maximum())));
         }
     }
+
+    // Raised before the window is first shown (`phasebox --probe`) or from the menu after, the
+    // instruments' pages fit their dock at 1024 x 700: the canvas takes its share of a small
+    // window from the docks down to the pages' width, not below it.
+    void instrumentsRaisedFitASmallWindow() {
+        for (const bool beforeShowing : {true, false}) {
+            MainWindow w;
+            w.resize(1024, 700);
+            if (!beforeShowing) w.show();
+            QVERIFY(w.openFile(QStringLiteral(":/scenes/spring-oscillator.phasebox.json"), true));
+            QVERIFY(instrumentsOf(w)->plotProbe(QStringLiteral("light.y")));
+            w.show();
+            QApplication::processEvents();
+            QTest::qWait(50);
+            QVERIFY(w.controller().advance(1.0));
+            auto* scroll = w.findChild<QScrollArea*>(QStringLiteral("instrumentsScroll"));
+            QVERIFY(scroll && scroll->isVisible());
+            using Tab = ui::InstrumentsPanel::Tab;
+            for (const Tab tab : {Tab::Readouts, Tab::Graphs, Tab::Timer, Tab::Table}) {
+                instrumentsPanelOf(w)->showTab(tab);
+                w.refreshNow();
+                QApplication::processEvents();
+                QVERIFY2(scroll->horizontalScrollBar()->maximum() == 0,
+                         qPrintable(QStringLiteral("%1 showing, tab %2: %3 px wider than the dock")
+                                        .arg(beforeShowing ? "before" : "after")
+                                        .arg(int(tab))
+                                        .arg(scroll->horizontalScrollBar()->maximum())));
+            }
+            QVERIFY2(canvasOf(w)->width() >= 1024 / 2 - 2,
+                     qPrintable(QString::number(canvasOf(w)->width())));
+        }
+    }
 };
 
 QTEST_MAIN(TestLiveProperties)
