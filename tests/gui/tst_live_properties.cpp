@@ -178,6 +178,9 @@ private slots:
             w.show();
             QApplication::processEvents();
             QTest::qWait(50);
+            // A second graph, against a probe, once the window is up: the pages' rows widen.
+            QVERIFY(instrumentsOf(w)->plotProbe(QStringLiteral("light.vy"),
+                                                QStringLiteral("distance(light,heavy)")));
             QVERIFY(w.controller().advance(1.0));
             auto* scroll = w.findChild<QScrollArea*>(QStringLiteral("instrumentsScroll"));
             QVERIFY(scroll && scroll->isVisible());

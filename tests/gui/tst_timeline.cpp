@@ -307,8 +307,10 @@ private slots:
             QVERIFY(bitsOf({line[0].x(), line[1].x()}) == bitsOf({t, t}));
             QCOMPARE(dot.size(), 1);
             QVERIFY(bitsOf({dot[0].x(), dot[0].y()}) == bitsOf({then[y], then[vy]}));
-            if (!shots.isEmpty())
+            if (!shots.isEmpty()) {  // a picture to look at, once the layout has settled
+                QCoreApplication::processEvents();
                 w.grab().save(QStringLiteral("%1/timeline-graphs-%2.png").arg(shots).arg(frame));
+            }
             panel->showTab(Tab::Table);
             const int row = table->table()->currentIndex().row();
             QCOMPARE(row, frame);
@@ -320,11 +322,17 @@ private slots:
                 shown.push_back(model->index(row, c).data(Qt::UserRole).toDouble());
             QVERIFY2(bitsOf(shown) == bitsOf(then),
                      qPrintable(QStringLiteral("table row at frame %1").arg(frame)));
-            if (!shots.isEmpty())
+            if (!shots.isEmpty()) {  // a picture to look at, once the layout has settled
+                QCoreApplication::processEvents();
                 w.grab().save(QStringLiteral("%1/timeline-table-%2.png").arg(shots).arg(frame));
+            }
             panel->showTab(Tab::Readouts);
             QCOMPARE(panel->readouts()->state(),
                      QStringLiteral("recorded, t = %1 s").arg(then[0], 0, 'f', 3));
+            if (!shots.isEmpty()) {
+                QCoreApplication::processEvents();
+                w.grab().save(QStringLiteral("%1/timeline-readouts-%2.png").arg(shots).arg(frame));
+            }
         }
         // The live end: no cursor, no row held, the live heading.
         slider->setValue(kSteps);
