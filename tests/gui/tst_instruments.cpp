@@ -161,6 +161,12 @@ private slots:
         const ui::NiceTicks c = ui::niceTicks(1.2e-9, 4.1e-9, 6);
         QVERIFY(std::abs(c.step - 5e-10) < 1e-22);
         QCOMPARE(c.labelFormat, QStringLiteral("%.1e"));
+        // A small change of a large value: fixed decimals, as many as the step needs.
+        const ui::NiceTicks d = ui::niceTicks(1.49974, 1.50001, 6);
+        QVERIFY(std::abs(d.step - 5e-5) < 1e-17);
+        QCOMPARE(d.labelFormat, QStringLiteral("%.5f"));
+        QCOMPARE(ui::niceTicks(0.0, 4e-6, 6).labelFormat, QStringLiteral("%.6f"));
+        QCOMPARE(ui::niceTicks(0.0, 4e-7, 6).labelFormat, QStringLiteral("%.0e"));
         for (double range : {0.003, 0.07, 1.0, 13.0, 420.0, 9.9e4})
             QVERIFY(isNiceStep(ui::niceTicks(0.0, range, 6).step));
         // A constant is drawn flat at its value, not as rounding noise filling the plot.
