@@ -2972,6 +2972,10 @@ dx %2  dy %3</translation>
         <source>Setup: the state at t = 0, what Reset returns to</source>
         <translation>Anfangszustand: der Zustand bei t = 0, zu dem Zurücksetzen zurückkehrt</translation>
     </message>
+    <message>
+        <source>Recorded at t = %1 s; Reset shows the setup</source>
+        <translation>Aufgezeichnet bei t = %1 s; Zurücksetzen zeigt den Anfangszustand</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::ReadoutsPresenter</name>
@@ -3070,6 +3074,10 @@ dx %2  dy %3</translation>
     <message>
         <source>setup</source>
         <translation>Anfangszustand</translation>
+    </message>
+    <message>
+        <source>recorded, t = %1 s</source>
+        <translation>aufgezeichnet, t = %1 s</translation>
     </message>
 </context>
 <context>

@@ -2972,6 +2972,10 @@ dx %2  dy %3</translation>
         <source>Setup: the state at t = 0, what Reset returns to</source>
         <translation>Configuración inicial: el estado en t = 0, al que vuelve Reiniciar</translation>
     </message>
+    <message>
+        <source>Recorded at t = %1 s; Reset shows the setup</source>
+        <translation>Grabado en t = %1 s; Reiniciar muestra la configuración inicial</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::ReadoutsPresenter</name>
@@ -3070,6 +3074,10 @@ dx %2  dy %3</translation>
     <message>
         <source>setup</source>
         <translation>configuración inicial</translation>
+    </message>
+    <message>
+        <source>recorded, t = %1 s</source>
+        <translation>grabado, t = %1 s</translation>
     </message>
 </context>
 <context>

@@ -2972,6 +2972,10 @@ dx %2  dy %3</translation>
         <source>Setup: the state at t = 0, what Reset returns to</source>
         <translation>État initial : l’état à t = 0, auquel Réinitialiser revient</translation>
     </message>
+    <message>
+        <source>Recorded at t = %1 s; Reset shows the setup</source>
+        <translation>Enregistré à t = %1 s ; Réinitialiser montre l’état initial</translation>
+    </message>
 </context>
 <context>
     <name>phasebox::ReadoutsPresenter</name>
@@ -3070,6 +3074,10 @@ dx %2  dy %3</translation>
     <message>
         <source>setup</source>
         <translation>état initial</translation>
+    </message>
+    <message>
+        <source>recorded, t = %1 s</source>
+        <translation>enregistré, t = %1 s</translation>
     </message>
 </context>
 <context>

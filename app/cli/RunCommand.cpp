@@ -58,7 +58,7 @@ const char* kRunUsage =
     "  --plot-energy F   the energy plot as .png or .svg\n"
     "  --plot-phase ID.COORD F   phase plot of COORD (x, y or angle) of object ID\n"
     "  --threads N       workers, 1 to 1024, default every core; every output but the\n"
-    "                    timings is the same for every N (--json reports it as threads)\n";
+    "                    timings is the same for every N\n";
 
 struct RunOptions {
     QString scene;
@@ -482,7 +482,6 @@ QJsonObject jsonReport(const World& world, const SimulationDesc& sim, double dt,
         {"sleeping", world.sleepingBodies()},
         {"effects", effects},
         {"force_evaluations", static_cast<double>(world.forceEvaluations())},
-        {"threads", world.workers()},
     };
     if (!probes.probes.empty()) {
         // final is the probe in the state the report shows (after a divergence, the

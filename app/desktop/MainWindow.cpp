@@ -43,6 +43,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QStatusBar>
 #include <QTextBrowser>
 #include <QTimer>
@@ -284,12 +285,16 @@ void MainWindow::createDockWindows() {
     QDockWidget* pl = layout_->addDock(plots_, tr("Plots"), "plotsDock", Qt::RightDockWidgetArea);
     // The instruments share the plots' place: both are things to watch while it runs.
     // The instruments' pages are laid out in short rows that fit the dock at 1024 x 700; in a
-    // narrower one they scroll sideways rather than take the canvas's width.
+    // narrower one they scroll sideways rather than take the canvas's width. The dock is never
+    // narrower than the rows at the window's first font: a small window's canvas takes its share
+    // from the docks down to their minimum (WindowLayout), which a scroll area's alone is nothing.
     auto* instrumentsScroll = new QScrollArea(this);
     instrumentsScroll->setObjectName(QStringLiteral("instrumentsScroll"));
     instrumentsScroll->setWidget(instruments_);
     instrumentsScroll->setWidgetResizable(true);
     instrumentsScroll->setFrameShape(QFrame::NoFrame);
+    instrumentsScroll->setMinimumWidth(instruments_->minimumSizeHint().width() +
+                                       instrumentsScroll->verticalScrollBar()->sizeHint().width());
     QDockWidget* in = layout_->addDock(instrumentsScroll, tr("Instruments"), "instrumentsDock",
                                        Qt::RightDockWidgetArea);
     tabifyDockWidget(pl, in);

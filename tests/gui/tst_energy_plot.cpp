@@ -2,6 +2,7 @@
 // started 5 cm into the floor is pushed out by position correction, which raises its potential
 // energy by m·g·d; the recorder, the Plots dock's chart and the energy CSV all carry that
 // correction, and it is the ledger's number, not something the plot works out again.
+// Large energies are labelled as plain numbers, not printf's exponents.
 
 #include "MainWindowTestSupport.h"
 #include "app/desktop/CanvasTools.h"
@@ -18,16 +19,20 @@
 #include <QChart>
 #include <QChartView>
 #include <QFile>
+#include <QGraphicsScene>
+#include <QGraphicsTextItem>
 #include <QLabel>
 #include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
+#include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
 #include <memory>
+#include <vector>
 
 using namespace phasebox;
 using namespace phasebox::testing::parts;
@@ -63,6 +68,7 @@ private slots:
     void pushOutIsPlottedAsCorrection();
     void correctionLineIsDashedAndColouredApart();
     void legendKeepsWholeNamesInANarrowDock();
+    void largeEnergiesReadAsPlainNumbers();
 };
 
 // What a class sees first (issue 36): a new scene at its defaults (symplectic Euler, dt 1/60),
@@ -214,6 +220,34 @@ void TestEnergyPlot::legendKeepsWholeNamesInANarrowDock() {
     panel.resize(300, 600);
     QTRY_VERIFY(!chart->legend()->isVisible());
     QTRY_VERIFY(panel.energyLegend()->isVisible());
+}
+
+// A pile's energies are thousands of joules: the energy axis labels them as numbers a class
+// reads ("12000", "14000"), on whole steps, never printf's "1.4e+04".
+void TestEnergyPlot::largeEnergiesReadAsPlainNumbers() {
+    std::vector<ui::EnergySample> samples;
+    for (int i = 0; i <= 100; ++i) {
+        const double t = 0.02 * i;
+        samples.push_back({t, 1500.0 * t, 15000.0 - 1500.0 * t, 0.0, 0.0, 0.0});
+    }
+    ui::PlotsPanel panel;
+    panel.resize(420, 600);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.setEnergy(samples, {}, QStringLiteral("Energy"));
+    QCoreApplication::processEvents();
+    const QRegularExpression exponent(QStringLiteral("\\d[eE][+−-]?\\d"));
+    const QRegularExpression whole(QStringLiteral("^[−-]?\\d{4,5}$"));
+    QStringList texts;
+    int plain = 0;
+    for (const QGraphicsItem* item : panel.energyView()->scene()->items())
+        if (const auto* text = qgraphicsitem_cast<const QGraphicsTextItem*>(item);
+            text && text->isVisible()) {
+            texts << text->toPlainText();
+            QVERIFY2(!exponent.match(texts.back()).hasMatch(), qPrintable(texts.back()));
+            if (whole.match(texts.back()).hasMatch()) ++plain;
+        }
+    QVERIFY2(plain >= 3, qPrintable(texts.join(QLatin1Char('|'))));
 }
 
 QTEST_MAIN(TestEnergyPlot)

@@ -45,6 +45,7 @@
 #include <QLabel>
 #include <QLineSeries>
 #include <QProcess>
+#include <QSlider>
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -160,6 +161,12 @@ private slots:
         const ui::NiceTicks c = ui::niceTicks(1.2e-9, 4.1e-9, 6);
         QVERIFY(std::abs(c.step - 5e-10) < 1e-22);
         QCOMPARE(c.labelFormat, QStringLiteral("%.1e"));
+        // A small change of a large value: fixed decimals, as many as the step needs.
+        const ui::NiceTicks d = ui::niceTicks(1.49974, 1.50001, 6);
+        QVERIFY(std::abs(d.step - 5e-5) < 1e-17);
+        QCOMPARE(d.labelFormat, QStringLiteral("%.5f"));
+        QCOMPARE(ui::niceTicks(0.0, 4e-6, 6).labelFormat, QStringLiteral("%.6f"));
+        QCOMPARE(ui::niceTicks(0.0, 4e-7, 6).labelFormat, QStringLiteral("%.0e"));
         for (double range : {0.003, 0.07, 1.0, 13.0, 420.0, 9.9e4})
             QVERIFY(isNiceStep(ui::niceTicks(0.0, range, 6).step));
         // A constant is drawn flat at its value, not as rounding noise filling the plot.
@@ -250,8 +257,8 @@ private slots:
         saveTabPictures(window, QStringLiteral("free"));
     }
 
-    // Readouts: the live state while running, labelled with the time, and the setup after
-    // Reset, labelled so.
+    // Readouts: the live state while running, labelled with the time, a moment the timeline
+    // shows labelled as recorded, and the setup after Reset, labelled so.
     void readoutShowsLiveStateWhileRunningAndSetupAfterReset() {
         Window window;
         window.load(springScene(50.0, 2.0));
@@ -278,6 +285,27 @@ private slots:
         QCOMPARE(
             readouts->valueText(QStringLiteral("position (x, y)")),
             QStringLiteral("(%1, %2)").arg(ui::formatReading(x.x()), ui::formatReading(x.y())));
+
+        // An earlier moment on the timeline: named as recorded, with its time, and read then.
+        const double liveTime = world.time();
+        const QString livePosition = readouts->valueText(QStringLiteral("position (x, y)"));
+        auto* timeline = window.w.findChild<QSlider*>(QStringLiteral("timelineSlider"));
+        QVERIFY(timeline && timeline->maximum() > 4);
+        timeline->setValue(timeline->maximum() / 2);
+        QVERIFY(world.time() > 0.0 && world.time() < liveTime);
+        QCOMPARE(readouts->state(),
+                 QStringLiteral("recorded, t = %1 s").arg(world.time(), 0, 'f', 3));
+        const Vec2 then = world.particlePosition(0);
+        QCOMPARE(readouts->valueText(QStringLiteral("position (x, y)")),
+                 QStringLiteral("(%1, %2)")
+                     .arg(ui::formatReading(then.x()), ui::formatReading(then.y())));
+        timeline->setValue(0);  // the setup's frame is a recorded moment too
+        QCOMPARE(readouts->state(), QStringLiteral("recorded, t = 0.000 s"));
+        QCOMPARE(readouts->valueText(QStringLiteral("position (x, y)")),
+                 QStringLiteral("(0.50000, 0)"));
+        timeline->setValue(timeline->maximum());  // the live end again
+        QCOMPARE(readouts->state(), QStringLiteral("live, t = %1 s").arg(liveTime, 0, 'f', 2));
+        QCOMPARE(readouts->valueText(QStringLiteral("position (x, y)")), livePosition);
 
         // Reset: the setup again.
         window.w.action("reset")->trigger();

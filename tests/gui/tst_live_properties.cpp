@@ -1,6 +1,7 @@
 // Properties while it runs (issue #37): at the setup the panel shows the setup, labelled so;
 // once the clock has left 0 it shows the live state of the run (the numbers the canvas draws),
-// labelled live with the time, and Reset brings the setup back. A rigid body's every field
+// labelled live with the time (at an earlier moment the timeline shows, that moment's state,
+// labelled recorded with its time), and Reset brings the setup back. A rigid body's every field
 // fits the dock of a window at its first size, and at 1024 x 700 every page of the
 // Instruments dock fits its width (nothing cut at the right edge).
 
@@ -18,6 +19,7 @@
 #include <QDockWidget>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QSlider>
 #include <QStandardPaths>
 #include <QTest>
 
@@ -89,6 +91,22 @@ private slots:
         QVERIFY(w.controller().advance(3.0));
         w.refreshNow();
         QVERIFY(std::abs(shown(panel, "position.y") + 1.7) < 2e-3);
+        const QString liveNote = panel->stateNote();
+
+        // An earlier moment on the timeline: its state, named as recorded.
+        auto* timeline = w.findChild<QSlider*>(QStringLiteral("timelineSlider"));
+        QVERIFY(timeline);
+        timeline->setValue(timeline->maximum() / 10);
+        QVERIFY(world.time() > 0.0 && world.time() < 1.0);
+        QVERIFY2(panel->stateNote().startsWith(
+                     QStringLiteral("Recorded at t = %1 s").arg(world.time(), 0, 'f', 3)),
+                 qPrintable(panel->stateNote()));
+        QVERIFY(panel->showsLiveState());
+        QVERIFY(std::abs(shown(panel, "position.y") - world.bodyPosition(0).y()) < 1e-3);
+        QVERIFY(world.bodyPosition(0).y() > -1.6);  // still falling then
+        timeline->setValue(timeline->maximum());
+        QCOMPARE(panel->stateNote(), liveNote);
+        QVERIFY(std::abs(shown(panel, "position.y") + 1.7) < 2e-3);
 
         w.action(QStringLiteral("reset"))->trigger();
         w.refreshNow();
@@ -144,6 +162,41 @@ private slots:
                      qPrintable(QStringLiteral("tab %1: %2 px wider than the dock")
                                     .arg(int(tab))
                                     .arg(scroll->horizontalScrollBar()->maximum())));
+        }
+    }
+
+    // Raised before the window is first shown (`phasebox --probe`) or from the menu after, the
+    // instruments' pages fit their dock at 1024 x 700: the canvas takes its share of a small
+    // window from the docks down to the pages' width, not below it.
+    void instrumentsRaisedFitASmallWindow() {
+        for (const bool beforeShowing : {true, false}) {
+            MainWindow w;
+            w.resize(1024, 700);
+            if (!beforeShowing) w.show();
+            QVERIFY(w.openFile(QStringLiteral(":/scenes/spring-oscillator.phasebox.json"), true));
+            QVERIFY(instrumentsOf(w)->plotProbe(QStringLiteral("light.y")));
+            w.show();
+            QApplication::processEvents();
+            QTest::qWait(50);
+            // A second graph, against a probe, once the window is up: the pages' rows widen.
+            QVERIFY(instrumentsOf(w)->plotProbe(QStringLiteral("light.vy"),
+                                                QStringLiteral("distance(light,heavy)")));
+            QVERIFY(w.controller().advance(1.0));
+            auto* scroll = w.findChild<QScrollArea*>(QStringLiteral("instrumentsScroll"));
+            QVERIFY(scroll && scroll->isVisible());
+            using Tab = ui::InstrumentsPanel::Tab;
+            for (const Tab tab : {Tab::Readouts, Tab::Graphs, Tab::Timer, Tab::Table}) {
+                instrumentsPanelOf(w)->showTab(tab);
+                w.refreshNow();
+                QApplication::processEvents();
+                QVERIFY2(scroll->horizontalScrollBar()->maximum() == 0,
+                         qPrintable(QStringLiteral("%1 showing, tab %2: %3 px wider than the dock")
+                                        .arg(beforeShowing ? "before" : "after")
+                                        .arg(int(tab))
+                                        .arg(scroll->horizontalScrollBar()->maximum())));
+            }
+            QVERIFY2(canvasOf(w)->width() >= 1024 / 2 - 2,
+                     qPrintable(QString::number(canvasOf(w)->width())));
         }
     }
 };

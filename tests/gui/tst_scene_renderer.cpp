@@ -4,6 +4,7 @@
 
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
+#include "ui/canvas/GhostOverlay.h"
 #include "ui/canvas/SceneRenderer.h"
 #include "ui/canvas/SceneView.h"
 
@@ -135,6 +136,7 @@ private slots:
     void updateRepaintsTheSurface();
     void decorationsAreDrawn();
     void libraryScenesRender();
+    void ghostDimsItsSleepers();
 };
 
 void TestSceneRenderer::viewTransformRoundTrip() {
@@ -634,6 +636,35 @@ void TestSceneRenderer::libraryScenesRender() {
             QVERIFY(image.save(QDir(dir).filePath(
                 QString("canvas_%1.png").arg(QString::fromStdString(named.name)))));
     }
+}
+
+// The compare ghost dims its sleepers as the live canvas does: a box at rest on the floor, drawn
+// as the ghost in the step before it falls asleep and in the step it does, is fainter asleep.
+void TestSceneRenderer::ghostDimsItsSleepers() {
+    SceneDesc scene = scenes::tower(1);
+    scene.simulation.sleep = true;
+    const auto world = buildWorld(scene).world;
+    const ViewTransform view(QPointF(0.0, 0.5), 100.0, QSizeF(kSize));
+    const Vec2 start = world->bodyPosition(0);
+    const QPointF centre = view.toScreen(start.x(), start.y());
+    const auto ghostAlpha = [&] {
+        QImage image(kSize, QImage::Format_ARGB32_Premultiplied);
+        image.fill(Qt::transparent);
+        QPainter painter(&image);
+        drawGhost(painter, view, kSize, *world, RenderOptions{});
+        painter.end();
+        return image.pixelColor(centre.toPoint()).alpha();
+    };
+    int awake = ghostAlpha();
+    for (int i = 0; i < 2000 && world->sleepingBodies() == 0; ++i) {
+        awake = ghostAlpha();
+        QVERIFY(world->step());
+    }
+    QCOMPARE(world->sleepingBodies(), 1);
+    QVERIFY2((world->bodyPosition(0) - start).norm() < 0.01, "the box moved");
+    const int asleep = ghostAlpha();
+    QVERIFY2(awake > 0 && asleep > 0 && 2 * asleep <= awake + 2,
+             qPrintable(QStringLiteral("alpha awake %1, asleep %2").arg(awake).arg(asleep)));
 }
 
 QTEST_MAIN(TestSceneRenderer)

@@ -1,6 +1,7 @@
 // The timeline under the canvas (CONTRACT §8): scrubbing to a recorded time shows the state the
 // run had then, bit for bit, in the world the canvas draws, the canvas picture, the status
-// readout, the Instruments readouts of the selection and the plots' cursors (energy and phase);
+// readout, the Instruments readouts of the selection (headed as the recorded moment), the plots'
+// cursors (energy and phase), the probe graphs' cursors and the data table's row of that time;
 // stepping back and then forward frame by frame returns the same frames; Play from an earlier
 // moment goes on exactly as the run went on, and drops the later frames as one undoable step (Undo
 // brings them back). The contact forces follow the timeline too: at a frame the readouts, probes
@@ -18,17 +19,23 @@
 #include "physics/world/World.h"
 #include "tests/support/StateBits.h"
 #include "ui/canvas/SceneView.h"
+#include "ui/instruments/GraphsView.h"
+#include "ui/instruments/InstrumentsPanel.h"
+#include "ui/instruments/ProbeTableView.h"
 #include "ui/instruments/ReadoutView.h"
 #include "ui/plots/PlotsPanel.h"
 
+#include <QAbstractItemModel>
 #include <QAction>
 #include <QChart>
 #include <QChartView>
 #include <QFile>
+#include <QItemSelectionModel>
 #include <QLabel>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -222,7 +229,12 @@ private slots:
             const Moment& then = run.moments[static_cast<std::size_t>(frame)];
             QVERIFY2(shown.bits == then.bits, qPrintable(QStringLiteral("frame %1").arg(frame)));
             QCOMPARE(shown.status, then.status);
-            QCOMPARE(shown.readouts, then.readouts);
+            // The same values; the heading names the recorded moment instead of the live run.
+            QCOMPARE(shown.readouts.mid(2), then.readouts.mid(2));
+            QCOMPARE(shown.readouts[0], then.readouts[0]);
+            QCOMPARE(
+                shown.readouts[1],
+                QStringLiteral("recorded, t = %1 s").arg(w.document().world().time(), 0, 'f', 3));
             const World& world = w.document().world();
             QCOMPARE(phaseCursor(w),
                      QPointF(world.bodyPosition(box).y(), world.bodyVelocity(box).y()));
@@ -233,9 +245,107 @@ private slots:
         }
         // The live end again: the run's state, no cursor.
         slider->setValue(90);
-        QVERIFY(run.now().bits == run.moments.back().bits);
+        const Moment live = run.now();
+        QVERIFY(live.bits == run.moments.back().bits);
+        QCOMPARE(live.readouts, run.moments.back().readouts);
+        QVERIFY(live.readouts[1].startsWith(QStringLiteral("live, t = ")));
         QCOMPARE(w.controller().shownFrame(), -1);
         QVERIFY(std::isnan(energyCursor(w)));
+    }
+
+    // The Instruments dock follows the timeline: a graph against time marks the shown time, a
+    // graph against a probe the probes' values then, the data table makes the row of that time
+    // current with the values the live run showed at that step, and the readouts name the
+    // recorded moment; back at the live end none of the marks remain and the readouts say
+    // "live". The dock's shown tab follows a scrub at once, the others when shown.
+    void instrumentsFollowTheTimeline() {
+        MainWindow& w = *window_;
+        w.document().setSelection({QStringLiteral("r1c2")});
+        w.action("showInstruments")->trigger();
+        InstrumentsPresenter* instruments = instrumentsOf(w);
+        QVERIFY(instruments->plotProbe(QStringLiteral("r1c2.y")));
+        QVERIFY(instruments->plotProbe(QStringLiteral("r1c2.vy"), QStringLiteral("r1c2.y")));
+        ui::InstrumentsPanel* panel = instrumentsPanelOf(w);
+        ui::ProbeGraphView* byTime = panel->graphs()->graph(0);
+        ui::ProbeGraphView* curve = panel->graphs()->graph(1);
+        const ProbeRecorder& probes = probeRecorderOf(w);
+        const int y = probes.indexOf(QStringLiteral("r1c2.y")) + 1;  // table columns: t first
+        const int vy = probes.indexOf(QStringLiteral("r1c2.vy")) + 1;
+        QVERIFY(y > 0 && vy > 0);
+        const ui::ProbeTableView* table = panel->table();
+        // What the table showed live at each step: its newest row, every column as read.
+        const auto newestRow = [&] {
+            w.refreshNow();
+            const QAbstractItemModel* model = table->table()->model();
+            std::vector<double> row;
+            for (int c = 0; c < model->columnCount(); ++c)
+                row.push_back(model->index(model->rowCount() - 1, c).data(Qt::UserRole).toDouble());
+            return row;
+        };
+        std::vector<std::vector<double>> live{newestRow()};
+        constexpr int kSteps = 60;
+        for (int i = 0; i < kSteps; ++i) {
+            QVERIFY(w.controller().advance(w.document().world().settings().dt));
+            live.push_back(newestRow());
+            QVERIFY(byTime->cursor().isEmpty() && curve->cursor().isEmpty());
+            QCOMPARE(table->shownRow(), -1);
+        }
+        QCOMPARE(table->table()->model()->rowCount(), kSteps + 1);
+        QCOMPARE(live.back()[0], w.document().world().time());
+        auto* slider = w.findChild<QSlider*>(QStringLiteral("timelineSlider"));
+        const QString shots = qEnvironmentVariable("PHASEBOX_SCREENSHOT_DIR");
+        using Tab = ui::InstrumentsPanel::Tab;
+        for (int frame : {23, 0, 59, 41}) {
+            const std::vector<double>& then = live[static_cast<std::size_t>(frame)];
+            panel->showTab(Tab::Graphs);
+            slider->setValue(frame);  // no refreshNow: the shown tab follows by itself
+            // (QCOMPARE of doubles is fuzzy: these compare bits.)
+            const double t = w.document().world().time();
+            QVERIFY(bitsOf({t}) == bitsOf({then[0]}));
+            const QVector<QPointF> line = byTime->cursor(), dot = curve->cursor();
+            QCOMPARE(line.size(), 2);
+            QVERIFY(bitsOf({line[0].x(), line[1].x()}) == bitsOf({t, t}));
+            QCOMPARE(dot.size(), 1);
+            QVERIFY(bitsOf({dot[0].x(), dot[0].y()}) == bitsOf({then[y], then[vy]}));
+            if (!shots.isEmpty()) {  // a picture to look at, once the layout has settled
+                QCoreApplication::processEvents();
+                w.grab().save(QStringLiteral("%1/timeline-graphs-%2.png").arg(shots).arg(frame));
+            }
+            panel->showTab(Tab::Table);
+            const int row = table->table()->currentIndex().row();
+            QCOMPARE(row, frame);
+            QCOMPARE(table->shownRow(), frame);
+            QVERIFY(table->table()->selectionModel()->isRowSelected(row));
+            const QAbstractItemModel* model = table->table()->model();
+            std::vector<double> shown;
+            for (int c = 0; c < model->columnCount(); ++c)
+                shown.push_back(model->index(row, c).data(Qt::UserRole).toDouble());
+            QVERIFY2(bitsOf(shown) == bitsOf(then),
+                     qPrintable(QStringLiteral("table row at frame %1").arg(frame)));
+            if (!shots.isEmpty()) {  // a picture to look at, once the layout has settled
+                QCoreApplication::processEvents();
+                w.grab().save(QStringLiteral("%1/timeline-table-%2.png").arg(shots).arg(frame));
+            }
+            panel->showTab(Tab::Readouts);
+            QCOMPARE(panel->readouts()->state(),
+                     QStringLiteral("recorded, t = %1 s").arg(then[0], 0, 'f', 3));
+            if (!shots.isEmpty()) {
+                QCoreApplication::processEvents();
+                w.grab().save(QStringLiteral("%1/timeline-readouts-%2.png").arg(shots).arg(frame));
+            }
+        }
+        // The live end: no cursor, no row held, the live heading.
+        slider->setValue(kSteps);
+        QCOMPARE(w.controller().shownFrame(), -1);
+        QCOMPARE(panel->readouts()->state(),
+                 QStringLiteral("live, t = %1 s").arg(live.back()[0], 0, 'f', 2));
+        panel->showTab(Tab::Graphs);
+        QVERIFY(byTime->cursor().isEmpty());
+        QVERIFY(curve->cursor().isEmpty());
+        QVERIFY(byTime->pointCount() > kSteps / 2);
+        panel->showTab(Tab::Table);
+        QCOMPARE(table->shownRow(), -1);
+        QVERIFY(!table->table()->selectionModel()->hasSelection());
     }
 
     // With sleeping on, the layout of the state changes as the pile falls asleep: frames from

@@ -19,8 +19,12 @@ RenderOptions ghostOptions(const RenderOptions& live) {
     const bool dark = live.background.lightnessF() < 0.5;
     const QColor body = dark ? QColor(0xe0, 0xe0, 0xe0, 0x70) : QColor(0x30, 0x30, 0x40, 0x58);
     const QColor line = dark ? QColor(0xe0, 0xe0, 0xe0, 0xa0) : QColor(0x30, 0x30, 0x40, 0x90);
+    // Bodies asleep half as opaque: dimmed, as the live canvas dims its sleepers.
+    QColor asleep = body;
+    asleep.setAlpha(body.alpha() / 2);
     SceneColors& c = o.colors;
-    c.particle = c.sleepingParticle = c.dynamicBox = c.sleepingBox = body;
+    c.particle = c.dynamicBox = body;
+    c.sleepingParticle = c.sleepingBox = asleep;
     c.springCompressed = c.springRest = c.springStretched = c.cloth = c.joint = c.rope = line;
     c.track = c.anchor = c.pinnedParticle = c.staticBox = c.plane = c.planeBorder = Qt::transparent;
     c.text = line;

@@ -1,6 +1,7 @@
 #include "ui/instruments/GraphsView.h"
 
 #include "ui/instruments/ProbePicker.h"
+#include "ui/plots/Charts.h"
 #include "ui/plots/ProbeChart.h"
 
 #include <QChart>
@@ -68,11 +69,17 @@ ProbeGraphView::ProbeGraphView(QWidget* parent) : QFrame(parent) {
 }
 
 void ProbeGraphView::setSeries(const QVector<QPointF>& points, const QString& xTitle,
-                               const QString& yUnit, bool timeAxis) {
+                               const QString& yUnit, bool timeAxis, std::optional<QPointF> cursor) {
     QChart* old = view_->chart();
     // As many ticks as the width holds whole labels (about 70 px each).
     const int ticks = std::clamp(view_->width() / 70, 2, 6);
-    view_->setChart(createProbeChart(points, xTitle, yUnit, {}, timeAxis, ticks));
+    QChart* chart = createProbeChart(points, xTitle, yUnit, {}, timeAxis, ticks);
+    const QColor colour = palette().color(QPalette::Highlight);
+    if (cursor && timeAxis)
+        addTimeCursor(chart, cursor->x(), colour);
+    else if (cursor)
+        addPointCursor(chart, *cursor, colour);
+    view_->setChart(chart);
     delete old;  // QChartView lets go of the old chart without deleting it
 }
 
@@ -89,8 +96,14 @@ QString ProbeGraphView::message() const {
 int ProbeGraphView::pointCount() const {
     int points = 0;
     for (QAbstractSeries* s : view_->chart()->series())
-        if (auto* line = qobject_cast<QLineSeries*>(s)) points += static_cast<int>(line->count());
+        if (auto* line = qobject_cast<QLineSeries*>(s);
+            line && line->name() != QLatin1String(kCursorName))
+            points += static_cast<int>(line->count());
     return points;
+}
+
+QVector<QPointF> ProbeGraphView::cursor() const {
+    return chartCursor(view_->chart());
 }
 
 // ---- the stack of graphs ------------------------------------------------------------------------

@@ -11,6 +11,8 @@
 #include <QString>
 #include <QVector>
 
+#include <optional>
+
 QT_BEGIN_NAMESPACE
 class QChartView;
 class QLabel;
@@ -35,13 +37,18 @@ public:
     // Draws the samples (ProbeChart.h): against time when timeAxis. The vertical axis is
     // titled with the unit alone (the probe is named in the box above it: a graph a few
     // lines high has no room for "system.angular_momentum [kg·m²/s]" up its side).
+    // cursor: the moment the timeline shows, marked as the plots mark it (Charts.h): on a graph
+    // against time a line at its x (the time), on a graph against a probe a dot at it (the
+    // probes' values then); none at the live end.
     void setSeries(const QVector<QPointF>& points, const QString& xTitle, const QString& yUnit,
-                   bool timeAxis);
+                   bool timeAxis, std::optional<QPointF> cursor = std::nullopt);
     // A line above the chart: how to start, or why a probe is not valid (warning: in red).
     void setMessage(const QString& text, bool warning);
     QString message() const;
-    // The number of points the chart draws.
+    // The number of points the chart's lines draw (the cursor's not counted).
     int pointCount() const;
+    // The cursor's points: the line's two ends or the dot; empty when there is none.
+    QVector<QPointF> cursor() const;
 
 signals:
     void yEntered(const QString& probe);

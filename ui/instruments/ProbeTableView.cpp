@@ -174,4 +174,24 @@ std::pair<int, int> ProbeTableView::selectedRows() const {
     return {first, last};
 }
 
+void ProbeTableView::setShownRow(int row) {
+    QItemSelectionModel* selection = table_->selectionModel();
+    if (row < 0 || row >= model_->rowCount()) {
+        if (shownRow_ >= 0) {
+            selection->clear();
+            table_->scrollToBottom();
+        }
+        shownRow_ = -1;
+        return;
+    }
+    const QModelIndex index = model_->index(row, 0);
+    // Selected anew after the model was reset (the samples were halved), but scrolled to only
+    // when the moment moves, so that the user may scroll through the table meanwhile.
+    if (selection->currentIndex().row() != row || !selection->isRowSelected(row))
+        selection->setCurrentIndex(index,
+                                   QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    if (row != shownRow_) table_->scrollTo(index, QAbstractItemView::PositionAtCenter);
+    shownRow_ = row;
+}
+
 }  // namespace phasebox::ui

@@ -67,6 +67,10 @@ public:
     void setOwnColumns(const QStringList& probes);
     // The selected rows' range [first, last], or (0, -1) for all.
     std::pair<int, int> selectedRows() const;
+    // The row of the moment the timeline shows: made current and selected, and scrolled to when
+    // it changes; -1 (the live end) lets go of it and follows the newest rows again.
+    void setShownRow(int row);
+    int shownRow() const { return shownRow_; }
 
 signals:
     void columnEntered(const QString& probe);
@@ -83,6 +87,7 @@ private:
     QLabel* summary_ = nullptr;
     QTableView* table_ = nullptr;
     ProbeTableModel* model_ = nullptr;
+    int shownRow_ = -1;
 };
 
 }  // namespace phasebox::ui

@@ -76,18 +76,22 @@ ReadoutView::ReadoutView(QWidget* parent) : QWidget(parent) {
     showHint(tr("Click an object on the canvas to read its state."));
 }
 
-void ReadoutView::setReadout(const QString& subject, const QString& state, bool live,
+void ReadoutView::setReadout(const QString& subject, const QString& state, Source source,
                              const QList<ReadoutRow>& rows) {
     hint_->hide();
     table_->show();
     subject_->setText(subject);
     state_->setText(state);
-    // Live values in (Okabe–Ito) bluish green, the setup in grey, each also named in its text:
-    // a glance tells which is shown, whatever colours one sees.
-    state_->setStyleSheet(live ? QStringLiteral("QLabel { color: white; background: #007a5a; "
-                                                "border-radius: 3px; padding: 1px 6px; }")
-                               : QStringLiteral("QLabel { color: white; background: #7f7f7f; "
-                                                "border-radius: 3px; padding: 1px 6px; }"));
+    // Live values in (Okabe–Ito) bluish green, a recorded moment in blue, the setup in grey
+    // (each at least 4.5:1 against white), each also named in its text: a glance tells which is
+    // shown, whatever colours one sees.
+    const QString background = source == Source::Live       ? QStringLiteral("#007a5a")
+                               : source == Source::Recorded ? QStringLiteral("#0072b2")
+                                                            : QStringLiteral("#7f7f7f");
+    state_->setStyleSheet(
+        QStringLiteral("QLabel { color: white; background: %1; border-radius: 3px; "
+                       "padding: 1px 6px; }")
+            .arg(background));
     const bool sameRows = rows.size() == rows_.size() &&
                           std::equal(rows.begin(), rows.end(), rows_.begin(),
                                      [](const ReadoutRow& a, const ReadoutRow& b) {

@@ -1,7 +1,8 @@
 #pragma once
 // Readouts of the selected object: position, velocity, speed, angle and ω (rigid bodies),
 // kinetic energy, momentum and angular momentum, each from its probe, under a line that says
-// whose values they are: the live state ("live, t = 1.23 s") or the setup. With two or three
+// whose values they are: the live state ("live, t = 1.23 s"), a recorded moment the timeline shows
+// ("recorded, t = 0.62 s") or the setup. With two or three
 // objects selected it reads the distance and the angle between them; with a joint, its force.
 //
 // Right-click a row (or double-click it) to graph its probe or time its period.
@@ -32,8 +33,11 @@ class ReadoutView : public QWidget {
 public:
     explicit ReadoutView(QWidget* parent = nullptr);
 
-    // subject: "p0 (particle)"; state: "live, t = 1.23 s" or "setup"; live tints the state.
-    void setReadout(const QString& subject, const QString& state, bool live,
+    // Whose values: the setup's, the live run's or a recorded moment's; each its own tint.
+    enum class Source { Setup, Live, Recorded };
+    // subject: "p0 (particle)"; state: "live, t = 1.23 s", "recorded, t = 0.62 s" or "setup",
+    // tinted as source.
+    void setReadout(const QString& subject, const QString& state, Source source,
                     const QList<ReadoutRow>& rows);
     // Nothing to read: the hint says how to choose something.
     void showHint(const QString& hint);

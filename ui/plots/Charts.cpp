@@ -1,6 +1,7 @@
 #include "ui/plots/Charts.h"
 
 #include "ui/canvas/Appearance.h"
+#include "ui/plots/ProbeChart.h"
 
 #include <QAbstractAxis>
 #include <QBuffer>
@@ -10,9 +11,11 @@
 #include <QGraphicsScene>
 #include <QImage>
 #include <QLegend>
+#include <QLegendMarker>
 #include <QLineSeries>
 #include <QPainter>
 #include <QPen>
+#include <QScatterSeries>
 #include <QSvgGenerator>
 #include <QValueAxis>
 #include <QXYSeries>
@@ -130,6 +133,50 @@ void applyChartLocale(QChart* chart) {
         chart->setLocale(*locale);
         chart->setLocalizeNumbers(true);
     }
+}
+
+namespace {
+void addCursor(QChart* chart, QXYSeries* cursor, const QList<QPointF>& points) {
+    const QList<QAbstractAxis*> x = chart->axes(Qt::Horizontal);
+    const QList<QAbstractAxis*> y = chart->axes(Qt::Vertical);
+    if (x.isEmpty() || y.isEmpty()) {
+        delete cursor;
+        return;
+    }
+    cursor->setName(QLatin1String(kCursorName));
+    cursor->append(points);
+    chart->addSeries(cursor);
+    cursor->attachAxis(x.first());
+    cursor->attachAxis(y.first());
+    // The legend names what was computed, not where the timeline is.
+    cursor->setProperty(kNoLegend, true);
+    if (QLegend* legend = chart->legend())
+        for (QLegendMarker* m : legend->markers(cursor)) m->setVisible(false);
+}
+}  // namespace
+
+void addTimeCursor(QChart* chart, double t, const QColor& colour) {
+    const auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).value(0));
+    if (!y || !std::isfinite(t)) return;
+    auto* line = new QLineSeries;
+    line->setPen(QPen(colour, 1.5, Qt::DashLine));
+    addCursor(chart, line, {{t, y->min()}, {t, y->max()}});
+}
+
+void addPointCursor(QChart* chart, QPointF point, const QColor& colour) {
+    if (!std::isfinite(point.x()) || !std::isfinite(point.y())) return;
+    auto* dot = new QScatterSeries;
+    dot->setMarkerSize(11.0);
+    dot->setColor(colour);
+    addCursor(chart, dot, {point});
+}
+
+QVector<QPointF> chartCursor(const QChart* chart) {
+    if (!chart) return {};
+    for (QAbstractSeries* s : chart->series())
+        if (s->name() == QLatin1String(kCursorName))
+            if (const auto* series = qobject_cast<const QXYSeries*>(s)) return series->points();
+    return {};
 }
 
 QColor energyColor(int series) {
@@ -263,7 +310,10 @@ QChart* createEnergyChart(std::span<const EnergySample> samples,
     auto* y = new QValueAxis;
     y->setTitleText(chartText(QT_TRANSLATE_NOOP("Charts", "energy [J]")));
     fitTimeAxis(x, tMin, tMax);
-    fitAxis(y, lo, hi);
+    // Ticks on whole multiples of 1, 2 or 5 × 10^k, labelled with as many decimals as the step
+    // needs: "14000, 16000" where printf's %g would write "1.4e+04" (ProbeChart.h).
+    const auto [ylo, yhi] = paddedRange(lo, hi);
+    applyNiceTicks(y, ylo, yhi, 5);
     for (const PlotMarker& m : markers)
         addSeries(chart, {{m.t, y->min()}, {m.t, y->max()}}, m.label, QColor(0x80, 0x80, 0x80), 1.2,
                   Qt::DashLine);

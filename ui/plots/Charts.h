@@ -93,6 +93,19 @@ QString powerOfTen(int exponent);
 // step-th whole power of ten between them, with a grid line there.
 QCategoryAxis* createDecadeAxis(double lo, double hi, int step = 1);
 
+// The moment the timeline shows, marked in a chart (the plots and the instruments' graphs): a
+// series named kCursorName on the chart's own axes that no legend names (its kNoLegend property
+// set: a legend marker's own visibility cannot say it, a marker reads as hidden while its legend
+// is, or before it is laid out). addTimeCursor draws a dashed vertical line at time t across the
+// vertical axis's range, addPointCursor a dot at the state then (a phase or probe-against-probe
+// curve); neither draws anything on a chart without axes.
+inline constexpr char kCursorName[] = "cursor";
+inline constexpr char kNoLegend[] = "phaseboxNoLegend";
+void addTimeCursor(QChart* chart, double t, const QColor& colour);
+void addPointCursor(QChart* chart, QPointF point, const QColor& colour);
+// The cursor's points in a chart: empty when it has none.
+QVector<QPointF> chartCursor(const QChart* chart);
+
 // The series colours, shared with the app's legends.
 // 0 kinetic, 1 potential, 2 total, 3 work_nc, 4 drift, 5 correction.
 QColor energyColor(int series);

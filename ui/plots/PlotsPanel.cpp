@@ -50,9 +50,6 @@ void applyPresentation(QChart* chart, bool presentation) {
 
 // Set on a chart whose own legend the panel's compact one stands in for.
 constexpr char kCompactLegend[] = "phaseboxCompactLegend";
-// Set on a series that no legend names (the timeline's cursor). A marker's own visibility
-// cannot say it: a marker reads as hidden while its legend is, or before it is laid out.
-constexpr char kNoLegend[] = "phaseboxNoLegend";
 
 // A line's sample in the compact legend: solid, dashed or a dot, in the series' colour.
 QString legendEntry(QLegendMarker* marker) {
@@ -265,25 +262,6 @@ bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
 
 namespace {
 
-// The shown moment: a series named "cursor" on the chart's own axes.
-void addCursor(QChart* chart, QXYSeries* cursor, const QList<QPointF>& points) {
-    const QList<QAbstractAxis*> x = chart->axes(Qt::Horizontal);
-    const QList<QAbstractAxis*> y = chart->axes(Qt::Vertical);
-    if (x.isEmpty() || y.isEmpty()) {
-        delete cursor;
-        return;
-    }
-    cursor->setName(QStringLiteral("cursor"));
-    cursor->append(points);
-    chart->addSeries(cursor);
-    cursor->attachAxis(x.first());
-    cursor->attachAxis(y.first());
-    // The legend names what was computed, not where the timeline is.
-    cursor->setProperty(kNoLegend, true);
-    if (QLegend* legend = chart->legend())
-        for (QLegendMarker* m : legend->markers(cursor)) m->setVisible(false);
-}
-
 // The recorded run's line, dashed and lighter than the live lines, on the chart's axes, which
 // widen to hold it.
 void addGhostLine(QChart* chart, const QString& name, QVector<QPointF> points, QColor colour,
@@ -351,15 +329,7 @@ void PlotsPanel::setEnergy(std::span<const EnergySample> samples,
             if (p.x() <= ghostUntil_ + kGhostTimeSlack) points.push_back(p);
         addGhostLine(chart, ghost_.name, decimate(points), energyColor(2), true);
     }
-    if (std::isfinite(cursorTime_)) {
-        const auto* y = qobject_cast<QValueAxis*>(chart->axes(Qt::Vertical).value(0));
-        auto* line = new QLineSeries;
-        line->setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
-        if (y)
-            addCursor(chart, line, {{cursorTime_, y->min()}, {cursorTime_, y->max()}});
-        else
-            delete line;
-    }
+    addTimeCursor(chart, cursorTime_, palette().color(QPalette::Highlight));
     replaceChart(energyView_, chart);
     styleChart(energyView_);
 }
@@ -395,12 +365,9 @@ void PlotsPanel::setPhase(std::span<const PhaseSample> samples, const QString& c
         }
         addGhostLine(chart, ghost_.name, points, QColor(0x60, 0x60, 0x60), false);
     }
-    if (cursorPhase_) {
-        auto* dot = new QScatterSeries;
-        dot->setMarkerSize(11.0);
-        dot->setColor(palette().color(QPalette::Highlight));
-        addCursor(chart, dot, {{cursorPhase_->coordinate, cursorPhase_->velocity}});
-    }
+    if (cursorPhase_)
+        addPointCursor(chart, {cursorPhase_->coordinate, cursorPhase_->velocity},
+                       palette().color(QPalette::Highlight));
     replaceChart(phaseView_, chart);
     styleChart(phaseView_);
 }

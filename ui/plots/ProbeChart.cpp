@@ -42,7 +42,9 @@ NiceTicks niceTicks(double lo, double hi, int maxTicks) {
     ticks.first = std::ceil(lo / step - 1e-9) * step;
     const double magnitude = std::max(std::abs(lo), std::abs(hi));
     const int stepExponent = static_cast<int>(std::floor(std::log10(step) + 1e-12));
-    if (magnitude >= 1e6 || step < 1e-4) {
+    // Fixed decimals up to six (a height of 1.49975 m read as it is, not as 1.49975e+00);
+    // scientific past them or from a million on.
+    if (magnitude >= 1e6 || stepExponent < -6) {
         // Scientific: as many digits as tell the ticks apart.
         const int digits =
             std::clamp(static_cast<int>(std::floor(std::log10(magnitude))) - stepExponent, 0, 6);

@@ -2,8 +2,11 @@
 
 #include "app/document/Document.h"
 #include "app/sim/ProbeRecorder.h"
+#include "app/sim/SimulationController.h"
 #include "physics/world/World.h"
 #include "ui/instruments/ProbePicker.h"
+
+#include <limits>
 
 namespace phasebox {
 
@@ -33,6 +36,12 @@ bool InstrumentBase::check(const QString& text, ui::ProbePicker* picker, QString
     emit message(reason);
     if (error) *error = why;
     return false;
+}
+
+double InstrumentBase::shownTime() const {
+    if (!controller_ || controller_->shownFrame() < 0)
+        return std::numeric_limits<double>::quiet_NaN();
+    return document_.world().time();
 }
 
 }  // namespace phasebox

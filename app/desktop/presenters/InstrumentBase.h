@@ -14,6 +14,7 @@ namespace phasebox {
 
 class Document;
 class ProbeRecorder;
+class SimulationController;
 class World;
 namespace ui {
 class InstrumentsPanel;
@@ -32,6 +33,9 @@ public:
     InstrumentBase(ui::InstrumentsPanel& panel, Document& document, ProbeRecorder& probes,
                    QObject* parent = nullptr);
 
+    // The controller whose timeline the instrument follows (none: it shows the live state).
+    void setController(const SimulationController* controller) { controller_ = controller; }
+
 signals:
     // The instrument asks for the dock to be shown.
     void instrumentsWanted();
@@ -43,10 +47,14 @@ signals:
 protected:
     // Parses text; on failure marks the picker (if any), says why and returns false.
     bool check(const QString& text, ui::ProbePicker* picker, QString* error);
+    // The time of the recorded frame the timeline shows (the world is in its state), NaN at the
+    // live end.
+    double shownTime() const;
 
     ui::InstrumentsPanel& panel_;
     Document& document_;
     ProbeRecorder& probes_;
+    const SimulationController* controller_ = nullptr;
 };
 
 }  // namespace phasebox

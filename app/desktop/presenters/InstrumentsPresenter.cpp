@@ -43,6 +43,7 @@ InstrumentsPresenter::InstrumentsPresenter(ui::InstrumentsPanel& panel, Document
         connect(instrument, &InstrumentBase::probesChanged, this,
                 &InstrumentsPresenter::updateRecordedProbes);
         connect(instrument, &InstrumentBase::tableStale, table_, &ProbeTablePresenter::refresh);
+        instrument->setController(&controller_);
     }
     connect(&document_, &Document::sceneReset, this, &InstrumentsPresenter::onSceneReset);
     connect(&document_, &Document::sceneEdited, this, &InstrumentsPresenter::onSceneEdited);
@@ -59,6 +60,11 @@ InstrumentsPresenter::InstrumentsPresenter(ui::InstrumentsPanel& panel, Document
         if (sinceRefresh_.elapsed() >= kRefreshIntervalMs) refreshShown();
     });
     connect(&controller_, &SimulationController::runningChanged, this, [this] { refresh(); });
+    // The timeline moved: the shown instrument follows at once (cursor, row, heading), the
+    // others when shown.
+    connect(&controller_, &SimulationController::frameShown, this, [this] {
+        if (panel_.isVisible()) refreshShown();
+    });
     // A blow-up restored an earlier frame: record it, which drops what came after it.
     connect(&controller_, &SimulationController::diverged, this, [this] {
         probes_.record(document_.world());

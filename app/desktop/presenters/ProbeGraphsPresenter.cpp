@@ -20,6 +20,7 @@
 #include <QStandardPaths>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 
 namespace phasebox {
@@ -150,7 +151,20 @@ void ProbeGraphsPresenter::refreshGraph(int index) {
     const int yi = probes_.indexOf(graph.y);
     const QString unit =
         yi >= 0 && probes_.isValid(yi) ? ui::probeUnit(probes_.parsed(yi)->kind) : QString();
-    view->setSeries(points, axisTitle(graph.x), unit, timeAxis);
+    view->setSeries(points, axisTitle(graph.x), unit, timeAxis, cursor(graph));
+}
+
+std::optional<QPointF> ProbeGraphsPresenter::cursor(const Graph& graph) const {
+    const double t = shownTime();
+    if (!std::isfinite(t)) return std::nullopt;
+    // The probes read from the world, which is in the shown frame's state: the values the run
+    // recorded at that step, whether or not a thinned series kept its sample.
+    const auto value = [this](const QString& probe) {
+        const int i = probes_.indexOf(probe);
+        return i >= 0 && probes_.isValid(i) ? evaluateProbe(document_.world(), *probes_.parsed(i))
+                                            : std::numeric_limits<double>::quiet_NaN();
+    };
+    return QPointF(graph.x.isEmpty() ? t : value(graph.x), value(graph.y));
 }
 
 bool ProbeGraphsPresenter::exportGraph(int index, const QString& path, QString* error) const {

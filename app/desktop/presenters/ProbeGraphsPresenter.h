@@ -8,6 +8,7 @@
 #include <QString>
 #include <QVector>
 
+#include <optional>
 #include <vector>
 
 namespace phasebox {
@@ -42,6 +43,8 @@ private:
     void refreshGraph(int index);
     // The samples of a graph: (time or x, y), NaN where a probe had none.
     QVector<QPointF> graphPoints(const Graph& graph) const;
+    // The timeline's moment in a graph: (time or x, y) then; none at the live end.
+    std::optional<QPointF> cursor(const Graph& graph) const;
     QString axisTitle(const QString& probe) const;
     void exportGraphInteractively(int index, const QString& format);
 

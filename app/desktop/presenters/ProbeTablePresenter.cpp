@@ -90,6 +90,15 @@ void ProbeTablePresenter::refresh() {
     panel_.table()->setTable(headers, static_cast<int>(times.size()), source,
                              clears_ * 64 + static_cast<long long>(std::log2(probes_.stride())),
                              scales);
+    // The timeline's moment: the last sample at or before it (its own, unless the series was
+    // thinned since).
+    const double shown = shownTime();
+    int row = -1;
+    if (!std::isnan(shown))
+        row =
+            static_cast<int>(std::upper_bound(times.begin(), times.end(), shown) - times.begin()) -
+            1;
+    panel_.table()->setShownRow(row);
 }
 
 bool ProbeTablePresenter::exportTable(const QString& path, QString* error) const {

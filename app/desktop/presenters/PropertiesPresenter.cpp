@@ -15,7 +15,7 @@ namespace phasebox {
 
 PropertiesPresenter::PropertiesPresenter(ui::PropertiesPanel& panel, Document& document,
                                          SimulationController& controller, QObject* parent)
-    : Presenter(parent), panel_(panel), document_(document) {
+    : Presenter(parent), panel_(panel), document_(document), controller_(controller) {
     connect(&document_, &Document::sceneReset, this, [this] { update(true); });
     connect(&document_, &Document::sceneEdited, this, [this] { update(true); });
     connect(&document_, &Document::selectionChanged, this, [this] {
@@ -63,8 +63,12 @@ void PropertiesPresenter::update(bool rebuild) {
     } else {
         panel_.updateValues(fields);
     }
-    const QString note = live ? tr("Live at t = %1 s; Reset shows the setup")
-                                    .arg(ui::shownNumber(world.time(), 'f', 3))
+    // A moment the timeline shows is the run's state then, and named so.
+    const bool recorded = controller_.shownFrame() >= 0;
+    const QString note = live && recorded ? tr("Recorded at t = %1 s; Reset shows the setup")
+                                                .arg(ui::shownNumber(world.time(), 'f', 3))
+                         : live ? tr("Live at t = %1 s; Reset shows the setup")
+                                      .arg(ui::shownNumber(world.time(), 'f', 3))
                          : document_.hasRun()
                              ? tr("The setup's numbers (the run is at t = %1 s)")
                                    .arg(ui::shownNumber(world.time(), 'f', 3))

@@ -1,6 +1,7 @@
 #pragma once
 // The Properties dock: the numbers of the one selected object (PropertyTable.h), live while the
-// simulation runs; a committed edit becomes one undo step, a refused one shows why.
+// simulation runs (or those of the recorded moment the timeline shows); a committed edit becomes
+// one undo step, a refused one shows why.
 
 #include "app/desktop/presenters/Presenter.h"
 
@@ -33,6 +34,7 @@ private:
 
     ui::PropertiesPanel& panel_;
     Document& document_;
+    const SimulationController& controller_;
     QString shownId_;  // the object the panel shows
 };
 

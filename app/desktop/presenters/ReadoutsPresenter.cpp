@@ -8,6 +8,7 @@
 #include "ui/instruments/ReadoutView.h"
 #include "ui/panels/ShownNumber.h"
 
+#include <cmath>
 #include <optional>
 
 namespace phasebox {
@@ -101,10 +102,18 @@ void ReadoutsPresenter::refresh() {
         // Hinges, rods and ropes: the pendulum's angle (the row is left out for the others).
         addRow(tr("angle of %1").arg(joint), {joint + QStringLiteral(".angle")});
     }
-    const bool live = document_.hasRun();
-    const QString state =
-        live ? tr("live, t = %1 s").arg(ui::shownNumber(world.time(), 'f', 2)) : tr("setup");
-    view->setReadout(subject, state, live, rows);
+    // A recorded frame the timeline shows says so (the world is in its state, at its time),
+    // with the timeline's three decimals, which tell frames of a 1/60 s step apart.
+    using Source = ui::ReadoutView::Source;
+    const Source source = !std::isnan(shownTime()) ? Source::Recorded
+                          : document_.hasRun()     ? Source::Live
+                                                   : Source::Setup;
+    const QString state = source == Source::Recorded
+                              ? tr("recorded, t = %1 s").arg(ui::shownNumber(world.time(), 'f', 3))
+                          : source == Source::Live
+                              ? tr("live, t = %1 s").arg(ui::shownNumber(world.time(), 'f', 2))
+                              : tr("setup");
+    view->setReadout(subject, state, source, rows);
 }
 
 }  // namespace phasebox
