@@ -21,10 +21,12 @@
 #include <QFile>
 #include <QGraphicsScene>
 #include <QGraphicsTextItem>
+#include <QImage>
 #include <QLabel>
 #include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
+#include <QPainter>
 #include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -69,6 +71,7 @@ private slots:
     void correctionLineIsDashedAndColouredApart();
     void legendKeepsWholeNamesInANarrowDock();
     void largeEnergiesReadAsPlainNumbers();
+    void clipPlotsKeepWholeLegendNames();
 };
 
 // What a class sees first (issue 36): a new scene at its defaults (symplectic Euler, dt 1/60),
@@ -248,6 +251,29 @@ void TestEnergyPlot::largeEnergiesReadAsPlainNumbers() {
             if (whole.match(texts.back()).hasMatch()) ++plain;
         }
     QVERIFY2(plain >= 3, qPrintable(texts.join(QLatin1Char('|'))));
+}
+
+// A clip draws its plots beside the canvas at a third of its width (ClipRenderer): where the six
+// names do not fit one row, the legend goes down the side, each name whole; where they fit it
+// stays below the plot.
+void TestEnergyPlot::clipPlotsKeepWholeLegendNames() {
+    const ui::EnergySample samples[] = {{0.0, 1.0, 2.0, 0.0, 0.0, 0.0},
+                                        {1.0, 0.5, 2.0, -0.1, 0.01, 0.4}};
+    QImage frame(960, 540, QImage::Format_RGB32);
+    QPainter painter(&frame);
+    std::unique_ptr<QChart> narrow(ui::createEnergyChart(samples, {}, QStringLiteral("Energy")));
+    QVERIFY(ui::legendRowWidth(narrow.get()) > 384.0);
+    ui::paintChart(narrow.get(), painter, QRectF(576, 0, 384, 270));
+    QLegend* legend = narrow->legend();
+    QCOMPARE(legend->alignment(), Qt::AlignRight);
+    const QFontMetricsF metrics(legend->font());
+    for (QLegendMarker* marker : legend->markers())
+        QVERIFY2(legend->geometry().width() > metrics.horizontalAdvance(marker->label()),
+                 qPrintable(marker->label()));
+    std::unique_ptr<QChart> wide(ui::createEnergyChart(samples, {}, QStringLiteral("Energy")));
+    QVERIFY(ui::legendRowWidth(wide.get()) < 1200.0);
+    ui::paintChart(wide.get(), painter, QRectF(0, 0, 1200, 400));
+    QCOMPARE(wide->legend()->alignment(), Qt::AlignBottom);
 }
 
 QTEST_MAIN(TestEnergyPlot)

@@ -425,7 +425,29 @@ QChart* createPhaseChart(std::span<const PhaseSample> samples, const QString& co
     return chart;
 }
 
+qreal legendRowWidth(const QChart* chart) {
+    QLegend* legend = chart->legend();
+    const QFontMetricsF metrics(legend->font());
+    qreal row = 4.0 * metrics.height();  // the chart's and the legend's own margins
+    for (QLegendMarker* marker : legend->markers()) {
+        if (!marker->series() || marker->series()->property(kNoLegend).toBool()) continue;
+        // Label, marker (a line 1.5 font heights long) and the gaps around them.
+        row += metrics.horizontalAdvance(marker->label()) + 4.0 * metrics.height();
+    }
+    return row;
+}
+
+namespace {
+// Qt cuts a bottom legend's labels to "ki…" when its one row is wider than the chart: down the
+// side they show whole.
+void fitLegendTo(QChart* chart, qreal width) {
+    if (chart->legend()->isVisible() && legendRowWidth(chart) > width)
+        chart->legend()->setAlignment(Qt::AlignRight);
+}
+}  // namespace
+
 QByteArray renderChart(QChart* chart, const QString& format, QSize size) {
+    fitLegendTo(chart, size.width());
     const bool png = format.compare(QLatin1String("png"), Qt::CaseInsensitive) == 0;
     if (!png && format.compare(QLatin1String("svg"), Qt::CaseInsensitive) != 0) return {};
     // Render through a scene: a chart needs one to lay itself out, but no view or window.
@@ -458,6 +480,7 @@ QByteArray renderChart(QChart* chart, const QString& format, QSize size) {
 }
 
 void paintChart(QChart* chart, QPainter& painter, const QRectF& target) {
+    fitLegendTo(chart, target.width());
     QGraphicsScene scene;
     scene.addItem(chart);
     const QRectF area(QPointF(0, 0), target.size());

@@ -72,6 +72,9 @@ QByteArray renderChart(QChart* chart, const QString& format, QSize size);
 // A chart drawn on a white background into target of painter (a clip's plots beside its
 // canvas); the same layout as renderChart at target's size.
 void paintChart(QChart* chart, QPainter& painter, const QRectF& target);
+// The width a legend along the bottom takes in one row: its labels, their markers and the
+// gaps, and the chart's and the legend's margins.
+qreal legendRowWidth(const QChart* chart);
 
 // Gives a finished chart the app's appearance (ui/canvas/Appearance.h: high contrast, line and
 // text scales); nothing with the default appearance, which the command line keeps.

@@ -77,17 +77,12 @@ void fitLegend(QChartView* view, QLabel* compact) {
         if (compact) compact->hide();
         return;
     }
-    const QFontMetricsF metrics(legend->font());
-    qreal row = 0.0;
     QStringList entries;
     for (QLegendMarker* marker : legend->markers()) {
         if (!marker->series() || marker->series()->property(kNoLegend).toBool()) continue;
-        // Label, marker (a line 1.5 font heights long) and the gaps around them.
-        row += metrics.horizontalAdvance(marker->label()) + 4.0 * metrics.height();
         entries << legendEntry(marker);
     }
-    const qreal margins = 4.0 * metrics.height();  // the chart's and the legend's own
-    const bool fits = !compact || row + margins <= view->width();
+    const bool fits = !compact || legendRowWidth(chart) <= view->width();
     legend->setAlignment(Qt::AlignBottom);
     legend->setVisible(fits);
     chart->setProperty(kCompactLegend, !fits);
