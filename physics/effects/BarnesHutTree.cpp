@@ -1,5 +1,7 @@
 #include "physics/effects/BarnesHutTree.h"
 
+#include "physics/core/WorkerPool.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -156,10 +158,21 @@ void BarnesHutTree::walk(int s, Far&& far, Near&& near) const {
     }
 }
 
-void BarnesHutTree::addForces(double G, double softening2, double* force) const {
+void BarnesHutTree::addForces(double G, double softening2, double* force, WorkerPool* pool) const {
     const int count = static_cast<int>(x_.size());
     if (nodes_.empty()) return;
-    for (int s = 0; s < count; ++s) {
+    if (pool) {
+        pool->parallelFor(count, kWalkGrain, [&](int begin, int end, int) {
+            addForcesOf(begin, end, G, softening2, force);
+        });
+    } else {
+        addForcesOf(0, count, G, softening2, force);
+    }
+}
+
+void BarnesHutTree::addForcesOf(int first, int last, double G, double softening2,
+                                double* force) const {
+    for (int s = first; s < last; ++s) {
         // −a/G: Σ M·r/(‖r‖² + ε²)^{3/2} with r = p_s − (the cell or body), and the cells'
         // quadrupole terms.
         double ax = 0.0, ay = 0.0;

@@ -31,6 +31,8 @@
 
 namespace phasebox {
 
+class WorkerPool;
+
 class BarnesHutTree {
 public:
     // Builds the tree over `count` bodies: positions interleaved (x₀, y₀, x₁, y₁, …) as in the
@@ -40,8 +42,12 @@ public:
     bool build(const double* positions, const double* massPerDof, int count, double theta);
 
     // force[2i, 2i+1] += −G·m_i·Σ_j m_j·(p_i − p_j)/(‖p_i − p_j‖² + ε²)^{3/2}, the sum taken over
-    // the tree (cells far enough away as one body at their centre of mass).
-    void addForces(double G, double softening2, double* force) const;
+    // the tree (cells far enough away as one body at their centre of mass). Each body's walk is
+    // its own and writes only its own force, so pool's workers share the bodies in chunks of
+    // kWalkGrain with the same bits for any number of them.
+    void addForces(double G, double softening2, double* force, WorkerPool* pool = nullptr) const;
+    // Bodies per shared chunk of walks: a walk costs microseconds, a chunk hundreds of them.
+    static constexpr int kWalkGrain = 256;
 
     // −½·G·Σ_i m_i·Σ_j m_j/√(‖p_i − p_j‖² + ε²) over the same walk: each pair is seen from both
     // ends and halved.
@@ -66,6 +72,8 @@ private:
     };
 
     void buildNode(int node, int begin, int end, int level, double x0, double y0, double size);
+    // addForces() for the bodies first … last − 1 in sorted order.
+    void addForcesOf(int first, int last, double G, double softening2, double* force) const;
     // Calls visit(node) for every cell taken whole and leaf(begin, end) for every leaf that
     // has to be summed directly, for the body at sorted index s.
     template <typename Far, typename Near>

@@ -24,11 +24,16 @@ struct RigidBody;
 // themselves for the few effects that need a property the state does not hold (a disk's radius
 // for buoyancy, a charge for Coulomb, a pinned particle's fixed position). Such an effect copies
 // what it needs into arrays of its own in bind(), so the per-step loops stay on flat arrays.
+class WorkerPool;
+
 struct EffectWorldView {
     const StateLayout* layout = nullptr;
     const Vec* mass = nullptr;  // per dof: m, m for particles; m, m, I for rigid bodies
     const std::vector<Particle>* particles = nullptr;  // every particle, with its dof (−1: pinned)
     const std::vector<RigidBody>* rigidBodies = nullptr;  // every rigid body, its dof (−1: static)
+    // The world's threads, for an effect's large loops (null: the calling thread alone); an
+    // effect shares only loops whose results do not depend on the number of workers.
+    WorkerPool* pool = nullptr;
 };
 
 class Effect {

@@ -38,7 +38,7 @@ double NewtonianGravityEffect::addForces(double, const Vec& q, const Vec&, Vec& 
     if (tree) {
         const int n = view_.layout->dynamicParticles;
         if (tree_.build(q.data(), view_.mass->data(), n, openingAngle_)) {
-            tree_.addForces(G_, softening2_, force.data());
+            tree_.addForces(G_, softening2_, force.data(), view_.pool);
         } else {
             // A non-finite position: the forces are not finite either, which the world reports
             // as a divergence (the tree cannot sort such a body into a cell).

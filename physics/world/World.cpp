@@ -217,7 +217,8 @@ void World::rebuildSpringEffect() {
 }
 
 void World::bindEffects() {
-    const EffectWorldView view{&layout_, &mass_, &bodies_.particles, &bodies_.rigidBodies};
+    const EffectWorldView view{&layout_, &mass_, &bodies_.particles, &bodies_.rigidBodies,
+                               pool_.get()};
     for (auto& effect : effects_) effect->bind(view);
     if (penalty_) penalty_->bind(view);
     sortEffectsByChannel();

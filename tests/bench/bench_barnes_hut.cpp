@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 namespace {
@@ -55,6 +56,12 @@ int main(int argc, char** argv) {
     std::vector<int> sizes = {5000, 20000};
     if (options.quick) sizes.resize(1);
     std::vector<Row> rows;
+    struct WorkerRow {
+        int bodies;
+        double one, two;
+        bool same;
+    };
+    std::vector<WorkerRow> workerRows;
     for (const int n : sizes) {
         auto world = buildWorld(scenes::clusteredBodies(n)).world;
         auto& gravity =
@@ -83,6 +90,15 @@ int main(int argc, char** argv) {
             row.potential = std::abs(world->potentialEnergy() / directPotential - 1.0);
             rows.push_back(row);
         }
+        // The tree's walks shared by two workers (the same bits as one: BarnesHutTree::addForces).
+        gravity.setOpeningAngle(0.5);
+        Eigen::VectorXd one(world->dimension()), two(world->dimension());
+        world->setWorkers(1);
+        const double oneSeconds = timeForces(*world, repeat, one);
+        world->setWorkers(2);
+        const double twoSeconds = timeForces(*world, repeat, two);
+        const bool same = std::memcmp(one.data(), two.data(), sizeof(double) * one.size()) == 0;
+        workerRows.push_back({n, oneSeconds, twoSeconds, same});
     }
     FILE* table = options.json ? stderr : stdout;
     std::fprintf(table, "%7s %5s %12s %12s %9s %10s %10s %10s %10s\n", "bodies", "theta", "tree ms",
@@ -91,6 +107,11 @@ int main(int argc, char** argv) {
         std::fprintf(table, "%7d %5.1f %12.2f %12.2f %9.1f %10.2e %10.2e %10.2e %10.2e\n", r.bodies,
                      r.theta, 1e3 * r.treeSeconds, 1e3 * r.directSeconds,
                      r.directSeconds / r.treeSeconds, r.median, r.p99, r.max, r.potential);
+    for (const WorkerRow& w : workerRows)
+        std::fprintf(table,
+                     "%7d bodies, theta 0.5: tree forces %.2f ms on 1 worker, %.2f ms on 2 "
+                     "(%.2fx), the same bits: %s\n",
+                     w.bodies, 1e3 * w.one, 1e3 * w.two, w.two / w.one, w.same ? "yes" : "NO");
     if (options.json) {
         Json json;
         json.beginObject();

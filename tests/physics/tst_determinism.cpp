@@ -188,13 +188,24 @@ private slots:
     void largePyramidIsTheSameForAnyNumberOfWorkers() {
         // 5,050 boxes: the contact stage's loops run in many chunks, shared when there are
         // workers to share them.
-        const SceneDesc desc = scenes::pyramid(100);
-        constexpr int kPyramidSteps = 6;
+        sameForAnyNumberOfWorkers(scenes::pyramid(100), 6);
+    }
+
+    void treeGravityIsTheSameForAnyNumberOfWorkers() {
+        // 2,000 bodies in clusters: mutual gravity by the Barnes–Hut tree, whose walks the
+        // workers share in chunks of bodies.
+        sameForAnyNumberOfWorkers(scenes::clusteredBodies(2000), 5);
+    }
+
+private:
+    // The state after `steps` steps at 1, 2 and 4 workers, to the bit; the loops are shared
+    // whenever there is more than one worker.
+    static void sameForAnyNumberOfWorkers(const SceneDesc& desc, int steps) {
         std::vector<std::uint64_t> reference;
         for (int workers : {1, 2, 4}) {
             auto world = build(desc);
             world->setWorkers(workers);
-            for (int k = 0; k < kPyramidSteps; ++k) QVERIFY(world->step());
+            for (int k = 0; k < steps; ++k) QVERIFY(world->step());
             QCOMPARE(world->workerPool().sharedLoops() > 0, workers > 1);
             const std::vector<std::uint64_t> bits = testing::stateBits(*world);
             if (reference.empty())
