@@ -92,13 +92,19 @@ double largestMove(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
 // The chain-bridge example with air drag (so that it comes to rest within seconds) and its
 // crate raised to 8 m: the bridge starts at rest in its catenary and falls asleep before the
 // crate lands on it.
-SceneDesc dampedBridge(bool sleep) {
-    SceneDesc s = load(QStringLiteral("chain-bridge.phasebox.json"));
+// A library example with air drag that brings it to rest within seconds, sleeping or not.
+SceneDesc withAirDrag(const QString& name, bool sleep) {
+    SceneDesc s = load(name);
     s.simulation.sleep = sleep;
     DragDesc drag;
     drag.linear = 2.0;
     drag.angular = 0.5;
     s.effects.drag = drag;
+    return s;
+}
+
+SceneDesc dampedBridge(bool sleep) {
+    SceneDesc s = withAirDrag(QStringLiteral("chain-bridge.phasebox.json"), sleep);
     for (BoxDesc& b : s.boxes)
         if (b.id == "crate") b.position = {0.4, 8.0};
     return s;
@@ -218,13 +224,7 @@ private slots:
     // The ragdoll example with the bridge's air drag: tumbled down the stairs, it comes to rest
     // at the wall and falls asleep whole, its nine hinges (with limits) out of the solver.
     void ragdollAtTheWallSleeps() {
-        SceneDesc s = load(QStringLiteral("ragdoll.phasebox.json"));
-        s.simulation.sleep = true;
-        DragDesc drag;
-        drag.linear = 2.0;
-        drag.angular = 0.5;
-        s.effects.drag = drag;
-        auto w = build(s);
+        auto w = build(withAirDrag(QStringLiteral("ragdoll.phasebox.json"), true));
         const int limbs = dynamicBodies(*w);
         QCOMPARE(limbs, 10);
         while (w->sleepingBodies() < limbs && w->time() < 30.0) QVERIFY(w->step());

@@ -151,18 +151,7 @@ private slots:
         QVERIFY(w.controller().advance(3.0));
         auto* dock = w.findChild<QDockWidget*>(QStringLiteral("instrumentsDock"));
         dock->raise();
-        auto* scroll = w.findChild<QScrollArea*>(QStringLiteral("instrumentsScroll"));
-        QVERIFY(scroll);
-        using Tab = ui::InstrumentsPanel::Tab;
-        for (const Tab tab : {Tab::Readouts, Tab::Graphs, Tab::Timer, Tab::Table}) {
-            instrumentsPanelOf(w)->showTab(tab);
-            w.refreshNow();
-            QApplication::processEvents();
-            QVERIFY2(scroll->horizontalScrollBar()->maximum() == 0,
-                     qPrintable(QStringLiteral("tab %1: %2 px wider than the dock")
-                                    .arg(int(tab))
-                                    .arg(scroll->horizontalScrollBar()->maximum())));
-        }
+        everyInstrumentsPageFits(w, QString());
     }
 
     // Raised before the window is first shown (`phasebox --probe`) or from the menu after, the
@@ -182,21 +171,29 @@ private slots:
             QVERIFY(instrumentsOf(w)->plotProbe(QStringLiteral("light.vy"),
                                                 QStringLiteral("distance(light,heavy)")));
             QVERIFY(w.controller().advance(1.0));
-            auto* scroll = w.findChild<QScrollArea*>(QStringLiteral("instrumentsScroll"));
-            QVERIFY(scroll && scroll->isVisible());
-            using Tab = ui::InstrumentsPanel::Tab;
-            for (const Tab tab : {Tab::Readouts, Tab::Graphs, Tab::Timer, Tab::Table}) {
-                instrumentsPanelOf(w)->showTab(tab);
-                w.refreshNow();
-                QApplication::processEvents();
-                QVERIFY2(scroll->horizontalScrollBar()->maximum() == 0,
-                         qPrintable(QStringLiteral("%1 showing, tab %2: %3 px wider than the dock")
-                                        .arg(beforeShowing ? "before" : "after")
-                                        .arg(int(tab))
-                                        .arg(scroll->horizontalScrollBar()->maximum())));
-            }
+            everyInstrumentsPageFits(w, beforeShowing ? QStringLiteral("before showing, ")
+                                                      : QStringLiteral("after showing, "));
             QVERIFY2(canvasOf(w)->width() >= 1024 / 2 - 2,
                      qPrintable(QString::number(canvasOf(w)->width())));
+        }
+    }
+
+private:
+    // Every page of the Instruments dock, shown in turn, fits the dock's width (no horizontal
+    // scroll bar); label says where, in a failure's message.
+    static void everyInstrumentsPageFits(MainWindow& w, const QString& label) {
+        auto* scroll = w.findChild<QScrollArea*>(QStringLiteral("instrumentsScroll"));
+        QVERIFY(scroll && scroll->isVisible());
+        using Tab = ui::InstrumentsPanel::Tab;
+        for (const Tab tab : {Tab::Readouts, Tab::Graphs, Tab::Timer, Tab::Table}) {
+            instrumentsPanelOf(w)->showTab(tab);
+            w.refreshNow();
+            QApplication::processEvents();
+            QVERIFY2(scroll->horizontalScrollBar()->maximum() == 0,
+                     qPrintable(QStringLiteral("%1tab %2: %3 px wider than the dock")
+                                    .arg(label)
+                                    .arg(int(tab))
+                                    .arg(scroll->horizontalScrollBar()->maximum())));
         }
     }
 };
