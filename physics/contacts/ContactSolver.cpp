@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -22,40 +23,74 @@ using RowSetup = ContactSolver::RowSetup;
 using BodyMotion = ContactSolver::BodyMotion;
 using PhaseTerms = ContactSolver::PhaseTerms;
 
-// The wide sweep where AVX2 is there (chosen at run time; the build is generic x86-64). No
-// fused multiply-add: each lane does the scalar row's operations (solveRow) in the same order.
+// The wide sweep where AVX2 is there (chosen at run time; the build is generic x86-64), on
+// AVX-512 where that is there too. No fused multiply-add: each lane does the scalar row's
+// operations (solveRow) in the same order, so every instruction set gives the same bits.
+constexpr int kLanes = ContactSolver::kLanes;
 #ifdef PHASEBOX_WIDE_CONTACTS
 #pragma GCC push_options
 #pragma GCC target("avx2")
 namespace avx2 {
-typedef double Lanes __attribute__((vector_size(32)));
+// Four lanes at a time: GCC's eight-lane vectors split in two on AVX2 were 1.7 times slower.
+constexpr int kWidth = 4;
+typedef double Lanes __attribute__((vector_size(8 * kWidth)));
+typedef long long Mask __attribute__((vector_size(8 * kWidth)));
 #include "physics/contacts/ContactWideLoop.inc"
 }  // namespace avx2
+#pragma GCC pop_options
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx512dq,avx512vl")
+// AVX-512 brings fused multiply-add, which GCC would otherwise contract a·b + c into.
+#pragma GCC optimize("fp-contract=off")
+namespace avx512 {
+constexpr int kWidth = kLanes;
+typedef double Lanes __attribute__((vector_size(8 * kWidth)));
+typedef long long Mask __attribute__((vector_size(8 * kWidth)));
+#include "physics/contacts/ContactWideLoop.inc"
+}  // namespace avx512
 #pragma GCC pop_options
 #endif
 
 using WideLoop = void (*)(WideRow*, int, ContactSolverBody*, int);
 using WideMeasure = void (*)(WideRow*, int, const BodyMotion*);
 using WidePrepare = void (*)(WideRow*, int, const RowSetup*, const BodyMotion*, const PhaseTerms&);
-// Without AVX2 the rows are solved one by one in the same colour order (the portable build of
-// the four-lane loop, on SSE2 pairs, was slower than that).
-WideLoop chooseWideLoop(bool warm) {
+// The instruction set the wide kernels use: 2 AVX-512, 1 AVX2, 0 none. Without AVX2 the rows are
+// solved one by one in the same colour order (the portable build of the wide loop, on SSE2
+// pairs, was slower than that).
+int wideLevel() {
 #ifdef PHASEBOX_WIDE_CONTACTS
-    if (__builtin_cpu_supports("avx2")) return warm ? avx2::warmWideLoop : avx2::solveWideLoop;
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+        __builtin_cpu_supports("avx512vl"))
+        return 2;
+    if (__builtin_cpu_supports("avx2")) return 1;
 #endif
-    (void)warm;
-    return nullptr;
+    return 0;
 }
-const WideLoop wideLoop = chooseWideLoop(false);
-const WideLoop wideWarm = chooseWideLoop(true);
-// The lanes' separations and phase terms (with the wide sweep only).
+// The kernels in use (all null: the rows one by one); ContactSolver::useInstructions() sets them.
+struct WideKernels {
+    WideLoop solve = nullptr, warm = nullptr;
+    WideMeasure measure = nullptr;
+    WidePrepare prepare = nullptr;
+};
+WideKernels kernelsFor(int level) {
 #ifdef PHASEBOX_WIDE_CONTACTS
-const WideMeasure wideMeasure = avx2::measureWideLoop;
-const WidePrepare widePrepare = avx2::prepareWideLoop;
-#else
-const WideMeasure wideMeasure = nullptr;
-const WidePrepare widePrepare = nullptr;
+    if (level >= 2)
+        return {avx512::solveWideLoop, avx512::warmWideLoop, avx512::measureWideLoop,
+                avx512::prepareWideLoop};
+    if (level == 1)
+        return {avx2::solveWideLoop, avx2::warmWideLoop, avx2::measureWideLoop,
+                avx2::prepareWideLoop};
 #endif
+    (void)level;
+    return {};
+}
+// PHASEBOX_CONTACT_INSTRUCTIONS (0, 1 or 2) caps the level, for benchmarks.
+int startLevel() {
+    const char* cap = std::getenv("PHASEBOX_CONTACT_INSTRUCTIONS");
+    const int best = wideLevel();
+    return cap && *cap >= '0' && *cap <= '2' && cap[1] == 0 ? std::min(best, *cap - '0') : best;
+}
+WideKernels wide = kernelsFor(startLevel());
 }  // namespace
 
 namespace {
@@ -85,6 +120,16 @@ double sizeStiffness(double deepOverlap) {
 // Soft constraint coefficients (Box2D v3's b2MakeSoft): a spring-damper of frequency ω and
 // damping ratio ζ, integrated implicitly over h, expressed as a bias rate and the scales of
 // the effective mass and of the accumulated impulse.
+int ContactSolver::instructions() {
+    return wide.solve == nullptr ? 0 : wide.solve == kernelsFor(1).solve ? 1 : 2;
+}
+
+bool ContactSolver::useInstructions(int level) {
+    if (level < 0 || level > wideLevel()) return false;
+    wide = kernelsFor(level);
+    return true;
+}
+
 ContactSolver::Softness ContactSolver::makeSoft(double hertz, double zeta, double h) {
     const double omega = 2.0 * std::numbers::pi * hertz;
     const double a1 = 2.0 * zeta + h * omega;
@@ -196,9 +241,9 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     for (auto* perPoint : {&shifted_, &bounces_}) perPoint->reserve(2 * constraints);
     separation_.reserve(2 * constraints);
     // Each colour's last wide row may be partly empty.
-    wide_.reserve(constraints / 4 + kColours);
-    order_.reserve(constraints + 4 * kColours);
-    colourBits_.reserve(kColours * ((bodies + 63) / 64));
+    wide_.reserve(constraints / kLanes + kColours);
+    order_.reserve(constraints + kLanes * kColours);
+    colourMask_.reserve(bodies + 1);
     colourCount_.reserve(kColours + 1);
     colourWide_.reserve(kColours + 1);
 }
@@ -270,7 +315,7 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
     // What does not change within the step, once: the rows' masses, the block's K and its
     // conditioning, the softness (each contact's stiffness multiplier: see prepare()).
     const int world = static_cast<int>(bodies_.size());
-    lanesHold_ = wideLoop != nullptr;
+    lanesHold_ = wide.solve != nullptr;
     rows_.resize(constraints_.size());
     setup_.resize(constraints_.size());
     separation_.resize(2 * constraints_.size());
@@ -309,8 +354,9 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
     if (measure) updateMotion();
     if (lanesHold_) {
         forChunks(wide_.size(), kWideLightGrain, [&](std::size_t first, std::size_t end) {
-            widePrepare(wide_.data() + first, static_cast<int>(end - first),
-                        wideSetup_.data() + 4 * first, measure ? motion_.data() : nullptr, terms);
+            wide.prepare(wide_.data() + first, static_cast<int>(end - first),
+                         wideSetup_.data() + kLanes * first, measure ? motion_.data() : nullptr,
+                         terms);
         });
         for (const int i : overflow_) prepareRow(static_cast<std::size_t>(i), terms, measure);
         return;
@@ -406,7 +452,7 @@ void ContactSolver::updateSeparations() {
     updateMotion();
     if (lanesHold_) {
         forChunks(wide_.size(), kWideLightGrain, [&](std::size_t first, std::size_t end) {
-            wideMeasure(wide_.data() + first, static_cast<int>(end - first), motion_.data());
+            wide.measure(wide_.data() + first, static_cast<int>(end - first), motion_.data());
         });
         for (const int i : overflow_) rowSeparations(static_cast<std::size_t>(i));
         return;
@@ -442,17 +488,18 @@ void ContactSolver::warmStart() {
     // rows no colour took.
     const int world = static_cast<int>(bodies_.size());
     for (int colour = 0; colour < kColours; ++colour) {
-        if (wideWarm) {
+        if (wide.warm) {
             const std::size_t first = colourWide_[colour];
             const std::size_t count = colourWide_[colour + 1] - first;
             forChunks(count, kWideLightGrain, [&](std::size_t from, std::size_t end) {
-                wideWarm(wide_.data() + first + from, static_cast<int>(end - from), state_.data(),
-                         world);
+                wide.warm(wide_.data() + first + from, static_cast<int>(end - from), state_.data(),
+                          world);
             });
             continue;
         }
-        const std::size_t first = 4 * static_cast<std::size_t>(colourWide_[colour]);
-        const std::size_t count = 4 * static_cast<std::size_t>(colourWide_[colour + 1]) - first;
+        const std::size_t first = kLanes * static_cast<std::size_t>(colourWide_[colour]);
+        const std::size_t count =
+            kLanes * static_cast<std::size_t>(colourWide_[colour + 1]) - first;
         forChunks(count, kRowGrain, [&](std::size_t from, std::size_t end) {
             for (std::size_t slot = first + from; slot < first + end; ++slot)
                 if (order_[slot] >= 0) warmRow(static_cast<std::size_t>(order_[slot]));
@@ -513,14 +560,14 @@ void ContactSolver::solve() {
         const std::size_t first = colourWide_[colour];
         const std::size_t count = colourWide_[colour + 1] - first;
         if (count == 0) continue;
-        if (wideLoop) {
+        if (wide.solve) {
             forChunks(count, kWideGrain, [&](std::size_t from, std::size_t end) {
-                wideLoop(wide_.data() + first + from, static_cast<int>(end - from), state_.data(),
-                         world);
+                wide.solve(wide_.data() + first + from, static_cast<int>(end - from), state_.data(),
+                           world);
             });
         } else {
-            forChunks(4 * count, 4 * kWideGrain, [&](std::size_t from, std::size_t end) {
-                for (std::size_t slot = 4 * first + from; slot < 4 * first + end; ++slot)
+            forChunks(kLanes * count, kLanes * kWideGrain, [&](std::size_t from, std::size_t end) {
+                for (std::size_t slot = kLanes * first + from; slot < kLanes * first + end; ++slot)
                     if (order_[slot] >= 0) solveRow(rows_[order_[slot]]);
             });
         }
@@ -738,8 +785,8 @@ void ContactSolver::unpackImpulses() {
             const int at = slot_[i];
             if (at < 0) continue;
             Row& c = rows_[i];
-            const WideRow& w = wide_[at / 4];
-            const int l = at % 4;
+            const WideRow& w = wide_[at / kLanes];
+            const int l = at % kLanes;
             for (int k = 0; k < c.pointCount; ++k) {
                 c.p[k].normalImpulse = w.p[k].normalImpulse[l];
                 c.p[k].tangentImpulse = w.p[k].tangentImpulse[l];

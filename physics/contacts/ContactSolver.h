@@ -20,8 +20,8 @@
 // - Warm starting: accumulated impulses carry over from step to step when a contact's
 //   pair and feature ids persist.
 // - Order: the constraints are graph-coloured each step (no two in a colour share a dynamic
-//   body) and swept colour by colour, four at a time with AVX2 where the CPU has it, one by
-//   one in the same order otherwise (bit-identical either way).
+//   body) and swept colour by colour, eight at a time with AVX-512 where the CPU has it, four
+//   at a time with AVX2, one by one in the same order otherwise (bit-identical every way).
 
 #include "physics/contacts/Geometry.h"
 #include "physics/core/Types.h"
@@ -216,25 +216,36 @@ public:
         double vx, vy, w;
         double invMass, invInertia;
     };
-    // Four rows of one graph colour side by side (no two share a dynamic body), lane by lane,
+    // kLanes rows of one graph colour side by side (no two share a dynamic body), lane by lane,
     // for the wide kernels (ContactWideLoop.inc). Unused lanes join the static world to itself
-    // with zero masses.
-    struct alignas(32) WideRow {
-        int a[4], b[4];
-        int points[4];  // each lane's point count (0: an unused lane)
-        double nx[4], ny[4], friction[4], mA[4], iA[4], mB[4], iB[4];
-        double k11[4], k12[4], k22[4];
-        double a12[4], i11[4], i12[4], i22[4], invA11[4], invA22[4], block[4];  // the phase's
+    // with zero masses. Eight lanes: each lane's solve is a long chain of dependent operations,
+    // so more independent lanes per pass keep the processor's units busy (AVX-512 does eight at
+    // once; AVX2 does them as two interleaved halves).
+    static constexpr int kLanes = 8;
+    struct alignas(64) WideRow {
+        int a[kLanes], b[kLanes];
+        int points[kLanes];  // each lane's point count (0: an unused lane)
+        double nx[kLanes], ny[kLanes], friction[kLanes], mA[kLanes], iA[kLanes], mB[kLanes],
+            iB[kLanes];
+        double k11[kLanes], k12[kLanes], k22[kLanes];
+        double a12[kLanes], i11[kLanes], i12[kLanes], i22[kLanes], invA11[kLanes], invA22[kLanes],
+            block[kLanes];  // the phase's
         struct Point {
-            double rAx[4], rAy[4], rBx[4], rBy[4];
-            double bias[4], effectiveMass[4], impulseScale[4];  // the phase's
-            double tangentMass[4], normalImpulse[4], tangentImpulse[4];
-            double heldNormal[4], heldTangent[4];  // what the held force gives per sub-step
-            double baseSeparation[4];
-            double separation[4];  // where the solver's path is now (separationOf())
+            double rAx[kLanes], rAy[kLanes], rBx[kLanes], rBy[kLanes];
+            double bias[kLanes], effectiveMass[kLanes], impulseScale[kLanes];  // the phase's
+            double tangentMass[kLanes], normalImpulse[kLanes], tangentImpulse[kLanes];
+            double heldNormal[kLanes], heldTangent[kLanes];  // the held force per sub-step
+            double baseSeparation[kLanes];
+            double separation[kLanes];  // where the solver's path is now (separationOf())
         } p[2];
     };
     static constexpr int kColours = 24;
+    // The instruction set of the wide kernels: 0 none (the rows one by one, in the same order), 1
+    // AVX2, 2 AVX-512; the best the processor has unless set. Every level gives the same bits (the
+    // tests run each). useInstructions() is false for a level the processor lacks; it is for tests
+    // and benchmarks, between steps, on one thread.
+    static int instructions();
+    static bool useInstructions(int level);
     // Where a body is now relative to where its contacts were found: Δp and R(Δθ), once per
     // solver phase.
     struct BodyMotion {
@@ -298,10 +309,10 @@ private:
     // with serial work between them, cost more in hand-offs than they save.
     static constexpr std::size_t kRowGrain = 4096;
     static constexpr std::size_t kBodyGrain = 4096;
-    static constexpr std::size_t kWideGrain = 256;
+    static constexpr std::size_t kWideGrain = 1024 / kLanes;  // 1,024 rows
     // Wide rows per chunk of the lighter wide passes (warm start, separations, phase terms): as
     // many rows as kRowGrain.
-    static constexpr std::size_t kWideLightGrain = kRowGrain / 4;
+    static constexpr std::size_t kWideLightGrain = kRowGrain / kLanes;
     template <class F>
     void forChunks(std::size_t count, std::size_t grain, const F& fn);
     WorkerPool* pool_ = nullptr;
@@ -329,13 +340,13 @@ private:
     // row (with the wide sweep), else in separation_.
     double separationOf(std::size_t i, int k) const {
         const int at = slot_[i];
-        return at >= 0 && lanesHold_ ? wide_[at / 4].p[k].separation[at % 4]
+        return at >= 0 && lanesHold_ ? wide_[at / kLanes].p[k].separation[at % kLanes]
                                      : separation_[2 * i + k];
     }
     // Row i's point k's effective mass in the last phase (0: inactive), likewise.
     double effectiveMassOf(std::size_t i, int k) const {
         const int at = slot_[i];
-        return at >= 0 && lanesHold_ ? wide_[at / 4].p[k].effectiveMass[at % 4]
+        return at >= 0 && lanesHold_ ? wide_[at / kLanes].p[k].effectiveMass[at % kLanes]
                                      : rows_[i].p[k].effectiveMass;
     }
     bool lanesHold_ = false;  // the wide sweep is there: the lanes hold the coloured rows
@@ -398,13 +409,13 @@ private:
     std::vector<BodyMotion> motion_;   // likewise
     std::vector<Row> rows_;            // per constraint, in constraints_'s order
     std::vector<RowSetup> setup_;      // likewise
-    std::vector<RowSetup> wideSetup_;  // per wide slot (4·wide row + lane), its row's
+    std::vector<RowSetup> wideSetup_;  // per wide slot (kLanes·wide row + lane), its row's
     std::vector<double> separation_;   // per row point (2 per row), where the path is now
     std::vector<WideRow> wide_;        // the coloured rows, colour by colour
-    std::vector<int> slot_;            // per row: 4·wide row + lane, or −1 (solved alone)
+    std::vector<int> slot_;            // per row: kLanes·wide row + lane, or −1 (solved alone)
     std::vector<int> order_;           // per wide slot: its row, or −1 (the sweep order)
     std::vector<int> overflow_;        // rows no colour could take, solved after the wide ones
-    std::vector<std::uint64_t> colourBits_;  // per colour, a bit per body: taken
+    std::vector<std::uint32_t> colourMask_;  // per body (+ the world): a bit per colour taken
     std::vector<int> colourCount_;           // rows per colour, then the first wide row
     std::vector<int> colourWide_;            // per colour its first wide row, then the end
     // A row with restitution, with what its bounce passes read (fixed for the step): the

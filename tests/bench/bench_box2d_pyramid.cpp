@@ -28,6 +28,7 @@
 #include "AllocationCounter.h"
 #include "BenchCommon.h"
 
+#include "physics/contacts/ContactSolver.h"
 #include "physics/contacts/ContactStage.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneDesc.h"
@@ -365,11 +366,16 @@ PyramidResult measure(int rows, int steps, int repeat) {
 
 // ---- reporting ----------------------------------------------------------------------------
 
+const char* instructionSetName() {
+    static const char* const names[] = {"no SIMD (rows one by one)", "AVX2", "AVX-512"};
+    return names[ContactSolver::instructions()];
+}
+
 void printTable(std::FILE* out, const std::vector<PyramidResult>& results, int steps, int repeat) {
     std::fprintf(out,
                  "bench_box2d_pyramid: scenes::pyramid(rows), dt = 1/60, after %d warm-up "
-                 "steps; %d steps x %d repeats (median)\n",
-                 kWarmup, steps, repeat);
+                 "steps; %d steps x %d repeats (median); Phasebox's contact rows on %s\n",
+                 kWarmup, steps, repeat, instructionSetName());
     for (const PyramidResult& r : results) {
         std::fprintf(out, "\n%d rows (%d boxes)%32s%12s%12s%12s\n", r.rows, r.boxes, "ms/step",
                      "contacts", "points", "allocs/step");
@@ -423,6 +429,7 @@ std::string toJson(const std::vector<PyramidResult>& results, int steps, int rep
     json.value("warmup_steps", kWarmup);
     json.value("steps", steps);
     json.value("repeat", repeat);
+    json.value("contact_instructions", instructionSetName());
     json.value("statistic", "median");
     json.value("unit", "ms_per_step");
     json.beginArray("pyramids");

@@ -8,12 +8,15 @@
 //   - a hash pinned in this file, so that a change of the bits between builds or commits is
 //     seen too (tst_contacts' runsAreBitIdentical only compares two runs of one process);
 //   - at 1, 2 and 4 workers (World::setWorkers, CONTRACT §4), and the 100-row pyramid, whose
-//     loops are large enough to be shared, a few steps at each.
+//     loops are large enough to be shared, a few steps at each;
+//   - with each instruction set of the contact rows this processor has (rows one by one, AVX2,
+//     AVX-512: ContactSolver::useInstructions), the 100-row pyramid among them.
 //
 // A pinned hash changes whenever the physics changes on purpose (a new contact rule, another
 // order of force accumulation): the failure message prints the new value to paste in. A change
 // that nobody meant is exactly what this test is for.
 
+#include "physics/contacts/ContactSolver.h"
 #include "physics/core/WorkerPool.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
@@ -175,6 +178,15 @@ private slots:
             QCOMPARE(hex(hashOf(*shared)), hex(reference));
         }
 
+        // With each instruction set of the contact rows.
+        forEachInstructionSet([&](int level) {
+            auto world = build(desc);
+            for (int k = 0; k < kSteps; ++k) QVERIFY(world->step());
+            QVERIFY2(
+                hashOf(*world) == reference,
+                qPrintable(QStringLiteral("contact instructions %1: another state").arg(level)));
+        });
+
         // And the bits this build gives are the bits every build gave.
         if (std::uint64_t(pinned) != reference)
             QFAIL(qPrintable(QStringLiteral("%1 with %2 after %3 steps: state hash %4, pinned %5. "
@@ -191,6 +203,31 @@ private slots:
         sameForAnyNumberOfWorkers(scenes::pyramid(100), 6);
     }
 
+    void largePyramidIsTheSameOnEveryInstructionSet() {
+        // The wide rows of 5,050 boxes, on two workers, with each instruction set against the
+        // rows one by one.
+        std::vector<std::uint64_t> reference;
+        int sets = 0;
+        forEachInstructionSet([&](int level) {
+            auto world = build(scenes::pyramid(100));
+            world->setWorkers(2);
+            for (int k = 0; k < 6; ++k) QVERIFY(world->step());
+            const std::vector<std::uint64_t> bits = testing::stateBits(*world);
+            ++sets;
+            if (reference.empty())
+                reference = bits;
+            else
+                QVERIFY2(bits == reference,
+                         qPrintable(
+                             QStringLiteral("contact instructions %1: another state").arg(level)));
+        });
+        // Every x86-64 processor this is built for since 2015 has AVX2: the rows one by one and
+        // at least one wide set were compared.
+#if defined(__x86_64__)
+        QVERIFY(sets >= 2);
+#endif
+    }
+
     void treeGravityIsTheSameForAnyNumberOfWorkers() {
         // 2,000 bodies in clusters: mutual gravity by the Barnes–Hut tree, whose walks the
         // workers share in chunks of bodies.
@@ -198,6 +235,18 @@ private slots:
     }
 
 private:
+    // fn(level) with the contact rows on each instruction set this processor has, from none up;
+    // then back to the best.
+    template <class F>
+    static void forEachInstructionSet(const F& fn) {
+        const int best = ContactSolver::instructions();
+        for (int level = 0; ContactSolver::useInstructions(level); ++level) {
+            fn(level);
+            if (QTest::currentTestFailed()) break;
+        }
+        ContactSolver::useInstructions(best);
+    }
+
     // The state after `steps` steps at 1, 2 and 4 workers, to the bit; the loops are shared
     // whenever there is more than one worker.
     static void sameForAnyNumberOfWorkers(const SceneDesc& desc, int steps) {
