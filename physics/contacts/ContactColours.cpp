@@ -95,6 +95,10 @@ void ContactSolver::colourRows() {
                     q.rAy[l] = p.rAy;
                     q.rBx[l] = p.rBx;
                     q.rBy[l] = p.rBy;
+                    q.rnA[l] = p.rnA;
+                    q.rnB[l] = p.rnB;
+                    q.rtA[l] = p.rtA;
+                    q.rtB[l] = p.rtB;
                     q.tangentMass[l] = p.tangentMass;
                     q.normalImpulse[l] = p.normalImpulse;
                     q.tangentImpulse[l] = p.tangentImpulse;

@@ -282,6 +282,11 @@ void ContactSolver::buildRow(std::size_t i, double hertz, double zeta, double h,
         r.rAy = p.anchorA.y();
         r.rBx = p.anchorB.x();
         r.rBy = p.anchorB.y();
+        const double tx = row.ny, ty = -row.nx;
+        r.rnA = r.rAx * row.ny - r.rAy * row.nx;
+        r.rnB = r.rBx * row.ny - r.rBy * row.nx;
+        r.rtA = r.rAx * ty - r.rAy * tx;
+        r.rtB = r.rBx * ty - r.rBy * tx;
         separation_[2 * i + k] = r.baseSeparation = p.baseSeparation;
         setup.normalMass[k] = p.normalMass;
         r.tangentMass = p.tangentMass;
@@ -509,6 +514,23 @@ void ContactSolver::warmStart() {
 }
 
 namespace {
+// The solve's arithmetic, shared by the scalar row and (lane by lane, operation for operation)
+// the wide loop (ContactWideLoop.inc): the relative velocity along (dx, dy) at a point whose
+// anchors cross that direction as rA, rB; and an impulse d along it.
+template <class State>
+inline double along(const State& a, const State& b, double dx, double dy, double rA, double rB) {
+    return (dx * (b.vx - a.vx) + dy * (b.vy - a.vy)) + (b.w * rB - a.w * rA);
+}
+template <class State>
+inline void push(State& a, State& b, double d, double dx, double dy, double rA, double rB) {
+    a.vx -= a.invMass * (d * dx);
+    a.vy -= a.invMass * (d * dy);
+    a.w -= a.invInertia * (rA * d);
+    b.vx += b.invMass * (d * dx);
+    b.vy += b.invMass * (d * dy);
+    b.w += b.invInertia * (rB * d);
+}
+
 // The two points of a manifold solved together as a 2×2 linear complementarity problem, as in
 // Box2D 2.4's block solver, with the soft terms added: for each point the converged soft
 // constraint is v_n + bias + compliance·λ = 0 (λ ≥ 0, complementary). Solving the points one
@@ -519,8 +541,9 @@ inline bool solveBlock(Row& c, State& a, State& b) {
     auto& p2 = c.p[1];
     const double k11 = c.k11, k22 = c.k22, k12 = c.k12, a12 = c.a12;
 
-    const double vn1 = relativeVelocity(a, b, p1.rAx, p1.rAy, p1.rBx, p1.rBy, c.nx, c.ny);
-    const double vn2 = relativeVelocity(a, b, p2.rAx, p2.rAy, p2.rBx, p2.rBy, c.nx, c.ny);
+    const double linear = c.nx * (b.vx - a.vx) + c.ny * (b.vy - a.vy);
+    const double vn1 = linear + (b.w * p1.rnB - a.w * p1.rnA);
+    const double vn2 = linear + (b.w * p2.rnB - a.w * p2.rnA);
     const double old1 = p1.normalImpulse, old2 = p2.normalImpulse;
     // w = v_n(λ = 0) + bias: the velocity the points would have without any normal impulse.
     const double w1 = vn1 - (k11 * old1 + k12 * old2) + p1.bias;
@@ -541,11 +564,15 @@ inline bool solveBlock(Row& c, State& a, State& b) {
             }
         }
     }
+    // Both impulses at once: the bodies' velocities change once.
     const double d1 = x1 - old1, d2 = x2 - old2;
-    removeImpulse(a, p1.rAx, p1.rAy, d1 * c.nx, d1 * c.ny);
-    applyImpulse(b, p1.rBx, p1.rBy, d1 * c.nx, d1 * c.ny);
-    removeImpulse(a, p2.rAx, p2.rAy, d2 * c.nx, d2 * c.ny);
-    applyImpulse(b, p2.rBx, p2.rBy, d2 * c.nx, d2 * c.ny);
+    const double sum = d1 + d2;
+    a.vx -= a.invMass * (sum * c.nx);
+    a.vy -= a.invMass * (sum * c.ny);
+    a.w -= a.invInertia * (p1.rnA * d1 + p2.rnA * d2);
+    b.vx += b.invMass * (sum * c.nx);
+    b.vy += b.invMass * (sum * c.ny);
+    b.w += b.invInertia * (p1.rnB * d1 + p2.rnB * d2);
     p1.normalImpulse = x1;
     p2.normalImpulse = x2;
     return true;
@@ -586,28 +613,26 @@ void ContactSolver::solveRow(Row& c) {
             for (int k = 0; k < c.pointCount; ++k) {
                 RowPoint& p = c.p[k];
                 if (p.effectiveMass == 0.0) continue;  // inactive in this phase
-                const double vn = relativeVelocity(a, b, p.rAx, p.rAy, p.rBx, p.rBy, c.nx, c.ny);
+                const double vn = along(a, b, c.nx, c.ny, p.rnA, p.rnB);
                 double impulse =
                     -p.effectiveMass * (vn + p.bias) - p.impulseScale * p.normalImpulse;
                 const double accumulated = std::max(p.normalImpulse + impulse, 0.0);
                 impulse = accumulated - p.normalImpulse;
                 p.normalImpulse = accumulated;
-                removeImpulse(a, p.rAx, p.rAy, impulse * c.nx, impulse * c.ny);
-                applyImpulse(b, p.rBx, p.rBy, impulse * c.nx, impulse * c.ny);
+                push(a, b, impulse, c.nx, c.ny, p.rnA, p.rnB);
             }
         }
         // Coulomb friction, each point bounded by its own normal impulse.
         const double tx = c.ny, ty = -c.nx;
         for (int k = 0; k < c.pointCount; ++k) {
             RowPoint& p = c.p[k];
-            const double vt = relativeVelocity(a, b, p.rAx, p.rAy, p.rBx, p.rBy, tx, ty);
+            const double vt = along(a, b, tx, ty, p.rtA, p.rtB);
             const double limit = c.friction * p.normalImpulse;
             double impulse = -p.tangentMass * vt;
             const double accumulated = std::clamp(p.tangentImpulse + impulse, -limit, limit);
             impulse = accumulated - p.tangentImpulse;
             p.tangentImpulse = accumulated;
-            removeImpulse(a, p.rAx, p.rAy, impulse * tx, impulse * ty);
-            applyImpulse(b, p.rBx, p.rBy, impulse * tx, impulse * ty);
+            push(a, b, impulse, tx, ty, p.rtA, p.rtB);
         }
     }
     if (c.a != world) state_[c.a] = a;

@@ -232,6 +232,7 @@ public:
             block[kLanes];  // the phase's
         struct Point {
             double rAx[kLanes], rAy[kLanes], rBx[kLanes], rBy[kLanes];
+            double rnA[kLanes], rnB[kLanes], rtA[kLanes], rtB[kLanes];         // RowPoint's
             double bias[kLanes], effectiveMass[kLanes], impulseScale[kLanes];  // the phase's
             double tangentMass[kLanes], normalImpulse[kLanes], tangentImpulse[kLanes];
             double heldNormal[kLanes], heldTangent[kLanes];  // the held force per sub-step
@@ -274,9 +275,13 @@ private:
     // or a relax): preparePhase() sets them once per phase, not once per iteration.
     struct RowPoint {
         double rAx, rAy, rBx, rBy;  // anchors (zero on the static side)
-        double bias;                // the phase's bias velocity
-        double effectiveMass;       // normalMass times the phase's mass scale (0: inactive)
-        double impulseScale;        // the phase's impulse scale
+        // The anchors across the normal and the tangent, r × n and r × t (buildRow()): the
+        // solve's relative velocity along n is n·(v_B − v_A) + ω_B·(r_B × n) − ω_A·(r_A × n), and
+        // an impulse λ·n turns a body by I⁻¹·(r × n)·λ.
+        double rnA, rnB, rtA, rtB;
+        double bias;           // the phase's bias velocity
+        double effectiveMass;  // normalMass times the phase's mass scale (0: inactive)
+        double impulseScale;   // the phase's impulse scale
         double tangentMass;
         double normalImpulse, tangentImpulse;
         // Fixed for the step, read by the per-phase passes (updateSeparations, warmStart) with the
