@@ -68,6 +68,7 @@ int wideLevel() {
 }
 // The kernels in use (all null: the rows one by one); ContactSolver::useInstructions() sets them.
 struct WideKernels {
+    int level = 0;  // wideLevel()'s scale
     WideLoop solve = nullptr, warm = nullptr;
     WideMeasure measure = nullptr;
     WidePrepare prepare = nullptr;
@@ -75,10 +76,10 @@ struct WideKernels {
 WideKernels kernelsFor(int level) {
 #ifdef PHASEBOX_WIDE_CONTACTS
     if (level >= 2)
-        return {avx512::solveWideLoop, avx512::warmWideLoop, avx512::measureWideLoop,
+        return {2, avx512::solveWideLoop, avx512::warmWideLoop, avx512::measureWideLoop,
                 avx512::prepareWideLoop};
     if (level == 1)
-        return {avx2::solveWideLoop, avx2::warmWideLoop, avx2::measureWideLoop,
+        return {1, avx2::solveWideLoop, avx2::warmWideLoop, avx2::measureWideLoop,
                 avx2::prepareWideLoop};
 #endif
     (void)level;
@@ -117,11 +118,8 @@ double sizeStiffness(double deepOverlap) {
 }
 }  // namespace
 
-// Soft constraint coefficients (Box2D v3's b2MakeSoft): a spring-damper of frequency ω and
-// damping ratio ζ, integrated implicitly over h, expressed as a bias rate and the scales of
-// the effective mass and of the accumulated impulse.
 int ContactSolver::instructions() {
-    return wide.solve == nullptr ? 0 : wide.solve == kernelsFor(1).solve ? 1 : 2;
+    return wide.level;
 }
 
 bool ContactSolver::useInstructions(int level) {
@@ -130,6 +128,9 @@ bool ContactSolver::useInstructions(int level) {
     return true;
 }
 
+// Soft constraint coefficients (Box2D v3's b2MakeSoft): a spring-damper of frequency ω and
+// damping ratio ζ, integrated implicitly over h, expressed as a bias rate and the scales of
+// the effective mass and of the accumulated impulse.
 ContactSolver::Softness ContactSolver::makeSoft(double hertz, double zeta, double h) {
     const double omega = 2.0 * std::numbers::pi * hertz;
     const double a1 = 2.0 * zeta + h * omega;

@@ -220,7 +220,7 @@ public:
     // for the wide kernels (ContactWideLoop.inc). Unused lanes join the static world to itself
     // with zero masses. Eight lanes: each lane's solve is a long chain of dependent operations,
     // so more independent lanes per pass keep the processor's units busy (AVX-512 does eight at
-    // once; AVX2 does them as two interleaved halves).
+    // once; AVX2 does them as two halves, one after the other).
     static constexpr int kLanes = 8;
     struct alignas(64) WideRow {
         int a[kLanes], b[kLanes];
