@@ -19,4 +19,37 @@ void ContactSolver::forChunks(std::size_t count, std::size_t grain, const F& fn)
                        });
 }
 
+template <class F>
+void ContactSolver::forBodies(std::size_t count, const F& fn) {
+    if (!pool_ || count <= kBodyGrain) {
+        fn(std::size_t{0}, count);
+        return;
+    }
+    pool_->parallelFor(kBlocks, 1, [&fn, count](int block, int, int) {
+        fn(bodyBlockStart(count, block), bodyBlockStart(count, block + 1));
+    });
+}
+
+template <class F>
+void ContactSolver::forColour(int colour, const F& fn) {
+    const auto first = static_cast<std::size_t>(colourWide_[colour]);
+    const auto end = static_cast<std::size_t>(colourWide_[colour + 1]);
+    if (first == end) return;
+    if (!pool_ || end - first <= kWideGrain) {
+        fn(first, end);
+        return;
+    }
+    const int* starts = blockWide_.data() + colour * (kBlocks + 1);
+    pool_->parallelFor(kBlocks, 1, [&fn, starts](int block, int, int) {
+        if (starts[block] < starts[block + 1])
+            fn(static_cast<std::size_t>(starts[block]),
+               static_cast<std::size_t>(starts[block + 1]));
+    });
+}
+
+template <class F>
+void ContactSolver::forColours(const F& fn) {
+    for (int colour = 0; colour < kColours; ++colour) forColour(colour, fn);
+}
+
 }  // namespace phasebox

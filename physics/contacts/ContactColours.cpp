@@ -25,6 +25,7 @@ void ContactSolver::colourRows() {
     // colour is the lowest bit free in both of its bodies' sets.
     colourMask_.assign(bodyCount + 1, 0u);
     colourCount_.assign(kColours + 1, 0);
+    blockCount_.assign(static_cast<std::size_t>(kColours) * kBlocks, 0);
     slot_.resize(rows_.size());
     overflow_.clear();
     constexpr std::uint32_t kAllColours =
@@ -40,22 +41,37 @@ void ContactSolver::colourRows() {
         const int colour = std::countr_zero(free);
         if (c.a != world) colourMask_[c.a] |= std::uint32_t{1} << colour;
         if (c.b != world) colourMask_[c.b] |= std::uint32_t{1} << colour;
-        slot_[i] = colour;  // the colour for now, the lane below
+        // The block of the row's first dynamic body (the world's index is the largest).
+        const auto first = static_cast<std::size_t>(std::min(c.a, c.b));
+        const int block = std::min(
+            static_cast<int>(first * kBlocks / std::max<std::size_t>(bodyCount, 1)), kBlocks - 1);
+        slot_[i] = colour * kBlocks + block;  // the colour and block for now, the lane below
+        ++blockCount_[slot_[i]];
         ++colourCount_[colour];
     }
-    // Each colour starts a new wide row; colourCount_ becomes each colour's next slot.
+    // Each colour starts a new wide row, its blocks follow one another in it; blockCount_
+    // becomes each block's next slot. A wide row across two blocks belongs to the later one.
     int wideRows = 0;
     colourWide_.resize(kColours + 1);
+    blockWide_.resize(static_cast<std::size_t>(kColours) * (kBlocks + 1));
     for (int colour = 0; colour < kColours; ++colour) {
-        const int n = colourCount_[colour];
-        colourCount_[colour] = kLanes * wideRows;
         colourWide_[colour] = wideRows;
-        wideRows += (n + kLanes - 1) / kLanes;
+        int* starts = blockWide_.data() + colour * (kBlocks + 1);
+        int offset = 0;
+        for (int block = 0; block < kBlocks; ++block) {
+            int& count = blockCount_[colour * kBlocks + block];
+            starts[block] = wideRows + offset / kLanes;
+            const int n = count;
+            count = kLanes * wideRows + offset;
+            offset += n;
+        }
+        wideRows += (offset + kLanes - 1) / kLanes;
+        starts[kBlocks] = wideRows;
     }
     colourWide_[kColours] = wideRows;
     for (std::size_t i = 0; i < rows_.size(); ++i) {
         if (slot_[i] < 0) continue;
-        slot_[i] = colourCount_[slot_[i]]++;
+        slot_[i] = blockCount_[slot_[i]]++;
     }
     wide_.resize(wideRows);
     wideSetup_.resize(kLanes * static_cast<std::size_t>(wideRows));
@@ -63,7 +79,7 @@ void ContactSolver::colourRows() {
     for (std::size_t i = 0; i < rows_.size(); ++i)
         if (slot_[i] >= 0) order_[slot_[i]] = static_cast<int>(i);
     // The lanes, wide row by wide row (each written by one chunk: shared by the workers).
-    forChunks(wide_.size(), kWideLightGrain, [&](std::size_t first, std::size_t end) {
+    forColours([&](std::size_t first, std::size_t end) {
         for (std::size_t r = first; r < end; ++r) {
             WideRow& w = wide_[r];
             w = WideRow{};

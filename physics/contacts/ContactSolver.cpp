@@ -195,7 +195,7 @@ void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
     deepShift_.resize(count + 1);  // sized here: a first deep overlap must not allocate
     state_[count] = {0.0, 0.0, 0.0, 0.0, 0.0};  // the static world
     motion_[count] = {0.0, 0.0, 1.0, 0.0};
-    forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+    forBodies(count, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             SolverBody& b = bodies_[i];
             b.v0 = u0.segment<2>(b.dof);
@@ -247,6 +247,8 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     colourMask_.reserve(bodies + 1);
     colourCount_.reserve(kColours + 1);
     colourWide_.reserve(kColours + 1);
+    blockCount_.reserve(static_cast<std::size_t>(kColours) * kBlocks);
+    blockWide_.reserve(static_cast<std::size_t>(kColours) * (kBlocks + 1));
 }
 
 void ContactSolver::buildRow(std::size_t i, double hertz, double zeta, double h, double warmScale) {
@@ -359,7 +361,7 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
     const PhaseTerms terms{1.0 / h, settings.pushOut, useBias};
     if (measure) updateMotion();
     if (lanesHold_) {
-        forChunks(wide_.size(), kWideLightGrain, [&](std::size_t first, std::size_t end) {
+        forColours([&](std::size_t first, std::size_t end) {
             wide.prepare(wide_.data() + first, static_cast<int>(end - first),
                          wideSetup_.data() + kLanes * first, measure ? motion_.data() : nullptr,
                          terms);
@@ -421,7 +423,7 @@ void ContactSolver::updateMotion() {
     // Bodies hold still while the solver iterates (positions move once per inner sub-step), so
     // each point's separation is computed once per phase, not once per iteration: the rotations
     // alone (a sine and a cosine per body and point) were a quarter of the solver's time.
-    forChunks(bodies_.size(), kBodyGrain, [&](std::size_t first, std::size_t end) {
+    forBodies(bodies_.size(), [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             const SolverBody& b = bodies_[i];
             const Vec2 dp = b.startOffset + b.path + b.timeShift;
@@ -457,7 +459,7 @@ void ContactSolver::rowSeparations(std::size_t i) {
 void ContactSolver::updateSeparations() {
     updateMotion();
     if (lanesHold_) {
-        forChunks(wide_.size(), kWideLightGrain, [&](std::size_t first, std::size_t end) {
+        forColours([&](std::size_t first, std::size_t end) {
             wide.measure(wide_.data() + first, static_cast<int>(end - first), motion_.data());
         });
         for (const int i : overflow_) rowSeparations(static_cast<std::size_t>(i));
@@ -494,20 +496,13 @@ void ContactSolver::warmStart() {
     // rows no colour took.
     const int world = static_cast<int>(bodies_.size());
     for (int colour = 0; colour < kColours; ++colour) {
-        if (wide.warm) {
-            const std::size_t first = colourWide_[colour];
-            const std::size_t count = colourWide_[colour + 1] - first;
-            forChunks(count, kWideLightGrain, [&](std::size_t from, std::size_t end) {
-                wide.warm(wide_.data() + first + from, static_cast<int>(end - from), state_.data(),
+        forColour(colour, [&](std::size_t first, std::size_t end) {
+            if (wide.warm) {
+                wide.warm(wide_.data() + first, static_cast<int>(end - first), state_.data(),
                           world);
-            });
-            continue;
-        }
-        const std::size_t first = kLanes * static_cast<std::size_t>(colourWide_[colour]);
-        const std::size_t count =
-            kLanes * static_cast<std::size_t>(colourWide_[colour + 1]) - first;
-        forChunks(count, kRowGrain, [&](std::size_t from, std::size_t end) {
-            for (std::size_t slot = first + from; slot < first + end; ++slot)
+                return;
+            }
+            for (std::size_t slot = kLanes * first; slot < kLanes * end; ++slot)
                 if (order_[slot] >= 0) warmRow(static_cast<std::size_t>(order_[slot]));
         });
     }
@@ -585,20 +580,15 @@ void ContactSolver::solve() {
     // then those no colour took, one by one.
     const int world = static_cast<int>(bodies_.size());
     for (int colour = 0; colour < kColours; ++colour) {
-        const std::size_t first = colourWide_[colour];
-        const std::size_t count = colourWide_[colour + 1] - first;
-        if (count == 0) continue;
-        if (wide.solve) {
-            forChunks(count, kWideGrain, [&](std::size_t from, std::size_t end) {
-                wide.solve(wide_.data() + first + from, static_cast<int>(end - from), state_.data(),
+        forColour(colour, [&](std::size_t first, std::size_t end) {
+            if (wide.solve) {
+                wide.solve(wide_.data() + first, static_cast<int>(end - first), state_.data(),
                            world);
-            });
-        } else {
-            forChunks(kLanes * count, kLanes * kWideGrain, [&](std::size_t from, std::size_t end) {
-                for (std::size_t slot = kLanes * first + from; slot < kLanes * first + end; ++slot)
-                    if (order_[slot] >= 0) solveRow(rows_[order_[slot]]);
-            });
-        }
+                return;
+            }
+            for (std::size_t slot = kLanes * first; slot < kLanes * end; ++slot)
+                if (order_[slot] >= 0) solveRow(rows_[order_[slot]]);
+        });
     }
     for (const int i : overflow_) solveRow(rows_[i]);
 }
@@ -687,7 +677,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     bool moved = true;
     for (int i = 1; i <= n; ++i) {
         const double f = double(i) / n;
-        forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+        forBodies(count, [&](std::size_t first, std::size_t end) {
             for (std::size_t k = first; k < end; ++k) {
                 SolverBody& b = bodies_[k];
                 BodyState& s = state_[k];
@@ -701,7 +691,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         if (!bouncing_.empty()) {
             if (moved) updateSeparations();
             moved = bounce(hi, n, settings);
-            forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+            forBodies(count, [&](std::size_t first, std::size_t end) {
                 for (std::size_t k = first; k < end; ++k) {
                     SolverBody& b = bodies_[k];
                     const BodyState& s = state_[k];
@@ -713,7 +703,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         warmStart();
         preparePhase(hi, true, settings, moved);
         for (int it = 0; it < iterations; ++it) solve();
-        forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+        forBodies(count, [&](std::size_t first, std::size_t end) {
             for (std::size_t k = first; k < end; ++k) {
                 SolverBody& b = bodies_[k];
                 const BodyState& s = state_[k];
@@ -733,7 +723,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         moved = false;
         preparePhase(hi, false, settings, true);
         for (int it = 0; it < settings.relaxIterations; ++it) solve();
-        forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+        forBodies(count, [&](std::size_t first, std::size_t end) {
             for (std::size_t k = first; k < end; ++k) {
                 SolverBody& b = bodies_[k];
                 const BodyState& s = state_[k];
@@ -758,7 +748,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     // relax, keeps its whole displacement: that is its purpose; a bounce acts at the instant
     // of impact, not as a force over the step).
     const double excess = positionWeight - (n + 1.0) / (2.0 * n);
-    forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+    forBodies(count, [&](std::size_t first, std::size_t end) {
         for (std::size_t k = first; k < end; ++k) {
             SolverBody& b = bodies_[k];
             const BodyState& s = state_[k];

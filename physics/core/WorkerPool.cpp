@@ -59,6 +59,7 @@ bool WorkerPool::insideLoop() {
 
 void WorkerPool::start() {
     stopping_.store(false);
+    shares_ = std::make_unique<Share[]>(static_cast<std::size_t>(workers_));
     helpers_.reserve(static_cast<std::size_t>(workers_ - 1));
     for (int w = 1; w < workers_; ++w) helpers_.emplace_back([this, w] { helperLoop(w); });
 }
@@ -87,14 +88,23 @@ void WorkerPool::runChunk(int chunk, int worker) {
     }
 }
 
+bool WorkerPool::claim(int owner, int& chunk) {
+    const std::uint64_t cursor = shares_[owner].cursor.fetch_add(1, std::memory_order_acq_rel);
+    const auto end = static_cast<std::uint32_t>(cursor >> 32);
+    const auto next = static_cast<std::uint32_t>(cursor);
+    if (next >= end) return false;
+    chunk = static_cast<int>(next);
+    return true;
+}
+
 void WorkerPool::drain(int worker) {
-    for (;;) {
-        const std::uint64_t ticket = ticket_.fetch_add(1, std::memory_order_acq_rel);
-        const auto chunks = static_cast<std::uint32_t>(ticket >> 32);
-        const auto chunk = static_cast<std::uint32_t>(ticket);
-        if (chunk >= chunks) return;
-        runChunk(static_cast<int>(chunk), worker);
-        done_.fetch_add(1, std::memory_order_release);
+    // Its own share first, then the others', the next worker's first.
+    for (int k = 0; k < workers_; ++k) {
+        const int owner = (worker + k) % workers_;
+        for (int chunk; claim(owner, chunk);) {
+            runChunk(chunk, worker);
+            done_.fetch_add(1, std::memory_order_release);
+        }
     }
 }
 
@@ -108,8 +118,14 @@ void WorkerPool::run(int count, int grain, int chunks, ChunkFn chunkFn, void* bo
     failedChunk_ = -1;
     failure_ = nullptr;
     done_.store(0, std::memory_order_relaxed);
-    // Publishing the ticket releases the description above to whoever claims a chunk.
-    ticket_.store(static_cast<std::uint64_t>(chunks) << 32, std::memory_order_seq_cst);
+    // Publishing the shares releases the description above to whoever claims a chunk.
+    for (int w = 0; w < workers_; ++w) {
+        const auto begin =
+            static_cast<std::uint64_t>(static_cast<long long>(chunks) * w / workers_);
+        const auto end =
+            static_cast<std::uint64_t>(static_cast<long long>(chunks) * (w + 1) / workers_);
+        shares_[w].cursor.store(end << 32 | begin, std::memory_order_seq_cst);
+    }
     wake_.fetch_add(1, std::memory_order_seq_cst);
     if (sleepers_.load(std::memory_order_seq_cst) > 0) wake_.notify_all();
     {

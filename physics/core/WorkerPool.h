@@ -14,6 +14,13 @@
 // so that a chunk costs well above the hand-off (about a microsecond when the helpers are
 // spinning, tens when they have to be woken): a loop of a few chunks is not worth sharing.
 //
+// Each worker starts on its own contiguous share of the chunks (worker w of W: chunks
+// [w·n/W, (w+1)·n/W)) and takes from the others' shares only when its own is done. Passes over
+// the same range with the same grain thus give a worker the same items again while it keeps up,
+// so rows and bodies stay in its core's cache instead of moving between cores every pass, and
+// neighbouring items (ordered in space by the callers) share fewer cache lines across cores.
+// Who runs a chunk never changes what it computes.
+//
 // No allocation per call and one indirect call per chunk, not per item. Helpers spin a short
 // while after a loop (the step's next loop usually follows within microseconds), then sleep on
 // a futex until the next one. Threads start at the first loop that shares work, so a world
@@ -26,6 +33,7 @@
 #include <atomic>
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <type_traits>
@@ -94,10 +102,16 @@ private:
     std::vector<std::thread> helpers_;
     long long sharedLoops_ = 0;
 
-    // The current loop. ticket_ holds its chunk count (high half) and the next chunk to claim
-    // (low half): a claim is one fetch_add, and a chunk claimed below the count belongs to the
-    // loop in progress, whose description below cannot change before that chunk is done.
-    std::atomic<std::uint64_t> ticket_{0};
+    // The current loop. Each worker's share is a cursor holding the share's end (high half)
+    // and its next chunk (low half): a claim is one fetch_add on it, and a chunk claimed below
+    // the end belongs to the loop in progress, whose description below cannot change before
+    // that chunk is done (a claim on a finished share only moves its next chunk past the end).
+    struct alignas(64) Share {
+        std::atomic<std::uint64_t> cursor{0};
+    };
+    std::unique_ptr<Share[]> shares_;
+    // Claims a chunk of worker `owner`'s share; false when the share is used up.
+    bool claim(int owner, int& chunk);
     std::atomic<int> done_{0};  // chunks of the current loop finished
     ChunkFn chunkFn_ = nullptr;
     void* body_ = nullptr;
