@@ -1,5 +1,6 @@
 #pragma once
-// ContactSolver::forChunks, for the solver's source files (private to physics/contacts).
+// ContactSolver::forChunks and forColour, for the solver's source files (private to
+// physics/contacts).
 
 #include "physics/contacts/ContactSolver.h"
 #include "physics/core/WorkerPool.h"
@@ -13,20 +14,8 @@ void ContactSolver::forChunks(std::size_t count, std::size_t grain, const F& fn)
         fn(std::size_t{0}, count);
         return;
     }
-    pool_->parallelFor(static_cast<int>(count), static_cast<int>(grain),
-                       [&fn](int begin, int end, int) {
-                           fn(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
-                       });
-}
-
-template <class F>
-void ContactSolver::forBodies(std::size_t count, const F& fn) {
-    if (!pool_ || count <= kBodyGrain) {
-        fn(std::size_t{0}, count);
-        return;
-    }
     pool_->parallelFor(kBlocks, 1, [&fn, count](int block, int, int) {
-        fn(bodyBlockStart(count, block), bodyBlockStart(count, block + 1));
+        fn(blockStart(count, block), blockStart(count, block + 1));
     });
 }
 

@@ -195,7 +195,7 @@ void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
     deepShift_.resize(count + 1);  // sized here: a first deep overlap must not allocate
     state_[count] = {0.0, 0.0, 0.0, 0.0, 0.0};  // the static world
     motion_[count] = {0.0, 0.0, 1.0, 0.0};
-    forBodies(count, [&](std::size_t first, std::size_t end) {
+    forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             SolverBody& b = bodies_[i];
             b.v0 = u0.segment<2>(b.dof);
@@ -423,7 +423,7 @@ void ContactSolver::updateMotion() {
     // Bodies hold still while the solver iterates (positions move once per inner sub-step), so
     // each point's separation is computed once per phase, not once per iteration: the rotations
     // alone (a sine and a cosine per body and point) were a quarter of the solver's time.
-    forBodies(bodies_.size(), [&](std::size_t first, std::size_t end) {
+    forChunks(bodies_.size(), kBodyGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             const SolverBody& b = bodies_[i];
             const Vec2 dp = b.startOffset + b.path + b.timeShift;
@@ -677,7 +677,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     bool moved = true;
     for (int i = 1; i <= n; ++i) {
         const double f = double(i) / n;
-        forBodies(count, [&](std::size_t first, std::size_t end) {
+        forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
             for (std::size_t k = first; k < end; ++k) {
                 SolverBody& b = bodies_[k];
                 BodyState& s = state_[k];
@@ -691,7 +691,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         if (!bouncing_.empty()) {
             if (moved) updateSeparations();
             moved = bounce(hi, n, settings);
-            forBodies(count, [&](std::size_t first, std::size_t end) {
+            forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
                 for (std::size_t k = first; k < end; ++k) {
                     SolverBody& b = bodies_[k];
                     const BodyState& s = state_[k];
@@ -703,7 +703,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         warmStart();
         preparePhase(hi, true, settings, moved);
         for (int it = 0; it < iterations; ++it) solve();
-        forBodies(count, [&](std::size_t first, std::size_t end) {
+        forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
             for (std::size_t k = first; k < end; ++k) {
                 SolverBody& b = bodies_[k];
                 const BodyState& s = state_[k];
@@ -723,7 +723,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         moved = false;
         preparePhase(hi, false, settings, true);
         for (int it = 0; it < settings.relaxIterations; ++it) solve();
-        forBodies(count, [&](std::size_t first, std::size_t end) {
+        forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
             for (std::size_t k = first; k < end; ++k) {
                 SolverBody& b = bodies_[k];
                 const BodyState& s = state_[k];
@@ -748,7 +748,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     // relax, keeps its whole displacement: that is its purpose; a bounce acts at the instant
     // of impact, not as a force over the step).
     const double excess = positionWeight - (n + 1.0) / (2.0 * n);
-    forBodies(count, [&](std::size_t first, std::size_t end) {
+    forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t k = first; k < end; ++k) {
             SolverBody& b = bodies_[k];
             const BodyState& s = state_[k];

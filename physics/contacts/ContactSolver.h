@@ -305,33 +305,32 @@ private:
         RowPoint p[2];
     };
 
-    // The passes over rows and bodies run as chunks of a range (fn(first, end)); the chunks
-    // never depend on the number of workers, and no two chunks of a pass touch the same row or
-    // dynamic body (a colour's rows share none), so the results are bit-identical however many
-    // workers take them. A chunk is tens of microseconds of work, well above the hand-off to a
-    // worker (about a microsecond while it spins, tens when it must be woken), so that small
-    // and middling scenes stay on one thread: passes of a few short chunks per inner sub-step,
-    // with serial work between them, cost more in hand-offs than they save.
+    // The passes over rows, bodies and each colour's wide rows run as chunks of a range
+    // (fn(first, end)). Below the thresholds (kRowGrain rows, kBodyGrain bodies, kWideGrain wide
+    // rows in a colour) a pass is a few tens of microseconds, not worth the hand-off to a worker
+    // (about a microsecond while it spins, tens when it must be woken): it runs at once on the
+    // calling thread, so that small and middling scenes stay on one thread. Above them a pass
+    // goes by kBlocks blocks: equal parts of the bodies, or of the rows (which follow the
+    // bodies' order), and in each colour the rows whose first dynamic body is in a part (ordered
+    // so by colourRows). A worker starts on the same blocks in every pass (WorkerPool), so a
+    // body's state stays in its core's cache through the colours, the iterations and the
+    // sub-steps; only rows across two workers' blocks move it. (Cut by count into chunks taken
+    // in turn, a fifth of the bodies a colour's pass touched had last been written by the other
+    // worker, and on a machine whose cores are 250 ns apart two workers took longer than one.)
+    // The blocks depend on the counts only, never on the number of workers, and no two chunks
+    // of a pass touch the same row or dynamic body (a colour's rows share none), so the results
+    // are bit-identical however many workers take them.
     static constexpr std::size_t kRowGrain = 4096;
     static constexpr std::size_t kBodyGrain = 4096;
     static constexpr std::size_t kWideGrain = 1024 / kLanes;  // 1,024 rows
-    template <class F>
-    void forChunks(std::size_t count, std::size_t grain, const F& fn);
-    // The passes over bodies and over a colour's wide rows, once shared, go by blocks of the
-    // bodies: kBlocks equal parts of the body indices, and in each colour the rows whose first
-    // dynamic body is in a part (ordered so by colourRows). A worker starts on the same blocks
-    // in every pass (WorkerPool), so a body's state stays in its core's cache through the
-    // colours, the iterations and the sub-steps; only rows across two workers' blocks move it.
-    // (Split by count instead, a fifth of the bodies a pass touched had last been written by
-    // the other worker, and on a machine whose cores are 250 ns apart two workers took longer
-    // than one.) The blocks depend on the body count only, never on the number of workers.
     static constexpr int kBlocks = 16;
-    static std::size_t bodyBlockStart(std::size_t count, int block) {
+    // Where block `block` of [0, count) starts: item i is in block ⌊i·kBlocks/count⌋.
+    static std::size_t blockStart(std::size_t count, int block) {
         return (count * static_cast<std::size_t>(block) + kBlocks - 1) / kBlocks;
     }
-    // fn(first, end) over the bodies [0, count): at once, or (above kBodyGrain) block by block.
+    // fn(first, end) over [0, count): at once up to `grain` items, else block by block.
     template <class F>
-    void forBodies(std::size_t count, const F& fn);
+    void forChunks(std::size_t count, std::size_t grain, const F& fn);
     // fn(first, end) over a colour's wide rows: at once, or (above kWideGrain) block by block.
     template <class F>
     void forColour(int colour, const F& fn);
