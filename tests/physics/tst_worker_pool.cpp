@@ -54,6 +54,7 @@ private slots:
         QTest::newRow("a short last chunk") << 1001 << 64;
         QTest::newRow("items one by one") << 777 << 1;
         QTest::newRow("many chunks") << 100003 << 97;
+        QTest::newRow("fewer chunks than workers") << 100 << 40;
         QTest::newRow("grain below one is one") << 50 << 0;
     }
     void coversEveryIndexOnceInFixedChunks() {
@@ -207,6 +208,35 @@ private slots:
             expected += 256LL * 255 / 2 + 256LL * loop;
         }
         QCOMPARE(seen, expected);
+    }
+
+    void loopsOfChangingSizesInARow() {
+        // Each worker's share of a loop is cut anew from its chunk count: a helper that finishes
+        // one loop late must not take a chunk of the next one twice, or miss one, whether the
+        // next has more chunks than workers, as many, or fewer.
+        for (int workers : kWorkerCounts) {
+            WorkerPool pool(workers);
+            std::vector<std::atomic<int>> visits(512);
+            for (int loop = 0; loop < 3000; ++loop) {
+                const int count = 1 + (loop * 37) % 512;
+                const int grain = 1 + (loop * 13) % 64;
+                pool.parallelFor(count, grain, [&](int begin, int end, int) {
+                    for (int i = begin; i < end; ++i) ++visits[static_cast<std::size_t>(i)];
+                });
+                for (int i = 0; i < 512; ++i) {
+                    const int seen = visits[static_cast<std::size_t>(i)].exchange(0);
+                    if (seen != (i < count ? 1 : 0))
+                        QFAIL(qPrintable(QStringLiteral("loop %1 (%2 items in chunks of %3), %4 "
+                                                        "workers: item %5 ran %6 times")
+                                             .arg(loop)
+                                             .arg(count)
+                                             .arg(grain)
+                                             .arg(workers)
+                                             .arg(i)
+                                             .arg(seen)));
+                }
+            }
+        }
     }
 };
 
