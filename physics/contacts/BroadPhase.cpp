@@ -24,8 +24,10 @@ constexpr long long kRepairMovesPerBox = 8;
 // the caps applied as it goes (a box in a stack or a resting pile has at most a dozen).
 constexpr int kSweepGrain = 512;
 constexpr int kKeptPerBox = 24;
-// Fewer boxes are swept on the calling thread: their sweep costs about what handing it out does.
-constexpr int kSharedSweepBoxes = 512;
+// Fewer boxes are swept on the calling thread: their sweep costs about what handing it out does
+// (waking a helper that slept through the solve; the 40-row pyramid's 820 boxes were no faster
+// on two workers).
+constexpr int kSharedSweepBoxes = 2048;
 
 // Bands of the cross axis (buildBands()): used from this many boxes and bands on, at most this
 // many bands, and a box across more of them than kMaxBandsPerBox sweeps the whole order.

@@ -17,10 +17,15 @@ constexpr std::size_t kReservedContacts = 4;
 constexpr std::size_t kMostReservedContacts = 4096;
 // Items a chunk of a shared loop (WorkerPool): a narrow-phase test costs a fraction of a
 // microsecond, a collider's shape and bounds a few tens of nanoseconds, handing a chunk to
-// another thread about a microsecond; a chunk is made worth tens of those, so that a scene of a
-// few hundred pairs stays on one thread.
+// another thread about a microsecond; a chunk is made worth tens of those.
 constexpr int kPairGrain = 512;
 constexpr int kColliderGrain = 2048;
+// A loop is shared from this many chunks on. Waking a helper that went to sleep during the
+// solve costs tens of microseconds, about what a few chunks save: with loops of two or three
+// chunks shared, the 20-row pyramid (about 600 contacts) took 1.06-1.12x its one-worker step
+// on two workers in bench_box2d_pyramid, and 0.97-1.04x without; the 40-row one (about 2,400
+// contacts) took 1.02-1.09x from four chunks on and 0.99-1.04x from eight.
+constexpr int kLeastSharedChunks = 8;
 
 bool holds(const ContactPoint& p) {
     return p.heldNormal != 0.0 || p.heldTangent != 0.0;
@@ -61,7 +66,7 @@ void carryImpulses(const ContactConstraint& old, ContactConstraint& c, std::size
 
 template <class Fn>
 void ContactStage::forRange(int count, int grain, Fn&& fn) {
-    if (pool_)
+    if (pool_ && count > (kLeastSharedChunks - 1) * grain)
         pool_->parallelFor(count, grain, [&fn](int begin, int end, int) { fn(begin, end); });
     else if (count > 0)
         fn(0, count);

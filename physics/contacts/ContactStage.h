@@ -210,7 +210,8 @@ private:
     std::vector<Made> madeFrom_;
     bool keysAscending_ = true;
     WorkerPool* pool_ = nullptr;
-    // Runs fn(begin, end) over [0, count) in chunks of grain, shared when a pool is set.
+    // Runs fn(begin, end) over [0, count) in chunks of grain, shared when a pool is set and
+    // there are enough chunks to be worth waking a helper (kLeastSharedChunks).
     template <class Fn>
     void forRange(int count, int grain, Fn&& fn);
     std::vector<unsigned char> pairLimited_;  // per collider: disk pairs capped (PairCap)
