@@ -24,7 +24,6 @@ void ContactSolver::colourRows() {
     // Per body the colours its rows have taken, a bit each (the static world takes none): a row's
     // colour is the lowest bit free in both of its bodies' sets.
     colourMask_.assign(bodyCount + 1, 0u);
-    colourCount_.assign(kColours + 1, 0);
     blockCount_.assign(static_cast<std::size_t>(kColours) * kBlocks, 0);
     slot_.resize(rows_.size());
     overflow_.clear();
@@ -56,7 +55,6 @@ void ContactSolver::colourRows() {
             static_cast<int>(at * kBlocks / std::max<std::size_t>(bodyCount, 1)), kBlocks - 1);
         slot_[i] = colour * kBlocks + block;  // the colour and block for now, the lane below
         ++blockCount_[slot_[i]];
-        ++colourCount_[colour];
     }
     // Each colour starts a new wide row, its blocks follow one another in it; blockCount_
     // becomes each block's next slot. A wide row across two blocks belongs to the later one.

@@ -245,7 +245,6 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     wide_.reserve(constraints / kLanes + kColours);
     order_.reserve(constraints + kLanes * kColours);
     colourMask_.reserve(bodies + 1);
-    colourCount_.reserve(kColours + 1);
     colourWide_.reserve(kColours + 1);
     blockCount_.reserve(static_cast<std::size_t>(kColours) * kBlocks);
     blockWide_.reserve(static_cast<std::size_t>(kColours) * (kBlocks + 1));

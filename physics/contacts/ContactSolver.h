@@ -311,8 +311,8 @@ private:
     // (about a microsecond while it spins, tens when it must be woken): it runs at once on the
     // calling thread, so that small and middling scenes stay on one thread. Above them a pass
     // goes by kBlocks blocks: equal parts of the bodies, or of the rows (which follow the
-    // bodies' order), and in each colour the rows whose first dynamic body is in a part (ordered
-    // so by colourRows). A worker starts on the same blocks in every pass (WorkerPool), so a
+    // bodies' order), and in each colour the rows one of whose bodies is in a part (ordered so
+    // by colourRows). A worker starts on the same blocks in every pass (WorkerPool), so a
     // body's state stays in its core's cache through the colours, the iterations and the
     // sub-steps; only rows across two workers' blocks move it. (Cut by count into chunks taken
     // in turn, a fifth of the bodies a colour's pass touched had last been written by the other
@@ -438,7 +438,6 @@ private:
     std::vector<int> order_;           // per wide slot: its row, or −1 (the sweep order)
     std::vector<int> overflow_;        // rows no colour could take, solved after the wide ones
     std::vector<std::uint32_t> colourMask_;  // per body (+ the world): a bit per colour taken
-    std::vector<int> colourCount_;           // rows per colour, then the first wide row
     std::vector<int> colourWide_;            // per colour its first wide row, then the end
     std::vector<int> blockCount_;            // per colour and block its rows, then the next slot
     std::vector<int> blockWide_;  // per colour kBlocks + 1 wide rows: where each block starts
