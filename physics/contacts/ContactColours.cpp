@@ -11,6 +11,29 @@
 namespace phasebox {
 
 using WideRow = ContactSolver::WideRow;
+using WideSetup = ContactSolver::WideSetup;
+
+namespace {
+// An unused lane: the static world joined to itself, every term zero (a colour's last wide row).
+void clearLane(WideRow& w, WideSetup& S, int l, int world) {
+    w.a[l] = w.b[l] = world;
+    w.points[l] = 0;
+    for (double* lanes : {w.nx, w.ny, w.friction, w.mA, w.iA, w.mB, w.iB, w.k11, w.k12, w.k22,
+                          w.i11, w.i12, w.i22, w.invA11, w.invA22})
+        lanes[l] = 0.0;
+    for (WideRow::Point& q : w.p)
+        for (double* lanes :
+             {q.rAx, q.rAy, q.rBx, q.rBy, q.rnA, q.rnB, q.rtA, q.rtB, q.bias, q.effectiveMass,
+              q.impulseScale, q.tangentMass, q.normalImpulse, q.tangentImpulse, q.heldNormal,
+              q.heldTangent, q.baseSeparation, q.separation})
+            lanes[l] = 0.0;
+    for (double* lanes : {S.biasRate, S.massScale, S.impulseScale, S.normalMass[0],
+                          S.normalMass[1], S.compliance[0], S.compliance[1], S.deepOverlap,
+                          S.pushOutShare})
+        lanes[l] = 0.0;
+    S.blockable[l] = 0;
+}
+}  // namespace
 
 static_assert(ContactSolver::kColours <= 32, "a body's colours are the bits of 32");
 
@@ -81,7 +104,7 @@ void ContactSolver::colourRows() {
         slot_[i] = blockCount_[slot_[i]]++;
     }
     wide_.resize(wideRows);
-    wideSetup_.resize(kLanes * static_cast<std::size_t>(wideRows));
+    wideSetup_.resize(wideRows);
     order_.assign(kLanes * wideRows, -1);
     for (std::size_t i = 0; i < rows_.size(); ++i)
         if (slot_[i] >= 0) order_[slot_[i]] = static_cast<int>(i);
@@ -89,11 +112,11 @@ void ContactSolver::colourRows() {
     forColours([&](std::size_t first, std::size_t end) {
         for (std::size_t r = first; r < end; ++r) {
             WideRow& w = wide_[r];
-            w = WideRow{};
+            WideSetup& S = wideSetup_[r];
             for (int l = 0; l < kLanes; ++l) {
                 const int i = order_[kLanes * r + l];
                 if (i < 0) {
-                    w.a[l] = w.b[l] = world;
+                    clearLane(w, S, l, world);
                     continue;
                 }
                 const Row& c = rows_[i];
@@ -130,7 +153,17 @@ void ContactSolver::colourRows() {
                     q.baseSeparation[l] = q.separation[l] = p.baseSeparation;
                 }
                 w.points[l] = c.pointCount;
-                wideSetup_[kLanes * r + l] = setup_[i];
+                const RowSetup& setup = setup_[i];
+                S.biasRate[l] = setup.biasRate;
+                S.massScale[l] = setup.massScale;
+                S.impulseScale[l] = setup.impulseScale;
+                for (int k = 0; k < 2; ++k) {
+                    S.normalMass[k][l] = setup.normalMass[k];
+                    S.compliance[k][l] = setup.compliance[k];
+                }
+                S.deepOverlap[l] = setup.deepOverlap;
+                S.pushOutShare[l] = setup.pushOutShare;
+                S.blockable[l] = setup.blockable ? -1LL : 0LL;
             }
         }
     });

@@ -20,6 +20,7 @@ namespace {
 using WideRow = ContactSolver::WideRow;
 using ContactSolverBody = ContactSolver::BodyState;
 using RowSetup = ContactSolver::RowSetup;
+using WideSetup = ContactSolver::WideSetup;
 using BodyMotion = ContactSolver::BodyMotion;
 using PhaseTerms = ContactSolver::PhaseTerms;
 
@@ -53,7 +54,8 @@ typedef long long Mask __attribute__((vector_size(8 * kWidth)));
 
 using WideLoop = void (*)(WideRow*, int, ContactSolverBody*, int);
 using WideMeasure = void (*)(WideRow*, int, const BodyMotion*);
-using WidePrepare = void (*)(WideRow*, int, const RowSetup*, const BodyMotion*, const PhaseTerms&);
+using WidePrepare = void (*)(WideRow*, int, const WideSetup*, const BodyMotion*,
+                            const PhaseTerms&);
 // The instruction set the wide kernels use: 2 AVX-512, 1 AVX2, 0 none. Without AVX2 the rows are
 // solved one by one in the same colour order (the portable build of the wide loop, on SSE2
 // pairs, was slower than that).
@@ -243,6 +245,7 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     separation_.reserve(2 * constraints);
     // Each colour's last wide row may be partly empty.
     wide_.reserve(constraints / kLanes + kColours);
+    wideSetup_.reserve(constraints / kLanes + kColours);
     order_.reserve(constraints + kLanes * kColours);
     colourMask_.reserve(bodies + 1);
     colourWide_.reserve(kColours + 1);
@@ -362,7 +365,7 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
     if (lanesHold_) {
         forColours([&](std::size_t first, std::size_t end) {
             wide.prepare(wide_.data() + first, static_cast<int>(end - first),
-                         wideSetup_.data() + kLanes * first, measure ? motion_.data() : nullptr,
+                         wideSetup_.data() + first, measure ? motion_.data() : nullptr,
                          terms);
         });
         for (const int i : overflow_) prepareRow(static_cast<std::size_t>(i), terms, measure);
@@ -674,20 +677,23 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     // Positions move only at the end of a sub-step's solve and when a bounce moves a body to
     // its time of impact, so separations are measured only then.
     bool moved = true;
+    // A sub-step's share of the smooth step's velocity change; the velocity before the bounces
+    // is kept where there are bounces (relax's pass below overwrites it otherwise).
+    const bool bouncing = !bouncing_.empty();
+    const auto smoothShare = [&](SolverBody& b, BodyState& s) {
+        s.vx += b.smoothDv.x() / n;
+        s.vy += b.smoothDv.y() / n;
+        s.w += b.smoothDw / n;
+        if (!bouncing) return;
+        b.pushV = Vec2(s.vx, s.vy);
+        b.pushW = s.w;
+    };
+    forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t k = first; k < end; ++k) smoothShare(bodies_[k], state_[k]);
+    });
     for (int i = 1; i <= n; ++i) {
         const double f = double(i) / n;
-        forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
-            for (std::size_t k = first; k < end; ++k) {
-                SolverBody& b = bodies_[k];
-                BodyState& s = state_[k];
-                s.vx += b.smoothDv.x() / n;
-                s.vy += b.smoothDv.y() / n;
-                s.w += b.smoothDw / n;
-                b.pushV = Vec2(s.vx, s.vy);  // before the bounces
-                b.pushW = s.w;
-            }
-        });
-        if (!bouncing_.empty()) {
+        if (bouncing) {
             if (moved) updateSeparations();
             moved = bounce(hi, n, settings);
             forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
@@ -722,14 +728,17 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         moved = false;
         preparePhase(hi, false, settings, true);
         for (int it = 0; it < settings.relaxIterations; ++it) solve();
+        // One pass over the bodies ends this sub-step and starts the next.
+        const bool next = i < n;
         forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
             for (std::size_t k = first; k < end; ++k) {
                 SolverBody& b = bodies_[k];
-                const BodyState& s = state_[k];
+                BodyState& s = state_[k];
                 // What relax removed is the push-out's velocity: its displacement is the position
                 // correction (the energy ledger's `correction`).
                 b.pushOut += hi * (b.pushV - Vec2(s.vx, s.vy));
                 if (b.rotates) b.pushOutAngle += hi * (b.pushW - s.w);
+                if (next) smoothShare(b, s);
             }
         });
     }

@@ -228,8 +228,9 @@ public:
         double nx[kLanes], ny[kLanes], friction[kLanes], mA[kLanes], iA[kLanes], mB[kLanes],
             iB[kLanes];
         double k11[kLanes], k12[kLanes], k22[kLanes];
-        double a12[kLanes], i11[kLanes], i12[kLanes], i22[kLanes], invA11[kLanes], invA22[kLanes],
-            block[kLanes];  // the phase's
+        // The phase's block terms (RowSetup's blockTerms() where the phase solves the two points
+        // as a block, else zeros: invA11 ≠ 0 says the lane's block is solved, and its a12 is k12).
+        double i11[kLanes], i12[kLanes], i22[kLanes], invA11[kLanes], invA22[kLanes];
         struct Point {
             double rAx[kLanes], rAy[kLanes], rBx[kLanes], rBy[kLanes];
             double rnA[kLanes], rnB[kLanes], rtA[kLanes], rtB[kLanes];         // RowPoint's
@@ -259,6 +260,13 @@ public:
         double deepOverlap;
         double pushOutShare;
         bool blockable;  // two points whose K is well conditioned
+    };
+    // RowSetup lane by lane, beside the wide rows (read once per phase, with vector loads).
+    struct alignas(64) WideSetup {
+        double biasRate[kLanes], massScale[kLanes], impulseScale[kLanes];
+        double normalMass[2][kLanes], compliance[2][kLanes];
+        double deepOverlap[kLanes], pushOutShare[kLanes];
+        long long blockable[kLanes];  // −1 where blockable, else 0
     };
     // A phase's constants: 1/h, the push-out speed, and whether it is a soft solve (else relax).
     struct PhaseTerms {
@@ -431,7 +439,7 @@ private:
     std::vector<BodyMotion> motion_;   // likewise
     std::vector<Row> rows_;            // per constraint, in constraints_'s order
     std::vector<RowSetup> setup_;      // likewise
-    std::vector<RowSetup> wideSetup_;  // per wide slot (kLanes·wide row + lane), its row's
+    std::vector<WideSetup> wideSetup_;  // per wide row, its lanes' rows'
     std::vector<double> separation_;   // per row point (2 per row), where the path is now
     std::vector<WideRow> wide_;        // the coloured rows, colour by colour
     std::vector<int> slot_;            // per row: kLanes·wide row + lane, or −1 (solved alone)
