@@ -38,7 +38,23 @@ void ContactSolver::forColour(int colour, const F& fn) {
 
 template <class F>
 void ContactSolver::forColours(const F& fn) {
-    for (int colour = 0; colour < kColours; ++colour) forColour(colour, fn);
+    // The colours are one after the other in wide_: a pass whose rows are independent of one
+    // another takes them at once, or block by block with each block's part of every colour, so
+    // that a worker keeps its blocks' bodies and the workers meet once, not once a colour.
+    const auto total = static_cast<std::size_t>(colourWide_[kColours]);
+    if (total == 0) return;
+    if (!pool_ || total <= kWideGrain) {
+        fn(std::size_t{0}, total);
+        return;
+    }
+    const int* starts = blockWide_.data();
+    pool_->parallelFor(kBlocks, 1, [&fn, starts](int block, int, int) {
+        for (int colour = 0; colour < kColours; ++colour) {
+            const int* at = starts + colour * (kBlocks + 1);
+            if (at[block] < at[block + 1])
+                fn(static_cast<std::size_t>(at[block]), static_cast<std::size_t>(at[block + 1]));
+        }
+    });
 }
 
 }  // namespace phasebox

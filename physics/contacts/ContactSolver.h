@@ -222,9 +222,10 @@ public:
     // so more independent lanes per pass keep the processor's units busy (AVX-512 does eight at
     // once; AVX2 does them as two halves, one after the other).
     static constexpr int kLanes = 8;
+    // The fields the solve sweeps read come first in the row and in each point, the others
+    // after them: a sweep over rows too many for the core's own cache streams fewer lines.
     struct alignas(64) WideRow {
         int a[kLanes], b[kLanes];
-        int points[kLanes];  // each lane's point count (0: an unused lane)
         double nx[kLanes], ny[kLanes], friction[kLanes], mA[kLanes], iA[kLanes], mB[kLanes],
             iB[kLanes];
         double k11[kLanes], k12[kLanes], k22[kLanes];
@@ -232,14 +233,16 @@ public:
         // as a block, else zeros: invA11 ≠ 0 says the lane's block is solved, and its a12 is k12).
         double i11[kLanes], i12[kLanes], i22[kLanes], invA11[kLanes], invA22[kLanes];
         struct Point {
-            double rAx[kLanes], rAy[kLanes], rBx[kLanes], rBy[kLanes];
-            double rnA[kLanes], rnB[kLanes], rtA[kLanes], rtB[kLanes];         // RowPoint's
-            double bias[kLanes], effectiveMass[kLanes], impulseScale[kLanes];  // the phase's
+            double rnA[kLanes], rnB[kLanes], rtA[kLanes], rtB[kLanes];  // RowPoint's
+            double bias[kLanes];                                        // the phase's
             double tangentMass[kLanes], normalImpulse[kLanes], tangentImpulse[kLanes];
+            double effectiveMass[kLanes], impulseScale[kLanes];  // the phase's
+            double rAx[kLanes], rAy[kLanes], rBx[kLanes], rBy[kLanes];
             double heldNormal[kLanes], heldTangent[kLanes];  // the held force per sub-step
             double baseSeparation[kLanes];
             double separation[kLanes];  // where the solver's path is now (separationOf())
         } p[2];
+        int points[kLanes];  // each lane's point count (0: an unused lane)
     };
     static constexpr int kColours = 24;
     // The instruction set of the wide kernels: 0 none (the rows one by one, in the same order), 1
@@ -342,7 +345,8 @@ private:
     // fn(first, end) over a colour's wide rows: at once, or (above kWideGrain) block by block.
     template <class F>
     void forColour(int colour, const F& fn);
-    // forColour over every colour in turn.
+    // fn(first, end) over every colour's wide rows, for a pass whose rows are independent of one
+    // another (each chunk writes its own rows only): in one loop, not colour by colour.
     template <class F>
     void forColours(const F& fn);
     WorkerPool* pool_ = nullptr;
@@ -435,16 +439,16 @@ private:
 
     std::vector<SolverBody> bodies_;
     std::vector<ContactConstraint> constraints_;
-    std::vector<BodyState> state_;     // bodies_.size() + 1 (the static world last)
-    std::vector<BodyMotion> motion_;   // likewise
-    std::vector<Row> rows_;            // per constraint, in constraints_'s order
-    std::vector<RowSetup> setup_;      // likewise
+    std::vector<BodyState> state_;      // bodies_.size() + 1 (the static world last)
+    std::vector<BodyMotion> motion_;    // likewise
+    std::vector<Row> rows_;             // per constraint, in constraints_'s order
+    std::vector<RowSetup> setup_;       // likewise
     std::vector<WideSetup> wideSetup_;  // per wide row, its lanes' rows'
-    std::vector<double> separation_;   // per row point (2 per row), where the path is now
-    std::vector<WideRow> wide_;        // the coloured rows, colour by colour
-    std::vector<int> slot_;            // per row: kLanes·wide row + lane, or −1 (solved alone)
-    std::vector<int> order_;           // per wide slot: its row, or −1 (the sweep order)
-    std::vector<int> overflow_;        // rows no colour could take, solved after the wide ones
+    std::vector<double> separation_;    // per row point (2 per row), where the path is now
+    std::vector<WideRow> wide_;         // the coloured rows, colour by colour
+    std::vector<int> slot_;             // per row: kLanes·wide row + lane, or −1 (solved alone)
+    std::vector<int> order_;            // per wide slot: its row, or −1 (the sweep order)
+    std::vector<int> overflow_;         // rows no colour could take, solved after the wide ones
     std::vector<std::uint32_t> colourMask_;  // per body (+ the world): a bit per colour taken
     std::vector<int> colourWide_;            // per colour its first wide row, then the end
     std::vector<int> blockCount_;            // per colour and block its rows, then the next slot
