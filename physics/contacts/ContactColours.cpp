@@ -27,9 +27,8 @@ void clearLane(WideRow& w, WideSetup& S, int l, int world) {
               q.impulseScale, q.tangentMass, q.normalImpulse, q.tangentImpulse, q.heldNormal,
               q.heldTangent, q.baseSeparation, q.separation})
             lanes[l] = 0.0;
-    for (double* lanes : {S.biasRate, S.massScale, S.impulseScale, S.normalMass[0],
-                          S.normalMass[1], S.compliance[0], S.compliance[1], S.deepOverlap,
-                          S.pushOutShare})
+    for (double* lanes : {S.biasRate, S.massScale, S.impulseScale, S.normalMass[0], S.normalMass[1],
+                          S.compliance[0], S.compliance[1], S.deepOverlap, S.pushOutShare})
         lanes[l] = 0.0;
     S.blockable[l] = 0;
 }

@@ -54,8 +54,7 @@ typedef long long Mask __attribute__((vector_size(8 * kWidth)));
 
 using WideLoop = void (*)(WideRow*, int, ContactSolverBody*, int);
 using WideMeasure = void (*)(WideRow*, int, const BodyMotion*);
-using WidePrepare = void (*)(WideRow*, int, const WideSetup*, const BodyMotion*,
-                            const PhaseTerms&);
+using WidePrepare = void (*)(WideRow*, int, const WideSetup*, const BodyMotion*, const PhaseTerms&);
 // The instruction set the wide kernels use: 2 AVX-512, 1 AVX2, 0 none. Without AVX2 the rows are
 // solved one by one in the same colour order (the portable build of the wide loop, on SSE2
 // pairs, was slower than that).
@@ -365,8 +364,7 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
     if (lanesHold_) {
         forColours([&](std::size_t first, std::size_t end) {
             wide.prepare(wide_.data() + first, static_cast<int>(end - first),
-                         wideSetup_.data() + first, measure ? motion_.data() : nullptr,
-                         terms);
+                         wideSetup_.data() + first, measure ? motion_.data() : nullptr, terms);
         });
         for (const int i : overflow_) prepareRow(static_cast<std::size_t>(i), terms, measure);
         return;
