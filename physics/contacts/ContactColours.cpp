@@ -43,70 +43,88 @@ void ContactSolver::colourRows() {
     // sweep order is fixed, so the results are the same run to run.
     const std::size_t bodyCount = bodies_.size();
     const int world = static_cast<int>(bodyCount);
-    // Per body the colours its rows have taken, a bit each (the static world takes none): a row's
-    // colour is the lowest bit free in both of its bodies' sets.
-    colourMask_.assign(bodyCount + 1, 0u);
-    blockCount_.assign(static_cast<std::size_t>(kColours) * kBlocks, 0);
-    slot_.resize(rows_.size());
-    overflow_.clear();
-    constexpr std::uint32_t kAllColours =
-        kColours == 32 ? ~std::uint32_t{0} : (std::uint32_t{1} << kColours) - 1;
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        const Row& c = rows_[i];
-        const std::uint32_t free = ~(colourMask_[c.a] | colourMask_[c.b]) & kAllColours;
-        if (free == 0) {
-            slot_[i] = -1;
-            overflow_.push_back(static_cast<int>(i));
-            continue;
+    // The colouring is a function of the rows' bodies, in order, and of the body count alone: where
+    // every row joins the same two bodies as the row of its index did at the last colouring (a
+    // resting stack, step after step), that colouring stands (the wide rows still hold each
+    // slot's bodies), and only the lanes are filled anew.
+    const bool sameRows = [&] {
+        if (rows_.empty() || slot_.size() != rows_.size() || !overflow_.empty() ||
+            colourMask_.size() != bodyCount + 1)
+            return false;
+        for (std::size_t i = 0; i < rows_.size(); ++i) {
+            const int at = slot_[i];
+            if (at < 0 || static_cast<std::size_t>(at / kLanes) >= wide_.size()) return false;
+            const WideRow& w = wide_[at / kLanes];
+            if (w.a[at % kLanes] != rows_[i].a || w.b[at % kLanes] != rows_[i].b) return false;
         }
-        const int colour = std::countr_zero(free);
-        if (c.a != world) colourMask_[c.a] |= std::uint32_t{1} << colour;
-        if (c.b != world) colourMask_[c.b] |= std::uint32_t{1} << colour;
-        // The block of one of the row's bodies: the dynamic one beside the world, else the
-        // lower or the higher by the parity of their sum. Always the lower would crowd the
-        // first blocks where pairs are far apart in the order (a pile, a gas: the lower of two
-        // random bodies is in the first half three times in four, and the first of two workers
-        // would start with three rows in four); where they are near (a stack) either keeps the
-        // row beside its bodies.
-        const int pick = c.a == world           ? c.b
-                         : c.b == world         ? c.a
-                         : (c.a + c.b) % 2 == 0 ? std::min(c.a, c.b)
-                                                : std::max(c.a, c.b);
-        const auto at = static_cast<std::size_t>(pick);
-        const int block = std::min(
-            static_cast<int>(at * kBlocks / std::max<std::size_t>(bodyCount, 1)), kBlocks - 1);
-        slot_[i] = colour * kBlocks + block;  // the colour and block for now, the lane below
-        ++blockCount_[slot_[i]];
-    }
-    // Each colour starts a new wide row, its blocks follow one another in it; blockCount_
-    // becomes each block's next slot. A wide row across two blocks belongs to the later one.
-    int wideRows = 0;
-    colourWide_.resize(kColours + 1);
-    blockWide_.resize(static_cast<std::size_t>(kColours) * (kBlocks + 1));
-    for (int colour = 0; colour < kColours; ++colour) {
-        colourWide_[colour] = wideRows;
-        int* starts = blockWide_.data() + colour * (kBlocks + 1);
-        int offset = 0;
-        for (int block = 0; block < kBlocks; ++block) {
-            int& count = blockCount_[colour * kBlocks + block];
-            starts[block] = wideRows + offset / kLanes;
-            const int n = count;
-            count = kLanes * wideRows + offset;
-            offset += n;
+        return true;
+    }();
+    if (!sameRows) {
+        // Per body the colours its rows have taken, a bit each (the static world takes none): a
+        // row's colour is the lowest bit free in both of its bodies' sets.
+        colourMask_.assign(bodyCount + 1, 0u);
+        blockCount_.assign(static_cast<std::size_t>(kColours) * kBlocks, 0);
+        slot_.resize(rows_.size());
+        overflow_.clear();
+        constexpr std::uint32_t kAllColours =
+            kColours == 32 ? ~std::uint32_t{0} : (std::uint32_t{1} << kColours) - 1;
+        for (std::size_t i = 0; i < rows_.size(); ++i) {
+            const Row& c = rows_[i];
+            const std::uint32_t free = ~(colourMask_[c.a] | colourMask_[c.b]) & kAllColours;
+            if (free == 0) {
+                slot_[i] = -1;
+                overflow_.push_back(static_cast<int>(i));
+                continue;
+            }
+            const int colour = std::countr_zero(free);
+            if (c.a != world) colourMask_[c.a] |= std::uint32_t{1} << colour;
+            if (c.b != world) colourMask_[c.b] |= std::uint32_t{1} << colour;
+            // The block of one of the row's bodies: the dynamic one beside the world, else the
+            // lower or the higher by the parity of their sum. Always the lower would crowd the
+            // first blocks where pairs are far apart in the order (a pile, a gas: the lower of two
+            // random bodies is in the first half three times in four, and the first of two workers
+            // would start with three rows in four); where they are near (a stack) either keeps the
+            // row beside its bodies.
+            const int pick = c.a == world           ? c.b
+                             : c.b == world         ? c.a
+                             : (c.a + c.b) % 2 == 0 ? std::min(c.a, c.b)
+                                                    : std::max(c.a, c.b);
+            const auto at = static_cast<std::size_t>(pick);
+            const int block = std::min(
+                static_cast<int>(at * kBlocks / std::max<std::size_t>(bodyCount, 1)), kBlocks - 1);
+            slot_[i] = colour * kBlocks + block;  // the colour and block for now, the lane below
+            ++blockCount_[slot_[i]];
         }
-        wideRows += (offset + kLanes - 1) / kLanes;
-        starts[kBlocks] = wideRows;
+        // Each colour starts a new wide row, its blocks follow one another in it; blockCount_
+        // becomes each block's next slot. A wide row across two blocks belongs to the later one.
+        int wideRows = 0;
+        colourWide_.resize(kColours + 1);
+        blockWide_.resize(static_cast<std::size_t>(kColours) * (kBlocks + 1));
+        for (int colour = 0; colour < kColours; ++colour) {
+            colourWide_[colour] = wideRows;
+            int* starts = blockWide_.data() + colour * (kBlocks + 1);
+            int offset = 0;
+            for (int block = 0; block < kBlocks; ++block) {
+                int& count = blockCount_[colour * kBlocks + block];
+                starts[block] = wideRows + offset / kLanes;
+                const int n = count;
+                count = kLanes * wideRows + offset;
+                offset += n;
+            }
+            wideRows += (offset + kLanes - 1) / kLanes;
+            starts[kBlocks] = wideRows;
+        }
+        colourWide_[kColours] = wideRows;
+        for (std::size_t i = 0; i < rows_.size(); ++i) {
+            if (slot_[i] < 0) continue;
+            slot_[i] = blockCount_[slot_[i]]++;
+        }
+        wide_.resize(wideRows);
+        wideSetup_.resize(wideRows);
+        order_.assign(kLanes * wideRows, -1);
+        for (std::size_t i = 0; i < rows_.size(); ++i)
+            if (slot_[i] >= 0) order_[slot_[i]] = static_cast<int>(i);
     }
-    colourWide_[kColours] = wideRows;
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        if (slot_[i] < 0) continue;
-        slot_[i] = blockCount_[slot_[i]]++;
-    }
-    wide_.resize(wideRows);
-    wideSetup_.resize(wideRows);
-    order_.assign(kLanes * wideRows, -1);
-    for (std::size_t i = 0; i < rows_.size(); ++i)
-        if (slot_[i] >= 0) order_[slot_[i]] = static_cast<int>(i);
     // The lanes, wide row by wide row (each written by one chunk: shared by the workers).
     forColours([&](std::size_t first, std::size_t end) {
         for (std::size_t r = first; r < end; ++r) {
