@@ -41,9 +41,14 @@ void ContactSolver::forColours(const F& fn) {
     // The colours are one after the other in wide_: a pass whose rows are independent of one
     // another takes them at once, or block by block with each block's part of every colour, so
     // that a worker keeps its blocks' bodies and the workers meet once, not once a colour.
+    // Shared as the sweeps are: only where some colour is (a helper woken for these passes
+    // alone costs a middling scene more than it takes off).
     const auto total = static_cast<std::size_t>(colourWide_[kColours]);
     if (total == 0) return;
-    if (!pool_ || total <= kWideGrain) {
+    bool wide = false;
+    for (int colour = 0; colour < kColours && !wide; ++colour)
+        wide = static_cast<std::size_t>(colourWide_[colour + 1] - colourWide_[colour]) > kWideGrain;
+    if (!pool_ || !wide) {
         fn(std::size_t{0}, total);
         return;
     }
