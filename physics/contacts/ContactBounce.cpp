@@ -31,12 +31,12 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
     // dt = 1 s would otherwise leave at 9.8 m/s and climb far above where it fell from).
     // Returns whether a body was moved to its time of impact (its separations changed).
     if (bouncing_.empty()) return false;
-    for (BounceRow& r : bouncing_) {
-        const int i = r.row;
-        shifted_[2 * i] = shifted_[2 * i + 1] = 0;
-        bounces_[2 * i] = bounces_[2 * i + 1] = 0;
-        r.checkedAt = 0;
-    }
+    std::fill(shifted_.begin(), shifted_.end(), 0);
+    std::fill(bounces_.begin(), bounces_.end(), 0);
+    // The separations, fixed for the call: gathered from the lanes where most rows bounce (a
+    // pile), looked up row by row where few do.
+    const double* separations =
+        2 * bouncing_.size() >= rows_.size() ? gatherSeparations() : nullptr;
     const int world = static_cast<int>(bodies_.size());
     // A row whose bodies took no impulse since it was last looked at would decide as it did
     // then (its separation and smooth change are fixed for the call): it is skipped, so the
@@ -52,19 +52,20 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
             const int i = r.row;
             if (pass > 0 && changedAt_[r.a] <= r.checkedAt && changedAt_[r.b] <= r.checkedAt)
                 continue;
-            Row& c = rows_[i];
+            const Row& c = rows_[i];  // its K, for a manifold that lands flat
             r.checkedAt = clock;
             const double ownRestitution = r.restitution;
-            BodyState& a = state[c.a];
-            BodyState& b = state[c.b];
+            BodyState& a = state[r.a];
+            BodyState& b = state[r.b];
             // A point's impact now: its approach at the moment the bodies meet (vi), the
             // restitution it takes, and whether it must bounce.
             double vi[2] = {0.0, 0.0}, e[2] = {0.0, 0.0}, sep[2] = {0.0, 0.0};
             bool hit[2] = {false, false};
             const auto measure = [&](int k) {
-                const RowPoint& p = c.p[k];
-                const double s = separationOf(i, k);
-                const double vn = relativeVelocity(a, b, p.rAx, p.rAy, p.rBx, p.rBy, c.nx, c.ny);
+                const double* arm = r.arm[k];
+                const double s = separations ? separations[2 * i + k] : separationOf(i, k);
+                const double vn =
+                    relativeVelocity(a, b, arm[0], arm[1], arm[2], arm[3], r.nx, r.ny);
                 sep[k] = s;
                 hit[k] = false;
                 // The threshold keeps resting contact quiet (gravity presses a box on the floor
@@ -81,7 +82,7 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
                 e[k] = bounces_[2 * i + k] < kElasticBounces ? ownRestitution : 0.0;
                 hit[k] = vi[k] < -settings.restitutionThreshold * (1.0 - e[k]);
             };
-            for (int k = 0; k < c.pointCount; ++k) measure(k);
+            for (int k = 0; k < r.pointCount; ++k) measure(k);
             // A point's impulse λ along the normal, and its positional twin (Time of impact:
             // the bodies meet s/|v_n| into the sub-step and separate for the rest of it, so
             // they end (1 + e)·s closer than moving by h·v_new from the sub-step's start
@@ -89,27 +90,27 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
             // high. Only for an isolated pair: shifting a body that touches others could push
             // it into them.)
             const auto apply = [&](int k, double lambda, double shift) {
-                const RowPoint& p = c.p[k];
-                removeImpulse(a, p.rAx, p.rAy, lambda * c.nx, lambda * c.ny);
-                applyImpulse(b, p.rBx, p.rBy, lambda * c.nx, lambda * c.ny);
+                const double* arm = r.arm[k];
+                removeImpulse(a, arm[0], arm[1], lambda * r.nx, lambda * r.ny);
+                applyImpulse(b, arm[2], arm[3], lambda * r.nx, lambda * r.ny);
                 any = true;
                 ++bounces_[2 * i + k];
                 ++clock;
-                if (c.a != world) changedAt_[c.a] = clock;
-                if (c.b != world) changedAt_[c.b] = clock;
+                if (r.a != world) changedAt_[r.a] = clock;
+                if (r.b != world) changedAt_[r.b] = clock;
                 if (!(shift > 0.0) || !r.isolated || shifted_[2 * i + k]) return;
                 shifted_[2 * i + k] = 1;
                 moved = true;
-                const double sx = shift * c.nx, sy = shift * c.ny;
-                const Vec2 rA(p.rAx, p.rAy), rB(p.rBx, p.rBy);
+                const double sx = shift * r.nx, sy = shift * r.ny;
+                const Vec2 rA(arm[0], arm[1]), rB(arm[2], arm[3]);
                 // A positional impulse: moves the bodies without changing their velocities.
-                if (c.a != world) {
-                    SolverBody& body = bodies_[c.a];
+                if (r.a != world) {
+                    SolverBody& body = bodies_[r.a];
                     body.timeShift += body.invMass * Vec2(sx, sy);
                     body.angleTimeShift += body.invInertia * cross(rA, Vec2(sx, sy));
                 }
-                if (c.b != world) {
-                    SolverBody& body = bodies_[c.b];
+                if (r.b != world) {
+                    SolverBody& body = bodies_[r.b];
                     body.timeShift += body.invMass * Vec2(-sx, -sy);
                     body.angleTimeShift += body.invInertia * cross(rB, Vec2(-sx, -sy));
                 }
@@ -136,7 +137,7 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
                 }
             }
             // Point by point, each seeing what the one before did.
-            for (int k = 0; k < c.pointCount; ++k) {
+            for (int k = 0; k < r.pointCount; ++k) {
                 if (k > 0) measure(k);
                 if (!hit[k]) continue;
                 const double normalMass = setup_[i].normalMass[k];

@@ -24,7 +24,7 @@ void ContactSolver::forColour(int colour, const F& fn) {
     const auto first = static_cast<std::size_t>(colourWide_[colour]);
     const auto end = static_cast<std::size_t>(colourWide_[colour + 1]);
     if (first == end) return;
-    if (!pool_ || end - first <= kWideGrain) {
+    if (!pool_ || !wideColour(colour)) {
         fn(first, end);
         return;
     }
@@ -46,8 +46,7 @@ void ContactSolver::forColours(const F& fn) {
     const auto total = static_cast<std::size_t>(colourWide_[kColours]);
     if (total == 0) return;
     bool wide = false;
-    for (int colour = 0; colour < kColours && !wide; ++colour)
-        wide = static_cast<std::size_t>(colourWide_[colour + 1] - colourWide_[colour]) > kWideGrain;
+    for (int colour = 0; colour < kColours && !wide; ++colour) wide = wideColour(colour);
     if (!pool_ || !wide) {
         fn(std::size_t{0}, total);
         return;

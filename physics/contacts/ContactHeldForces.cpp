@@ -75,7 +75,7 @@ namespace {
 // solver body's index, −1 for body A and +1 for body B, the point's held force f (on B) and the
 // body's lever arm to the point. Returns whether any point holds one.
 template <class Apply>
-bool forEachHeldForce(const std::vector<ContactConstraint>& constraints, Apply&& apply) {
+bool forEachHeldForce(const ConstraintList& constraints, Apply&& apply) {
     bool any = false;
     for (const ContactConstraint& c : constraints) {
         const Vec2 t = tangentOf(c.normal);

@@ -5,8 +5,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace phasebox {
+
+const double* ContactSolver::gatherSeparations() {
+    if (!lanesHold_) return separation_.data();
+    gathered_.resize(2 * rows_.size());
+    for (std::size_t r = 0; r < wide_.size(); ++r) {
+        const WideRow& w = wide_[r];
+        const int* rows = order_.data() + kLanes * r;
+        for (int l = 0; l < kLanes; ++l) {
+            const int i = rows[l];
+            if (i < 0) continue;
+            gathered_[2 * i] = w.p[0].separation[l];
+            gathered_[2 * i + 1] = w.p[1].separation[l];
+        }
+    }
+    for (const int i : overflow_) {  // solved alone: separationOf() reads separation_
+        gathered_[2 * i] = separation_[2 * i];
+        gathered_[2 * i + 1] = separation_[2 * i + 1];
+    }
+    return gathered_.data();
+}
 
 void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
     // Gauss-Seidel on positions, translation only (Box2D 2.4's position solver without its
@@ -14,22 +35,33 @@ void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
     // masses, by the overlap beyond deepOverlap but at most pushOut·h per pass. Separations
     // are where the last inner sub-step left them, plus these moves.
     const int world = static_cast<int>(bodies_.size());
+    const double* separation = gatherSeparations();
     bool any = false;
     for (std::size_t i = 0; i < rows_.size() && !any; ++i)
         for (int k = 0; k < rows_[i].pointCount; ++k)
-            any = any || separationOf(i, k) < -setup_[i].deepOverlap;
+            any = any || separation[2 * i + k] < -setup_[i].deepOverlap;
     if (!any) return;
+    deep_.resize(rows_.size());
+    for (std::size_t i = 0; i < rows_.size(); ++i) {
+        const Row& c = rows_[i];
+        DeepRow& d = deep_[i];
+        d.a = c.a;
+        d.b = c.b;
+        d.nx = c.nx;
+        d.ny = c.ny;
+        d.separation = std::numeric_limits<double>::infinity();
+        for (int k = 0; k < c.pointCount; ++k)
+            d.separation = std::min(d.separation, separation[2 * i + k]);
+        d.deepOverlap = setup_[i].deepOverlap;
+    }
     deepShift_.assign(bodies_.size() + 1, Vec2::Zero());
     const double step = settings.pushOut * h;
     for (int pass = 0; pass < kDeepPushOutPasses; ++pass) {
-        for (std::size_t i = 0; i < rows_.size(); ++i) {
-            const Row& c = rows_[i];
+        for (const DeepRow& c : deep_) {
             const Vec2 n(c.nx, c.ny);
             const double moved = n.dot(deepShift_[c.b] - deepShift_[c.a]);
-            double deepest = 0.0;
-            for (int k = 0; k < c.pointCount; ++k)
-                deepest = std::min(deepest, separationOf(i, k) + moved);
-            const double excess = -(deepest + setup_[i].deepOverlap);
+            const double deepest = std::min(0.0, c.separation + moved);
+            const double excess = -(deepest + c.deepOverlap);
             if (!(excess > 0.0)) continue;
             const double wA = c.a < world ? state_[c.a].invMass : 0.0;
             const double wB = c.b < world ? state_[c.b].invMass : 0.0;

@@ -242,6 +242,8 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     supports_.reserve(constraints);
     for (auto* perPoint : {&shifted_, &bounces_}) perPoint->reserve(2 * constraints);
     separation_.reserve(2 * constraints);
+    gathered_.reserve(2 * constraints);
+    deep_.reserve(constraints);
     // Each colour's last wide row may be partly empty.
     wide_.reserve(constraints / kLanes + kColours);
     wideSetup_.reserve(constraints / kLanes + kColours);
@@ -341,7 +343,17 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
             bounce.row = static_cast<int>(i);
             bounce.a = row.a;
             bounce.b = row.b;
+            bounce.pointCount = row.pointCount;
             bounce.restitution = c.restitution;
+            bounce.nx = row.nx;
+            bounce.ny = row.ny;
+            for (int k = 0; k < row.pointCount; ++k) {
+                const RowPoint& p = row.p[k];
+                bounce.arm[k][0] = p.rAx;
+                bounce.arm[k][1] = p.rAy;
+                bounce.arm[k][2] = p.rBx;
+                bounce.arm[k][3] = p.rBy;
+            }
             for (int k = 0; k < 2; ++k)
                 bounce.smoothChange[k] = k < c.pointCount ? smoothNormalChange(row, row.p[k]) : 0.0;
             bounce.isolated = (row.a == world || bodies_[row.a].contactCount == 1) &&

@@ -24,6 +24,7 @@
 //   at a time with AVX2, one by one in the same order otherwise (bit-identical every way).
 
 #include "physics/contacts/Geometry.h"
+#include "physics/core/LargeBuffer.h"
 #include "physics/core/Types.h"
 
 #include <algorithm>
@@ -124,6 +125,9 @@ struct ContactConstraint {
     ContactPoint points[2];
 };
 
+// A step's contacts (tens of megabytes in a dense pile: LargeBuffer.h).
+using ConstraintList = LargeVector<ContactConstraint>;
+
 // The joints as relaxJoined() sees them: x ← x − W·Jᵀ·(J·W·Jᵀ)⁻¹·J·x, a velocity change
 // projected onto their tangent in the mass metric (JointSolver::projectChange).
 class TangentProjection {
@@ -144,8 +148,8 @@ public:
     void setPool(WorkerPool* pool) { pool_ = pool; }
     std::vector<SolverBody>& bodies() { return bodies_; }
     const std::vector<SolverBody>& bodies() const { return bodies_; }
-    std::vector<ContactConstraint>& constraints() { return constraints_; }
-    const std::vector<ContactConstraint>& constraints() const { return constraints_; }
+    ConstraintList& constraints() { return constraints_; }
+    const ConstraintList& constraints() const { return constraints_; }
 
     // Computes effective masses; call after the constraints and bodies are set for a step.
     void prepare();
@@ -234,9 +238,9 @@ public:
         double i11[kLanes], i12[kLanes], i22[kLanes], invA11[kLanes], invA22[kLanes];
         struct Point {
             double rnA[kLanes], rnB[kLanes], rtA[kLanes], rtB[kLanes];  // RowPoint's
-            double bias[kLanes];                                        // the phase's
+            double bias[kLanes];                                        // the phase's bias velocity
             double tangentMass[kLanes], normalImpulse[kLanes], tangentImpulse[kLanes];
-            double effectiveMass[kLanes], impulseScale[kLanes];  // the phase's
+            double effectiveMass[kLanes], impulseScale[kLanes];  // the phase's soft terms
             double rAx[kLanes], rAy[kLanes], rBx[kLanes], rBy[kLanes];
             double heldNormal[kLanes], heldTangent[kLanes];  // the held force per sub-step
             double baseSeparation[kLanes];
@@ -349,6 +353,10 @@ private:
     // another (each chunk writes its own rows only): in one loop, not colour by colour.
     template <class F>
     void forColours(const F& fn);
+    // Whether a colour has more wide rows than kWideGrain (its sweep is shared with a pool).
+    bool wideColour(int colour) const {
+        return static_cast<std::size_t>(colourWide_[colour + 1] - colourWide_[colour]) > kWideGrain;
+    }
     WorkerPool* pool_ = nullptr;
 
     void loadBodies(const Vec& q0, const Vec& u0, const Vec& u);
@@ -438,14 +446,14 @@ private:
     void deepPushOut(double h, const ContactSettings& settings);
 
     std::vector<SolverBody> bodies_;
-    std::vector<ContactConstraint> constraints_;
+    ConstraintList constraints_;
     std::vector<BodyState> state_;      // bodies_.size() + 1 (the static world last)
     std::vector<BodyMotion> motion_;    // likewise
-    std::vector<Row> rows_;             // per constraint, in constraints_'s order
-    std::vector<RowSetup> setup_;       // likewise
-    std::vector<WideSetup> wideSetup_;  // per wide row, its lanes' rows'
+    LargeVector<Row> rows_;             // per constraint, in constraints_'s order
+    LargeVector<RowSetup> setup_;       // likewise
+    LargeVector<WideSetup> wideSetup_;  // per wide row, its lanes' rows'
     std::vector<double> separation_;    // per row point (2 per row), where the path is now
-    std::vector<WideRow> wide_;         // the coloured rows, colour by colour
+    LargeVector<WideRow> wide_;         // the coloured rows, colour by colour
     std::vector<int> slot_;             // per row: kLanes·wide row + lane, or −1 (solved alone)
     std::vector<int> order_;            // per wide slot: its row, or −1 (the sweep order)
     std::vector<int> overflow_;         // rows no colour could take, solved after the wide ones
@@ -454,16 +462,22 @@ private:
     std::vector<int> blockCount_;            // per colour and block its rows, then the next slot
     std::vector<int> blockWide_;  // per colour kBlocks + 1 wide rows: where each block starts
     // A row with restitution, with what its bounce passes read (fixed for the step): the
-    // passes then touch this array, the row and the body states only.
+    // passes then touch this array, the separations and the body states, and a row's K only
+    // where a manifold lands flat.
     struct BounceRow {
         int row;
         int a, b;  // the row's bodies (the later passes' skip test reads only this array)
+        int pointCount;
         double restitution;
+        // The row's normal and anchors (Row's, fixed for the step), beside the rest: every pass
+        // reads them for each row it looks at, and a Row is 384 bytes, a pile's rows megabytes.
+        double nx, ny;
+        double arm[2][4];         // per point rAx, rAy, rBx, rBy
         double smoothChange[2];   // smoothNormalChange of each point, over the whole step
         bool isolated;            // neither body touches anything else (see bounce())
         std::uint32_t checkedAt;  // bounce()'s clock when last looked at
     };
-    std::vector<BounceRow> bouncing_;     // rows with restitution > 0
+    LargeVector<BounceRow> bouncing_;     // rows with restitution > 0
     std::vector<unsigned char> shifted_;  // per row point (2 per row): moved to its time of impact
     std::vector<unsigned char> bounces_;  // per row point: bounces in this inner sub-step
     std::vector<std::uint32_t> changedAt_;  // per body (+ the world): clock of its last impulse
@@ -476,6 +490,19 @@ private:
     };
     std::vector<Support> supports_;
     std::vector<Vec2> deepShift_;  // per body (+ the static world): deepPushOut's displacement
+    // What deepPushOut's passes read of a row: its bodies, normal, deepest point's separation
+    // (a move along the normal shifts every point alike, and rounding keeps their order) and
+    // deep overlap, side by side (a pass over the rows themselves streams 384 bytes a row).
+    struct DeepRow {
+        int a, b;
+        double nx, ny, separation, deepOverlap;
+    };
+    LargeVector<DeepRow> deep_;
+    // Every row point's separationOf() (2 per row), gathered in one pass over the lanes in their
+    // order: looking each up from its row jumps through the lanes, megabytes of them in a pile.
+    // Returns them (separation_ itself where no lanes hold the rows).
+    const double* gatherSeparations();
+    std::vector<double> gathered_;
     // The force a point's kept impulses stand for, along its normal and tangent.
     // (perSubstep and perStep: 1 over the last step's inner sub-step and step).
     static Vec2 forceOf(const ContactPoint& p, double perSubstep, double perStep);

@@ -193,7 +193,7 @@ void ContactStage::bind(const Bodies& bodies) {
 void ContactStage::rebind(const Bodies& bodies) {
     // The contacts of the last collide() and those kept asleep, by the shape pair: a key names
     // colliders, which stay where they are (only their dofs change).
-    std::vector<ContactConstraint> kept = std::move(solver_.constraints());
+    ConstraintList kept = std::move(solver_.constraints());
     kept.insert(kept.end(), asleep_.begin(), asleep_.end());
     bind(bodies);
     const std::uint64_t count = colliders_.size();
@@ -440,7 +440,7 @@ bool ContactStage::narrowPhasePlane(int k, int i, double margin, Manifold& m,
                                                : collidePlaneBox(plane, boxes_[i], margin, m);
 }
 
-void ContactStage::sortByKey(std::vector<ContactConstraint>& constraints) {
+void ContactStage::sortByKey(ConstraintList& constraints) {
     // By their keys alone, then each constraint moved once: a constraint is a few hundred bytes,
     // which the sort itself would move a dozen times each.
     keyOrder_.clear();
@@ -509,12 +509,12 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& q, const Vec& i
     }
     // Every element is rebuilt whole below: those the vector holds already are not cleared
     // first (a contact is a few hundred bytes; one pass over them instead of two).
-    std::vector<ContactConstraint>& constraints = solver_.constraints();
+    ConstraintList& constraints = solver_.constraints();
     constraints.resize(madeFrom_.size());
 }
 
 void ContactStage::buildContacts(int begin, int end) {
-    std::vector<ContactConstraint>& constraints = solver_.constraints();
+    ConstraintList& constraints = solver_.constraints();
     for (int k = begin; k < end; ++k) {
         const Made& made = madeFrom_[k];
         const Found& f = found_[made.slot];
@@ -530,7 +530,7 @@ std::size_t ContactStage::carryChunk(int begin, int end, std::size_t& heldBefore
     // Each contact finds its predecessor by its key (both lists are sorted by key). The chunk
     // owns the contacts of previous_ from its first key up to the next chunk's first key, and
     // counts those that held a force on the way.
-    std::vector<ContactConstraint>& now = solver_.constraints();
+    ConstraintList& now = solver_.constraints();
     const int count = static_cast<int>(now.size());
     const auto byKey = [](const ContactConstraint& c, std::uint64_t key) { return c.key < key; };
     auto old = std::lower_bound(previous_.begin(), previous_.end(), now[begin].key, byKey);
@@ -571,7 +571,7 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
     // every point that held a force found its successor: then the contacts account for all the
     // forces the method's step held (World::releaseHeldForces). Both counts are sums of
     // integers, the same in any order.
-    std::vector<ContactConstraint>& now = solver_.constraints();
+    ConstraintList& now = solver_.constraints();
     const int made = static_cast<int>(now.size());
     std::atomic<std::size_t> carried{0}, heldBefore{0};
     const auto carry = [&](int begin, int end) {

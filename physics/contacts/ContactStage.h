@@ -103,7 +103,7 @@ public:
     // Adds scale times the last step's position correction to q.
     void addPushOut(Vec& q, double scale) const { solver_.addPushOut(q, scale); }
 
-    const std::vector<ContactConstraint>& contacts() const { return solver_.constraints(); }
+    const ConstraintList& contacts() const { return solver_.constraints(); }
 
     // Sleeping. A body asleep collides like a static one. The bodies asleep that an awake body
     // could reach within two frames, found by the last collide() or findReachedSleepers() (a
@@ -199,7 +199,7 @@ private:
         PairContact pair;
         bool hit = false;
     };
-    std::vector<Found> found_;
+    LargeVector<Found> found_;
     // Per contact of this step: its slot in found_, solver bodies and key; and whether the
     // keys came in ascending order.
     struct Made {
@@ -219,19 +219,19 @@ private:
     std::vector<HalfPlane> planes_;
     std::vector<double> planeFriction_, planeRestitution_;
     std::vector<int> bodyOfCollider_;  // solver body index in this step, −1 none yet
-    std::vector<ContactConstraint> previous_;
+    ConstraintList previous_;
     bool heldCarried_ = false;
     // Sleeping: previous_ was filled by rebind() (collide() keeps it), the contacts of islands
     // asleep, the colliders asleep and awake, and the sleepers reached.
     bool carried_ = false;
-    std::vector<ContactConstraint> asleep_;
+    ConstraintList asleep_;
     int asleepColliders_ = 0, awakeColliders_ = 0;
     std::vector<int> reached_;
     void reachSleeper(const Bodies& bodies, int i, int j, double margin);
     // Sorts constraints by key (the pair), for matching them with previous_.
-    void sortByKey(std::vector<ContactConstraint>& constraints);
+    void sortByKey(ConstraintList& constraints);
     std::vector<std::pair<std::uint64_t, int>> keyOrder_;
-    std::vector<ContactConstraint> sorted_;
+    ConstraintList sorted_;
     std::vector<TouchingManifold> touching_;
     // Collider pairs (lower index first, as one key) held by a joint: they never collide.
     std::vector<std::uint64_t> jointedPairs_;
