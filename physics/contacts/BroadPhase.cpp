@@ -171,6 +171,7 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
         if (admit(i, j, boxes[i], boxes[j])) pairs.emplace_back(std::min(i, j), std::max(i, j));
         return !closed(i);
     };
+    const auto offerAll = [](int, int) { return false; };
     const auto firstOtherAfter = [&](int k) {
         return static_cast<std::size_t>(std::upper_bound(otherAt_.begin(), otherAt_.end(), k) -
                                         otherAt_.begin());
@@ -197,11 +198,14 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
             std::size_t nextOther = firstOtherAfter(begin);
             for (int k = begin; k < end && !chunk.overflowed; ++k) {
                 while (nextOther < otherAt_.size() && otherAt_[nextOther] <= k) ++nextOther;
-                chunk.visited += sweepBox(cap, k, nextOther, scratch, [&](int i, int j) {
-                    if (chunk.found.size() >= most) chunk.overflowed = true;
-                    if (!chunk.overflowed) chunk.found.emplace_back(i, j);
-                    return !chunk.overflowed;
-                });
+                chunk.visited += sweepBox(
+                    cap, k, nextOther, scratch,
+                    [&](int i, int j) {
+                        if (chunk.found.size() >= most) chunk.overflowed = true;
+                        if (!chunk.overflowed) chunk.found.emplace_back(i, j);
+                        return !chunk.overflowed;
+                    },
+                    offerAll);
             }
         }
     };
@@ -209,6 +213,28 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
         pool->parallelFor(chunkCount, 1, sweepChunks);
     else
         sweepChunks(0, chunkCount, 0);
+    // Whether keep(i, box at position l) would turn the pair away and change no count: box i
+    // is capped, and so is the other, and the cap the pair falls under is full for i (or both
+    // are kApart). In a pile at one point nearly every candidate is such, thousands per box:
+    // they are passed over reading capAt_ alone. Never while box i is closed, so that keep
+    // still ends its sweep where it did.
+    const int crossAxis = 1 - axis_;
+    const auto turnedAway = [&](int i, int l) {
+        const unsigned char kindI = (*cap.limited)[i];
+        const CapView& o = capAt_[l];
+        if (kindI == PairCap::kFree || o.kind == PairCap::kFree || closed(i)) return false;
+        if (kindI == PairCap::kApart && o.kind == PairCap::kApart) return true;
+        const double sizeI = (*cap.size)[i];
+        if (!(o.size >= 0.5 * sizeI)) return false;  // not counted against i's caps
+        // admit()'s test, term for term.
+        const Aabb& box = boxes[i];
+        const double along = o.twiceAxis - (box.lower[axis_] + box.upper[axis_]);
+        const double across = o.twiceCross - (box.lower[crossAxis] + box.upper[crossAxis]);
+        const double twiceReach = 2.0 * (sizeI + o.size);
+        const bool overlapping = along * along + across * across < twiceReach * twiceReach;
+        return overlapping ? pairCount_[i] >= cap.perBox : nearCount_[i] >= cap.nearPerBox;
+    };
+    capAt_.clear();
     for (int c = 0; c < chunkCount; ++c) {
         Chunk& chunk = chunks_[c];
         if (!chunk.overflowed) {
@@ -216,19 +242,31 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
             candidatesVisited_ += chunk.visited;
             continue;
         }
+        if (capAt_.empty() && capped) {
+            capAt_.resize(boxes.size());
+            for (int l = 0; l < count; ++l) {
+                const int b = order_[l];
+                const Aabb& box = boxes[b];
+                capAt_[l] = {box.lower[axis_] + box.upper[axis_],
+                             box.lower[crossAxis] + box.upper[crossAxis], (*cap.size)[b],
+                             (*cap.limited)[b]};
+            }
+        }
         const int begin = c * kSweepGrain, end = std::min(count, begin + kSweepGrain);
         std::size_t nextOther = firstOtherAfter(begin);
         for (int k = begin; k < end; ++k) {
             while (nextOther < otherAt_.size() && otherAt_[nextOther] <= k) ++nextOther;
-            candidatesVisited_ += sweepBox(cap, k, nextOther, scratch_[0], keep);
+            candidatesVisited_ += capped
+                                      ? sweepBox(cap, k, nextOther, scratch_[0], keep, turnedAway)
+                                      : sweepBox(cap, k, nextOther, scratch_[0], keep, offerAll);
         }
     }
     sortPairs(pairs, count);
 }
 
-template <class Emit>
-long long BroadPhase::sweepFrom(const PairCap& cap, int k, std::size_t nextOther,
-                                Emit&& emit) const {
+template <class Emit, class Skip>
+long long BroadPhase::sweepFrom(const PairCap& cap, int k, std::size_t nextOther, Emit&& emit,
+                                Skip&& skip) const {
     // The boxes that overlap box i along the axis and start no earlier than it are those that
     // follow it in the order up to the first one starting beyond its upper bound; the other
     // axis decides. A kApart box looks only at the others (otherAt_).
@@ -245,7 +283,7 @@ long long BroadPhase::sweepFrom(const PairCap& cap, int k, std::size_t nextOther
         for (; m < otherAt_.size(); ++m) {
             const Sorted& o = sorted[otherAt_[m]];
             if (o.lower > upper) break;
-            if (overlaps(o) && !emit(i, o.box)) break;
+            if (overlaps(o) && !skip(i, otherAt_[m]) && !emit(i, o.box)) break;
         }
         return static_cast<long long>(m - nextOther);
     }
@@ -253,7 +291,7 @@ long long BroadPhase::sweepFrom(const PairCap& cap, int k, std::size_t nextOther
     for (; l < count; ++l) {
         const Sorted& o = sorted[l];
         if (o.lower > upper) break;
-        if (overlaps(o) && !emit(i, o.box)) break;
+        if (overlaps(o) && !skip(i, l) && !emit(i, o.box)) break;
     }
     return l - (k + 1);
 }
@@ -336,13 +374,13 @@ int BroadPhase::bandOf(double cross) const {
     return static_cast<int>(at);
 }
 
-template <class Emit>
+template <class Emit, class Skip>
 long long BroadPhase::sweepBox(const PairCap& cap, int k, std::size_t nextOther, Scratch& buffers,
-                               Emit&& emit) const {
+                               Emit&& emit, Skip&& skip) const {
     // A box in the bands looks at the boxes after it in its bands and at the wide ones, and
     // emits the same overlaps in the same order as the sweep along the whole order would (by
     // their positions in it): each pair is taken in the first band the two boxes share.
-    if (bandCount_ == 0 || firstBand_[k] < 0) return sweepFrom(cap, k, nextOther, emit);
+    if (bandCount_ == 0 || firstBand_[k] < 0) return sweepFrom(cap, k, nextOther, emit, skip);
     const Sorted& box = sortedBoxes_[k];
     const double upper = upper_[k];
     const bool apart = cap.limited != nullptr && (*cap.limited)[box.box] == PairCap::kApart;
@@ -386,7 +424,7 @@ long long BroadPhase::sweepBox(const PairCap& cap, int k, std::size_t nextOther,
         std::copy(merged.begin(), merged.end(), scratch.begin());
     }
     for (const int l : scratch)
-        if (!emit(box.box, sortedBoxes_[l].box)) break;
+        if (!skip(box.box, l) && !emit(box.box, sortedBoxes_[l].box)) break;
     return visited;
 }
 
@@ -397,6 +435,7 @@ void BroadPhase::reserve(std::size_t boxes, std::size_t pairs) {
     pairCount_.reserve(boxes);
     nearCount_.reserve(boxes);
     otherAt_.reserve(boxes);
+    capAt_.reserve(boxes);
     firstOf_.reserve(boxes + 1);
     sorted_.reserve(pairs);
 }

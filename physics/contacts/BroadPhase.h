@@ -74,8 +74,11 @@ private:
     // The overlaps of the box at position k of the order that follow it (the other axis
     // tested), as emit(i, j), until emit returns false (box i takes no further pair); returns
     // how many boxes it visited along the axis. nextOther: the first entry of otherAt_ after k.
-    template <class Emit>
-    long long sweepFrom(const PairCap& cap, int k, std::size_t nextOther, Emit&& emit) const;
+    // skip(i, l): the candidate at position l is one emit would turn away with no effect (it
+    // is not offered; emit still decides where the sweep of box i ends).
+    template <class Emit, class Skip>
+    long long sweepFrom(const PairCap& cap, int k, std::size_t nextOther, Emit&& emit,
+                        Skip&& skip) const;
 
     // A chunk of the shared sweep: its overlaps in sweep order, unless there were more than
     // it keeps (a pile at one point, where nearly all are then capped away): the chunk is swept
@@ -104,9 +107,9 @@ private:
     void buildBands(int count);
     int bandOf(double cross) const;
     struct Scratch;
-    template <class Emit>
+    template <class Emit, class Skip>
     long long sweepBox(const PairCap& cap, int k, std::size_t nextOther, Scratch& buffers,
-                       Emit&& emit) const;
+                       Emit&& emit, Skip&& skip) const;
     static constexpr int kMaxBandsPerBox = 4;
     struct BandEntry {
         double lower;
@@ -131,7 +134,15 @@ private:
     std::vector<int> pairCount_;   // per box: overlapping capped partners taken in this call
     std::vector<int> nearCount_;   // per box: near capped partners taken in this call
     std::vector<int> otherAt_;     // positions in order_ of the boxes not kApart (this call)
-    std::vector<int> firstOf_;     // per box + 1: where its pairs start (sorting)
+    // Per position of the order, what the caps read of its box, side by side (filled where a
+    // chunk is swept again with the caps: a pile at one point, where each box meets thousands).
+    struct CapView {
+        double twiceAxis, twiceCross;  // lower + upper on the sweep axis and the other one
+        double size;
+        unsigned char kind;
+    };
+    std::vector<CapView> capAt_;
+    std::vector<int> firstOf_;                 // per box + 1: where its pairs start (sorting)
     std::vector<std::pair<int, int>> sorted_;  // the pairs by (i, j), before the swap
     int axis_ = 0;
     long long candidatesVisited_ = 0;

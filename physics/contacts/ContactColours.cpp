@@ -130,6 +130,19 @@ void ContactSolver::colourRows() {
         for (std::size_t r = first; r < end; ++r) {
             WideRow& w = wide_[r];
             WideSetup& S = wideSetup_[r];
+            // The next wide row's rows are scattered over the rows' megabytes (a pile's): their
+            // lines are asked for now, while this one's are copied.
+            if (r + 1 < end)
+                for (int l = 0; l < kLanes; ++l) {
+                    const int i = order_[kLanes * (r + 1) + l];
+                    if (i < 0) continue;
+                    const char* row = reinterpret_cast<const char*>(&rows_[i]);
+                    for (std::size_t at = 0; at < sizeof(Row); at += 64)
+                        __builtin_prefetch(row + at);
+                    __builtin_prefetch(&setup_[i]);
+                    __builtin_prefetch(reinterpret_cast<const char*>(&setup_[i]) +
+                                       sizeof(RowSetup) - 1);
+                }
             for (int l = 0; l < kLanes; ++l) {
                 const int i = order_[kLanes * r + l];
                 if (i < 0) {
