@@ -48,13 +48,14 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
     bool moved = false;
     for (int pass = 0; pass < kMaxCollisionPasses; ++pass) {
         bool any = false;
-        for (BounceRow& r : bouncing_) {
+        for (std::size_t n = 0; n < bouncing_.size(); ++n) {
+            BounceRow& r = bouncing_[n];
             const int i = r.row;
             if (pass > 0 && changedAt_[r.a] <= r.checkedAt && changedAt_[r.b] <= r.checkedAt)
                 continue;
-            const Row& c = rows_[i];  // its K, for a manifold that lands flat
             r.checkedAt = clock;
-            const double ownRestitution = r.restitution;
+            const BounceTerms& t = bounceTerms_[n];
+            const double ownRestitution = t.restitution;
             BodyState& a = state[r.a];
             BodyState& b = state[r.b];
             // A point's impact now: its approach at the moment the bodies meet (vi), the
@@ -62,10 +63,10 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
             double vi[2] = {0.0, 0.0}, e[2] = {0.0, 0.0}, sep[2] = {0.0, 0.0};
             bool hit[2] = {false, false};
             const auto measure = [&](int k) {
-                const double* arm = r.arm[k];
+                const double* arm = t.arm[k];
                 const double s = separations ? separations[2 * i + k] : separationOf(i, k);
                 const double vn =
-                    relativeVelocity(a, b, arm[0], arm[1], arm[2], arm[3], r.nx, r.ny);
+                    relativeVelocity(a, b, arm[0], arm[1], arm[2], arm[3], t.nx, t.ny);
                 sep[k] = s;
                 hit[k] = false;
                 // The threshold keeps resting contact quiet (gravity presses a box on the floor
@@ -76,13 +77,13 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
                 // a: the bodies meet at τ with v_i = v_n − a·(h − τ), slower than at the
                 // sub-step's end, and leave at −e·v_i (without this a dropped ball rebounds up
                 // to e·g·h faster than it hit: 2.7% too high at 240 sub-steps a second).
-                const double smooth = r.smoothChange[k] / substeps;
+                const double smooth = t.smoothChange[k] / substeps;
                 const double tau = s > 0.0 ? std::min(h, s / -vn) : 0.0;
                 vi[k] = std::min(vn - smooth * (h - tau) / h, 0.0);
                 e[k] = bounces_[2 * i + k] < kElasticBounces ? ownRestitution : 0.0;
                 hit[k] = vi[k] < -settings.restitutionThreshold * (1.0 - e[k]);
             };
-            for (int k = 0; k < r.pointCount; ++k) measure(k);
+            for (int k = 0; k < t.pointCount; ++k) measure(k);
             // A point's impulse λ along the normal, and its positional twin (Time of impact:
             // the bodies meet s/|v_n| into the sub-step and separate for the rest of it, so
             // they end (1 + e)·s closer than moving by h·v_new from the sub-step's start
@@ -90,18 +91,18 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
             // high. Only for an isolated pair: shifting a body that touches others could push
             // it into them.)
             const auto apply = [&](int k, double lambda, double shift) {
-                const double* arm = r.arm[k];
-                removeImpulse(a, arm[0], arm[1], lambda * r.nx, lambda * r.ny);
-                applyImpulse(b, arm[2], arm[3], lambda * r.nx, lambda * r.ny);
+                const double* arm = t.arm[k];
+                removeImpulse(a, arm[0], arm[1], lambda * t.nx, lambda * t.ny);
+                applyImpulse(b, arm[2], arm[3], lambda * t.nx, lambda * t.ny);
                 any = true;
                 ++bounces_[2 * i + k];
                 ++clock;
                 if (r.a != world) changedAt_[r.a] = clock;
                 if (r.b != world) changedAt_[r.b] = clock;
-                if (!(shift > 0.0) || !r.isolated || shifted_[2 * i + k]) return;
+                if (!(shift > 0.0) || !t.isolated || shifted_[2 * i + k]) return;
                 shifted_[2 * i + k] = 1;
                 moved = true;
-                const double sx = shift * r.nx, sy = shift * r.ny;
+                const double sx = shift * t.nx, sy = shift * t.ny;
                 const Vec2 rA(arm[0], arm[1]), rB(arm[2], arm[3]);
                 // A positional impulse: moves the bodies without changing their velocities.
                 if (r.a != world) {
@@ -119,7 +120,8 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
             // K·λ = −(1 + e)·v_i that ends both approaches together. Point by point, the first
             // point's impulse would turn the body and the second's turn it back with a bounce
             // left over: a box dropped flat with e = 0 left the floor spinning and toppled.
-            if (hit[0] && hit[1] && setup_[i].blockable) {
+            if (hit[0] && hit[1] && t.blockable) {
+                const Row& c = rows_[i];
                 const double det = c.k11 * c.k22 - c.k12 * c.k12;
                 const double b0 = -(1.0 + e[0]) * vi[0], b1 = -(1.0 + e[1]) * vi[1];
                 const double l0 = (c.k22 * b0 - c.k12 * b1) / det;
@@ -137,10 +139,10 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
                 }
             }
             // Point by point, each seeing what the one before did.
-            for (int k = 0; k < r.pointCount; ++k) {
+            for (int k = 0; k < t.pointCount; ++k) {
                 if (k > 0) measure(k);
                 if (!hit[k]) continue;
-                const double normalMass = setup_[i].normalMass[k];
+                const double normalMass = t.normalMass[k];
                 apply(k, -normalMass * (1.0 + e[k]) * vi[k], (1.0 + e[k]) * sep[k] * normalMass);
             }
         }

@@ -239,6 +239,7 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     slot_.reserve(constraints);
     overflow_.reserve(constraints);
     bouncing_.reserve(constraints);
+    bounceTerms_.reserve(constraints);
     supports_.reserve(constraints);
     for (auto* perPoint : {&shifted_, &bounces_}) perPoint->reserve(2 * constraints);
     separation_.reserve(2 * constraints);
@@ -331,22 +332,30 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
     setup_.resize(constraints_.size());
     separation_.resize(2 * constraints_.size());
     bouncing_.clear();
+    bounceTerms_.clear();
     forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) buildRow(i, hertz, zeta, h, warmScale);
     });
-    // The rows with restitution, in order (after every row is built).
+    // The rows with restitution, in order (after every row is built). Room for all at once: a
+    // pile's tens of thousands would otherwise grow the array a doubling at a time.
+    bouncing_.reserve(constraints_.size());
+    bounceTerms_.reserve(constraints_.size());
     for (std::size_t i = 0; i < constraints_.size(); ++i) {
         const ContactConstraint& c = constraints_[i];
         const Row& row = rows_[i];
         if (c.restitution != 0.0) {
-            BounceRow& bounce = bouncing_.emplace_back();  // no allocation once warm
-            bounce.row = static_cast<int>(i);
-            bounce.a = row.a;
-            bounce.b = row.b;
+            bouncing_.push_back({static_cast<int>(i), row.a, row.b, 0});
+            BounceTerms& bounce = bounceTerms_.emplace_back();  // no allocation once warm
+            const RowSetup& setup = setup_[i];
             bounce.pointCount = row.pointCount;
             bounce.restitution = c.restitution;
             bounce.nx = row.nx;
             bounce.ny = row.ny;
+            bounce.blockable = setup.blockable;
+            for (int k = 0; k < 2; ++k) {
+                bounce.smoothChange[k] = k < c.pointCount ? smoothNormalChange(row, row.p[k]) : 0.0;
+                bounce.normalMass[k] = setup.normalMass[k];
+            }
             for (int k = 0; k < row.pointCount; ++k) {
                 const RowPoint& p = row.p[k];
                 bounce.arm[k][0] = p.rAx;
@@ -354,8 +363,6 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
                 bounce.arm[k][2] = p.rBx;
                 bounce.arm[k][3] = p.rBy;
             }
-            for (int k = 0; k < 2; ++k)
-                bounce.smoothChange[k] = k < c.pointCount ? smoothNormalChange(row, row.p[k]) : 0.0;
             bounce.isolated = (row.a == world || bodies_[row.a].contactCount == 1) &&
                               (row.b == world || bodies_[row.b].contactCount == 1);
         }

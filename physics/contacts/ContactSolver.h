@@ -461,23 +461,27 @@ private:
     std::vector<int> colourWide_;            // per colour its first wide row, then the end
     std::vector<int> blockCount_;            // per colour and block its rows, then the next slot
     std::vector<int> blockWide_;  // per colour kBlocks + 1 wide rows: where each block starts
-    // A row with restitution, with what its bounce passes read (fixed for the step): the
-    // passes then touch this array, the separations and the body states, and a row's K only
-    // where a manifold lands flat.
+    // A row with restitution, as its bounce passes read it: the later passes' skip test reads
+    // only BounceRow (16 bytes a row), a look at the row its BounceTerms (what the row holds,
+    // fixed for the step, side by side: a Row is 384 bytes, a pile's rows megabytes), the
+    // separations and the body states, and a row's K only where a manifold lands flat.
     struct BounceRow {
         int row;
-        int a, b;  // the row's bodies (the later passes' skip test reads only this array)
-        int pointCount;
-        double restitution;
-        // The row's normal and anchors (Row's, fixed for the step), beside the rest: every pass
-        // reads them for each row it looks at, and a Row is 384 bytes, a pile's rows megabytes.
-        double nx, ny;
-        double arm[2][4];         // per point rAx, rAy, rBx, rBy
-        double smoothChange[2];   // smoothNormalChange of each point, over the whole step
-        bool isolated;            // neither body touches anything else (see bounce())
+        int a, b;                 // the row's bodies
         std::uint32_t checkedAt;  // bounce()'s clock when last looked at
     };
-    LargeVector<BounceRow> bouncing_;     // rows with restitution > 0
+    struct BounceTerms {
+        int pointCount;
+        bool isolated;   // neither body touches anything else (see bounce())
+        bool blockable;  // RowSetup's
+        double restitution;
+        double nx, ny;
+        double arm[2][4];        // per point rAx, rAy, rBx, rBy
+        double smoothChange[2];  // smoothNormalChange of each point, over the whole step
+        double normalMass[2];    // RowSetup's
+    };
+    LargeVector<BounceRow> bouncing_;       // rows with restitution > 0
+    LargeVector<BounceTerms> bounceTerms_;  // likewise
     std::vector<unsigned char> shifted_;  // per row point (2 per row): moved to its time of impact
     std::vector<unsigned char> bounces_;  // per row point: bounces in this inner sub-step
     std::vector<std::uint32_t> changedAt_;  // per body (+ the world): clock of its last impulse

@@ -491,6 +491,7 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& q, const Vec& i
     // The contacts in slot order: numbered, with their solver bodies and keys, here; built
     // from their slots in parallel.
     madeFrom_.clear();
+    madeFrom_.reserve(found_.size());  // at once, not a doubling at a time
     std::uint64_t lastKey = 0;
     keysAscending_ = true;
     for (int s = 0; s < pairCount + planeTests; ++s) {
