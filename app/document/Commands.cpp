@@ -18,7 +18,7 @@ QString joinIssues(const std::vector<SceneIssue>& issues) {
     return lines.join(QLatin1Char('\n'));
 }
 
-QString quoted(const std::string& id) {
+QString quotedId(const std::string& id) {
     return QLatin1Char('"') + QString::fromStdString(id) + QLatin1Char('"');
 }
 
@@ -224,7 +224,7 @@ MoveObjectCommand::MoveObjectCommand(Document& document, const QString& id, cons
     std::optional<Point2> from;
     visitObject(scene, ref_, [&](const auto& desc) { from = pointField(desc, placeKey); });
     if (!ref_.isValid())
-        refuse(QObject::tr("unknown object id %1").arg(quoted(id_)));
+        refuse(QObject::tr("unknown object id %1").arg(quotedId(id_)));
     else if (from)
         from_ = *from;
     else if (!placeKey.empty())  // a connector held between two bodies, not by its anchor
@@ -240,10 +240,10 @@ MoveObjectCommand::MoveObjectCommand(Document& document, const QString& id, cons
     // no longer loads.
     const double limit = SceneLimits::kMaxLength;
     if (!std::isfinite(position[0]) || !std::isfinite(position[1]))
-        refuse(QObject::tr("the position of %1 must be finite").arg(quoted(id_)));
+        refuse(QObject::tr("the position of %1 must be finite").arg(quotedId(id_)));
     else if (!(std::abs(position[0]) <= limit && std::abs(position[1]) <= limit))
         refuse(QObject::tr("the position of %1 must lie within ±%2 m")
-                   .arg(quoted(id_))
+                   .arg(quotedId(id_))
                    .arg(limit, 0, 'g'));
 }
 
@@ -276,7 +276,7 @@ SetPropertyCommand::SetPropertyCommand(Document& document, const QString& id, co
       key_(key),
       ref_(findObject(setup(), id.toStdString())) {
     if (!ref_.isValid()) {
-        refuse(QObject::tr("unknown object id %1").arg(quoted(id.toStdString())));
+        refuse(QObject::tr("unknown object id %1").arg(quotedId(id.toStdString())));
         return;
     }
     objectId_ = QString::fromStdString(objectId(setup(), ref_));  // a cloth node names its cloth
@@ -330,8 +330,9 @@ SetPinnedCommand::SetPinnedCommand(Document& document, const QString& id, bool p
         else
             setText(pinned ? QObject::tr("Pin %1").arg(id) : QObject::tr("Unpin %1").arg(id));
     } else {
-        refuse(ref_.isValid() ? QObject::tr("only particles and rigid bodies can be pinned")
-                              : QObject::tr("unknown object id %1").arg(quoted(id.toStdString())));
+        refuse(ref_.isValid()
+                   ? QObject::tr("only particles and rigid bodies can be pinned")
+                   : QObject::tr("unknown object id %1").arg(quotedId(id.toStdString())));
     }
 }
 
