@@ -104,6 +104,7 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
                            const PairCap& cap, WorkerPool* pool) {
     pairs.clear();
     candidatesVisited_ = 0;
+    capBound_ = false;
     const int count = static_cast<int>(boxes.size());
 
     arrange(boxes);
@@ -149,13 +150,19 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
         const bool countsForI = sizeJ >= 0.5 * sizeI;
         const bool countsForJ = sizeI >= 0.5 * sizeJ;
         // A side whose caps are both full turns the pair away whichever cap it falls under.
-        if ((countsForI && full(i)) || (countsForJ && full(j))) return false;
+        if ((countsForI && full(i)) || (countsForJ && full(j))) {
+            capBound_ = true;
+            return false;
+        }
         const Vec2 twiceOffset = (o.lower + o.upper) - (box.lower + box.upper);
         const double twiceReach = 2.0 * (sizeI + sizeJ);
         const bool overlapping = twiceOffset.squaredNorm() < twiceReach * twiceReach;
         std::vector<int>& taken = overlapping ? pairCount_ : nearCount_;
         const int limit = overlapping ? cap.perBox : cap.nearPerBox;
-        if ((countsForI && taken[i] >= limit) || (countsForJ && taken[j] >= limit)) return false;
+        if ((countsForI && taken[i] >= limit) || (countsForJ && taken[j] >= limit)) {
+            capBound_ = true;
+            return false;
+        }
         taken[i] += countsForI;
         taken[j] += countsForJ;
         return true;
@@ -169,7 +176,9 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
             return true;
         }
         if (admit(i, j, boxes[i], boxes[j])) pairs.emplace_back(std::min(i, j), std::max(i, j));
-        return !closed(i);
+        if (!closed(i)) return true;
+        capBound_ = true;
+        return false;
     };
     const auto offerAll = [](int, int) { return false; };
     const auto firstOtherAfter = [&](int k) {
@@ -252,6 +261,7 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
                              (*cap.limited)[b]};
             }
         }
+        capBound_ = true;
         const int begin = c * kSweepGrain, end = std::min(count, begin + kSweepGrain);
         std::size_t nextOther = firstOtherAfter(begin);
         for (int k = begin; k < end; ++k) {

@@ -64,6 +64,11 @@ public:
     // rejects nothing).
     int axis() const { return axis_; }
     long long candidatesVisited() const { return candidatesVisited_; }
+    // Whether the caps of the last call turned away a pair (or ended a box's sweep, or a chunk
+    // overflowed): then its pairs depend on which candidates there were, and those of a subset
+    // of the boxes' extents are not those pairs filtered. Pairs of two kApart boxes, left out
+    // whatever the candidates, do not count.
+    bool capBound() const { return capBound_; }
 
 private:
     // The sweep axis, the order along it (sortOrder()), the bounds in its sequence and the
@@ -146,6 +151,7 @@ private:
     std::vector<std::pair<int, int>> sorted_;  // the pairs by (i, j), before the swap
     int axis_ = 0;
     long long candidatesVisited_ = 0;
+    bool capBound_ = false;
 };
 
 }  // namespace phasebox

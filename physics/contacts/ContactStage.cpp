@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace phasebox {
@@ -157,6 +158,8 @@ void ContactStage::bind(const Bodies& bodies) {
     broadPhase_.reserve(colliders_.size(), contacts);
     solver_.reserve(colliders_.size(), contacts);
     pairs_.reserve(contacts);
+    fatPairs_.reserve(contacts);
+    fatBounds_.reserve(colliders_.size());
     previous_.reserve(contacts);
     touching_.reserve(contacts);
     // Pairs between dynamic bodies are capped per body (a static one meets only dynamic ones,
@@ -183,6 +186,8 @@ void ContactStage::bind(const Bodies& bodies) {
         }
     }
     previous_.clear();
+    fatValid_ = false;
+    capsBound_ = true;
     heldCarried_ = false;
     carried_ = false;
     solver_.constraints().clear();
@@ -343,7 +348,9 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
                     return std::max(std::abs(u[k]),
                                     std::abs(u[k] + extrapolate * (uNext[k] - u[k])));
                 };
-                double speed = std::hypot(reach(c.dof), reach(c.dof + 1));
+                const double reachX = reach(c.dof), reachY = reach(c.dof + 1);
+                double speed = std::sqrt(reachX * reachX + reachY * reachY);
+                if (!std::isfinite(speed)) speed = std::hypot(reachX, reachY);  // no overflow
                 Motion& motion = motion_[i];
                 motion.start = u.segment<2>(c.dof);
                 motion.end = motion.start + extrapolate * (uNext.segment<2>(c.dof) - motion.start);
@@ -361,8 +368,53 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
             bounds_[i].upper += grow;
         }
     });
-    broadPhase_.findPairs(bounds_, pairs_,
-                          {&pairLimited_, &pairSize_, kOverlappingPairCap, kNearPairCap}, pool_);
+    const PairCap cap{&pairLimited_, &pairSize_, kOverlappingPairCap, kNearPairCap};
+    const auto inside = [](const Aabb& box, const Aabb& fat) {
+        return fat.lower.x() <= box.lower.x() && fat.lower.y() <= box.lower.y() &&
+               box.upper.x() <= fat.upper.x() && box.upper.y() <= fat.upper.y();
+    };
+    bool reuse = fatValid_ && fatBounds_.size() == bounds_.size();
+    for (int i = 0; reuse && i < count; ++i) reuse = inside(bounds_[i], fatBounds_[i]);
+    if (!reuse) {
+        fatValid_ = false;
+        // Where the last sweep's caps bound, this one's would too: the plain sweep.
+        if (capsBound_) {
+            broadPhase_.findPairs(bounds_, pairs_, cap, pool_);
+            capsBound_ = broadPhase_.capBound();
+            return;
+        }
+        fatBounds_.resize(bounds_.size());
+        bool finite = true;
+        for (int i = 0; i < count; ++i) {
+            const Aabb& box = bounds_[i];
+            const Vec2 extent = box.upper - box.lower;
+            const Vec2 grow = Vec2::Constant(kFatMargin * extent.minCoeff());
+            fatBounds_[i] = {box.lower - grow, box.upper + grow};
+            finite = finite && fatBounds_[i].lower.allFinite() && fatBounds_[i].upper.allFinite();
+        }
+        if (finite) broadPhase_.findPairs(fatBounds_, fatPairs_, cap, pool_);
+        if (!finite || broadPhase_.capBound()) {
+            broadPhase_.findPairs(bounds_, pairs_, cap, pool_);
+            capsBound_ = broadPhase_.capBound();
+            return;
+        }
+        fatValid_ = true;
+    }
+    // The broad phase's own test (the bounds are finite here): they overlap on both axes.
+    pairs_.clear();
+    for (const auto& [i, j] : fatPairs_) {
+        if (bounds_[i].overlaps(bounds_[j])) pairs_.push_back({i, j});
+    }
+#if PHASEBOX_EXPENSIVE_CHECKS
+    // The broad phase on this step's bounds finds the very same pairs, in the same order.
+    static thread_local std::vector<std::pair<int, int>> direct;
+    broadPhase_.findPairs(bounds_, direct, cap, pool_);
+    if (direct != pairs_ || broadPhase_.capBound()) {
+        std::fprintf(stderr, "phasebox: invariant violated: %s\n",
+                     "the pairs of the fat bounds are not the broad phase's");
+        std::abort();
+    }
+#endif
 }
 
 bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin, Manifold& m,

@@ -192,6 +192,17 @@ private:
     };
     std::vector<Motion> motion_;
     std::vector<std::pair<int, int>> pairs_;
+    // The broad phase on bounds grown further, by kFatMargin of each one's smaller extent, and
+    // its pairs: while every collider's bounds stay inside its fat ones (a stack at rest, step
+    // after step), this step's pairs are the fat pairs whose bounds overlap, the same pairs in
+    // the same order as the broad phase would find (findPairs()), for a pass over the pairs
+    // instead of a sweep. Not where the caps bind (a pile): then the pairs depend on which
+    // candidates the sweep met, and the broad phase runs on this step's bounds.
+    static constexpr double kFatMargin = 0.1;
+    std::vector<Aabb> fatBounds_;
+    std::vector<std::pair<int, int>> fatPairs_;
+    bool fatValid_ = false;  // fatPairs_ are the pairs of fatBounds_, with no cap bound
+    bool capsBound_ = true;  // the last broad phase's caps bound (or none ran since bind())
     // Per candidate pair, then per plane and collider: the narrow phase's answer, found in
     // parallel and turned into contacts in order.
     struct Found {

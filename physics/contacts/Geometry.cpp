@@ -89,6 +89,28 @@ double maxSeparation(const Box& box, const Other& other, int& bestFace) {
     return best;
 }
 
+// The same against a box: its deepest corner along a face's normal n lies below its centre by
+// the projections of its half extents, |n·e_x| + |n·e_y|, one term per face instead of a look at
+// each of the four corners.
+template <class Shape>
+double maxSeparation(const Shape& shape, const PlacedBox& box, int& bestFace) {
+    const Vec2 center = 0.5 * (box.corners[0] + box.corners[2]);
+    const Vec2 ex = 0.5 * (box.corners[1] - box.corners[0]);
+    const Vec2 ey = 0.5 * (box.corners[3] - box.corners[0]);
+    double best = -std::numeric_limits<double>::infinity();
+    bestFace = 0;
+    for (int i = 0; i < shape.count; ++i) {
+        const Vec2& n = shape.normals[i];
+        const double deepest =
+            n.dot(center - shape.corners[i]) - std::abs(n.dot(ex)) - std::abs(n.dot(ey));
+        if (deepest > best) {
+            best = deepest;
+            bestFace = i;
+        }
+    }
+    return best;
+}
+
 // Keeps the part of segment v on the side dir·x ≤ offset. An end beyond the plane is moved onto
 // it rather than dropped, so that v[0] and v[1] keep naming the same ends of the incident edge
 // (which is what makes the feature ids stable when a point slides past a side plane).
