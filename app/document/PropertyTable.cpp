@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <unordered_set>
 
 namespace phasebox {
@@ -51,10 +52,18 @@ PairNames pairNames(const schema::Field<D>& f) {
     }
 }
 
+// What forEachProperty() calls for each row: the row, its editor and set(value), which writes
+// the property. One type for every caller, so that the walk over a description's fields (a
+// visit of every member's type, nested descriptions included) is compiled once per description,
+// not once per caller as well (the file took half a minute to compile).
+using PropertySetter = std::function<void(double)>;
+using PropertyVisitor =
+    std::function<void(const PropertyRow&, const schema::Editor&, const PropertySetter&)>;
+
 // The two rows of a pair (a point, a size, a grid), where set(value) writes one of them.
-template <typename D, typename Pair, typename Row, typename Fn>
+template <typename D, typename Pair, typename Row>
 void pairRows(const schema::Field<D>& field, const QString& fieldKey, Pair& pair, Row&& row,
-              const schema::Editor& e, Fn&& fn) {
+              const schema::Editor& e, const PropertyVisitor& fn) {
     const PairNames names = pairNames(field);
     for (std::size_t k = 0; k < 2; ++k)
         fn(row(fieldKey + QLatin1String(names.suffix[k]), names.label[k],
@@ -72,8 +81,8 @@ void pairRows(const schema::Field<D>& field, const QString& fieldKey, Pair& pair
 // where set(value) writes the property into d. What the editor shows of a field is in its
 // schema::Editor; a pair held in std::optional (a spring's anchor) only while it is set, a
 // direction marked Editor::tilt as one angle.
-template <typename D, typename Fn>
-void forEachProperty(D& d, Fn&& fn, const QString& prefix = {}) {
+template <typename D>
+void forEachProperty(D& d, const PropertyVisitor& fn, const QString& prefix = {}) {
     for (const schema::Field<D>& field : schema::table<D>().fields) {
         if (field.uses && !field.uses(d)) continue;  // a field this joint's type does not use
         const QString fieldKey = prefix + text(field.key);
