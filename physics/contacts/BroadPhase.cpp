@@ -241,7 +241,10 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
         const double across = o.twiceCross - (box.lower[crossAxis] + box.upper[crossAxis]);
         const double twiceReach = 2.0 * (sizeI + o.size);
         const bool overlapping = along * along + across * across < twiceReach * twiceReach;
-        return overlapping ? pairCount_[i] >= cap.perBox : nearCount_[i] >= cap.nearPerBox;
+        const bool away =
+            overlapping ? pairCount_[i] >= cap.perBox : nearCount_[i] >= cap.nearPerBox;
+        capBound_ = capBound_ || away;
+        return away;
     };
     capAt_.clear();
     for (int c = 0; c < chunkCount; ++c) {
@@ -261,7 +264,6 @@ void BroadPhase::findPairs(const std::vector<Aabb>& boxes, std::vector<std::pair
                              (*cap.limited)[b]};
             }
         }
-        capBound_ = true;
         const int begin = c * kSweepGrain, end = std::min(count, begin + kSweepGrain);
         std::size_t nextOther = firstOtherAfter(begin);
         for (int k = begin; k < end; ++k) {

@@ -64,10 +64,10 @@ public:
     // rejects nothing).
     int axis() const { return axis_; }
     long long candidatesVisited() const { return candidatesVisited_; }
-    // Whether the caps of the last call turned away a pair (or ended a box's sweep, or a chunk
-    // overflowed): then its pairs depend on which candidates there were, and those of a subset
-    // of the boxes' extents are not those pairs filtered. Pairs of two kApart boxes, left out
-    // whatever the candidates, do not count.
+    // Whether the caps of the last call turned away a pair (or ended a box's sweep): then its
+    // pairs depend on which candidates there were, and those of a subset of the boxes' extents
+    // are not those pairs filtered. Pairs of two kApart boxes, left out whatever the
+    // candidates, do not count.
     bool capBound() const { return capBound_; }
 
 private:

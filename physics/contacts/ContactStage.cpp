@@ -188,6 +188,7 @@ void ContactStage::bind(const Bodies& bodies) {
     previous_.clear();
     fatValid_ = false;
     capsBound_ = true;
+    fatRetryIn_ = 0;
     heldCarried_ = false;
     carried_ = false;
     solver_.constraints().clear();
@@ -378,7 +379,8 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
     if (!reuse) {
         fatValid_ = false;
         // Where the last sweep's caps bound, this one's would too: the plain sweep.
-        if (capsBound_) {
+        if (capsBound_ || fatRetryIn_ > 0) {
+            fatRetryIn_ = std::max(fatRetryIn_ - 1, 0);
             broadPhase_.findPairs(bounds_, pairs_, cap, pool_);
             capsBound_ = broadPhase_.capBound();
             return;
@@ -394,6 +396,7 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
         }
         if (finite) broadPhase_.findPairs(fatBounds_, fatPairs_, cap, pool_);
         if (!finite || broadPhase_.capBound()) {
+            fatRetryIn_ = kFatRetryFrames;
             broadPhase_.findPairs(bounds_, pairs_, cap, pool_);
             capsBound_ = broadPhase_.capBound();
             return;

@@ -203,6 +203,11 @@ private:
     std::vector<std::pair<int, int>> fatPairs_;
     bool fatValid_ = false;  // fatPairs_ are the pairs of fatBounds_, with no cap bound
     bool capsBound_ = true;  // the last broad phase's caps bound (or none ran since bind())
+    // After a sweep of fat bounds whose caps bound where the frame's own did not (a dense heap
+    // near its caps), the frames until the next try: the sweep runs on the frame's bounds alone,
+    // not on both every frame.
+    static constexpr int kFatRetryFrames = 60;
+    int fatRetryIn_ = 0;
     // Per candidate pair, then per plane and collider: the narrow phase's answer, found in
     // parallel and turned into contacts in order.
     struct Found {

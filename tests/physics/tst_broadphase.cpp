@@ -147,6 +147,7 @@ private slots:
     void scrambledOrder();
     void noAllocationOnceWarm();
     void cappedFollowsTheSweepOrder();
+    void grownBoundsKeepThePairs();
     void timing10000();
 };
 
@@ -293,6 +294,55 @@ void TestBroadPhase::cappedFollowsTheSweepOrder() {
             }
         }
     }
+}
+
+void TestBroadPhase::grownBoundsKeepThePairs() {
+    // ContactStage keeps the pairs of bounds grown by a margin while the bounds stay inside the
+    // grown ones, and takes as a frame's pairs those kept pairs whose own bounds overlap. That is
+    // the sweep's answer exactly when the caps chose nothing (capBound() false): checked here on
+    // moving boxes, free, apart and capped, with caps too large to bind; with caps that bind,
+    // capBound() says so.
+    BoxMaker maker(11u, 60.0, 2.0, 6);
+    const std::vector<Aabb> boxes = maker.make(1500);
+    std::uniform_int_distribution<int> kind(0, 19);
+    std::uniform_real_distribution<double> radius(0.1, 1.0);
+    std::vector<unsigned char> limited(boxes.size());
+    std::vector<double> size(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const int k = kind(maker.rng());
+        limited[i] = k == 0 ? PairCap::kFree : k < 5 ? PairCap::kApart : PairCap::kCapped;
+        size[i] = radius(maker.rng());
+    }
+    const PairCap loose{&limited, &size, 1000, 1000};
+    const PairCap tight{&limited, &size, 3, 4};
+    constexpr double kMargin = 0.2;
+    std::vector<Aabb> grown = boxes;
+    for (Aabb& b : grown) {
+        b.lower -= Vec2::Constant(kMargin);
+        b.upper += Vec2::Constant(kMargin);
+    }
+    BroadPhase broadPhase, fresh;
+    Pairs kept, pairs;
+    broadPhase.findPairs(grown, kept, loose);
+    QVERIFY(!broadPhase.capBound());
+    QVERIFY(kept.size() > boxes.size());  // a real test: many pairs, more than the frames' own
+    std::vector<Aabb> moving = boxes;
+    for (int frame = 0; frame < 6; ++frame) {
+        Pairs filtered;
+        for (const auto& [i, j] : kept)
+            if (moving[i].overlaps(moving[j])) filtered.emplace_back(i, j);
+        fresh.findPairs(moving, pairs, loose);
+        QVERIFY(!fresh.capBound());
+        QVERIFY2(filtered == pairs, qPrintable(QStringLiteral("frame %1").arg(frame)));
+        QVERIFY(filtered.size() < kept.size());
+        // Each box moves by less than the margin in all, so it stays inside its grown bounds.
+        maker.move(moving, kMargin / 8.0);
+    }
+    fresh.findPairs(moving, pairs, tight);
+    QVERIFY(fresh.capBound());
+    QVERIFY(pairs == cappedReference(moving, fresh.axis(), tight));
+    fresh.findPairs(moving, pairs);  // no caps at all
+    QVERIFY(!fresh.capBound());
 }
 
 void TestBroadPhase::timing10000() {
