@@ -134,6 +134,24 @@ Pairs cappedReference(const std::vector<Aabb>& boxes, int axis, const PairCap& c
     return pairs;
 }
 
+// Each box's kind for the caps and its shape's size: a twentieth free (static bodies), a fifth
+// apart (particles that do not collide), the rest capped, sizes 0.1 to 1 (tight: none free,
+// sizes 0.5 to 0.6, so that a box whose caps are full can take no further partner).
+struct CapKinds {
+    std::vector<unsigned char> limited;
+    std::vector<double> size;
+};
+CapKinds randomCapKinds(BoxMaker& maker, std::size_t count, bool tight) {
+    std::uniform_int_distribution<int> kind(tight ? 1 : 0, 19);
+    std::uniform_real_distribution<double> radius(tight ? 0.5 : 0.1, tight ? 0.6 : 1.0);
+    CapKinds kinds{std::vector<unsigned char>(count), std::vector<double>(count)};
+    for (std::size_t i = 0; i < count; ++i) {
+        const int k = kind(maker.rng());
+        kinds.limited[i] = k == 0 ? PairCap::kFree : k < 5 ? PairCap::kApart : PairCap::kCapped;
+        kinds.size[i] = radius(maker.rng());
+    }
+    return kinds;
+}
 }  // namespace
 
 class TestBroadPhase : public QObject {
@@ -268,16 +286,8 @@ void TestBroadPhase::cappedFollowsTheSweepOrder() {
             const Vec2 at(12.0 * w, 10.0 * (w % 3));
             boxes.push_back({at, at + (w % 2 ? Vec2(30.0, 1.0) : Vec2(1.0, 30.0))});
         }
-        std::uniform_int_distribution<int> kind(tight ? 1 : 0, 19);
-        std::uniform_real_distribution<double> radius(tight ? 0.5 : 0.1, tight ? 0.6 : 1.0);
-        std::vector<unsigned char> limited(boxes.size());
-        std::vector<double> size(boxes.size());
-        for (std::size_t i = 0; i < boxes.size(); ++i) {
-            const int k = kind(maker.rng());
-            limited[i] = k == 0 ? PairCap::kFree : k < 5 ? PairCap::kApart : PairCap::kCapped;
-            size[i] = radius(maker.rng());
-        }
-        const PairCap cap{&limited, &size, 3, 4};
+        const CapKinds kinds = randomCapKinds(maker, boxes.size(), tight);
+        const PairCap cap{&kinds.limited, &kinds.size, 3, 4};
         for (const int workers : {1, 2, 4}) {
             WorkerPool pool(workers);
             BroadPhase broadPhase;
@@ -304,17 +314,9 @@ void TestBroadPhase::grownBoundsKeepThePairs() {
     // capBound() says so.
     BoxMaker maker(11u, 60.0, 2.0, 6);
     const std::vector<Aabb> boxes = maker.make(1500);
-    std::uniform_int_distribution<int> kind(0, 19);
-    std::uniform_real_distribution<double> radius(0.1, 1.0);
-    std::vector<unsigned char> limited(boxes.size());
-    std::vector<double> size(boxes.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const int k = kind(maker.rng());
-        limited[i] = k == 0 ? PairCap::kFree : k < 5 ? PairCap::kApart : PairCap::kCapped;
-        size[i] = radius(maker.rng());
-    }
-    const PairCap loose{&limited, &size, 1000, 1000};
-    const PairCap tight{&limited, &size, 3, 4};
+    const CapKinds kinds = randomCapKinds(maker, boxes.size(), false);
+    const PairCap loose{&kinds.limited, &kinds.size, 1000, 1000};
+    const PairCap tight{&kinds.limited, &kinds.size, 3, 4};
     constexpr double kMargin = 0.2;
     std::vector<Aabb> grown = boxes;
     for (Aabb& b : grown) {
