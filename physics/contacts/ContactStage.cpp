@@ -370,12 +370,8 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
         }
     });
     const PairCap cap{&pairLimited_, &pairSize_, kOverlappingPairCap, kNearPairCap};
-    const auto inside = [](const Aabb& box, const Aabb& fat) {
-        return fat.lower.x() <= box.lower.x() && fat.lower.y() <= box.lower.y() &&
-               box.upper.x() <= fat.upper.x() && box.upper.y() <= fat.upper.y();
-    };
-    bool reuse = fatValid_ && fatBounds_.size() == bounds_.size();
-    for (int i = 0; reuse && i < count; ++i) reuse = inside(bounds_[i], fatBounds_[i]);
+    bool reuse = fatValid_;  // bind() drops the kept pairs whenever the colliders change
+    for (int i = 0; reuse && i < count; ++i) reuse = fatBounds_[i].contains(bounds_[i]);
     if (!reuse) {
         fatValid_ = false;
         // Where the last sweep's caps bound, this one's would too: the plain sweep.

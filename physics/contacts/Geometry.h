@@ -63,6 +63,10 @@ struct Aabb {
         return lower.x() <= o.upper.x() && o.lower.x() <= upper.x() && lower.y() <= o.upper.y() &&
                o.lower.y() <= upper.y();
     }
+    bool contains(const Aabb& o) const {
+        return lower.x() <= o.lower.x() && lower.y() <= o.lower.y() && o.upper.x() <= upper.x() &&
+               o.upper.y() <= upper.y();
+    }
 };
 
 struct ManifoldPoint {
