@@ -379,7 +379,6 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
     // penetrating one during relax, is rigid); per row the block's inverse. Separations are
     // fixed within a phase, so this is done once for all its iterations.
     const PhaseTerms terms{1.0 / h, settings.pushOut, useBias};
-    if (measure) updateMotion();
     if (lanesHold_) {
         forColours([&](std::size_t first, std::size_t end) {
             wide.prepare(wide_.data() + first, static_cast<int>(end - first),
@@ -424,40 +423,61 @@ namespace {
 // cos and sin of the turn since the contacts were found: a fraction of a step's rotation, so
 // almost always small. Below 1/4 rad the Taylor polynomials (to x⁹ and x¹⁰) are within 3e-14 of
 // the library's values, at a tenth of the cost (a libm call per body and phase was 5% of a
-// pyramid's solve).
+// pyramid's solve). Their nine divisions are independent of one another: four at a time, they
+// give the same bits as one by one and no longer queue for the divider (they were most of
+// updateMotion's time).
 inline void smallRotation(double x, double& c, double& s) {
     if (!(std::abs(x) < 0.25)) {
         c = std::cos(x);
         s = std::sin(x);
         return;
     }
+    using Quad = double __attribute__((vector_size(32)));
     const double x2 = x * x;
-    s = x * (1.0 - x2 / 6.0 * (1.0 - x2 / 20.0 * (1.0 - x2 / 42.0 * (1.0 - x2 / 72.0))));
+    const Quad square = {x2, x2, x2, x2};
+    const Quad sinTerms = square / Quad{6.0, 20.0, 42.0, 72.0};
+    const Quad cosTerms = square / Quad{2.0, 12.0, 30.0, 56.0};
+    s = x * (1.0 - sinTerms[0] * (1.0 - sinTerms[1] * (1.0 - sinTerms[2] * (1.0 - sinTerms[3]))));
     c = 1.0 -
-        x2 / 2.0 * (1.0 - x2 / 12.0 * (1.0 - x2 / 30.0 * (1.0 - x2 / 56.0 * (1.0 - x2 / 90.0))));
+        cosTerms[0] *
+            (1.0 - cosTerms[1] * (1.0 - cosTerms[2] * (1.0 - cosTerms[3] * (1.0 - x2 / 90.0))));
 }
 }  // namespace
 
-void ContactSolver::updateMotion() {
+void ContactSolver::updateMotion(const SolveEnd* end) {
     // Bodies hold still while the solver iterates (positions move once per inner sub-step), so
     // each point's separation is computed once per phase, not once per iteration: the rotations
     // alone (a sine and a cosine per body and point) were a quarter of the solver's time.
-    forChunks(bodies_.size(), kBodyGrain, [&](std::size_t first, std::size_t end) {
-        for (std::size_t i = first; i < end; ++i) {
-            const SolverBody& b = bodies_[i];
+    forChunks(bodies_.size(), kBodyGrain, [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) {
+            SolverBody& b = bodies_[i];
+            if (end) endSolve(b, state_[i], *end);
             const Vec2 dp = b.startOffset + b.path + b.timeShift;
             BodyMotion& m = motion_[i];
             m.dx = dp.x();
             m.dy = dp.y();
             if (b.rotates) {
-                const double angle = b.startAngle + b.anglePath + b.angleTimeShift;
-                smallRotation(angle, m.cos, m.sin);
+                smallRotation(b.startAngle + b.anglePath + b.angleTimeShift, m.cos, m.sin);
             } else {
                 m.cos = 1.0;
                 m.sin = 0.0;
             }
         }
     });
+}
+
+void ContactSolver::endSolve(SolverBody& b, const BodyState& s, const SolveEnd& end) {
+    const Vec2 v(s.vx, s.vy);
+    // Contact-induced velocity, bounces included: what the impulses added to the smooth path,
+    // which the integrator's positions do not know of.
+    b.shift += end.h * (v - (b.v0 + end.f * b.smoothDv));
+    b.path += end.h * v;
+    if (b.rotates) {
+        b.angleShift += end.h * (s.w - (b.w0 + end.f * b.smoothDw));
+        b.anglePath += end.h * s.w;
+    }
+    b.pushV = v;
+    b.pushW = s.w;
 }
 
 void ContactSolver::rowSeparations(std::size_t i) {
@@ -476,7 +496,7 @@ void ContactSolver::rowSeparations(std::size_t i) {
 }
 
 void ContactSolver::updateSeparations() {
-    updateMotion();
+    updateMotion(nullptr);
     if (lanesHold_) {
         forColours([&](std::size_t first, std::size_t end) {
             wide.measure(wide_.data() + first, static_cast<int>(end - first), motion_.data());
@@ -723,25 +743,13 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
             });
         }
         warmStart();
+        if (moved) updateMotion(nullptr);
         preparePhase(hi, true, settings, moved);
         for (int it = 0; it < iterations; ++it) solve();
-        forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
-            for (std::size_t k = first; k < end; ++k) {
-                SolverBody& b = bodies_[k];
-                const BodyState& s = state_[k];
-                const Vec2 v(s.vx, s.vy);
-                // Contact-induced velocity, bounces included: what the impulses added to the
-                // smooth path, which the integrator's positions do not know of.
-                b.shift += hi * (v - (b.v0 + f * b.smoothDv));
-                b.path += hi * v;
-                if (b.rotates) {
-                    b.angleShift += hi * (s.w - (b.w0 + f * b.smoothDw));
-                    b.anglePath += hi * s.w;
-                }
-                b.pushV = v;
-                b.pushW = s.w;
-            }
-        });
+        // The sub-step's positions from the solve's velocities, and where relax measures the
+        // separations, in one pass over the bodies.
+        const SolveEnd solved{hi, f};
+        updateMotion(&solved);
         moved = false;
         preparePhase(hi, false, settings, true);
         for (int it = 0; it < settings.relaxIterations; ++it) solve();
@@ -760,7 +768,6 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         });
     }
 
-    unpackImpulses();
     deepPushOut(h, settings);
     // The accumulated impulses, for the next step's warm start, all of them the solve's.
     storeImpulses(true);
@@ -804,13 +811,23 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
 }
 
 void ContactSolver::storeImpulses(bool solved) {
+    // The solve's impulses straight from the lanes: one pass over the rows fewer than unpacking
+    // them into rows_ first.
+    const bool fromLanes = solved && lanesHold_;
     forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             ContactConstraint& c = constraints_[i];
+            const int at = fromLanes ? slot_[i] : -1;
             for (int k = 0; k < c.pointCount; ++k) {
                 ContactPoint& p = c.points[k];
-                p.normalImpulse = rows_[i].p[k].normalImpulse;
-                p.tangentImpulse = rows_[i].p[k].tangentImpulse;
+                if (at >= 0) {
+                    const WideRow::Point& w = wide_[at / kLanes].p[k];
+                    p.normalImpulse = w.normalImpulse[at % kLanes];
+                    p.tangentImpulse = w.tangentImpulse[at % kLanes];
+                } else {
+                    p.normalImpulse = rows_[i].p[k].normalImpulse;
+                    p.tangentImpulse = rows_[i].p[k].tangentImpulse;
+                }
                 if (!solved) continue;
                 p.solvedNormal = p.normalImpulse;
                 p.solvedTangent = p.tangentImpulse;

@@ -374,8 +374,8 @@ private:
     static Softness makeSoft(double hertz, double zeta, double h);
     // The phase's per-row terms from the current separations (useBias: soft solve, else relax).
     // measure: the bodies moved since the separations were taken: each row's are taken anew in
-    // the same pass (updateMotion() first). The coloured rows' terms go straight into their
-    // lanes (ContactWideLoop.inc), the others' into rows_ (prepareRow()).
+    // the same pass (from motion_: updateMotion() first). The coloured rows' terms go straight into
+    // their lanes (ContactWideLoop.inc), the others' into rows_ (prepareRow()).
     void preparePhase(double h, bool useBias, const ContactSettings& settings, bool measure);
     void prepareRow(std::size_t i, const PhaseTerms& terms, bool measure);
     // Row i's point k's separation where the solver's path is now: in its lane for a coloured
@@ -398,7 +398,7 @@ private:
     void colourRows();
     // The lanes hold the coloured rows' accumulated impulses from colourRows() to the end of
     // the step (warm start, solve and relax read and write them there); rows_ has them only
-    // after unpackImpulses() (after the inner sub-steps).
+    // after unpackImpulses() (relaxJoined() does it; solveStep's store reads the lanes).
     void unpackImpulses();
     // A point's terms in a phase, from its separation s (the same arithmetic for a row and a
     // lane).
@@ -439,7 +439,16 @@ private:
     }
     // Separations with the bodies where the solver's path has taken them.
     void updateSeparations();
-    void updateMotion();                   // per body: motion_ from the solver's path
+    // The end of a sub-step's solve: its length h and how far through the step it ends (f).
+    struct SolveEnd {
+        double h, f;
+    };
+    // Per body: motion_ from the solver's path; with `end`, the path first moved by the solve's
+    // velocities (endSolve()).
+    void updateMotion(const SolveEnd* end);
+    // A body's sub-step of motion at the solve's velocities: its path, the displacement by the
+    // contacts beyond the smooth path (shift), and the velocities relax starts from (pushV).
+    static void endSolve(SolverBody& b, const BodyState& s, const SolveEnd& end);
     void rowSeparations(std::size_t row);  // per row point: separation_ from motion_
     // Removes overlap beyond each row's deepOverlap by moving the bodies apart along the
     // normal (no velocity), at most settings.pushOut·h per row and pass.
@@ -565,7 +574,8 @@ private:
     std::size_t joinedCached_ = 0;  // columns in joinedColumns_ this step
 
     // The accumulated impulses into the constraints.
-    // solved: they are the solve's (ContactPoint::solvedNormal), not the joined relax's.
+    // solved: they are the solve's (ContactPoint::solvedNormal), not the joined relax's, and a
+    // coloured row's are still in its lanes (solveStep); else all are in rows_.
     void storeImpulses(bool solved = false);
     // Per body, the held forces' share of the smooth step's change (after loadBodies).
     void holdBodies(double h);
