@@ -423,7 +423,7 @@ namespace {
 // cos and sin of the turn since the contacts were found: a fraction of a step's rotation, so
 // almost always small. Below 1/4 rad the Taylor polynomials (to x⁹ and x¹⁰) are within 3e-14 of
 // the library's values, at a tenth of the cost (a libm call per body and phase was 5% of a
-// pyramid's solve). Their nine divisions are independent of one another: four at a time, they
+// pyramid's solve). Their nine divisions are independent of one another: two at a time, they
 // give the same bits as one by one and no longer queue for the divider (they were most of
 // updateMotion's time).
 inline void smallRotation(double x, double& c, double& s) {
@@ -432,17 +432,31 @@ inline void smallRotation(double x, double& c, double& s) {
         s = std::sin(x);
         return;
     }
-    using Quad = double __attribute__((vector_size(32)));
+    // Two lanes: a register on every x86-64 (a wider vector is assembled through memory in the
+    // default target, and its halves wait on the stores).
+    using Pair = double __attribute__((vector_size(16)));
     const double x2 = x * x;
-    const Quad square = {x2, x2, x2, x2};
-    const Quad sinTerms = square / Quad{6.0, 20.0, 42.0, 72.0};
-    const Quad cosTerms = square / Quad{2.0, 12.0, 30.0, 56.0};
-    s = x * (1.0 - sinTerms[0] * (1.0 - sinTerms[1] * (1.0 - sinTerms[2] * (1.0 - sinTerms[3]))));
-    c = 1.0 -
-        cosTerms[0] *
-            (1.0 - cosTerms[1] * (1.0 - cosTerms[2] * (1.0 - cosTerms[3] * (1.0 - x2 / 90.0))));
+    const Pair square = {x2, x2};
+    const Pair sin12 = square / Pair{6.0, 20.0}, sin34 = square / Pair{42.0, 72.0};
+    const Pair cos12 = square / Pair{2.0, 12.0}, cos34 = square / Pair{30.0, 56.0};
+    s = x * (1.0 - sin12[0] * (1.0 - sin12[1] * (1.0 - sin34[0] * (1.0 - sin34[1]))));
+    c = 1.0 - cos12[0] * (1.0 - cos12[1] * (1.0 - cos34[0] * (1.0 - cos34[1] * (1.0 - x2 / 90.0))));
 }
 }  // namespace
+
+inline void ContactSolver::endSolve(SolverBody& b, const BodyState& s, const SolveEnd& end) {
+    const Vec2 v(s.vx, s.vy);
+    // Contact-induced velocity, bounces included: what the impulses added to the smooth path,
+    // which the integrator's positions do not know of.
+    b.shift += end.h * (v - (b.v0 + end.f * b.smoothDv));
+    b.path += end.h * v;
+    if (b.rotates) {
+        b.angleShift += end.h * (s.w - (b.w0 + end.f * b.smoothDw));
+        b.anglePath += end.h * s.w;
+    }
+    b.pushV = v;
+    b.pushW = s.w;
+}
 
 void ContactSolver::updateMotion(const SolveEnd* end) {
     // Bodies hold still while the solver iterates (positions move once per inner sub-step), so
@@ -464,20 +478,6 @@ void ContactSolver::updateMotion(const SolveEnd* end) {
             }
         }
     });
-}
-
-void ContactSolver::endSolve(SolverBody& b, const BodyState& s, const SolveEnd& end) {
-    const Vec2 v(s.vx, s.vy);
-    // Contact-induced velocity, bounces included: what the impulses added to the smooth path,
-    // which the integrator's positions do not know of.
-    b.shift += end.h * (v - (b.v0 + end.f * b.smoothDv));
-    b.path += end.h * v;
-    if (b.rotates) {
-        b.angleShift += end.h * (s.w - (b.w0 + end.f * b.smoothDw));
-        b.anglePath += end.h * s.w;
-    }
-    b.pushV = v;
-    b.pushW = s.w;
 }
 
 void ContactSolver::rowSeparations(std::size_t i) {
