@@ -1,12 +1,13 @@
 // The contact rows' graph colouring (Box2D v3's): the order the sweeps take, and the coloured rows
-// side by side kLanes at a time for the wide sweep (ContactWideLoop.inc), with what is fixed for
-// the step in each lane (the phases' terms by ContactSolver::preparePhase).
+// built side by side kLanes at a time for the wide sweep (ContactWideLoop.inc), with what is fixed
+// for the step in each lane (the phases' terms by ContactSolver::preparePhase).
 #include "physics/contacts/ContactChunks.h"
 #include "physics/contacts/ContactSolver.h"
 
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <utility>
 
 namespace phasebox {
 
@@ -42,21 +43,20 @@ void ContactSolver::colourRows() {
     // solved alone after the coloured ones. Colour by colour, in the constraints' order: the
     // sweep order is fixed, so the results are the same run to run.
     const std::size_t bodyCount = bodies_.size();
+    const std::size_t rowCount = constraints_.size();
     const int world = static_cast<int>(bodyCount);
+    const auto bodiesOf = [world](const ContactConstraint& c) {
+        return std::pair<int, int>{c.bodyA >= 0 ? c.bodyA : world, c.bodyB >= 0 ? c.bodyB : world};
+    };
     // The colouring is a function of the rows' bodies, in order, and of the body count alone: where
     // every row joins the same two bodies as the row of its index did at the last colouring (a
-    // resting stack, step after step), that colouring stands (the wide rows still hold each
-    // slot's bodies), and only the lanes are filled anew.
+    // resting stack, step after step), that colouring stands, and only the lanes are built anew.
     const bool sameRows = [&] {
-        if (rows_.empty() || slot_.size() != rows_.size() || !overflow_.empty() ||
-            colourMask_.size() != bodyCount + 1)
+        if (rowCount == 0 || colouredPairs_.size() != rowCount || slot_.size() != rowCount ||
+            !overflow_.empty() || colourMask_.size() != bodyCount + 1)
             return false;
-        for (std::size_t i = 0; i < rows_.size(); ++i) {
-            const int at = slot_[i];
-            if (at < 0 || static_cast<std::size_t>(at / kLanes) >= wide_.size()) return false;
-            const WideRow& w = wide_[at / kLanes];
-            if (w.a[at % kLanes] != rows_[i].a || w.b[at % kLanes] != rows_[i].b) return false;
-        }
+        for (std::size_t i = 0; i < rowCount; ++i)
+            if (bodiesOf(constraints_[i]) != colouredPairs_[i]) return false;
         return true;
     }();
     if (!sameRows) {
@@ -64,31 +64,32 @@ void ContactSolver::colourRows() {
         // row's colour is the lowest bit free in both of its bodies' sets.
         colourMask_.assign(bodyCount + 1, 0u);
         blockCount_.assign(static_cast<std::size_t>(kColours) * kBlocks, 0);
-        slot_.resize(rows_.size());
+        slot_.resize(rowCount);
+        colouredPairs_.resize(rowCount);
         overflow_.clear();
         constexpr std::uint32_t kAllColours =
             kColours == 32 ? ~std::uint32_t{0} : (std::uint32_t{1} << kColours) - 1;
-        for (std::size_t i = 0; i < rows_.size(); ++i) {
-            const Row& c = rows_[i];
-            const std::uint32_t free = ~(colourMask_[c.a] | colourMask_[c.b]) & kAllColours;
+        for (std::size_t i = 0; i < rowCount; ++i) {
+            const auto [a, b] = colouredPairs_[i] = bodiesOf(constraints_[i]);
+            const std::uint32_t free = ~(colourMask_[a] | colourMask_[b]) & kAllColours;
             if (free == 0) {
                 slot_[i] = -1;
                 overflow_.push_back(static_cast<int>(i));
                 continue;
             }
             const int colour = std::countr_zero(free);
-            if (c.a != world) colourMask_[c.a] |= std::uint32_t{1} << colour;
-            if (c.b != world) colourMask_[c.b] |= std::uint32_t{1} << colour;
+            if (a != world) colourMask_[a] |= std::uint32_t{1} << colour;
+            if (b != world) colourMask_[b] |= std::uint32_t{1} << colour;
             // The block of one of the row's bodies: the dynamic one beside the world, else the
             // lower or the higher by the parity of their sum. Always the lower would crowd the
             // first blocks where pairs are far apart in the order (a pile, a gas: the lower of two
             // random bodies is in the first half three times in four, and the first of two workers
             // would start with three rows in four); where they are near (a stack) either keeps the
             // row beside its bodies.
-            const int pick = c.a == world           ? c.b
-                             : c.b == world         ? c.a
-                             : (c.a + c.b) % 2 == 0 ? std::min(c.a, c.b)
-                                                    : std::max(c.a, c.b);
+            const int pick = a == world         ? b
+                             : b == world       ? a
+                             : (a + b) % 2 == 0 ? std::min(a, b)
+                                                : std::max(a, b);
             const auto at = static_cast<std::size_t>(pick);
             const int block = std::min(
                 static_cast<int>(at * kBlocks / std::max<std::size_t>(bodyCount, 1)), kBlocks - 1);
@@ -115,33 +116,35 @@ void ContactSolver::colourRows() {
             starts[kBlocks] = wideRows;
         }
         colourWide_[kColours] = wideRows;
-        for (std::size_t i = 0; i < rows_.size(); ++i) {
+        for (std::size_t i = 0; i < rowCount; ++i) {
             if (slot_[i] < 0) continue;
             slot_[i] = blockCount_[slot_[i]]++;
         }
         wide_.resize(wideRows);
         wideSetup_.resize(wideRows);
         order_.assign(kLanes * wideRows, -1);
-        for (std::size_t i = 0; i < rows_.size(); ++i)
+        for (std::size_t i = 0; i < rowCount; ++i)
             if (slot_[i] >= 0) order_[slot_[i]] = static_cast<int>(i);
     }
+}
+
+void ContactSolver::buildLanes(const BuildTerms& terms) {
+    const int world = static_cast<int>(bodies_.size());
     // The lanes, wide row by wide row (each written by one chunk: shared by the workers).
     forColours([&](std::size_t first, std::size_t end) {
         for (std::size_t r = first; r < end; ++r) {
             WideRow& w = wide_[r];
             WideSetup& S = wideSetup_[r];
-            // The next wide row's rows are scattered over the rows' megabytes (a pile's): their
-            // lines are asked for now, while this one's are copied.
+            // The next wide row's constraints are scattered over the constraints' megabytes (a
+            // pile's): their lines are asked for now, while this one's are built.
             if (r + 1 < end)
                 for (int l = 0; l < kLanes; ++l) {
                     const int i = order_[kLanes * (r + 1) + l];
                     if (i < 0) continue;
-                    const char* row = reinterpret_cast<const char*>(&rows_[i]);
-                    for (std::size_t at = 0; at < sizeof(Row); at += 64)
-                        __builtin_prefetch(row + at);
-                    __builtin_prefetch(&setup_[i]);
-                    __builtin_prefetch(reinterpret_cast<const char*>(&setup_[i]) +
-                                       sizeof(RowSetup) - 1);
+                    const char* constraint = reinterpret_cast<const char*>(&constraints_[i]);
+                    for (std::size_t at = 0; at < sizeof(ContactConstraint); at += 64)
+                        __builtin_prefetch(constraint + at);
+                    __builtin_prefetch(constraint + sizeof(ContactConstraint) - 1);
                 }
             for (int l = 0; l < kLanes; ++l) {
                 const int i = order_[kLanes * r + l];
@@ -149,7 +152,14 @@ void ContactSolver::colourRows() {
                     clearLane(w, S, l, world);
                     continue;
                 }
-                const Row& c = rows_[i];
+                // On the stack, unless a scalar pass reads the row too (a bounce's).
+                const auto at = static_cast<std::size_t>(i);
+                Row local;
+                RowSetup localSetup;
+                const bool scalar = constraints_[at].restitution != 0.0;
+                Row& c = scalar ? rows_[at] : local;
+                RowSetup& setup = scalar ? setup_[at] : localSetup;
+                buildRow(at, c, setup, terms);
                 const BodyState& a = state_[c.a];
                 const BodyState& b = state_[c.b];
                 w.a[l] = c.a;
@@ -183,7 +193,6 @@ void ContactSolver::colourRows() {
                     q.baseSeparation[l] = q.separation[l] = p.baseSeparation;
                 }
                 w.points[l] = c.pointCount;
-                const RowSetup& setup = setup_[i];
                 S.biasRate[l] = setup.biasRate;
                 S.massScale[l] = setup.massScale;
                 S.impulseScale[l] = setup.impulseScale;

@@ -161,7 +161,7 @@ bool ContactSolver::readyJoined(JoinedRow& r, const TangentProjection& joints) {
 
 void ContactSolver::relaxJoined(Vec& u, const TangentProjection& joints) {
     if (rows_.empty()) return;
-    unpackImpulses();
+    unpackRows();
     buildJoinedRows(static_cast<int>(u.size()));
     // Each row's diagonal with its compliance (kJoinedCompliance).
     constexpr double kSoft = 1.0 + kJoinedCompliance;

@@ -36,23 +36,24 @@ void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
     // are where the last inner sub-step left them, plus these moves.
     const int world = static_cast<int>(bodies_.size());
     const double* separation = gatherSeparations();
+    // From the constraints: rows_ holds only the rows the lanes do not (buildLanes()).
     bool any = false;
-    for (std::size_t i = 0; i < rows_.size() && !any; ++i)
-        for (int k = 0; k < rows_[i].pointCount; ++k)
-            any = any || separation[2 * i + k] < -setup_[i].deepOverlap;
+    for (std::size_t i = 0; i < constraints_.size() && !any; ++i)
+        for (int k = 0; k < constraints_[i].pointCount; ++k)
+            any = any || separation[2 * i + k] < -constraints_[i].deepOverlap;
     if (!any) return;
-    deep_.resize(rows_.size());
-    for (std::size_t i = 0; i < rows_.size(); ++i) {
-        const Row& c = rows_[i];
+    deep_.resize(constraints_.size());
+    for (std::size_t i = 0; i < constraints_.size(); ++i) {
+        const ContactConstraint& c = constraints_[i];
         DeepRow& d = deep_[i];
-        d.a = c.a;
-        d.b = c.b;
-        d.nx = c.nx;
-        d.ny = c.ny;
+        d.a = c.bodyA >= 0 ? c.bodyA : world;
+        d.b = c.bodyB >= 0 ? c.bodyB : world;
+        d.nx = c.normal.x();
+        d.ny = c.normal.y();
         d.separation = std::numeric_limits<double>::infinity();
         for (int k = 0; k < c.pointCount; ++k)
             d.separation = std::min(d.separation, separation[2 * i + k]);
-        d.deepOverlap = setup_[i].deepOverlap;
+        d.deepOverlap = c.deepOverlap;
     }
     deepShift_.assign(bodies_.size() + 1, Vec2::Zero());
     const double step = settings.pushOut * h;

@@ -255,18 +255,17 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     blockWide_.reserve(static_cast<std::size_t>(kColours) * (kBlocks + 1));
 }
 
-void ContactSolver::buildRow(std::size_t i, double hertz, double zeta, double h, double warmScale) {
+void ContactSolver::buildRow(std::size_t i, Row& row, RowSetup& setup, const BuildTerms& terms) {
     const int world = static_cast<int>(bodies_.size());
     const ContactConstraint& c = constraints_[i];
-    Row& row = rows_[i];
-    RowSetup& setup = setup_[i];
+    const double h = terms.h, warmScale = terms.warmScale;
     row.a = c.bodyA >= 0 ? c.bodyA : world;
     row.b = c.bodyB >= 0 ? c.bodyB : world;
     row.pointCount = c.pointCount;
     row.nx = c.normal.x();
     row.ny = c.normal.y();
     row.friction = c.friction;
-    const Softness soft = makeSoft(c.stiffness * hertz, zeta, h);
+    const Softness soft = makeSoft(c.stiffness * terms.hertz, terms.zeta, h);
     setup.deepOverlap = c.deepOverlap;
     // The push-out speed is a body's, shared among its contacts: in a pile each contact's
     // push adds up along chains of bodies (200 boxes started at one point left at 20 m/s
@@ -333,9 +332,21 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
     separation_.resize(2 * constraints_.size());
     bouncing_.clear();
     bounceTerms_.clear();
-    forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
-        for (std::size_t i = first; i < end; ++i) buildRow(i, hertz, zeta, h, warmScale);
-    });
+    colourRows();
+    const BuildTerms terms{hertz, zeta, h, warmScale};
+    if (lanesHold_) {
+        // The coloured rows straight into their lanes (a pyramid's rows_ were megabytes written
+        // and read back once a step), the rest into rows_.
+        buildLanes(terms);
+        for (const int i : overflow_) {
+            const auto at = static_cast<std::size_t>(i);
+            buildRow(at, rows_[at], setup_[at], terms);
+        }
+    } else {
+        forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
+            for (std::size_t i = first; i < end; ++i) buildRow(i, rows_[i], setup_[i], terms);
+        });
+    }
     // The rows with restitution, in order (after every row is built). Room for all at once: a
     // pile's tens of thousands would otherwise grow the array a doubling at a time.
     bouncing_.reserve(constraints_.size());
@@ -370,7 +381,6 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
     shifted_.resize(2 * rows_.size());
     bounces_.resize(2 * rows_.size());
     changedAt_.resize(bodies_.size() + 1);
-    colourRows();
 }
 
 void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& settings,
@@ -836,7 +846,9 @@ void ContactSolver::storeImpulses(bool solved) {
     });
 }
 
-void ContactSolver::unpackImpulses() {
+void ContactSolver::unpackRows() {
+    // Every coloured row as buildRow() made it, with the lanes' impulses: what relaxJoined()
+    // reads of the rows.
     if (!lanesHold_) return;
     forChunks(rows_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
@@ -845,9 +857,32 @@ void ContactSolver::unpackImpulses() {
             Row& c = rows_[i];
             const WideRow& w = wide_[at / kLanes];
             const int l = at % kLanes;
-            for (int k = 0; k < c.pointCount; ++k) {
-                c.p[k].normalImpulse = w.p[k].normalImpulse[l];
-                c.p[k].tangentImpulse = w.p[k].tangentImpulse[l];
+            c.a = w.a[l];
+            c.b = w.b[l];
+            c.pointCount = w.points[l];
+            c.nx = w.nx[l];
+            c.ny = w.ny[l];
+            c.friction = w.friction[l];
+            c.k11 = w.k11[l];
+            c.k12 = w.k12[l];
+            c.k22 = w.k22[l];
+            for (int k = 0; k < 2; ++k) {
+                const WideRow::Point& q = w.p[k];
+                RowPoint& p = c.p[k];
+                p.rAx = q.rAx[l];
+                p.rAy = q.rAy[l];
+                p.rBx = q.rBx[l];
+                p.rBy = q.rBy[l];
+                p.rnA = q.rnA[l];
+                p.rnB = q.rnB[l];
+                p.rtA = q.rtA[l];
+                p.rtB = q.rtB[l];
+                p.tangentMass = q.tangentMass[l];
+                p.normalImpulse = q.normalImpulse[l];
+                p.tangentImpulse = q.tangentImpulse[l];
+                p.heldNormal = q.heldNormal[l];
+                p.heldTangent = q.heldTangent[l];
+                p.baseSeparation = q.baseSeparation[l];
             }
         }
     });

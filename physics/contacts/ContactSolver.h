@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace phasebox {
@@ -364,8 +365,14 @@ private:
     // Sub-steps for this step: `base`, or more when the stack the warm-start impulses carry
     // would sag further than kSagTarget at the base stiffness (after loadBodies).
     int stackSubsteps(double h, int base, const ContactSettings& settings);
+    // What a row is built from besides its constraint: the step's softness and warm start.
+    struct BuildTerms {
+        double hertz, zeta, h, warmScale;
+    };
     void buildRows(double hertz, double zeta, double h, double warmScale);
-    void buildRow(std::size_t i, double hertz, double zeta, double h, double warmScale);
+    // Row i from its constraint, into row and setup: rows_[i] and setup_[i] for a row the scalar
+    // passes read, a copy on the stack for one that goes straight into its lane (buildLanes()).
+    void buildRow(std::size_t i, Row& row, RowSetup& setup, const BuildTerms& terms);
     void warmStart();
     void warmRow(std::size_t row);
     // Restitution in an inner sub-step of h, one of `substeps` of the step.
@@ -394,12 +401,17 @@ private:
     bool lanesHold_ = false;  // the wide sweep is there: the lanes hold the coloured rows
     void solve();
     void solveRow(Row& c);
-    // Graph colours and the wide rows' step constants (after buildRows; ContactColours.cpp).
+    // Graph colours, from the constraints' bodies alone (before the rows are built;
+    // ContactColours.cpp).
     void colourRows();
-    // The lanes hold the coloured rows' accumulated impulses from colourRows() to the end of
-    // the step (warm start, solve and relax read and write them there); rows_ has them only
-    // after unpackImpulses() (relaxJoined() does it; solveStep's store reads the lanes).
-    void unpackImpulses();
+    // The coloured rows built straight into their lanes with what is fixed for the step: rows_
+    // holds only the rows the scalar passes read (those with restitution, and the overflow's,
+    // built by buildRows()) until unpackRows() unpacks every lane for relaxJoined().
+    void buildLanes(const BuildTerms& terms);
+    // The lanes hold the coloured rows, and their accumulated impulses, from buildLanes() to the
+    // end of the step (warm start, solve and relax read and write them there); rows_ has them
+    // only after unpackRows() (relaxJoined() does it; solveStep's store reads the lanes).
+    void unpackRows();
     // A point's terms in a phase, from its separation s (the same arithmetic for a row and a
     // lane).
     struct PointTerms {
@@ -464,8 +476,9 @@ private:
     std::vector<double> separation_;    // per row point (2 per row), where the path is now
     LargeVector<WideRow> wide_;         // the coloured rows, colour by colour
     std::vector<int> slot_;             // per row: kLanes·wide row + lane, or −1 (solved alone)
-    std::vector<int> order_;            // per wide slot: its row, or −1 (the sweep order)
-    std::vector<int> overflow_;         // rows no colour could take, solved after the wide ones
+    std::vector<std::pair<int, int>> colouredPairs_;  // per row: its bodies at the last colouring
+    std::vector<int> order_;     // per wide slot: its row, or −1 (the sweep order)
+    std::vector<int> overflow_;  // rows no colour could take, solved after the wide ones
     std::vector<std::uint32_t> colourMask_;  // per body (+ the world): a bit per colour taken
     std::vector<int> colourWide_;            // per colour its first wide row, then the end
     std::vector<int> blockCount_;            // per colour and block its rows, then the next slot
