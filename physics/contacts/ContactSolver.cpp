@@ -145,15 +145,14 @@ void ContactSolver::prepare() {
     for (SolverBody& b : bodies_) {
         b.contactCount = 0;
         b.stepImpulse = Vec2::Zero();  // once per step: the stage calls prepare() after collide
+        b.mass = 1.0 / b.invMass;
     }
     for (const ContactConstraint& c : constraints_) {
         if (c.bodyA >= 0) ++bodies_[c.bodyA].contactCount;
         if (c.bodyB >= 0) ++bodies_[c.bodyB].contactCount;
         if (c.bodyA >= 0 && c.bodyB >= 0) {
-            const double mA = bodies_[c.bodyA].invMass, mB = bodies_[c.bodyB].invMass;
-            const double heavy = std::max(1.0 / mA, 1.0 / mB);
-            const double light = std::min(1.0 / mA, 1.0 / mB);
-            largestMassRatio_ = std::max(largestMassRatio_, heavy / light);
+            const double mA = bodies_[c.bodyA].mass, mB = bodies_[c.bodyB].mass;
+            largestMassRatio_ = std::max(largestMassRatio_, std::max(mA, mB) / std::min(mA, mB));
         }
     }
     forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
@@ -168,8 +167,8 @@ void ContactSolver::prepare() {
             // squashed in (its effective mass sets the soft constraint's spring). Contacts with the
             // static world are twice as stiff (Box2D v3): they carry whole stacks.
             if (a && b) {
-                const double heavy = std::max(1.0 / a->invMass, 1.0 / b->invMass);
-                const double light = std::min(1.0 / a->invMass, 1.0 / b->invMass);
+                const double heavy = std::max(a->mass, b->mass);
+                const double light = std::min(a->mass, b->mass);
                 c.stiffness = std::sqrt(heavy / light);
             } else {
                 c.stiffness = 2.0;

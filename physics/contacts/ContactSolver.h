@@ -60,6 +60,7 @@ struct SolverBody {
     bool jointed = false;  // a joint holds it (refreshHeld())
     double invMass = 0.0;
     double invInertia = 0.0;
+    double mass = 0.0;  // 1 / invMass, once a step (prepare(): a body has several contacts)
     Vec2 collidePosition = Vec2::Zero();  // where the contacts were found
     double collideAngle = 0.0;
     // The step: velocity at its start, the smooth step's velocity change, and the start's
