@@ -132,6 +132,7 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
     const int world = static_cast<int>(bodies_.size());
     // The lanes, wide row by wide row (each written by one chunk: shared by the workers).
     forColours([&](std::size_t first, std::size_t end) {
+        RowCache cache;
         for (std::size_t r = first; r < end; ++r) {
             WideRow& w = wide_[r];
             WideSetup& S = wideSetup_[r];
@@ -159,7 +160,7 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
                 const bool scalar = constraints_[at].restitution != 0.0;
                 Row& c = scalar ? rows_[at] : local;
                 RowSetup& setup = scalar ? setup_[at] : localSetup;
-                buildRow(at, c, setup, terms);
+                buildRow(at, c, setup, terms, cache);
                 const BodyState& a = state_[c.a];
                 const BodyState& b = state_[c.b];
                 w.a[l] = c.a;

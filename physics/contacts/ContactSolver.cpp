@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <numbers>
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -109,6 +110,8 @@ Vec2 tangentOf(const Vec2& n) {
 // stiff contact stays stable; it answers like a rigid one, pushed out within a few sub-steps.
 // (More sub-steps would do the same at a cost for the whole scene; a rigid answer below a
 // size would make a small body's contacts behave unlike a large one's.)
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // no last value yet
+
 constexpr double kStiffHalfSize = 5e-3;
 constexpr double kMostSizeStiffness = 1000.0;
 
@@ -141,7 +144,7 @@ ContactSolver::Softness ContactSolver::makeSoft(double hertz, double zeta, doubl
 }
 
 void ContactSolver::prepare() {
-    largestMassRatio_ = 1.0;
+    double largestMassRatio = 1.0;  // in a register: the member's store would chain the divisions
     for (SolverBody& b : bodies_) {
         b.contactCount = 0;
         b.stepImpulse = Vec2::Zero();  // once per step: the stage calls prepare() after collide
@@ -152,10 +155,15 @@ void ContactSolver::prepare() {
         if (c.bodyB >= 0) ++bodies_[c.bodyB].contactCount;
         if (c.bodyA >= 0 && c.bodyB >= 0) {
             const double mA = bodies_[c.bodyA].mass, mB = bodies_[c.bodyB].mass;
-            largestMassRatio_ = std::max(largestMassRatio_, std::max(mA, mB) / std::min(mA, mB));
+            largestMassRatio = std::max(largestMassRatio, std::max(mA, mB) / std::min(mA, mB));
         }
     }
+    largestMassRatio_ = largestMassRatio;
     forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
+        // Contacts one after another mostly join bodies of the same masses and sizes: the square
+        // roots and their divisions are taken once for each new pair of arguments.
+        double lastHeavy = kNaN, lastLight = kNaN, lastRoot = 0.0;
+        double lastOverlap = kNaN, lastSize = 0.0;
         for (std::size_t i = first; i < end; ++i) {
             ContactConstraint& c = constraints_[i];
             const SolverBody* a = c.bodyA >= 0 ? &bodies_[c.bodyA] : nullptr;
@@ -169,11 +177,20 @@ void ContactSolver::prepare() {
             if (a && b) {
                 const double heavy = std::max(a->mass, b->mass);
                 const double light = std::min(a->mass, b->mass);
-                c.stiffness = std::sqrt(heavy / light);
+                if (!(heavy == lastHeavy && light == lastLight)) {
+                    lastHeavy = heavy;
+                    lastLight = light;
+                    lastRoot = std::sqrt(heavy / light);
+                }
+                c.stiffness = lastRoot;
             } else {
                 c.stiffness = 2.0;
             }
-            c.stiffness *= sizeStiffness(c.deepOverlap);
+            if (!(c.deepOverlap == lastOverlap)) {
+                lastOverlap = c.deepOverlap;
+                lastSize = sizeStiffness(lastOverlap);
+            }
+            c.stiffness *= lastSize;
             const Vec2 t = tangentOf(c.normal);
             for (int k = 0; k < c.pointCount; ++k) {
                 ContactPoint& p = c.points[k];
@@ -254,7 +271,8 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     blockWide_.reserve(static_cast<std::size_t>(kColours) * (kBlocks + 1));
 }
 
-void ContactSolver::buildRow(std::size_t i, Row& row, RowSetup& setup, const BuildTerms& terms) {
+void ContactSolver::buildRow(std::size_t i, Row& row, RowSetup& setup, const BuildTerms& terms,
+                             RowCache& cache) {
     const int world = static_cast<int>(bodies_.size());
     const ContactConstraint& c = constraints_[i];
     const double h = terms.h, warmScale = terms.warmScale;
@@ -264,13 +282,25 @@ void ContactSolver::buildRow(std::size_t i, Row& row, RowSetup& setup, const Bui
     row.nx = c.normal.x();
     row.ny = c.normal.y();
     row.friction = c.friction;
-    const Softness soft = makeSoft(c.stiffness * terms.hertz, terms.zeta, h);
+    // The softness and the push-out share, of a stiffness and a count most rows share with the
+    // row before: their divisions once for each new value.
+    const double hertz = c.stiffness * terms.hertz;
+    if (!(hertz == cache.hertz)) {
+        cache.hertz = hertz;
+        cache.soft = makeSoft(hertz, terms.zeta, h);
+    }
+    const Softness& soft = cache.soft;
     setup.deepOverlap = c.deepOverlap;
     // The push-out speed is a body's, shared among its contacts: in a pile each contact's
     // push adds up along chains of bodies (200 boxes started at one point left at 20 m/s
     // with a whole 3 m/s per contact, 13 m/s shared).
-    setup.pushOutShare = 1.0 / std::max({1, c.bodyA >= 0 ? bodies_[c.bodyA].contactCount : 1,
-                                         c.bodyB >= 0 ? bodies_[c.bodyB].contactCount : 1});
+    const int sharers = std::max({1, c.bodyA >= 0 ? bodies_[c.bodyA].contactCount : 1,
+                                  c.bodyB >= 0 ? bodies_[c.bodyB].contactCount : 1});
+    if (sharers != cache.sharers) {
+        cache.sharers = sharers;
+        cache.share = 1.0 / sharers;
+    }
+    setup.pushOutShare = cache.share;
     setup.biasRate = soft.biasRate;
     setup.massScale = soft.massScale;
     setup.impulseScale = soft.impulseScale;
@@ -337,13 +367,16 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
         // The coloured rows straight into their lanes (a pyramid's rows_ were megabytes written
         // and read back once a step), the rest into rows_.
         buildLanes(terms);
+        RowCache cache;
         for (const int i : overflow_) {
             const auto at = static_cast<std::size_t>(i);
-            buildRow(at, rows_[at], setup_[at], terms);
+            buildRow(at, rows_[at], setup_[at], terms, cache);
         }
     } else {
         forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
-            for (std::size_t i = first; i < end; ++i) buildRow(i, rows_[i], setup_[i], terms);
+            RowCache cache;
+            for (std::size_t i = first; i < end; ++i)
+                buildRow(i, rows_[i], setup_[i], terms, cache);
         });
     }
     // The rows with restitution, in order (after every row is built). Room for all at once: a

@@ -373,7 +373,16 @@ private:
     void buildRows(double hertz, double zeta, double h, double warmScale);
     // Row i from its constraint, into row and setup: rows_[i] and setup_[i] for a row the scalar
     // passes read, a copy on the stack for one that goes straight into its lane (buildLanes()).
-    void buildRow(std::size_t i, Row& row, RowSetup& setup, const BuildTerms& terms);
+    // buildRow()'s last softness and push-out share, by the stiffness and the count they were
+    // made from (one per chunk of rows).
+    struct RowCache {
+        double hertz = std::numeric_limits<double>::quiet_NaN();
+        Softness soft{};
+        int sharers = 0;
+        double share = 0.0;
+    };
+    void buildRow(std::size_t i, Row& row, RowSetup& setup, const BuildTerms& terms,
+                  RowCache& cache);
     void warmStart();
     void warmRow(std::size_t row);
     // Restitution in an inner sub-step of h, one of `substeps` of the step.
