@@ -237,7 +237,7 @@ int ContactStage::solverBodyFor(int collider, const Vec& q, const Vec& inverseMa
     if (index >= 0) return index;
     std::vector<SolverBody>& bodies = solver_.bodies();
     index = static_cast<int>(bodies.size());
-    SolverBody& b = bodies.emplace_back();  // in place: a few hundred bytes, not built then copied
+    SolverBody b;
     b.dof = c.dof;
     b.rotates = c.rigid;
     b.jointed = c.jointed;
@@ -245,6 +245,7 @@ int ContactStage::solverBodyFor(int collider, const Vec& q, const Vec& inverseMa
     if (b.rotates) b.collideAngle = q[c.dof + 2];
     b.invMass = inverseMass[b.dof];
     b.invInertia = b.rotates ? inverseMass[b.dof + 2] : 0.0;
+    bodies.push_back(b);
     return index;
 }
 
