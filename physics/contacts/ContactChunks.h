@@ -1,11 +1,17 @@
 #pragma once
-// ContactSolver::forChunks and forColour, for the solver's source files (private to
-// physics/contacts).
+// ContactSolver::forChunks and forColour, and a contact's tangent, for the solver's source files
+// (private to physics/contacts).
 
 #include "physics/contacts/ContactSolver.h"
 #include "physics/core/WorkerPool.h"
 
 namespace phasebox {
+
+// A contact's tangent: its normal turned a quarter clockwise (friction's direction, t = (n_y,
+// −n_x)).
+inline Vec2 tangentOf(const Vec2& n) {
+    return {n.y(), -n.x()};
+}
 
 template <class F>
 void ContactSolver::forChunks(std::size_t count, std::size_t grain, const F& fn) {

@@ -8,12 +8,6 @@
 
 namespace phasebox {
 
-namespace {
-Vec2 tangentOf(const Vec2& n) {
-    return {n.y(), -n.x()};
-}
-}  // namespace
-
 Vec2 ContactSolver::forceOf(const ContactPoint& p, double perSubstep, double perStep) {
     // The solve's impulses act once per inner sub-step, what relaxJoined() added after it
     // (the joints' rounds) once per step.

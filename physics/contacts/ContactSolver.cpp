@@ -6,8 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <limits>
-#include <numbers>
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define PHASEBOX_WIDE_CONTACTS 1
@@ -96,32 +94,6 @@ int startLevel() {
 WideKernels wide = kernelsFor(startLevel());
 }  // namespace
 
-namespace {
-Vec2 tangentOf(const Vec2& n) {
-    return {n.y(), -n.x()};
-}
-
-// A soft contact carries its load by sinking load/(m·ω²), g/ω² for a body lying on the floor:
-// an absolute depth, whatever the body's size. A body much smaller than that depth's scale
-// would rest sunk by a large share of its size and tilt by the difference of its corners'
-// depths (a triangle's corners carry 2 : 1), then spin up as the manifold follows the tilt.
-// Below kStiffHalfSize the contact stiffens as the smaller body's half-size falls, so that its
-// rest depth keeps the same share of its size: ω² ∝ 1/size. The soft step is implicit, so a
-// stiff contact stays stable; it answers like a rigid one, pushed out within a few sub-steps.
-// (More sub-steps would do the same at a cost for the whole scene; a rigid answer below a
-// size would make a small body's contacts behave unlike a large one's.)
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // no last value yet
-
-constexpr double kStiffHalfSize = 5e-3;
-constexpr double kMostSizeStiffness = 1000.0;
-
-double sizeStiffness(double deepOverlap) {
-    const double halfSize = deepOverlap / ContactConstraint::kDeepOverlapFraction;
-    if (!(halfSize > 0.0) || !(halfSize < kStiffHalfSize)) return 1.0;
-    return std::min(std::sqrt(kStiffHalfSize / halfSize), kMostSizeStiffness);
-}
-}  // namespace
-
 int ContactSolver::instructions() {
     return wide.level;
 }
@@ -130,79 +102,6 @@ bool ContactSolver::useInstructions(int level) {
     if (level < 0 || level > wideLevel()) return false;
     wide = kernelsFor(level);
     return true;
-}
-
-// Soft constraint coefficients (Box2D v3's b2MakeSoft): a spring-damper of frequency ω and
-// damping ratio ζ, integrated implicitly over h, expressed as a bias rate and the scales of
-// the effective mass and of the accumulated impulse.
-ContactSolver::Softness ContactSolver::makeSoft(double hertz, double zeta, double h) {
-    const double omega = 2.0 * std::numbers::pi * hertz;
-    const double a1 = 2.0 * zeta + h * omega;
-    const double a2 = h * omega * a1;
-    const double a3 = 1.0 / (1.0 + a2);
-    return {omega / a1, a2 * a3, a3};
-}
-
-void ContactSolver::prepare() {
-    double largestMassRatio = 1.0;  // in a register: the member's store would chain the divisions
-    for (SolverBody& b : bodies_) {
-        b.contactCount = 0;
-        b.stepImpulse = Vec2::Zero();  // once per step: the stage calls prepare() after collide
-        b.mass = 1.0 / b.invMass;
-    }
-    for (const ContactConstraint& c : constraints_) {
-        if (c.bodyA >= 0) ++bodies_[c.bodyA].contactCount;
-        if (c.bodyB >= 0) ++bodies_[c.bodyB].contactCount;
-        if (c.bodyA >= 0 && c.bodyB >= 0) {
-            const double mA = bodies_[c.bodyA].mass, mB = bodies_[c.bodyB].mass;
-            largestMassRatio = std::max(largestMassRatio, std::max(mA, mB) / std::min(mA, mB));
-        }
-    }
-    largestMassRatio_ = largestMassRatio;
-    forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
-        // Contacts one after another mostly join bodies of the same masses and sizes: the square
-        // roots and their divisions are taken once for each new pair of arguments.
-        double lastHeavy = kNaN, lastLight = kNaN, lastRoot = 0.0;
-        double lastOverlap = kNaN, lastSize = 0.0;
-        for (std::size_t i = first; i < end; ++i) {
-            ContactConstraint& c = constraints_[i];
-            const SolverBody* a = c.bodyA >= 0 ? &bodies_[c.bodyA] : nullptr;
-            const SolverBody* b = c.bodyB >= 0 ? &bodies_[c.bodyB] : nullptr;
-            const double mA = a ? a->invMass : 0.0, iA = a ? a->invInertia : 0.0;
-            const double mB = b ? b->invMass : 0.0, iB = b ? b->invInertia : 0.0;
-            // A contact's stiffness follows the heavier of its bodies: the spring that holds a
-            // heavy box on a light one must be as stiff as for the heavy box, or the light one is
-            // squashed in (its effective mass sets the soft constraint's spring). Contacts with the
-            // static world are twice as stiff (Box2D v3): they carry whole stacks.
-            if (a && b) {
-                const double heavy = std::max(a->mass, b->mass);
-                const double light = std::min(a->mass, b->mass);
-                if (!(heavy == lastHeavy && light == lastLight)) {
-                    lastHeavy = heavy;
-                    lastLight = light;
-                    lastRoot = std::sqrt(heavy / light);
-                }
-                c.stiffness = lastRoot;
-            } else {
-                c.stiffness = 2.0;
-            }
-            if (!(c.deepOverlap == lastOverlap)) {
-                lastOverlap = c.deepOverlap;
-                lastSize = sizeStiffness(lastOverlap);
-            }
-            c.stiffness *= lastSize;
-            const Vec2 t = tangentOf(c.normal);
-            for (int k = 0; k < c.pointCount; ++k) {
-                ContactPoint& p = c.points[k];
-                const double rnA = cross(p.anchorA, c.normal), rnB = cross(p.anchorB, c.normal);
-                const double kn = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-                p.normalMass = kn > 0.0 ? 1.0 / kn : 0.0;
-                const double rtA = cross(p.anchorA, t), rtB = cross(p.anchorB, t);
-                const double kt = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
-                p.tangentMass = kt > 0.0 ? 1.0 / kt : 0.0;
-            }
-        }
-    });
 }
 
 void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
@@ -228,18 +127,6 @@ void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
             state_[i] = {b.v0.x(), b.v0.y(), b.w0, b.invMass, b.invInertia};
         }
     });
-}
-
-double ContactSolver::smoothNormalChange(const Row& c, const RowPoint& p) const {
-    // The smooth step's change of the relative normal velocity at the point, over the whole step,
-    // less what the held contact forces gave (they hold; they do not approach).
-    const int world = static_cast<int>(bodies_.size());
-    auto at = [&](int body, double rx, double ry) -> Vec2 {
-        if (body == world) return Vec2::Zero();
-        const SolverBody& b = bodies_[body];
-        return (b.smoothDv - b.heldDv) + (b.smoothDw - b.heldDw) * Vec2(-ry, rx);
-    };
-    return Vec2(c.nx, c.ny).dot(at(c.b, p.rBx, p.rBy) - at(c.a, p.rAx, p.rAy));
 }
 
 void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
@@ -269,150 +156,6 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     colourWide_.reserve(kColours + 1);
     blockCount_.reserve(static_cast<std::size_t>(kColours) * kBlocks);
     blockWide_.reserve(static_cast<std::size_t>(kColours) * (kBlocks + 1));
-}
-
-void ContactSolver::buildRow(std::size_t i, Row& row, RowSetup& setup, const BuildTerms& terms,
-                             RowCache& cache) {
-    const int world = static_cast<int>(bodies_.size());
-    const ContactConstraint& c = constraints_[i];
-    const double h = terms.h, warmScale = terms.warmScale;
-    row.a = c.bodyA >= 0 ? c.bodyA : world;
-    row.b = c.bodyB >= 0 ? c.bodyB : world;
-    row.pointCount = c.pointCount;
-    row.nx = c.normal.x();
-    row.ny = c.normal.y();
-    row.friction = c.friction;
-    // The softness and the push-out share, of a stiffness and a count most rows share with the
-    // row before: their divisions once for each new value.
-    const double hertz = c.stiffness * terms.hertz;
-    if (!(hertz == cache.hertz)) {
-        cache.hertz = hertz;
-        cache.soft = makeSoft(hertz, terms.zeta, h);
-    }
-    const Softness& soft = cache.soft;
-    setup.deepOverlap = c.deepOverlap;
-    // The push-out speed is a body's, shared among its contacts: in a pile each contact's
-    // push adds up along chains of bodies (200 boxes started at one point left at 20 m/s
-    // with a whole 3 m/s per contact, 13 m/s shared).
-    const int sharers = std::max({1, c.bodyA >= 0 ? bodies_[c.bodyA].contactCount : 1,
-                                  c.bodyB >= 0 ? bodies_[c.bodyB].contactCount : 1});
-    if (sharers != cache.sharers) {
-        cache.sharers = sharers;
-        cache.share = 1.0 / sharers;
-    }
-    setup.pushOutShare = cache.share;
-    setup.biasRate = soft.biasRate;
-    setup.massScale = soft.massScale;
-    setup.impulseScale = soft.impulseScale;
-    for (int k = 0; k < 2; ++k) {
-        RowPoint& r = row.p[k];
-        if (k >= c.pointCount) {
-            r = RowPoint{};
-            setup.normalMass[k] = setup.compliance[k] = 0.0;
-            separation_[2 * i + k] = 0.0;
-            continue;
-        }
-        const ContactPoint& p = c.points[k];
-        r.rAx = p.anchorA.x();
-        r.rAy = p.anchorA.y();
-        r.rBx = p.anchorB.x();
-        r.rBy = p.anchorB.y();
-        const double tx = row.ny, ty = -row.nx;
-        r.rnA = r.rAx * row.ny - r.rAy * row.nx;
-        r.rnB = r.rBx * row.ny - r.rBy * row.nx;
-        r.rtA = r.rAx * ty - r.rAy * tx;
-        r.rtB = r.rBx * ty - r.rBy * tx;
-        separation_[2 * i + k] = r.baseSeparation = p.baseSeparation;
-        setup.normalMass[k] = p.normalMass;
-        r.tangentMass = p.tangentMass;
-        // Converged, the soft update −m·s·(v_n + b) − r·λ = 0 is v_n + b + (r/(s·m))·λ = 0.
-        setup.compliance[k] = soft.impulseScale / (soft.massScale * p.normalMass);
-        r.normalImpulse = warmScale * p.normalImpulse;
-        r.tangentImpulse = warmScale * p.tangentImpulse;
-        const Vec2 held = holding_ ? Vec2(h * Vec2(p.heldNormal, p.heldTangent)) : Vec2::Zero();
-        r.heldNormal = held.x();
-        r.heldTangent = held.y();
-    }
-    setup.blockable = false;
-    row.k11 = row.k12 = row.k22 = 0.0;
-    if (c.pointCount == 2) {
-        const Vec2& n = c.normal;
-        const BodyState& a = state_[row.a];
-        const BodyState& b = state_[row.b];
-        const double mA = a.invMass, iA = a.invInertia;
-        const double mB = b.invMass, iB = b.invInertia;
-        const double rn1A = cross(c.points[0].anchorA, n), rn1B = cross(c.points[0].anchorB, n);
-        const double rn2A = cross(c.points[1].anchorA, n), rn2B = cross(c.points[1].anchorB, n);
-        row.k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
-        row.k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
-        row.k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
-        // Nearly coincident points make K singular: the sequential solve handles them.
-        setup.blockable = !(row.k11 * row.k11 >= 1000.0 * (row.k11 * row.k22 - row.k12 * row.k12));
-    }
-}
-
-void ContactSolver::buildRows(double hertz, double zeta, double h, double warmScale) {
-    // What does not change within the step, once: the rows' masses, the block's K and its
-    // conditioning, the softness (each contact's stiffness multiplier: see prepare()).
-    const int world = static_cast<int>(bodies_.size());
-    lanesHold_ = wide.solve != nullptr;
-    rows_.resize(constraints_.size());
-    setup_.resize(constraints_.size());
-    separation_.resize(2 * constraints_.size());
-    bouncing_.clear();
-    bounceTerms_.clear();
-    colourRows();
-    const BuildTerms terms{hertz, zeta, h, warmScale};
-    if (lanesHold_) {
-        // The coloured rows straight into their lanes (a pyramid's rows_ were megabytes written
-        // and read back once a step), the rest into rows_.
-        buildLanes(terms);
-        RowCache cache;
-        for (const int i : overflow_) {
-            const auto at = static_cast<std::size_t>(i);
-            buildRow(at, rows_[at], setup_[at], terms, cache);
-        }
-    } else {
-        forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
-            RowCache cache;
-            for (std::size_t i = first; i < end; ++i)
-                buildRow(i, rows_[i], setup_[i], terms, cache);
-        });
-    }
-    // The rows with restitution, in order (after every row is built). Room for all at once: a
-    // pile's tens of thousands would otherwise grow the array a doubling at a time.
-    bouncing_.reserve(constraints_.size());
-    bounceTerms_.reserve(constraints_.size());
-    for (std::size_t i = 0; i < constraints_.size(); ++i) {
-        const ContactConstraint& c = constraints_[i];
-        const Row& row = rows_[i];
-        if (c.restitution != 0.0) {
-            bouncing_.push_back({static_cast<int>(i), row.a, row.b, 0});
-            BounceTerms& bounce = bounceTerms_.emplace_back();  // no allocation once warm
-            const RowSetup& setup = setup_[i];
-            bounce.pointCount = row.pointCount;
-            bounce.restitution = c.restitution;
-            bounce.nx = row.nx;
-            bounce.ny = row.ny;
-            bounce.blockable = setup.blockable;
-            for (int k = 0; k < 2; ++k) {
-                bounce.smoothChange[k] = k < c.pointCount ? smoothNormalChange(row, row.p[k]) : 0.0;
-                bounce.normalMass[k] = setup.normalMass[k];
-            }
-            for (int k = 0; k < row.pointCount; ++k) {
-                const RowPoint& p = row.p[k];
-                bounce.arm[k][0] = p.rAx;
-                bounce.arm[k][1] = p.rAy;
-                bounce.arm[k][2] = p.rBx;
-                bounce.arm[k][3] = p.rBy;
-            }
-            bounce.isolated = (row.a == world || bodies_[row.a].contactCount == 1) &&
-                              (row.b == world || bodies_[row.b].contactCount == 1);
-        }
-    }
-    shifted_.resize(2 * rows_.size());
-    bounces_.resize(2 * rows_.size());
-    changedAt_.resize(bodies_.size() + 1);
 }
 
 void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& settings,
@@ -873,48 +616,6 @@ void ContactSolver::storeImpulses(bool solved) {
                 if (!solved) continue;
                 p.solvedNormal = p.normalImpulse;
                 p.solvedTangent = p.tangentImpulse;
-            }
-        }
-    });
-}
-
-void ContactSolver::unpackRows() {
-    // Every coloured row as buildRow() made it, with the lanes' impulses: what relaxJoined()
-    // reads of the rows.
-    if (!lanesHold_) return;
-    forChunks(rows_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
-        for (std::size_t i = first; i < end; ++i) {
-            const int at = slot_[i];
-            if (at < 0) continue;
-            Row& c = rows_[i];
-            const WideRow& w = wide_[at / kLanes];
-            const int l = at % kLanes;
-            c.a = w.a[l];
-            c.b = w.b[l];
-            c.pointCount = w.points[l];
-            c.nx = w.nx[l];
-            c.ny = w.ny[l];
-            c.friction = w.friction[l];
-            c.k11 = w.k11[l];
-            c.k12 = w.k12[l];
-            c.k22 = w.k22[l];
-            for (int k = 0; k < 2; ++k) {
-                const WideRow::Point& q = w.p[k];
-                RowPoint& p = c.p[k];
-                p.rAx = q.rAx[l];
-                p.rAy = q.rAy[l];
-                p.rBx = q.rBx[l];
-                p.rBy = q.rBy[l];
-                p.rnA = q.rnA[l];
-                p.rnB = q.rnB[l];
-                p.rtA = q.rtA[l];
-                p.rtB = q.rtB[l];
-                p.tangentMass = q.tangentMass[l];
-                p.normalImpulse = q.normalImpulse[l];
-                p.tangentImpulse = q.tangentImpulse[l];
-                p.heldNormal = q.heldNormal[l];
-                p.heldTangent = q.heldTangent[l];
-                p.baseSeparation = q.baseSeparation[l];
             }
         }
     });
