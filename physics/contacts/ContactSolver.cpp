@@ -9,6 +9,7 @@
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define PHASEBOX_WIDE_CONTACTS 1
+#include <immintrin.h>
 #endif
 
 namespace phasebox {
@@ -35,6 +36,32 @@ namespace avx2 {
 constexpr int kWidth = 4;
 typedef double Lanes __attribute__((vector_size(8 * kWidth)));
 typedef long long Mask __attribute__((vector_size(8 * kWidth)));
+// The velocities of a part's bodies: each state's first four doubles in one load, the four
+// turned into lanes (vx, vy, w; the fourth is invMass, unused).
+inline void gatherVelocities(const ContactSolverBody* state, const int* index, Lanes& vx, Lanes& vy,
+                             Lanes& w) {
+    const __m256d b0 = _mm256_loadu_pd(&state[index[0]].vx);
+    const __m256d b1 = _mm256_loadu_pd(&state[index[1]].vx);
+    const __m256d b2 = _mm256_loadu_pd(&state[index[2]].vx);
+    const __m256d b3 = _mm256_loadu_pd(&state[index[3]].vx);
+    const __m256d xw01 = _mm256_unpacklo_pd(b0, b1), xw23 = _mm256_unpacklo_pd(b2, b3);
+    const __m256d y01 = _mm256_unpackhi_pd(b0, b1), y23 = _mm256_unpackhi_pd(b2, b3);
+    vx = Lanes(_mm256_permute2f128_pd(xw01, xw23, 0x20));
+    w = Lanes(_mm256_permute2f128_pd(xw01, xw23, 0x31));
+    vy = Lanes(_mm256_permute2f128_pd(y01, y23, 0x20));
+}
+// Each lane's velocities back into its body's state, but the static world's (which other
+// workers' rows of the same colour share).
+inline void scatterVelocities(ContactSolverBody* state, const int* index, int world,
+                              const Lanes& vx, const Lanes& vy, const Lanes& w) {
+    for (int l = 0; l < kWidth; ++l) {
+        if (index[l] == world) continue;
+        ContactSolverBody& b = state[index[l]];
+        b.vx = vx[l];
+        b.vy = vy[l];
+        b.w = w[l];
+    }
+}
 #include "physics/contacts/ContactWideLoop.inc"
 }  // namespace avx2
 #pragma GCC pop_options
@@ -46,6 +73,50 @@ namespace avx512 {
 constexpr int kWidth = kLanes;
 typedef double Lanes __attribute__((vector_size(8 * kWidth)));
 typedef long long Mask __attribute__((vector_size(8 * kWidth)));
+// The velocities of eight bodies: each state's first four doubles in one load, two bodies to a
+// register, the eight turned into lanes (vx, vy, w; the fourth is invMass, unused) by two rounds
+// of shuffles instead of 24 single loads. (GCC's shuffles rather than the intrinsics, whose
+// undefined pass-through GCC 12 warns of.)
+typedef double Quad __attribute__((vector_size(32)));
+inline void gatherVelocities(const ContactSolverBody* state, const int* index, Lanes& vx, Lanes& vy,
+                             Lanes& w) {
+    Lanes pair[4];  // bodies 2j and 2j + 1: vx vy w m | vx vy w m
+    for (int j = 0; j < 4; ++j) {
+        Quad first, second;
+        __builtin_memcpy(&first, &state[index[2 * j]].vx, sizeof first);
+        __builtin_memcpy(&second, &state[index[2 * j + 1]].vx, sizeof second);
+        pair[j] = __builtin_shufflevector(first, second, 0, 1, 2, 3, 4, 5, 6, 7);
+    }
+    // vx0 vx2 w0 w2 vx1 vx3 w1 w3 (and bodies 4 to 7), vy0 vy2 m0 m2 vy1 vy3 m1 m3 (and 4 to 7)
+    const Lanes xw0 = __builtin_shufflevector(pair[0], pair[1], 0, 8, 2, 10, 4, 12, 6, 14);
+    const Lanes xw1 = __builtin_shufflevector(pair[2], pair[3], 0, 8, 2, 10, 4, 12, 6, 14);
+    const Lanes ym0 = __builtin_shufflevector(pair[0], pair[1], 1, 9, 3, 11, 5, 13, 7, 15);
+    const Lanes ym1 = __builtin_shufflevector(pair[2], pair[3], 1, 9, 3, 11, 5, 13, 7, 15);
+    vx = __builtin_shufflevector(xw0, xw1, 0, 4, 1, 5, 8, 12, 9, 13);
+    w = __builtin_shufflevector(xw0, xw1, 2, 6, 3, 7, 10, 14, 11, 15);
+    vy = __builtin_shufflevector(ym0, ym1, 0, 4, 1, 5, 8, 12, 9, 13);
+}
+// The lanes back into their bodies' states, the shuffles undone: three doubles to a body in one
+// masked store, none to the static world (which other workers' rows of the same colour share).
+inline void scatterVelocities(ContactSolverBody* state, const int* index, int world,
+                              const Lanes& vx, const Lanes& vy, const Lanes& w) {
+    const Lanes xw0 = __builtin_shufflevector(vx, w, 0, 2, 8, 10, 1, 3, 9, 11);
+    const Lanes xw1 = __builtin_shufflevector(vx, w, 4, 6, 12, 14, 5, 7, 13, 15);
+    Lanes pair[4];  // bodies 2j and 2j + 1: vx vy w vy | vx vy w vy (the fourth not stored)
+    pair[0] = __builtin_shufflevector(xw0, vy, 0, 8, 2, 8, 4, 9, 6, 9);
+    pair[1] = __builtin_shufflevector(xw0, vy, 1, 10, 3, 10, 5, 11, 7, 11);
+    pair[2] = __builtin_shufflevector(xw1, vy, 0, 12, 2, 12, 4, 13, 6, 13);
+    pair[3] = __builtin_shufflevector(xw1, vy, 1, 14, 3, 14, 5, 15, 7, 15);
+    for (int j = 0; j < 4; ++j) {
+        const int first = index[2 * j], second = index[2 * j + 1];
+        const __mmask8 keepFirst = first == world ? 0 : 0x7;
+        const __mmask8 keepSecond = second == world ? 0 : 0x7;
+        const Quad low = __builtin_shufflevector(pair[j], pair[j], 0, 1, 2, 3);
+        const Quad high = __builtin_shufflevector(pair[j], pair[j], 4, 5, 6, 7);
+        _mm256_mask_storeu_pd(&state[first].vx, keepFirst, low);
+        _mm256_mask_storeu_pd(&state[second].vx, keepSecond, high);
+    }
+}
 #include "physics/contacts/ContactWideLoop.inc"
 }  // namespace avx512
 #pragma GCC pop_options
