@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -24,6 +25,11 @@ using WideSetup = ContactSolver::WideSetup;
 using BodyMotion = ContactSolver::BodyMotion;
 using PhaseTerms = ContactSolver::PhaseTerms;
 
+// The wide kernels load a body's state and motion four doubles at a time (gatherFour).
+static_assert(offsetof(ContactSolverBody, w) == 2 * sizeof(double) &&
+              offsetof(ContactSolverBody, invMass) == 3 * sizeof(double));
+static_assert(offsetof(BodyMotion, sin) == 3 * sizeof(double) && sizeof(BodyMotion) == 32);
+
 // The wide sweep where AVX2 is there (chosen at run time; the build is generic x86-64), on
 // AVX-512 where that is there too. No fused multiply-add: each lane does the scalar row's
 // operations (solveRow) in the same order, so every instruction set gives the same bits.
@@ -36,19 +42,25 @@ namespace avx2 {
 constexpr int kWidth = 4;
 typedef double Lanes __attribute__((vector_size(8 * kWidth)));
 typedef long long Mask __attribute__((vector_size(8 * kWidth)));
-// The velocities of a part's bodies: each state's first four doubles in one load, the four
-// turned into lanes (vx, vy, w; the fourth is invMass, unused).
-inline void gatherVelocities(const ContactSolverBody* state, const int* index, Lanes& vx, Lanes& vy,
-                             Lanes& w) {
-    const __m256d b0 = _mm256_loadu_pd(&state[index[0]].vx);
-    const __m256d b1 = _mm256_loadu_pd(&state[index[1]].vx);
-    const __m256d b2 = _mm256_loadu_pd(&state[index[2]].vx);
-    const __m256d b3 = _mm256_loadu_pd(&state[index[3]].vx);
-    const __m256d xw01 = _mm256_unpacklo_pd(b0, b1), xw23 = _mm256_unpacklo_pd(b2, b3);
-    const __m256d y01 = _mm256_unpackhi_pd(b0, b1), y23 = _mm256_unpackhi_pd(b2, b3);
-    vx = Lanes(_mm256_permute2f128_pd(xw01, xw23, 0x20));
-    w = Lanes(_mm256_permute2f128_pd(xw01, xw23, 0x31));
-    vy = Lanes(_mm256_permute2f128_pd(y01, y23, 0x20));
+// The first four doubles of a part's items (body states, body motions), each item in one load,
+// turned into four lanes.
+template <class Item>
+inline void gatherFour(const Item* items, const int* index, Lanes& f0, Lanes& f1, Lanes& f2,
+                       Lanes& f3) {
+    const __m256d b0 = _mm256_loadu_pd(reinterpret_cast<const double*>(&items[index[0]]));
+    const __m256d b1 = _mm256_loadu_pd(reinterpret_cast<const double*>(&items[index[1]]));
+    const __m256d b2 = _mm256_loadu_pd(reinterpret_cast<const double*>(&items[index[2]]));
+    const __m256d b3 = _mm256_loadu_pd(reinterpret_cast<const double*>(&items[index[3]]));
+    const __m256d t01 = _mm256_unpacklo_pd(b0, b1), t23 = _mm256_unpacklo_pd(b2, b3);
+    const __m256d u01 = _mm256_unpackhi_pd(b0, b1), u23 = _mm256_unpackhi_pd(b2, b3);
+    f0 = Lanes(_mm256_permute2f128_pd(t01, t23, 0x20));
+    f1 = Lanes(_mm256_permute2f128_pd(u01, u23, 0x20));
+    f2 = Lanes(_mm256_permute2f128_pd(t01, t23, 0x31));
+    f3 = Lanes(_mm256_permute2f128_pd(u01, u23, 0x31));
+}
+// Whether any lane of m is set, in one test instead of a lane-by-lane reduction.
+inline bool someLane(const Mask& m) {
+    return !_mm256_testz_si256(__m256i(m), __m256i(m));
 }
 // Each lane's velocities back into its body's state, but the static world's (which other
 // workers' rows of the same colour share).
@@ -73,28 +85,34 @@ namespace avx512 {
 constexpr int kWidth = kLanes;
 typedef double Lanes __attribute__((vector_size(8 * kWidth)));
 typedef long long Mask __attribute__((vector_size(8 * kWidth)));
-// The velocities of eight bodies: each state's first four doubles in one load, two bodies to a
-// register, the eight turned into lanes (vx, vy, w; the fourth is invMass, unused) by two rounds
-// of shuffles instead of 24 single loads. (GCC's shuffles rather than the intrinsics, whose
-// undefined pass-through GCC 12 warns of.)
+// The first four doubles of eight items (body states, body motions): each item in one load, two
+// items to a register, the eight turned into four lanes by two rounds of shuffles instead of 32
+// single loads. (GCC's shuffles rather than the intrinsics, whose undefined pass-through GCC 12
+// warns of.)
 typedef double Quad __attribute__((vector_size(32)));
-inline void gatherVelocities(const ContactSolverBody* state, const int* index, Lanes& vx, Lanes& vy,
-                             Lanes& w) {
-    Lanes pair[4];  // bodies 2j and 2j + 1: vx vy w m | vx vy w m
+template <class Item>
+inline void gatherFour(const Item* items, const int* index, Lanes& f0, Lanes& f1, Lanes& f2,
+                       Lanes& f3) {
+    Lanes pair[4];  // items 2j and 2j + 1: f0 f1 f2 f3 | f0 f1 f2 f3
     for (int j = 0; j < 4; ++j) {
         Quad first, second;
-        __builtin_memcpy(&first, &state[index[2 * j]].vx, sizeof first);
-        __builtin_memcpy(&second, &state[index[2 * j + 1]].vx, sizeof second);
+        __builtin_memcpy(&first, &items[index[2 * j]], sizeof first);
+        __builtin_memcpy(&second, &items[index[2 * j + 1]], sizeof second);
         pair[j] = __builtin_shufflevector(first, second, 0, 1, 2, 3, 4, 5, 6, 7);
     }
-    // vx0 vx2 w0 w2 vx1 vx3 w1 w3 (and bodies 4 to 7), vy0 vy2 m0 m2 vy1 vy3 m1 m3 (and 4 to 7)
-    const Lanes xw0 = __builtin_shufflevector(pair[0], pair[1], 0, 8, 2, 10, 4, 12, 6, 14);
-    const Lanes xw1 = __builtin_shufflevector(pair[2], pair[3], 0, 8, 2, 10, 4, 12, 6, 14);
-    const Lanes ym0 = __builtin_shufflevector(pair[0], pair[1], 1, 9, 3, 11, 5, 13, 7, 15);
-    const Lanes ym1 = __builtin_shufflevector(pair[2], pair[3], 1, 9, 3, 11, 5, 13, 7, 15);
-    vx = __builtin_shufflevector(xw0, xw1, 0, 4, 1, 5, 8, 12, 9, 13);
-    w = __builtin_shufflevector(xw0, xw1, 2, 6, 3, 7, 10, 14, 11, 15);
-    vy = __builtin_shufflevector(ym0, ym1, 0, 4, 1, 5, 8, 12, 9, 13);
+    // f0 of items 0 2 | f2 of 0 2 | f0 of 1 3 | f2 of 1 3 (and items 4 to 7); likewise f1, f3.
+    const Lanes even0 = __builtin_shufflevector(pair[0], pair[1], 0, 8, 2, 10, 4, 12, 6, 14);
+    const Lanes even1 = __builtin_shufflevector(pair[2], pair[3], 0, 8, 2, 10, 4, 12, 6, 14);
+    const Lanes odd0 = __builtin_shufflevector(pair[0], pair[1], 1, 9, 3, 11, 5, 13, 7, 15);
+    const Lanes odd1 = __builtin_shufflevector(pair[2], pair[3], 1, 9, 3, 11, 5, 13, 7, 15);
+    f0 = __builtin_shufflevector(even0, even1, 0, 4, 1, 5, 8, 12, 9, 13);
+    f2 = __builtin_shufflevector(even0, even1, 2, 6, 3, 7, 10, 14, 11, 15);
+    f1 = __builtin_shufflevector(odd0, odd1, 0, 4, 1, 5, 8, 12, 9, 13);
+    f3 = __builtin_shufflevector(odd0, odd1, 2, 6, 3, 7, 10, 14, 11, 15);
+}
+// Whether any lane of m is set, in one test instead of a lane-by-lane reduction.
+inline bool someLane(const Mask& m) {
+    return _mm512_test_epi64_mask(__m512i(m), __m512i(m)) != 0;
 }
 // The lanes back into their bodies' states, the shuffles undone: three doubles to a body in one
 // masked store, none to the static world (which other workers' rows of the same colour share).
