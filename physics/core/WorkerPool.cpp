@@ -98,14 +98,19 @@ bool WorkerPool::claim(int owner, int& chunk) {
 }
 
 void WorkerPool::drain(int worker) {
-    // Its own share first, then the others', the next worker's first.
+    // Its own share first, then the others', the next worker's first. The chunks it finished
+    // are counted once, when nothing is left to claim: the counter is shared by every worker,
+    // and each add moves its cache line from one core to another (about 0.25 µs on a machine
+    // whose two cores sit apart), which a count per chunk paid 16 times a loop.
+    int finished = 0;
     for (int k = 0; k < workers_; ++k) {
         const int owner = (worker + k) % workers_;
         for (int chunk; claim(owner, chunk);) {
             runChunk(chunk, worker);
-            done_.fetch_add(1, std::memory_order_release);
+            ++finished;
         }
     }
+    if (finished > 0) done_.fetch_add(finished, std::memory_order_release);
 }
 
 void WorkerPool::run(int count, int grain, int chunks, ChunkFn chunkFn, void* body) {

@@ -112,8 +112,10 @@ private:
     std::unique_ptr<Share[]> shares_;
     // Claims a chunk of worker `owner`'s share; false when the share is used up.
     bool claim(int owner, int& chunk);
-    std::atomic<int> done_{0};  // chunks of the current loop finished
-    ChunkFn chunkFn_ = nullptr;
+    // Chunks of the current loop finished, on a cache line of its own: the workers add to it and
+    // the caller polls it, while every chunk reads the loop's description below.
+    alignas(64) std::atomic<int> done_{0};
+    alignas(64) ChunkFn chunkFn_ = nullptr;
     void* body_ = nullptr;
     int count_ = 0, grain_ = 1;
     // The exception of the lowest chunk that threw, if any.
