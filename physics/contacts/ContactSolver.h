@@ -366,6 +366,8 @@ private:
     // Sub-steps for this step: `base`, or more when the stack the warm-start impulses carry
     // would sag further than kSagTarget at the base stiffness (after loadBodies).
     int stackSubsteps(double h, int base, const ContactSettings& settings);
+    // depth_ from supports_: how far each body sinks down its support chains.
+    void sagDepths();
     // What a row is built from besides its constraint: the step's softness and warm start.
     struct BuildTerms {
         double hertz, zeta, h, warmScale;
@@ -525,6 +527,9 @@ private:
         double sink;
     };
     std::vector<Support> supports_;
+    // sagDepths: the supports by lower body (supportOrder_ from supportStart_[lower]), per body
+    // how many supports under it are not done yet, and the bodies in the order they are done.
+    std::vector<int> supportStart_, supportOrder_, supportsUnder_, supportReady_;
     std::vector<Vec2> deepShift_;  // per body (+ the static world): deepPushOut's displacement
     // What deepPushOut's passes read of a row: its bodies, normal, deepest point's separation
     // (a move along the normal shifts every point alike, and rounding keeps their order) and
