@@ -153,6 +153,7 @@ void ContactStage::bind(const Bodies& bodies) {
     polygons_.assign(colliders_.size(), OrientedPolygon{});
     bounds_.resize(colliders_.size());
     bodyOfCollider_.assign(colliders_.size(), -1);
+    bodyColliders_.reserve(colliders_.size());
     // Contacts for kReservedContacts a collider (a stack, a chain folding on itself, a pile's
     // inside) before any buffer grows in the step.
     const std::size_t contacts =
@@ -232,22 +233,12 @@ void ContactStage::findReachedSleepers(const Bodies& bodies, const ContactSettin
     for (const auto& [i, j] : pairs_) reachSleeper(bodies, i, j, settings.speculativeDistance);
 }
 
-int ContactStage::solverBodyFor(int collider, const Vec& q, const Vec& inverseMass) {
-    const Collider& c = colliders_[collider];
-    if (c.dof < 0) return -1;
+int ContactStage::solverBodyFor(int collider) {
+    if (colliders_[collider].dof < 0) return -1;
     int& index = bodyOfCollider_[collider];
     if (index >= 0) return index;
-    std::vector<SolverBody>& bodies = solver_.bodies();
-    index = static_cast<int>(bodies.size());
-    SolverBody b;
-    b.dof = c.dof;
-    b.rotates = c.rigid;
-    b.jointed = c.jointed;
-    b.collidePosition = q.segment<2>(c.dof);
-    if (b.rotates) b.collideAngle = q[c.dof + 2];
-    b.invMass = inverseMass[b.dof];
-    b.invInertia = b.rotates ? inverseMass[b.dof + 2] : 0.0;
-    bodies.push_back(b);
+    index = static_cast<int>(bodyColliders_.size());
+    bodyColliders_.push_back(collider);
     return index;
 }
 
@@ -553,14 +544,33 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& q, const Vec& i
         if (s >= pairCount) f.pair.a = -1;  // a plane: the world is body A
         Made made;
         made.slot = s;
-        made.bodyA = f.pair.a >= 0 ? solverBodyFor(f.pair.a, q, inverseMass) : -1;
-        made.bodyB = solverBodyFor(f.pair.b, q, inverseMass);
+        made.bodyA = f.pair.a >= 0 ? solverBodyFor(f.pair.a) : -1;
+        made.bodyB = solverBodyFor(f.pair.b);
         made.key = s < pairCount ? pairKey(f.pair.a, f.pair.b)
                                  : pairKey(count + (s - pairCount) / count, f.pair.b);
         if (!madeFrom_.empty() && made.key <= lastKey) keysAscending_ = false;
         lastKey = made.key;
         madeFrom_.push_back(made);
     }
+    // The solver bodies in the order numbered, each made whole from its collider (the vector
+    // keeps last step's elements, so that only its growth is constructed serially: a body is a
+    // few hundred bytes, the 100-row pyramid's 5,050 were a serial megabyte and a half).
+    std::vector<SolverBody>& solverBodies = solver_.bodies();
+    solverBodies.resize(bodyColliders_.size());
+    forRange(static_cast<int>(bodyColliders_.size()), kColliderGrain, [&](int begin, int end) {
+        for (int k = begin; k < end; ++k) {
+            const Collider& c = colliders_[bodyColliders_[k]];
+            SolverBody& b = solverBodies[k];
+            b = SolverBody{};
+            b.dof = c.dof;
+            b.rotates = c.rigid;
+            b.jointed = c.jointed;
+            b.collidePosition = q.segment<2>(c.dof);
+            if (b.rotates) b.collideAngle = q[c.dof + 2];
+            b.invMass = inverseMass[b.dof];
+            b.invInertia = b.rotates ? inverseMass[b.dof + 2] : 0.0;
+        }
+    });
     // Every element is rebuilt whole below: those the vector holds already are not cleared
     // first (a contact is a few hundred bytes; one pass over them instead of two).
     ConstraintList& constraints = solver_.constraints();
@@ -612,7 +622,7 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
     // vector holds (findContacts()).
     if (!carried_) std::swap(previous_, solver_.constraints());
     carried_ = false;
-    solver_.bodies().clear();
+    bodyColliders_.clear();  // the solver's bodies are made anew in findContacts()
     std::fill(bodyOfCollider_.begin(), bodyOfCollider_.end(), -1);
 
     findPairs(bodies, q, u, uNext, frameFraction, dt, settings);

@@ -171,7 +171,9 @@ private:
                      PairContact& pair) const;
     bool narrowPhasePlane(int k, int i, double margin, Manifold& m, PairContact& pair) const;
     Vec2 colliderCenter(int i) const;
-    int solverBodyFor(int collider, const Vec& q, const Vec& inverseMass);
+    // The solver body of a collider in this step, numbered as the contacts come (−1: static);
+    // findContacts() makes the bodies after, in parallel (bodyColliders_).
+    int solverBodyFor(int collider);
     // A contact's key, material and points from its manifold (colliderA −1: a plane).
     void fillConstraint(ContactConstraint& c, std::uint64_t key, int colliderA, int colliderB,
                         const Manifold& m, double friction, double restitution) const;
@@ -235,6 +237,7 @@ private:
     std::vector<HalfPlane> planes_;
     std::vector<double> planeFriction_, planeRestitution_;
     std::vector<int> bodyOfCollider_;  // solver body index in this step, −1 none yet
+    std::vector<int> bodyColliders_;   // per solver body in this step, its collider
     ConstraintList previous_;
     bool heldCarried_ = false;
     // Sleeping: previous_ was filled by rebind() (collide() keeps it), the contacts of islands
