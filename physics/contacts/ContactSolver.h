@@ -519,8 +519,9 @@ private:
     std::vector<unsigned char> shifted_;  // per row point (2 per row): moved to its time of impact
     std::vector<unsigned char> bounces_;  // per row point: bounces in this inner sub-step
     std::vector<std::uint32_t> changedAt_;  // per body (+ the world): clock of its last impulse
-    // stackSubsteps: per body (+ the static world) the predicted sag, and per contact that
-    // carries load which body rests on which and how far the upper one sinks into the lower.
+    // stackSubsteps: per body (+ the static world) the predicted sag, and per contact which body
+    // rests on which and how far the upper one sinks into the lower (upper −1: it carries no
+    // load).
     std::vector<double> depth_;
     struct Support {
         int upper, lower;
