@@ -12,21 +12,24 @@
 namespace phasebox {
 
 using WideRow = ContactSolver::WideRow;
+using WideCold = ContactSolver::WideCold;
 using WideSetup = ContactSolver::WideSetup;
 
 namespace {
 // An unused lane: the static world joined to itself, every term zero (a colour's last wide row).
-void clearLane(WideRow& w, WideSetup& S, int l, int world) {
+void clearLane(WideRow& w, WideCold& u, WideSetup& S, int l, int world) {
     w.a[l] = w.b[l] = world;
-    w.points[l] = 0;
-    for (double* lanes : {w.nx, w.ny, w.friction, w.mA, w.iA, w.mB, w.iB, w.k11, w.k12, w.k22,
-                          w.i11, w.i12, w.i22, w.invA11, w.invA22})
+    u.points[l] = 0;
+    for (double* lanes : {w.nx, w.ny, w.friction, w.iA, w.iB, w.k11, w.k12, w.k22, w.i11, w.i12,
+                          w.i22, w.invA11, w.invA22})
         lanes[l] = 0.0;
     for (WideRow::Point& q : w.p)
-        for (double* lanes :
-             {q.rAx, q.rAy, q.rBx, q.rBy, q.rnA, q.rnB, q.rtA, q.rtB, q.bias, q.effectiveMass,
-              q.impulseScale, q.tangentMass, q.normalImpulse, q.tangentImpulse, q.heldNormal,
-              q.heldTangent, q.baseSeparation, q.separation})
+        for (double* lanes : {q.rnA, q.rnB, q.rtA, q.rtB, q.bias, q.effectiveMass, q.impulseScale,
+                              q.tangentMass, q.normalImpulse, q.tangentImpulse})
+            lanes[l] = 0.0;
+    for (WideCold::Point& q : u.p)
+        for (double* lanes : {q.rAx, q.rAy, q.rBx, q.rBy, q.heldNormal, q.heldTangent,
+                              q.baseSeparation, q.separation})
             lanes[l] = 0.0;
     for (double* lanes : {S.biasRate, S.massScale, S.impulseScale, S.normalMass[0], S.normalMass[1],
                           S.compliance[0], S.compliance[1], S.deepOverlap, S.pushOutShare})
@@ -121,6 +124,7 @@ void ContactSolver::colourRows() {
             slot_[i] = blockCount_[slot_[i]]++;
         }
         wide_.resize(wideRows);
+        wideCold_.resize(wideRows);
         wideSetup_.resize(wideRows);
         order_.assign(kLanes * wideRows, -1);
         for (std::size_t i = 0; i < rowCount; ++i)
@@ -135,6 +139,7 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
         RowCache cache;
         for (std::size_t r = first; r < end; ++r) {
             WideRow& w = wide_[r];
+            WideCold& u = wideCold_[r];
             WideSetup& S = wideSetup_[r];
             // The next wide row's constraints are scattered over the constraints' megabytes (a
             // pile's): their lines are asked for now, while this one's are built.
@@ -150,7 +155,7 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
             for (int l = 0; l < kLanes; ++l) {
                 const int i = order_[kLanes * r + l];
                 if (i < 0) {
-                    clearLane(w, S, l, world);
+                    clearLane(w, u, S, l, world);
                     continue;
                 }
                 // On the stack, unless a scalar pass reads the row too (a bounce's).
@@ -168,9 +173,7 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
                 w.nx[l] = c.nx;
                 w.ny[l] = c.ny;
                 w.friction[l] = c.friction;
-                w.mA[l] = a.invMass;
                 w.iA[l] = a.invInertia;
-                w.mB[l] = b.invMass;
                 w.iB[l] = b.invInertia;
                 w.k11[l] = c.k11;
                 w.k12[l] = c.k12;
@@ -178,10 +181,11 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
                 for (int k = 0; k < 2; ++k) {
                     const RowPoint& p = c.p[k];
                     WideRow::Point& q = w.p[k];
-                    q.rAx[l] = p.rAx;
-                    q.rAy[l] = p.rAy;
-                    q.rBx[l] = p.rBx;
-                    q.rBy[l] = p.rBy;
+                    WideCold::Point& e = u.p[k];
+                    e.rAx[l] = p.rAx;
+                    e.rAy[l] = p.rAy;
+                    e.rBx[l] = p.rBx;
+                    e.rBy[l] = p.rBy;
                     q.rnA[l] = p.rnA;
                     q.rnB[l] = p.rnB;
                     q.rtA[l] = p.rtA;
@@ -189,11 +193,11 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
                     q.tangentMass[l] = p.tangentMass;
                     q.normalImpulse[l] = p.normalImpulse;
                     q.tangentImpulse[l] = p.tangentImpulse;
-                    q.heldNormal[l] = p.heldNormal;
-                    q.heldTangent[l] = p.heldTangent;
-                    q.baseSeparation[l] = q.separation[l] = p.baseSeparation;
+                    e.heldNormal[l] = p.heldNormal;
+                    e.heldTangent[l] = p.heldTangent;
+                    e.baseSeparation[l] = e.separation[l] = p.baseSeparation;
                 }
-                w.points[l] = c.pointCount;
+                u.points[l] = c.pointCount;
                 S.biasRate[l] = setup.biasRate;
                 S.massScale[l] = setup.massScale;
                 S.impulseScale[l] = setup.impulseScale;

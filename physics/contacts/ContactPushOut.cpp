@@ -12,8 +12,8 @@ namespace phasebox {
 const double* ContactSolver::gatherSeparations() {
     if (!lanesHold_) return separation_.data();
     gathered_.resize(2 * rows_.size());
-    for (std::size_t r = 0; r < wide_.size(); ++r) {
-        const WideRow& w = wide_[r];
+    for (std::size_t r = 0; r < wideCold_.size(); ++r) {
+        const ContactSolver::WideCold& w = wideCold_[r];
         const int* rows = order_.data() + kLanes * r;
         for (int l = 0; l < kLanes; ++l) {
             const int i = rows[l];

@@ -272,10 +272,11 @@ void ContactSolver::unpackRows() {
             if (at < 0) continue;
             Row& c = rows_[i];
             const WideRow& w = wide_[at / kLanes];
+            const WideCold& u = wideCold_[at / kLanes];
             const int l = at % kLanes;
             c.a = w.a[l];
             c.b = w.b[l];
-            c.pointCount = w.points[l];
+            c.pointCount = u.points[l];
             c.nx = w.nx[l];
             c.ny = w.ny[l];
             c.friction = w.friction[l];
@@ -284,11 +285,12 @@ void ContactSolver::unpackRows() {
             c.k22 = w.k22[l];
             for (int k = 0; k < 2; ++k) {
                 const WideRow::Point& q = w.p[k];
+                const WideCold::Point& e = u.p[k];
                 RowPoint& p = c.p[k];
-                p.rAx = q.rAx[l];
-                p.rAy = q.rAy[l];
-                p.rBx = q.rBx[l];
-                p.rBy = q.rBy[l];
+                p.rAx = e.rAx[l];
+                p.rAy = e.rAy[l];
+                p.rBx = e.rBx[l];
+                p.rBy = e.rBy[l];
                 p.rnA = q.rnA[l];
                 p.rnB = q.rnB[l];
                 p.rtA = q.rtA[l];
@@ -296,9 +298,9 @@ void ContactSolver::unpackRows() {
                 p.tangentMass = q.tangentMass[l];
                 p.normalImpulse = q.normalImpulse[l];
                 p.tangentImpulse = q.tangentImpulse[l];
-                p.heldNormal = q.heldNormal[l];
-                p.heldTangent = q.heldTangent[l];
-                p.baseSeparation = q.baseSeparation[l];
+                p.heldNormal = e.heldNormal[l];
+                p.heldTangent = e.heldTangent[l];
+                p.baseSeparation = e.baseSeparation[l];
             }
         }
     });

@@ -19,6 +19,7 @@ using namespace contact_impulse;
 
 namespace {
 using WideRow = ContactSolver::WideRow;
+using WideCold = ContactSolver::WideCold;
 using ContactSolverBody = ContactSolver::BodyState;
 using RowSetup = ContactSolver::RowSetup;
 using WideSetup = ContactSolver::WideSetup;
@@ -141,8 +142,10 @@ inline void scatterVelocities(ContactSolverBody* state, const int* index, int wo
 #endif
 
 using WideLoop = void (*)(WideRow*, int, ContactSolverBody*, int);
-using WideMeasure = void (*)(WideRow*, int, const BodyMotion*);
-using WidePrepare = void (*)(WideRow*, int, const WideSetup*, const BodyMotion*, const PhaseTerms&);
+using WideWarm = void (*)(WideRow*, const WideCold*, int, ContactSolverBody*, int);
+using WideMeasure = void (*)(const WideRow*, WideCold*, int, const BodyMotion*);
+using WidePrepare = void (*)(WideRow*, WideCold*, int, const WideSetup*, const BodyMotion*,
+                             const PhaseTerms&);
 // The instruction set the wide kernels use: 2 AVX-512, 1 AVX2, 0 none. Without AVX2 the rows are
 // solved one by one in the same colour order (the portable build of the wide loop, on SSE2
 // pairs, was slower than that).
@@ -158,7 +161,8 @@ int wideLevel() {
 // The kernels in use (all null: the rows one by one); ContactSolver::useInstructions() sets them.
 struct WideKernels {
     int level = 0;  // wideLevel()'s scale
-    WideLoop solve = nullptr, warm = nullptr;
+    WideLoop solve = nullptr;
+    WideWarm warm = nullptr;
     WideMeasure measure = nullptr;
     WidePrepare prepare = nullptr;
 };
@@ -239,6 +243,7 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     deep_.reserve(constraints);
     // Each colour's last wide row may be partly empty.
     wide_.reserve(constraints / kLanes + kColours);
+    wideCold_.reserve(constraints / kLanes + kColours);
     wideSetup_.reserve(constraints / kLanes + kColours);
     order_.reserve(constraints + kLanes * kColours);
     colourMask_.reserve(bodies + 1);
@@ -255,8 +260,9 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
     const PhaseTerms terms{1.0 / h, settings.pushOut, useBias};
     if (lanesHold_) {
         forColours([&](std::size_t first, std::size_t end) {
-            wide.prepare(wide_.data() + first, static_cast<int>(end - first),
-                         wideSetup_.data() + first, measure ? motion_.data() : nullptr, terms);
+            wide.prepare(wide_.data() + first, wideCold_.data() + first,
+                         static_cast<int>(end - first), wideSetup_.data() + first,
+                         measure ? motion_.data() : nullptr, terms);
         });
         for (const int i : overflow_) prepareRow(static_cast<std::size_t>(i), terms, measure);
         return;
@@ -373,7 +379,8 @@ void ContactSolver::updateSeparations() {
     updateMotion(nullptr);
     if (lanesHold_) {
         forColours([&](std::size_t first, std::size_t end) {
-            wide.measure(wide_.data() + first, static_cast<int>(end - first), motion_.data());
+            wide.measure(wide_.data() + first, wideCold_.data() + first,
+                         static_cast<int>(end - first), motion_.data());
         });
         for (const int i : overflow_) rowSeparations(static_cast<std::size_t>(i));
         return;
@@ -411,8 +418,8 @@ void ContactSolver::warmStart() {
     for (int colour = 0; colour < kColours; ++colour) {
         forColour(colour, [&](std::size_t first, std::size_t end) {
             if (wide.warm) {
-                wide.warm(wide_.data() + first, static_cast<int>(end - first), state_.data(),
-                          world);
+                wide.warm(wide_.data() + first, wideCold_.data() + first,
+                          static_cast<int>(end - first), state_.data(), world);
                 return;
             }
             for (std::size_t slot = kLanes * first; slot < kLanes * end; ++slot)

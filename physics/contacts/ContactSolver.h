@@ -228,12 +228,13 @@ public:
     // so more independent lanes per pass keep the processor's units busy (AVX-512 does eight at
     // once; AVX2 does them as two halves, one after the other).
     static constexpr int kLanes = 8;
-    // The fields the solve sweeps read come first in the row and in each point, the others
-    // after them: a sweep over rows too many for the core's own cache streams fewer lines.
+    // What the solve sweeps read and write, and nothing else: over rows too many for the core's
+    // own cache (the 100-row pyramid's) a sweep streams these lines and no others. A body's
+    // inverse mass is not here: the sweep takes it with the body's velocities (its state's fourth
+    // double). What the other passes read is in WideCold, at the same index.
     struct alignas(64) WideRow {
         int a[kLanes], b[kLanes];
-        double nx[kLanes], ny[kLanes], friction[kLanes], mA[kLanes], iA[kLanes], mB[kLanes],
-            iB[kLanes];
+        double nx[kLanes], ny[kLanes], friction[kLanes], iA[kLanes], iB[kLanes];
         double k11[kLanes], k12[kLanes], k22[kLanes];
         // The phase's block terms (RowSetup's blockTerms() where the phase solves the two points
         // as a block, else zeros: invA11 ≠ 0 says the lane's block is solved, and its a12 is k12).
@@ -242,7 +243,14 @@ public:
             double rnA[kLanes], rnB[kLanes], rtA[kLanes], rtB[kLanes];  // RowPoint's
             double bias[kLanes];                                        // the phase's bias velocity
             double tangentMass[kLanes], normalImpulse[kLanes], tangentImpulse[kLanes];
-            double effectiveMass[kLanes], impulseScale[kLanes];  // the phase's soft terms
+            // The phase's soft terms, read only where a lane's block is not solved.
+            double effectiveMass[kLanes], impulseScale[kLanes];
+        } p[2];
+    };
+    // The rest of a wide row's lanes: the anchors, the held forces and the separations (the warm
+    // start, the phase terms and the separations' passes).
+    struct alignas(64) WideCold {
+        struct Point {
             double rAx[kLanes], rAy[kLanes], rBx[kLanes], rBy[kLanes];
             double heldNormal[kLanes], heldTangent[kLanes];  // the held force per sub-step
             double baseSeparation[kLanes];
@@ -401,7 +409,7 @@ private:
     // row (with the wide sweep), else in separation_.
     double separationOf(std::size_t i, int k) const {
         const int at = slot_[i];
-        return at >= 0 && lanesHold_ ? wide_[at / kLanes].p[k].separation[at % kLanes]
+        return at >= 0 && lanesHold_ ? wideCold_[at / kLanes].p[k].separation[at % kLanes]
                                      : separation_[2 * i + k];
     }
     // Row i's point k's effective mass in the last phase (0: inactive), likewise.
@@ -487,6 +495,7 @@ private:
     LargeVector<WideSetup> wideSetup_;  // per wide row, its lanes' rows'
     std::vector<double> separation_;    // per row point (2 per row), where the path is now
     LargeVector<WideRow> wide_;         // the coloured rows, colour by colour
+    LargeVector<WideCold> wideCold_;    // likewise, their cold lanes
     std::vector<int> slot_;             // per row: kLanes·wide row + lane, or −1 (solved alone)
     std::vector<std::pair<int, int>> colouredPairs_;  // per row: its bodies at the last colouring
     std::vector<int> order_;     // per wide slot: its row, or −1 (the sweep order)
