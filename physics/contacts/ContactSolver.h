@@ -344,11 +344,13 @@ private:
     // worker, and on a machine whose cores are 250 ns apart two workers took longer than one.)
     // The blocks depend on the counts only, never on the number of workers, and no two chunks
     // of a pass touch the same row or dynamic body (a colour's rows share none), so the results
-    // are bit-identical however many workers take them.
+    // are bit-identical however many workers take them. A loop ends when its last chunk does:
+    // with 16 blocks the caller waited about 1.5 µs a loop for the other worker's last one on
+    // the 100-row pyramid (about 290 loops a step), with 32 about 0.9 µs.
     static constexpr std::size_t kRowGrain = 4096;
     static constexpr std::size_t kBodyGrain = 4096;
     static constexpr std::size_t kWideGrain = 1024 / kLanes;  // 1,024 rows
-    static constexpr int kBlocks = 16;
+    static constexpr int kBlocks = 32;
     // Where block `block` of [0, count) starts: item i is in block ⌊i·kBlocks/count⌋.
     static std::size_t blockStart(std::size_t count, int block) {
         return (count * static_cast<std::size_t>(block) + kBlocks - 1) / kBlocks;
