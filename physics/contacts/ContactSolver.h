@@ -243,7 +243,8 @@ public:
             double rnA[kLanes], rnB[kLanes], rtA[kLanes], rtB[kLanes];  // RowPoint's
             double bias[kLanes];                                        // the phase's bias velocity
             double tangentMass[kLanes], normalImpulse[kLanes], tangentImpulse[kLanes];
-            // The phase's soft terms, read only where a lane's block is not solved.
+            // The phase's soft terms: the sweep reads them only in a wide row where some lane's
+            // block is not solved (effectiveMassOf() reads the mass too).
             double effectiveMass[kLanes], impulseScale[kLanes];
         } p[2];
     };
