@@ -35,7 +35,9 @@ SceneDesc star(const QString& integrator, int n, double m, double r, double v) {
     s.boxes = {hub};
     for (int i = 0; i < n; ++i) {
         const double a = 2.0 * kPi * i / n;
-        ParticleDesc p = particle("p" + std::to_string(i), {r * std::cos(a), r * std::sin(a)}, m);
+        std::string id = "p";  // not "p" + to_string(): GCC 12 at -O3 warns falsely on that
+        id += std::to_string(i);
+        ParticleDesc p = particle(id, {r * std::cos(a), r * std::sin(a)}, m);
         p.velocity = {-v * std::sin(a), v * std::cos(a)};
         s.particles.push_back(p);
         s.joints.push_back(joint(JointType::Rod, p.id, "hub"));
