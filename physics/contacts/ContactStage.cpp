@@ -535,8 +535,8 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& q, const Vec& i
     // The contacts in slot order: numbered, with their solver bodies and keys, here; built
     // from their slots in parallel.
     madeFrom_.clear();
-    // Room for every slot at once, not a doubling at a time, and grown by doubling: reserving
-    // the exact count allocated again at each new largest count of candidate pairs (a swinging
+    // Room for every slot before the loop; when the room must grow, it at least doubles (an
+    // exact reserve allocated again at each new largest count of candidate pairs: a swinging
     // chain's or a row of falling dominoes', one more pair every few steps).
     if (madeFrom_.capacity() < found_.size())
         madeFrom_.reserve(std::max(found_.size(), 2 * madeFrom_.capacity()));
