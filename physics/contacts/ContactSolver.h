@@ -57,6 +57,9 @@ struct ContactSettings {
 struct SolverBody {
     int dof = -1;  // first state index
     bool rotates = false;
+    // A disk: its surface turns into itself, so its turn moves none of its contact points'
+    // separations (a rolling wheel's contact point is always the one below its centre).
+    bool round = false;
     bool jointed = false;  // a joint holds it (refreshHeld())
     double invMass = 0.0;
     double invInertia = 0.0;

@@ -568,6 +568,7 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& q, const Vec& i
             b = SolverBody{};
             b.dof = c.dof;
             b.rotates = c.rigid;
+            b.round = c.kind == Collider::Kind::Disk;
             b.jointed = c.jointed;
             b.collidePosition = q.segment<2>(c.dof);
             if (b.rotates) b.collideAngle = q[c.dof + 2];
