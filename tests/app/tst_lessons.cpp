@@ -134,6 +134,7 @@ private slots:
     void everyLessonHasNotesAndRunsItsDuration_data();
     void everyLessonHasNotesAndRunsItsDuration();
     void eulerSpiralsOutWhileRk4StaysOnTheOrbit();
+    void eulerStepRaisesTheOrbitsEnergy();
     void rk4BeatsMidpointAtTheSameStepAndTheSameCost();
     void stiffSpringBlowsUpExplicitMethodsButNotImplicitOnes();
     void ballsReboundToESquaredHAndCratesStopAfterVSquaredOverTwoMuG();
@@ -188,10 +189,11 @@ void TestLessons::everyLessonHasNotesAndRunsItsDuration() {
     QVERIFY(built.world->positions().allFinite());
 }
 
-// Explicit Euler raises a circular orbit's energy by about 3·(ω·dt)² of it per step: the
-// inner orbit (ω = 1.92 rad/s) doubles its semi-major axis a = −GM/(2E) within 20 s, the outer
-// one (0.89 rad/s) grows by more than a third. Symplectic Euler's radius wobbles by about two
-// percent and its orbits keep their size; RK4's radius stays within 1e-5.
+// Explicit Euler raises a circular orbit's energy by about 2·(ω·dt)² of it per step
+// (eulerStepRaisesTheOrbitsEnergy): the inner orbit (ω = 1.92 rad/s) doubles its semi-major axis
+// a = −GM/(2E) within 20 s, the outer one (0.89 rad/s) grows by more than a third. Symplectic
+// Euler's radius wobbles by about two percent and its orbits keep their size; RK4's radius stays
+// within 1e-5.
 void TestLessons::eulerSpiralsOutWhileRk4StaysOnTheOrbit() {
     const SceneDesc scene = load(QStringLiteral("euler-orbit-spiral.phasebox.json"));
     const double gm = 100.0;
@@ -224,6 +226,35 @@ void TestLessons::eulerSpiralsOutWhileRk4StaysOnTheOrbit() {
             QVERIFY(std::abs(grownInner) < 1e-3 && std::abs(grownOuter) < 1e-3);
         }
     }
+}
+
+// The lesson's rate, from the closed form: on a circular orbit of radius r and angular speed ω
+// one explicit Euler step adds a·dt ⊥ v to the velocity (kinetic energy +½·ω⁴·r²·dt² a unit
+// mass) and moves the planet along the tangent to r·√(1 + (ω·dt)²) (potential +½·ω⁴·r²·dt²),
+// against |E| = ½·ω²·r²: 2·(ω·dt)² of the energy. ω² goes as r⁻³, so the inner orbit's share is
+// (5/3)³ = 4.63 times the outer one's.
+void TestLessons::eulerStepRaisesTheOrbitsEnergy() {
+    const SceneDesc scene = load(QStringLiteral("euler-orbit-spiral.phasebox.json"));
+    const double gm = 100.0, dt = scene.simulation.dt;
+    double rates[2] = {0.0, 0.0};
+    for (const int k : {0, 1}) {
+        auto world = build(scene, "explicit_euler");
+        const int i = indexOf(*world, k == 0 ? "inner" : "outer");
+        const auto energy = [&] {  // per unit mass, about the star at the origin
+            return 0.5 * world->particleVelocity(i).squaredNorm() -
+                   gm / world->particlePosition(i).norm();
+        };
+        const double r = world->particlePosition(i).norm();
+        const double omegaDt = std::sqrt(gm / (r * r * r)) * dt;
+        const double before = energy();
+        QVERIFY(world->step());
+        rates[k] = (energy() - before) / std::abs(before);
+        qInfo("r = %g m: one step raised the energy by %.6g of it; 2·(ω·dt)² = %.6g", r, rates[k],
+              2.0 * omegaDt * omegaDt);
+        QVERIFY2(std::abs(rates[k] / (2.0 * omegaDt * omegaDt) - 1.0) < 0.01,
+                 qPrintable(QString::number(rates[k])));
+    }
+    QVERIFY2(rates[0] > 4.5 * rates[1], qPrintable(QString::number(rates[0] / rates[1])));
 }
 
 // x = cos 2t exactly. At dt = 0.1 (ω·dt = 0.2) midpoint's phase runs ahead by about z³/6 per
