@@ -38,6 +38,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFile>
+#include <QGraphicsTextItem>
 #include <QGuiApplication>
 #include <QImage>
 #include <QJsonDocument>
@@ -172,6 +173,46 @@ private slots:
         // A constant is drawn flat at its value, not as rounding noise filling the plot.
         const auto [lo, hi] = ui::paddedRange(0.4, 0.4 + 1e-16);
         QVERIFY(lo < 0.4 && hi > 0.4 && hi - lo > 0.05);
+    }
+
+    // A graph as small as the dock draws three of them (the rolling race's): every value label
+    // of its y axis is whole, none elided to "…" and none dropped, and there are at least three.
+    void smallGraphsShowTheirYLabels_data() {
+        QTest::addColumn<double>("top");
+        for (double top : {3.9, 6.7, 10.1, 0.042, 1234.0})
+            QTest::newRow(qPrintable(QString::number(top))) << top;
+    }
+    void smallGraphsShowTheirYLabels() {
+        QFETCH(double, top);
+        QVector<QPointF> points;
+        for (int k = 0; k <= 180; ++k) points.push_back({k / 60.0, top * k / 180.0});
+        ui::ProbeGraphView view;
+        view.resize(230, 160);
+        view.show();
+        QCoreApplication::processEvents();
+        view.setSeries(points, QStringLiteral("time [s]"), QStringLiteral("m/s"), true, {});
+        auto* chartView = view.findChild<QChartView*>();
+        QVERIFY(chartView);
+        QCoreApplication::processEvents();
+        chartView->grab();  // lays the chart out at its size
+        QStringList shown, hidden;
+        const double middle = chartView->chart()->plotArea().left();
+        for (QGraphicsItem* item : chartView->scene()->items()) {
+            auto* text = dynamic_cast<QGraphicsTextItem*>(item);
+            if (!text || text->toPlainText().isEmpty()) continue;
+            // The y labels are left of the plot area.
+            if (text->sceneBoundingRect().right() > middle + 1.0) continue;
+            if (text->toPlainText() == QLatin1String("m/s")) continue;
+            (text->isVisible() ? shown : hidden) << text->toPlainText();
+        }
+        qInfo("top %g: view %dx%d, plot %gx%g; shown %s; hidden %s", top, chartView->width(),
+              chartView->height(), chartView->chart()->plotArea().width(),
+              chartView->chart()->plotArea().height(), qPrintable(shown.join(' ')),
+              qPrintable(hidden.join(' ')));
+        QVERIFY2(hidden.isEmpty(), qPrintable(hidden.join(' ')));
+        QVERIFY2(shown.size() >= 3, qPrintable(shown.join(' ')));
+        for (const QString& label : shown)
+            QVERIFY2(!label.contains(QChar(0x2026)) && !label.contains("..."), qPrintable(label));
     }
 
     // Issue 19's acceptance: the period timer on a mass on a spring reads 2π·√(m/k) within

@@ -61,7 +61,8 @@ ProbeGraphView::ProbeGraphView(QWidget* parent) : QFrame(parent) {
     layout->addWidget(message_);
     view_ = new QChartView(createProbeChart({}, tr("time [s]"), {}, {}, true), this);
     view_->setRenderHint(QPainter::Antialiasing);
-    view_->setMinimumHeight(120);
+    // Room for three y labels at least (applyNiceTicks; the dock scrolls when graphs pile up).
+    view_->setMinimumHeight(150);
     layout->addWidget(view_, 1);
     connect(y_, &ProbePicker::probeEntered, this, &ProbeGraphView::yEntered);
     connect(x_, &ProbePicker::probeEntered, this, &ProbeGraphView::xEntered);
@@ -71,9 +72,14 @@ ProbeGraphView::ProbeGraphView(QWidget* parent) : QFrame(parent) {
 void ProbeGraphView::setSeries(const QVector<QPointF>& points, const QString& xTitle,
                                const QString& yUnit, bool timeAxis, std::optional<QPointF> cursor) {
     QChart* old = view_->chart();
-    // As many ticks as the width holds whole labels (about 70 px each).
+    // As many ticks as the width holds whole labels (about 70 px each), and as the plot's height
+    // (the view's less about 70 px of x labels and margins) holds at about 22 px a label: Qt
+    // Charts gives each label its share of the axis's height, elides a taller one to "…" and
+    // drops one that overlaps the one below (six in a 141 px graph, a plot 70 px high, were each
+    // elided; five in an 80 px plot lost one).
     const int ticks = std::clamp(view_->width() / 70, 2, 6);
-    QChart* chart = createProbeChart(points, xTitle, yUnit, {}, timeAxis, ticks);
+    const int yTicks = std::clamp((view_->height() - 70) / 22, 2, 6);
+    QChart* chart = createProbeChart(points, xTitle, yUnit, {}, timeAxis, ticks, yTicks);
     const QColor colour = palette().color(QPalette::Highlight);
     if (cursor && timeAxis)
         addTimeCursor(chart, cursor->x(), colour);

@@ -29,12 +29,17 @@ NiceTicks niceTicks(double lo, double hi, int maxTicks) {
         ticks.first = std::isfinite(lo) ? std::floor(lo) : 0.0;
         return ticks;
     }
-    // The smallest of 1, 2, 5 × 10^k that keeps the number of intervals at most maxTicks.
+    // The smallest of 1, 2, 5 × 10^k that puts at most maxTicks + 1 ticks in [lo, hi]. A step of
+    // (hi − lo)/maxTicks or more always does; a smaller one may too (ticks 0, 2, 4 in [−0.2, 4.1]
+    // at maxTicks 2, where the step of 5 would leave the single tick 0).
     const double raw = (hi - lo) / maxTicks;
     const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+    const auto tickCount = [&](double step) {
+        return std::floor(hi / step + 1e-9) - std::ceil(lo / step - 1e-9) + 1.0;
+    };
     double step = 10.0 * decade;
-    for (const double m : {1.0, 2.0, 5.0})
-        if (m * decade >= raw * (1.0 - 1e-12)) {
+    for (const double m : {0.1, 0.2, 0.5, 1.0, 2.0, 5.0})
+        if (m * decade >= raw * (1.0 - 1e-12) || tickCount(m * decade) <= maxTicks + 1) {
             step = m * decade;
             break;
         }
@@ -78,8 +83,8 @@ std::pair<double, double> paddedRange(double lo, double hi) {
 }
 
 QChart* createProbeChart(const QVector<QPointF>& points, const QString& xTitle,
-                         const QString& yTitle, const QString& title, bool timeAxis,
-                         int maxXTicks) {
+                         const QString& yTitle, const QString& title, bool timeAxis, int maxXTicks,
+                         int maxYTicks) {
     auto* chart = new QChart;
     applyChartLocale(chart);
     chart->setTitle(title);
@@ -136,7 +141,7 @@ QChart* createProbeChart(const QVector<QPointF>& points, const QString& xTitle,
         applyNiceTicks(x, lo, hi, maxXTicks);
     }
     const auto [lo, hi] = paddedRange(ylo, yhi);
-    applyNiceTicks(y, lo, hi);
+    applyNiceTicks(y, lo, hi, maxYTicks);
     chart->addAxis(x, Qt::AlignBottom);
     chart->addAxis(y, Qt::AlignLeft);
     series->attachAxis(x);

@@ -40,9 +40,10 @@ std::pair<double, double> paddedRange(double lo, double hi);
 // A probe's samples as a line: y against time (timeAxis: the axis runs exactly over the samples)
 // or against another probe (a curve: both axes padded). Non-finite points are left out, and a
 // long series is thinned to kMaxPlotPoints (Charts.h). An empty title leaves the room to the plot;
-// maxXTicks is as many x labels as the view's width holds whole.
+// maxXTicks is as many x labels as the view's width holds whole, maxYTicks as many y labels as
+// its height does (Qt Charts elides a label taller than its room to "…").
 QChart* createProbeChart(const QVector<QPointF>& points, const QString& xTitle,
                          const QString& yTitle, const QString& title, bool timeAxis,
-                         int maxXTicks = 6);
+                         int maxXTicks = 6, int maxYTicks = 6);
 
 }  // namespace phasebox::ui
