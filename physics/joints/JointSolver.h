@@ -194,6 +194,24 @@ public:
         const int k = active_[joint];
         return k >= 0 ? forceOn_[k][1] : idle_[joint].forceOn[1];
     }
+    // The forces of the last evaluation, kept across evaluations that are not the run's (World::
+    // estimateLocalError's trial steps): what force() and forceOn*() report, and what SHAKE's
+    // weights and the joints' sub-steps are taken from. Assigning reuses the vectors' room.
+    struct ForceRecord {
+        std::vector<double> forces;
+        std::vector<std::array<Vec2, 2>> forceOn;
+        bool known = false;
+    };
+    void keepForces(ForceRecord& out) const {
+        out.forces = forces_;
+        out.forceOn = forceOn_;
+        out.known = forcesKnown_;
+    }
+    void restoreForces(const ForceRecord& kept) {
+        forces_ = kept.forces;
+        forceOn_ = kept.forceOn;
+        forcesKnown_ = kept.known;
+    }
     // World position of a joint's point on body a or b at q (for drawing).
     Vec2 pointA(int joint, const Vec& q) const;
     Vec2 pointB(int joint, const Vec& q) const;
