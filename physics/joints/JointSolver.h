@@ -194,23 +194,34 @@ public:
         const int k = active_[joint];
         return k >= 0 ? forceOn_[k][1] : idle_[joint].forceOn[1];
     }
-    // The forces of the last evaluation, kept across evaluations that are not the run's (World::
-    // estimateLocalError's trial steps): what force() and forceOn*() report, and what SHAKE's
-    // weights and the joints' sub-steps are taken from. Assigning reuses the vectors' room.
-    struct ForceRecord {
+    // What the last evaluations leave for the run's next step, kept across evaluations that are
+    // not the run's (World::estimateLocalError's trial steps): the forces force() and forceOn*()
+    // report, which the joints' sub-steps are taken from, and the cached rotations, which SHAKE
+    // turned step by step (turnRotations(): bits a fresh rotation() does not give, so a trial step
+    // that cached its own changed the run's next step). Assigning reuses the vectors' room.
+    struct EvaluationRecord {
         std::vector<double> forces;
         std::vector<std::array<Vec2, 2>> forceOn;
-        bool known = false;
+        bool forcesKnown = false;
+        std::vector<Mat2> rotations;
+        Vec rotationsQ;
+        bool rotationsKnown = false;
     };
-    void keepForces(ForceRecord& out) const {
+    void keepEvaluation(EvaluationRecord& out) const {
         out.forces = forces_;
         out.forceOn = forceOn_;
-        out.known = forcesKnown_;
+        out.forcesKnown = forcesKnown_;
+        out.rotations = rotations_;
+        out.rotationsQ = rotationsQ_;
+        out.rotationsKnown = rotationsKnown_;
     }
-    void restoreForces(const ForceRecord& kept) {
+    void restoreEvaluation(const EvaluationRecord& kept) {
         forces_ = kept.forces;
         forceOn_ = kept.forceOn;
-        forcesKnown_ = kept.known;
+        forcesKnown_ = kept.forcesKnown;
+        rotations_ = kept.rotations;
+        rotationsQ_ = kept.rotationsQ;
+        rotationsKnown_ = kept.rotationsKnown;
     }
     // World position of a joint's point on body a or b at q (for drawing).
     Vec2 pointA(int joint, const Vec& q) const;

@@ -382,7 +382,7 @@ private:
 
     SimulationClock clock_;
     long long forceEvaluations_ = 0;
-    JointSolver::ForceRecord keptJointForces_;  // across estimateLocalError()
+    JointSolver::EvaluationRecord keptJointEvaluation_;  // across estimateLocalError()
     EnergyLedger ledger_;
     DivergenceGuard guard_;
     std::optional<Divergence> divergence_;

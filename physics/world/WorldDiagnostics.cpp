@@ -22,11 +22,13 @@ using Clock = ProfileClock;
 double World::estimateLocalError() {
     ensureLayout();
     // The estimate is not part of the run: its force evaluations and time are not booked, and
-    // the joints' forces stay the run's (its trial steps have no contacts: a car's axles pulled
-    // nothing there, and the free-body view and force(JOINT) showed that).
+    // the joints keep what the run's evaluations left: their forces (the trial steps have no
+    // contacts: a car's axles pulled nothing there, and the free-body view and force(JOINT)
+    // showed that) and their cached rotations (tst_determinism: a chain stepped with the
+    // estimate after every step, as the app does, ended elsewhere than one stepped without).
     const long long evaluations = forceEvaluations_;
     const std::vector<double> seconds = effectSeconds_;
-    if (joints_) joints_->keepForces(keptJointForces_);
+    if (joints_) joints_->keepEvaluation(keptJointEvaluation_);
     // Of the sub-step the run takes: with the joints' own sub-steps of the last frame (a step
     // of the user's dt alone can be beyond the method's stability on a chain that needs them).
     const int jointSubsteps = joints_ ? std::max(jointSubsteps_, pulledSubsteps_) : 1;
@@ -35,7 +37,7 @@ double World::estimateLocalError() {
         q_[current_], u_[current_]);
     forceEvaluations_ = evaluations;
     effectSeconds_ = seconds;
-    if (joints_) joints_->restoreForces(keptJointForces_);
+    if (joints_) joints_->restoreEvaluation(keptJointEvaluation_);
     return error;
 }
 
