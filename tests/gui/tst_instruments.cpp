@@ -196,12 +196,12 @@ private slots:
         QCoreApplication::processEvents();
         chartView->grab();  // lays the chart out at its size
         QStringList shown, hidden;
-        const double middle = chartView->chart()->plotArea().left();
+        const double plotLeft = chartView->chart()->plotArea().left();
         for (QGraphicsItem* item : chartView->scene()->items()) {
             auto* text = dynamic_cast<QGraphicsTextItem*>(item);
             if (!text || text->toPlainText().isEmpty()) continue;
             // The y labels are left of the plot area.
-            if (text->sceneBoundingRect().right() > middle + 1.0) continue;
+            if (text->sceneBoundingRect().right() > plotLeft + 1.0) continue;
             if (text->toPlainText() == QLatin1String("m/s")) continue;
             (text->isVisible() ? shown : hidden) << text->toPlainText();
         }
