@@ -52,14 +52,15 @@ void ContactSolver::forColours(const F& fn) {
     const auto total = static_cast<std::size_t>(colourWide_[kColours]);
     if (total == 0) return;
     bool wide = false;
-    for (int colour = 0; colour < kColours && !wide; ++colour) wide = wideColour(colour);
+    for (int colour = 0; colour < colours_ && !wide; ++colour) wide = wideColour(colour);
     if (!pool_ || !wide) {
         fn(std::size_t{0}, total);
         return;
     }
     const int* starts = blockWide_.data();
-    pool_->parallelFor(kBlocks, 1, [&fn, starts](int block, int, int) {
-        for (int colour = 0; colour < kColours; ++colour) {
+    const int colours = colours_;
+    pool_->parallelFor(kBlocks, 1, [&fn, starts, colours](int block, int, int) {
+        for (int colour = 0; colour < colours; ++colour) {
             const int* at = starts + colour * (kBlocks + 1);
             if (at[block] < at[block + 1])
                 fn(static_cast<std::size_t>(at[block]), static_cast<std::size_t>(at[block + 1]));

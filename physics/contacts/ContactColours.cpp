@@ -38,7 +38,7 @@ void clearLane(WideRow& w, WideCold& u, WideSetup& S, int l, int world) {
 }
 }  // namespace
 
-static_assert(ContactSolver::kColours <= 32, "a body's colours are the bits of 32");
+static_assert(ContactSolver::kColours <= 64, "a body's colours are the bits of 64");
 
 void ContactSolver::colourRows() {
     // Box2D v3's graph colouring: each row takes the first colour none of whose rows shares a
@@ -70,19 +70,21 @@ void ContactSolver::colourRows() {
         slot_.resize(rowCount);
         colouredPairs_.resize(rowCount);
         overflow_.clear();
-        constexpr std::uint32_t kAllColours =
-            kColours == 32 ? ~std::uint32_t{0} : (std::uint32_t{1} << kColours) - 1;
+        constexpr std::uint64_t kAllColours =
+            kColours == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << kColours) - 1;
+        colours_ = 0;
         for (std::size_t i = 0; i < rowCount; ++i) {
             const auto [a, b] = colouredPairs_[i] = bodiesOf(constraints_[i]);
-            const std::uint32_t free = ~(colourMask_[a] | colourMask_[b]) & kAllColours;
+            const std::uint64_t free = ~(colourMask_[a] | colourMask_[b]) & kAllColours;
             if (free == 0) {
                 slot_[i] = -1;
                 overflow_.push_back(static_cast<int>(i));
                 continue;
             }
             const int colour = std::countr_zero(free);
-            if (a != world) colourMask_[a] |= std::uint32_t{1} << colour;
-            if (b != world) colourMask_[b] |= std::uint32_t{1} << colour;
+            colours_ = std::max(colours_, colour + 1);
+            if (a != world) colourMask_[a] |= std::uint64_t{1} << colour;
+            if (b != world) colourMask_[b] |= std::uint64_t{1} << colour;
             // The block of one of the row's bodies: the dynamic one beside the world, else the
             // lower or the higher by the parity of their sum. Always the lower would crowd the
             // first blocks where pairs are far apart in the order (a pile, a gas: the lower of two
@@ -104,7 +106,7 @@ void ContactSolver::colourRows() {
         int wideRows = 0;
         colourWide_.resize(kColours + 1);
         blockWide_.resize(static_cast<std::size_t>(kColours) * (kBlocks + 1));
-        for (int colour = 0; colour < kColours; ++colour) {
+        for (int colour = 0; colour < colours_; ++colour) {
             colourWide_[colour] = wideRows;
             int* starts = blockWide_.data() + colour * (kBlocks + 1);
             int offset = 0;
@@ -118,7 +120,8 @@ void ContactSolver::colourRows() {
             wideRows += (offset + kLanes - 1) / kLanes;
             starts[kBlocks] = wideRows;
         }
-        colourWide_[kColours] = wideRows;
+        // The colours none took are empty, at the end (the passes stop at colours_).
+        std::fill(colourWide_.begin() + colours_, colourWide_.end(), wideRows);
         for (std::size_t i = 0; i < rowCount; ++i) {
             if (slot_[i] < 0) continue;
             slot_[i] = blockCount_[slot_[i]]++;

@@ -419,7 +419,7 @@ void ContactSolver::warmStart() {
     // In the sweep's order, colour by colour (a colour's rows share no dynamic body), then the
     // rows no colour took.
     const int world = static_cast<int>(bodies_.size());
-    for (int colour = 0; colour < kColours; ++colour) {
+    for (int colour = 0; colour < colours_; ++colour) {
         forColour(colour, [&](std::size_t first, std::size_t end) {
             if (wide.warm) {
                 wide.warm(wide_.data() + first, wideCold_.data() + first,
@@ -503,7 +503,7 @@ void ContactSolver::solve() {
     // Colour by colour: the coloured rows four at a time (or one by one in the same order),
     // then those no colour took, one by one.
     const int world = static_cast<int>(bodies_.size());
-    for (int colour = 0; colour < kColours; ++colour) {
+    for (int colour = 0; colour < colours_; ++colour) {
         forColour(colour, [&](std::size_t first, std::size_t end) {
             if (wide.solve) {
                 wide.solve(wide_.data() + first, static_cast<int>(end - first), state_.data(),
