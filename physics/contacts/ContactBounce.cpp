@@ -121,7 +121,7 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
             // point's impulse would turn the body and the second's turn it back with a bounce
             // left over: a box dropped flat with e = 0 left the floor spinning and toppled.
             if (hit[0] && hit[1] && t.blockable) {
-                const Row& c = rows_[i];
+                const BounceTerms& c = t;
                 const double det = c.k11 * c.k22 - c.k12 * c.k12;
                 const double b0 = -(1.0 + e[0]) * vi[0], b1 = -(1.0 + e[1]) * vi[1];
                 const double l0 = (c.k22 * b0 - c.k12 * b1) / det;

@@ -161,14 +161,13 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
                     clearLane(w, u, S, l, world);
                     continue;
                 }
-                // On the stack, unless a scalar pass reads the row too (a bounce's).
+                // On the stack: the scalar passes read only the overflow's rows (a bounce
+                // reads its terms, made here).
                 const auto at = static_cast<std::size_t>(i);
-                Row local;
-                RowSetup localSetup;
-                const bool scalar = constraints_[at].restitution != 0.0;
-                Row& c = scalar ? rows_[at] : local;
-                RowSetup& setup = scalar ? setup_[at] : localSetup;
+                Row c;
+                RowSetup setup;
                 buildRow(at, c, setup, terms, cache);
+                if (bounceAt_[at] >= 0) fillBounce(at, c, setup);
                 const BodyState& a = state_[c.a];
                 const BodyState& b = state_[c.b];
                 w.a[l] = c.a;

@@ -203,11 +203,31 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
     // conditioning, the softness (each contact's stiffness multiplier: see prepare()).
     const int world = static_cast<int>(bodies_.size());
     lanesHold_ = instructions() > 0;  // the wide kernels are there (level 0: none)
+    // Cleared first: rebuilt whole every step, so a growth copies nothing, and resize() writes
+    // nothing (buildLanes() writes only the rows the scalar passes read).
+    rows_.clear();
+    setup_.clear();
     rows_.resize(constraints_.size());
     setup_.resize(constraints_.size());
     separation_.resize(2 * constraints_.size());
+    // The rows with restitution, in order; their terms are filled where each row is built. Room
+    // for all at once: a pile's tens of thousands would otherwise grow the arrays a doubling at a
+    // time.
     bouncing_.clear();
+    bouncing_.reserve(constraints_.size());
+    bounceAt_.resize(constraints_.size());
+    for (std::size_t i = 0; i < constraints_.size(); ++i) {
+        const ContactConstraint& c = constraints_[i];
+        if (c.restitution == 0.0) {
+            bounceAt_[i] = -1;
+            continue;
+        }
+        bounceAt_[i] = static_cast<int>(bouncing_.size());
+        bouncing_.push_back({static_cast<int>(i), c.bodyA >= 0 ? c.bodyA : world,
+                             c.bodyB >= 0 ? c.bodyB : world, 0});
+    }
     bounceTerms_.clear();
+    bounceTerms_.resize(bouncing_.size());
     colourRows();
     const BuildTerms terms{hertz, zeta, h, warmScale};
     if (lanesHold_) {
@@ -218,48 +238,45 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
         for (const int i : overflow_) {
             const auto at = static_cast<std::size_t>(i);
             buildRow(at, rows_[at], setup_[at], terms, cache);
+            if (bounceAt_[at] >= 0) fillBounce(at, rows_[at], setup_[at]);
         }
     } else {
         forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
             RowCache cache;
-            for (std::size_t i = first; i < end; ++i)
+            for (std::size_t i = first; i < end; ++i) {
                 buildRow(i, rows_[i], setup_[i], terms, cache);
+                if (bounceAt_[i] >= 0) fillBounce(i, rows_[i], setup_[i]);
+            }
         });
-    }
-    // The rows with restitution, in order (after every row is built). Room for all at once: a
-    // pile's tens of thousands would otherwise grow the array a doubling at a time.
-    bouncing_.reserve(constraints_.size());
-    bounceTerms_.reserve(constraints_.size());
-    for (std::size_t i = 0; i < constraints_.size(); ++i) {
-        const ContactConstraint& c = constraints_[i];
-        const Row& row = rows_[i];
-        if (c.restitution != 0.0) {
-            bouncing_.push_back({static_cast<int>(i), row.a, row.b, 0});
-            BounceTerms& bounce = bounceTerms_.emplace_back();  // no allocation once warm
-            const RowSetup& setup = setup_[i];
-            bounce.pointCount = row.pointCount;
-            bounce.restitution = c.restitution;
-            bounce.nx = row.nx;
-            bounce.ny = row.ny;
-            bounce.blockable = setup.blockable;
-            for (int k = 0; k < 2; ++k) {
-                bounce.smoothChange[k] = k < c.pointCount ? smoothNormalChange(row, row.p[k]) : 0.0;
-                bounce.normalMass[k] = setup.normalMass[k];
-            }
-            for (int k = 0; k < row.pointCount; ++k) {
-                const RowPoint& p = row.p[k];
-                bounce.arm[k][0] = p.rAx;
-                bounce.arm[k][1] = p.rAy;
-                bounce.arm[k][2] = p.rBx;
-                bounce.arm[k][3] = p.rBy;
-            }
-            bounce.isolated = (row.a == world || bodies_[row.a].contactCount == 1) &&
-                              (row.b == world || bodies_[row.b].contactCount == 1);
-        }
     }
     shifted_.resize(2 * rows_.size());
     bounces_.resize(2 * rows_.size());
     changedAt_.resize(bodies_.size() + 1);
+}
+
+void ContactSolver::fillBounce(std::size_t i, const Row& row, const RowSetup& setup) {
+    const int world = static_cast<int>(bodies_.size());
+    BounceTerms& bounce = bounceTerms_[static_cast<std::size_t>(bounceAt_[i])];
+    bounce.pointCount = row.pointCount;
+    bounce.restitution = constraints_[i].restitution;
+    bounce.nx = row.nx;
+    bounce.ny = row.ny;
+    bounce.blockable = setup.blockable;
+    bounce.k11 = row.k11;
+    bounce.k12 = row.k12;
+    bounce.k22 = row.k22;
+    for (int k = 0; k < 2; ++k) {
+        const bool used = k < row.pointCount;
+        const RowPoint& p = row.p[k];
+        bounce.smoothChange[k] = used ? smoothNormalChange(row, p) : 0.0;
+        bounce.normalMass[k] = setup.normalMass[k];
+        bounce.arm[k][0] = used ? p.rAx : 0.0;
+        bounce.arm[k][1] = used ? p.rAy : 0.0;
+        bounce.arm[k][2] = used ? p.rBx : 0.0;
+        bounce.arm[k][3] = used ? p.rBy : 0.0;
+    }
+    bounce.isolated = (row.a == world || bodies_[row.a].contactCount == 1) &&
+                      (row.b == world || bodies_[row.b].contactCount == 1);
 }
 
 void ContactSolver::unpackRows() {

@@ -402,6 +402,9 @@ private:
     };
     void buildRow(std::size_t i, Row& row, RowSetup& setup, const BuildTerms& terms,
                   RowCache& cache);
+    // Row i's bounce terms (a row with restitution), from the row as buildRow() made it: where
+    // it is built, so that a lane's row need not be kept in rows_ for bounce().
+    void fillBounce(std::size_t i, const Row& row, const RowSetup& setup);
     void warmStart();
     void warmRow(std::size_t row);
     // Restitution in an inner sub-step of h, one of `substeps` of the step.
@@ -434,8 +437,9 @@ private:
     // ContactColours.cpp).
     void colourRows();
     // The coloured rows built straight into their lanes with what is fixed for the step: rows_
-    // holds only the rows the scalar passes read (those with restitution, and the overflow's,
-    // built by buildRows()) until unpackRows() unpacks every lane for relaxJoined().
+    // holds only the rows the scalar passes read (the overflow's, built by buildRows()) until
+    // unpackRows() unpacks every lane for relaxJoined(); a row with restitution leaves its
+    // bounce terms (fillBounce()).
     void buildLanes(const BuildTerms& terms);
     // The lanes hold the coloured rows, and their accumulated impulses, from buildLanes() to the
     // end of the step (warm start, solve and relax read and write them there); rows_ has them
@@ -497,15 +501,17 @@ private:
 
     std::vector<SolverBody> bodies_;
     ConstraintList constraints_;
-    std::vector<BodyState> state_;      // bodies_.size() + 1 (the static world last)
-    std::vector<BodyMotion> motion_;    // likewise
-    LargeVector<Row> rows_;             // per constraint, in constraints_'s order
-    LargeVector<RowSetup> setup_;       // likewise
-    LargeVector<WideSetup> wideSetup_;  // per wide row, its lanes' rows'
-    std::vector<double> separation_;    // per row point (2 per row), where the path is now
-    LargeVector<WideRow> wide_;         // the coloured rows, colour by colour
-    LargeVector<WideCold> wideCold_;    // likewise, their cold lanes
-    std::vector<int> slot_;             // per row: kLanes·wide row + lane, or −1 (solved alone)
+    std::vector<BodyState> state_;    // bodies_.size() + 1 (the static world last)
+    std::vector<BodyMotion> motion_;  // likewise
+    // Per constraint, in constraints_'s order; only the rows a scalar pass reads are written
+    // (buildLanes()), and the others' pages are never touched (a pile's 26 MB).
+    UninitializedLargeVector<Row> rows_;
+    UninitializedLargeVector<RowSetup> setup_;  // likewise
+    LargeVector<WideSetup> wideSetup_;          // per wide row, its lanes' rows'
+    std::vector<double> separation_;            // per row point (2 per row), where the path is now
+    LargeVector<WideRow> wide_;                 // the coloured rows, colour by colour
+    LargeVector<WideCold> wideCold_;            // likewise, their cold lanes
+    std::vector<int> slot_;  // per row: kLanes·wide row + lane, or −1 (solved alone)
     std::vector<std::pair<int, int>> colouredPairs_;  // per row: its bodies at the last colouring
     std::vector<int> order_;     // per wide slot: its row, or −1 (the sweep order)
     std::vector<int> overflow_;  // rows no colour could take, solved after the wide ones
@@ -532,9 +538,11 @@ private:
         double arm[2][4];        // per point rAx, rAy, rBx, rBy
         double smoothChange[2];  // smoothNormalChange of each point, over the whole step
         double normalMass[2];    // RowSetup's
+        double k11, k12, k22;    // Row's (the two points' block)
     };
-    LargeVector<BounceRow> bouncing_;       // rows with restitution > 0
-    LargeVector<BounceTerms> bounceTerms_;  // likewise
+    LargeVector<BounceRow> bouncing_;                    // rows with restitution > 0
+    UninitializedLargeVector<BounceTerms> bounceTerms_;  // likewise (filled by fillBounce())
+    std::vector<int> bounceAt_;                          // per row: its place in bouncing_, or −1
     std::vector<unsigned char> shifted_;  // per row point (2 per row): moved to its time of impact
     std::vector<unsigned char> bounces_;  // per row point: bounces in this inner sub-step
     std::vector<std::uint32_t> changedAt_;  // per body (+ the world): clock of its last impulse

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace phasebox {
@@ -53,5 +54,35 @@ struct HugePageAllocator {
 // A vector whose buffer, once it is large, lies on huge pages.
 template <class T>
 using LargeVector = std::vector<T, HugePageAllocator<T>>;
+
+// The same allocator, but resize() leaves new elements of a trivial type uninitialized: a
+// buffer of which a step writes only some elements touches only their pages (the kernel zeroes
+// each page when it is first touched, the vector's zeroing would touch all of them). Cleared
+// before it grows, the vector copies nothing either.
+template <class T>
+struct UninitializedHugePageAllocator : HugePageAllocator<T> {
+    using value_type = T;
+    template <class U>
+    struct rebind {
+        using other = UninitializedHugePageAllocator<U>;
+    };
+    UninitializedHugePageAllocator() noexcept = default;
+    template <class U>
+    UninitializedHugePageAllocator(const UninitializedHugePageAllocator<U>&) noexcept {}
+    template <class U>
+    void construct(U* p) noexcept {
+        ::new (static_cast<void*>(p)) U;  // default-initialized: nothing written for a trivial U
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+    template <class U>
+    bool operator==(const UninitializedHugePageAllocator<U>&) const noexcept {
+        return true;
+    }
+};
+template <class T>
+using UninitializedLargeVector = std::vector<T, UninitializedHugePageAllocator<T>>;
 
 }  // namespace phasebox
