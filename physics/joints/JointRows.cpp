@@ -61,8 +61,8 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
         for (int i = 0; i < 2; ++i) r.bias[i] = (centripetalA - centripetalB)[i];
         return;
     }
-    const bool limited = j.type == Joint::Type::Hinge && j.hasLimits && mode != Mode::Dynamics &&
-                         ea.rigid && eb.rigid && (ea.turns || eb.turns);
+    const bool limited = j.type == Joint::Type::Hinge && j.hasLimits && ea.rigid && eb.rigid &&
+                         (ea.turns || eb.turns);
     if (jacobian && j.type == Joint::Type::Hinge && !limited) {
         pointRowsOf(j, ea, eb, a, b, centripetalA - centripetalB, r);
         return;
@@ -84,7 +84,8 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
                                .centripetalB = centripetalB,
                                .mode = mode,
                                .jacobian = jacobian,
-                               .stepLength = stepLength_};
+                               .stepLength = stepLength_,
+                               .limit = findLimits_ ? joints::kFindLimit : heldLimit_[k]};
     switch (j.type) {
         case Joint::Type::Hinge:
             joints::hingeRows(in, r);
@@ -150,7 +151,7 @@ void JointSolver::pointRowsOf(const Joint& j, const End& ea, const End& eb, cons
 
 inline JointSolver::Vec3 JointSolver::violationOf(int k, const Vec& q) const {
     const Joint& j = joints_[k];
-    const joints::ViolationInput in{j, endA_[k], endB_[k], q, rotations_};
+    const joints::ViolationInput in{j, endA_[k], endB_[k], q, rotations_, heldLimit_[k]};
     switch (j.type) {
         case Joint::Type::Hinge:
             return joints::hingeViolation(in);

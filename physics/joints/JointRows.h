@@ -59,7 +59,11 @@ struct RowsInput {
     Mode mode;
     bool jacobian;
     double stepLength;  // s: the last shake()'s h (a pulley's stops)
+    // Dynamics mode: the hinge limit the step holds (kNoLimit, kLowerLimit, kUpperLimit), or
+    // kFindLimit: the one the hinge is at now, if any (JointSolver::holdLimitsFromNextEvaluation).
+    int limit = 0;
 };
+inline constexpr int kNoLimit = 0, kLowerLimit = 1, kUpperLimit = 2, kFindLimit = 3;
 
 // A joint's ends at q, the rotations of q cached (per turning body's slot): what its violation
 // reads.
@@ -68,11 +72,17 @@ struct ViolationInput {
     const End &endA, &endB;
     const Vec& q;
     const std::vector<Mat2>& rotations;
+    int limit = 0;  // a hinge: the limit the step holds (RowsInput::limit)
     // An end's point at q.
     Vec2 pointOf(const End& e) const {
         if (e.dof < 0) return e.fixed;
         if (!e.turns) return q.segment<2>(e.dof);
         return q.segment<2>(e.dof) + rotations[e.slot] * e.local;
+    }
+    // An end's angle at q (as JointSolver::evaluate() reads it).
+    double angleOf(const End& e) const {
+        if (e.dof < 0) return e.angle0;
+        return e.turns ? q[e.dof + 2] : 0.0;
     }
 };
 

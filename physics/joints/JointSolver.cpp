@@ -131,6 +131,8 @@ void JointSolver::bind(const Bodies& bodies, bool carry) {
     rows_.assign(m, Rows{});
     rhs_.assign(m, Vec3::Zero());
     lambda_.assign(m, Vec3::Zero());
+    heldLimit_.assign(m, joints::kNoLimit);
+    findLimits_ = true;
     previousStep_.assign(m, Vec3::Zero());
     lastDelta_.assign(m, Vec3::Zero());
     for (int i = 0; i < kAndersonDepth; ++i) {
@@ -418,8 +420,9 @@ void JointSolver::solveBlocks(BlockLdlt<B>& f) {
 
 void JointSolver::solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, const Vec& accel) {
     evaluateRows(Mode::Dynamics, q, u);
-    // A taut rope that would have to push goes slack, and a pulley's stop that would have to
-    // pull lets go, and the system is solved again.
+    // A taut rope that would have to push goes slack, and a pulley's stop or a hinge's limit
+    // that would have to pull lets go, and the system is solved again. A limit the step holds
+    // stays for the step (found at its start: the derivative must not switch within it).
     for (int pass = 0; pass < 3; ++pass) {
         factor(invMass);
         for (int k = 0; k < jointCount(); ++k) {
@@ -430,24 +433,38 @@ void JointSolver::solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, 
         solve();
         if (!hasInequalities_) break;
         bool slackened = false;
-        for (int k = 0; k < jointCount(); ++k)
-            if (joints_[k].type == Joint::Type::Rope && rows_[k].count > 0 && lambda_[k][0] > 0.0) {
-                rows_[k].count = 0;
-                rows_[k].ja.setZero();
-                rows_[k].jb.setZero();
-                rowsChanged();
-                slackened = true;
-            } else if (joints_[k].type == Joint::Type::Pulley && rows_[k].count > 1 &&
-                       lambda_[k][1] < 0.0) {
-                rows_[k].count = 1;
-                rows_[k].ja.row(1).setZero();
-                rows_[k].jb.row(1).setZero();
-                rowsChanged();
-                slackened = true;
+        // Joint k's rows from `from` on let go: the count cut there, their Jacobian zeroed.
+        const auto letGo = [&](int k, int from) {
+            Rows& r = rows_[k];
+            r.count = from;
+            for (int i = from; i < 3; ++i) {
+                r.ja.row(i).setZero();
+                r.jb.row(i).setZero();
             }
+            rowsChanged();
+            slackened = true;
+        };
+        for (int k = 0; k < jointCount(); ++k) {
+            const Joint::Type type = joints_[k].type;
+            const int count = rows_[k].count;
+            const Vec3& lambda = lambda_[k];
+            if (type == Joint::Type::Rope && count > 0 && lambda[0] > 0.0)
+                letGo(k, 0);
+            else if (type == Joint::Type::Pulley && count > 1 && lambda[1] < 0.0)
+                letGo(k, 1);
+            else if (findLimits_ && type == Joint::Type::Hinge && count > 2 && lambda[2] < 0.0)
+                letGo(k, 2);
+        }
         if (!slackened) break;
     }
     forcesKnown_ = true;
+    if (findLimits_) {
+        for (int k = 0; k < jointCount(); ++k)
+            heldLimit_[k] = rows_[k].count > 2 && joints_[k].type == Joint::Type::Hinge
+                                ? static_cast<int>(rows_[k].target[2])
+                                : joints::kNoLimit;
+        findLimits_ = false;
+    }
     for (int k = 0; k < jointCount(); ++k) {
         const Rows& r = rows_[k];
         joints::zeroFrom(lambda_[k], r.count);
@@ -489,7 +506,9 @@ void JointSolver::dropInequalities() {
     for (int k = 0; k < jointCount(); ++k) {
         Rows& r = rows_[k];
         const Joint::Type type = joints_[k].type;
-        if (type == Joint::Type::Hinge) r.count = std::min(r.count, 2);
+        // A hinge keeps the limit the step holds: SHAKE holds it as the derivative did.
+        if (type == Joint::Type::Hinge)
+            r.count = std::min(r.count, heldLimit_[k] != joints::kNoLimit ? 3 : 2);
         if (type == Joint::Type::Pulley) r.count = std::min(r.count, 1);
         for (int i = r.count; i < 3; ++i) {
             r.ja.row(i).setZero();
@@ -535,17 +554,38 @@ bool JointSolver::projectVelocities(const Vec& q, Vec& u, const Vec& invMass, bo
     // position projection that has just ended at q): at the same q they stand.
     const bool rowsOfQ = sameQ || rowsAreAt(q);
     if (!rowsOfQ || hasInequalities_) evaluateRows(Mode::Velocity, q, u);
-    bool inequality = false;
-    for (int k = 0; k < jointCount(); ++k) {
+    // An inequality's row here is a catch, unless the step held it (a rope or a hinge limit
+    // SHAKE held through the step is the method's equality).
+    const auto catches = [&](int k) {
         const Joint::Type type = joints_[k].type;
-        // A rope SHAKE held through the step is the method's equality, not a catch.
-        inequality = inequality ||
-                     (type == Joint::Type::Rope && rows_[k].count > 0 && !ropeShaken_[k]) ||
-                     (type == Joint::Type::Hinge && rows_[k].count > 2) ||
-                     (type == Joint::Type::Pulley && rows_[k].count > 1);
-    }
+        return (type == Joint::Type::Rope && rows_[k].count > 0 && !ropeShaken_[k]) ||
+               (type == Joint::Type::Hinge && rows_[k].count > 2 &&
+                heldLimit_[k] == joints::kNoLimit) ||
+               (type == Joint::Type::Pulley && rows_[k].count > 1);
+    };
+    bool inequality = false;
+    for (int k = 0; k < jointCount(); ++k) inequality = inequality || catches(k);
     const Vec& v = u;
     solveFor(invMass, u, 1.0, Target::Rate, v);
+    // Stopping one inequality can send another out of its bound (an arm stopped at its limit
+    // swings the forearm out past the elbow's): again at the new velocities, the rows of the
+    // passes before kept, until no further row moves out.
+    for (int pass = 0; hasInequalities_ && pass < kVelocityPasses; ++pass) {
+        keptRows_ = rows_;  // same size after the first: no allocation
+        evaluateRows(Mode::Velocity, q, u);
+        bool more = false;
+        for (int k = 0; k < jointCount(); ++k) {
+            if (rows_[k].count < keptRows_[k].count) {
+                rows_[k] = keptRows_[k];
+            } else if (rows_[k].count > keptRows_[k].count) {
+                more = true;
+                inequality = inequality || catches(k);
+            }
+        }
+        if (!more) break;
+        rowsChanged();
+        solveFor(invMass, u, 1.0, Target::Rate, v);
+    }
     return inequality;
 }
 

@@ -9,9 +9,10 @@
 // its order on a jointed scene. There is no feedback term in the derivative; what drift the
 // integrator leaves is removed after the step by projection (positions onto C = 0 by Newton
 // steps in the mass metric, velocities onto J·u = 0), whose energy the world books as
-// correction. Inequalities act after the step only: a hinge past its limits is projected back
-// and its outward rate removed, and a motor drives the joint's rate with a clamped impulse
-// (its work is physical, work_nc). A rope is an equality while it is taut and pulling.
+// correction. Inequalities act after the step: a hinge past its limits is projected back and
+// its outward rate removed, and a motor drives the joint's rate with a clamped impulse (its
+// work is physical, work_nc). What holds a body still is an equality of the step too, while it
+// holds: a rope taut and pulling, a hinge resting on a limit and pushing (HingeJoint.h).
 //
 // The system J·M⁻¹·Jᵀ couples joints that share a body. It is factored as a block LDLᵀ over
 // the joint graph (one block per joint: 2×2 unless a weld or a hinge limit needs a third row,
@@ -63,6 +64,10 @@ public:
     bool hasMotors() const { return hasMotors_; }
     // Ropes or hinge limits: rows that switch on and off.
     bool hasInequalities() const { return hasInequalities_; }
+    // A step starts: its first derivative evaluation finds which hinge limits the hinges rest on
+    // and push against, and the step's evaluations hold those (HingeJoint.h). A function of the
+    // step's start alone: nothing to keep in a snapshot.
+    void holdLimitsFromNextEvaluation() { findLimits_ = true; }
 
     // accel holds M⁻¹·F of every other force; adds M⁻¹·Jᵀ·λ so that the joints' second
     // derivatives vanish.
@@ -198,7 +203,8 @@ public:
     // not the run's (World::estimateLocalError's trial steps): the forces force() and forceOn*()
     // report, which the joints' sub-steps are taken from, and the cached rotations, which SHAKE
     // turned step by step (turnRotations(): bits a fresh rotation() does not give, so a trial step
-    // that cached its own changed the run's next step). Assigning reuses the vectors' room.
+    // that cached its own changed the run's next step), and the limits the step holds. Assigning
+    // reuses the vectors' room.
     struct EvaluationRecord {
         std::vector<double> forces;
         std::vector<std::array<Vec2, 2>> forceOn;
@@ -206,6 +212,8 @@ public:
         std::vector<Mat2> rotations;
         Vec rotationsQ;
         bool rotationsKnown = false;
+        std::vector<int> heldLimit;
+        bool findLimits = true;
     };
     void keepEvaluation(EvaluationRecord& out) const {
         out.forces = forces_;
@@ -214,6 +222,8 @@ public:
         out.rotations = rotations_;
         out.rotationsQ = rotationsQ_;
         out.rotationsKnown = rotationsKnown_;
+        out.heldLimit = heldLimit_;
+        out.findLimits = findLimits_;
     }
     void restoreEvaluation(const EvaluationRecord& kept) {
         forces_ = kept.forces;
@@ -222,6 +232,8 @@ public:
         rotations_ = kept.rotations;
         rotationsQ_ = kept.rotationsQ;
         rotationsKnown_ = kept.rotationsKnown;
+        heldLimit_ = kept.heldLimit;
+        findLimits_ = kept.findLimits;
     }
     // World position of a joint's point on body a or b at q (for drawing).
     Vec2 pointA(int joint, const Vec& q) const;
@@ -267,8 +279,8 @@ private:
     // λ of the equality rows for the unconstrained acceleration accel (a rope that would
     // push goes slack); keeps forces_.
     void solveDynamics(const Vec& q, const Vec& u, const Vec& invMass, const Vec& accel);
-    // Leaves only the equality rows and the ropes pulling at the step's start (a hinge limit's
-    // and a pulley stop's rows go).
+    // Leaves only the equality rows, the ropes pulling at the step's start and the limits the
+    // step holds (heldLimit_: another hinge limit's and a pulley stop's rows go).
     void dropInequalities();
     double worstViolation() const;
     // Factors, solves J·W·Jᵀ·λ = −C (Target::Violation), target − J·u (Target::Rate) or −J·u
@@ -322,6 +334,13 @@ private:
     Vec impulse_;  // SHAKE: the last move W·Jᵀ·λ per state index
     std::vector<End> endA_, endB_;
     bool hasMotors_ = false, hasInequalities_ = false;
+    // Per joint: the hinge limit the step holds in its evaluations (joints::kNoLimit, …), found
+    // by the first evaluation after holdLimitsFromNextEvaluation().
+    std::vector<int> heldLimit_;
+    bool findLimits_ = true;
+    // projectVelocities(): the rows of its last pass, and how many passes follow the first.
+    std::vector<Rows> keptRows_;
+    static constexpr int kVelocityPasses = 4;
     double lastMotorWork_ = 0.0;
     double shakeReach_ = 0.01;        // m: the largest violation SHAKE answers with an impulse
     double shakeCeiling_ = 0.0;       // m: the most SHAKE leaves (kShakeCeiling, below ropes' band)

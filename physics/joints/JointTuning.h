@@ -22,5 +22,11 @@ inline constexpr double kShakeFraction = 1e-4;
 inline constexpr double kShakeCeiling = 1e-7;
 // SHAKE acts while the step's violation is below this fraction of the smallest joint size.
 inline constexpr double kShakeReach = 0.1;
+// rad: a hinge this close to a limit, or past it, is at the limit in the derivative (the
+// position projection leaves it within shakeTolerance_, at most kShakeCeiling, of the limit).
+inline constexpr double kLimitBand = 1e-6;
+// rad/s: a hinge at a limit moving out of it faster than this is meeting it (an impact, caught
+// after the step), not resting on it. The velocity projection leaves a caught rate at rounding.
+inline constexpr double kLimitRate = 1e-9;
 
 }  // namespace phasebox::joints

@@ -590,6 +590,7 @@ void World::advanceClock() {
 }
 
 bool World::integrate(double t, double h, int next, StateSummary* summary) {
+    if (joints_) joints_->holdLimitsFromNextEvaluation();
     return integrator_->step(*this, t, h, q_[current_], u_[current_], q_[next], u_[next],
                              ledger_.workNc, summary);
 }
