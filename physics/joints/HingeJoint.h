@@ -47,9 +47,16 @@ inline void hingeRows(const RowsInput& in, Rows& r) {
     const double rate = in.b.omega - in.a.omega;
     const double slack = in.mode == Mode::Velocity ? kLimitBand : 0.0;
     const bool position = in.mode == Mode::Position;
-    if (angle < j.lower + slack && (position || rate < 0.0))
+    // In positions, a hinge past a limit, and in SHAKE along the end's directions one at the
+    // limit the step holds (in.limit): a pin's projection alone turned a resting limb past its
+    // stop (backward Euler then left every other step to the position projection). Not in the
+    // projections after the step or the contacts: there a limb the contacts lift off its stop
+    // would be pulled back onto it (the ragdoll booked 2 J of correction a step lying still).
+    const bool lowerHeld = position && in.limit == kLowerLimit;
+    const bool upperHeld = position && in.limit == kUpperLimit;
+    if ((angle < j.lower + slack || lowerHeld) && (position || rate < 0.0))
         angleRow(in, angle, j.lower, r);
-    else if (angle > j.upper - slack && (position || rate > 0.0))
+    else if ((angle > j.upper - slack || upperHeld) && (position || rate > 0.0))
         angleRow(in, angle, j.upper, r);
 }
 

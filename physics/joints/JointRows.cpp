@@ -85,7 +85,10 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
                                .mode = mode,
                                .jacobian = jacobian,
                                .stepLength = stepLength_,
-                               .limit = findLimits_ ? joints::kFindLimit : heldLimit_[k]};
+                               .limit = findLimits_ ? joints::kFindLimit
+                                        : mode == Mode::Position && !shakingAlongEnd_
+                                            ? joints::kNoLimit
+                                            : heldLimit_[k]};
     switch (j.type) {
         case Joint::Type::Hinge:
             joints::hingeRows(in, r);

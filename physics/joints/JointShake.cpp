@@ -123,6 +123,11 @@ bool JointSolver::shakeAlongEnd(double h, Vec& q, Vec& u, const Vec& weights) {
     // quadratically wherever it starts near enough), the velocities moved with the positions
     // as SHAKE moves them. Ropes past their length are held with the equalities.
     double previous = std::numeric_limits<double>::infinity();
+    struct Along {
+        bool& flag;
+        explicit Along(bool& f) : flag(f) { flag = true; }
+        ~Along() { flag = false; }
+    } along(shakingAlongEnd_);
     for (int it = 0; it < joints::kProjectionIterations; ++it) {
         evaluateRows(Mode::Position, q, u);
         dropInequalities();

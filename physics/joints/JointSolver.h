@@ -338,6 +338,9 @@ private:
     // by the first evaluation after holdLimitsFromNextEvaluation().
     std::vector<int> heldLimit_;
     bool findLimits_ = true;
+    // shakeAlongEnd() is projecting: its rows in positions hold the step's limits too (the
+    // position projections after the step and after the contacts take only limits passed).
+    bool shakingAlongEnd_ = false;
     // projectVelocities(): the rows of its last pass, and how many passes follow the first.
     std::vector<Rows> keptRows_;
     static constexpr int kVelocityPasses = 4;
