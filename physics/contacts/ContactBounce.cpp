@@ -121,17 +121,16 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
             // point's impulse would turn the body and the second's turn it back with a bounce
             // left over: a box dropped flat with e = 0 left the floor spinning and toppled.
             if (hit[0] && hit[1] && t.blockable) {
-                const BounceTerms& c = t;
-                const double det = c.k11 * c.k22 - c.k12 * c.k12;
+                const double det = t.k11 * t.k22 - t.k12 * t.k12;
                 const double b0 = -(1.0 + e[0]) * vi[0], b1 = -(1.0 + e[1]) * vi[1];
-                const double l0 = (c.k22 * b0 - c.k12 * b1) / det;
-                const double l1 = (c.k11 * b1 - c.k12 * b0) / det;
+                const double l0 = (t.k22 * b0 - t.k12 * b1) / det;
+                const double l1 = (t.k11 * b1 - t.k12 * b0) / det;
                 if (l0 >= 0.0 && l1 >= 0.0) {
                     // The shifts by the same block, so that a flat landing moves flat.
                     const double d0 = (1.0 + e[0]) * std::max(sep[0], 0.0);
                     const double d1 = (1.0 + e[1]) * std::max(sep[1], 0.0);
-                    double s0 = (c.k22 * d0 - c.k12 * d1) / det;
-                    double s1 = (c.k11 * d1 - c.k12 * d0) / det;
+                    double s0 = (t.k22 * d0 - t.k12 * d1) / det;
+                    double s1 = (t.k11 * d1 - t.k12 * d0) / det;
                     if (s0 < 0.0 || s1 < 0.0) s0 = s1 = 0.0;
                     apply(0, l0, s0);
                     apply(1, l1, s1);

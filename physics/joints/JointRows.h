@@ -43,6 +43,8 @@ struct Rows {
     Vec3 c = Vec3::Zero(), bias = Vec3::Zero();
     // Velocity mode: the rate J·u the projection sets each row to (0 but for a pulley's
     // stop, which lets a side close in at most what it has left to its stop in a step).
+    // Dynamics mode: target[2] is the side of a hinge limit the row holds (kLowerLimit,
+    // kUpperLimit; HingeJoint.h), which solveDynamics() keeps as the step's.
     Vec3 target = Vec3::Zero();
 };
 enum class Mode { Dynamics, Position, Velocity };
