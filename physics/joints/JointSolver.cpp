@@ -144,6 +144,7 @@ void JointSolver::bind(const Bodies& bodies, bool carry) {
     ropeShaken_.assign(m, 0);
     forceOn_.assign(m, {Vec2::Zero(), Vec2::Zero()});
     motorImpulse_.assign(m, 0.0);
+    heldMotorTorque_.assign(m, 0.0);
 
     // The joint graph: two joints are adjacent when they hold a common dynamic body, unless
     // that body holds more than kHubJoints: then it is a node itself (a hub), adjacent to its
@@ -594,13 +595,14 @@ void JointSolver::projectChange(Vec& x, const Vec& invMass) {
     solveFor(invMass, x, 1.0, Target::Zero, v);
 }
 
-double JointSolver::driveMotors(double h, const Vec& q, Vec& u, const Vec& mass,
-                                const Vec& invMass) {
+double JointSolver::driveMotors(double h, const Vec& q, Vec& u, const Vec& mass, const Vec& invMass,
+                                bool held) {
     lastMotorWork_ = 0.0;
     if (!hasMotors_) return 0.0;
     const auto kinetic = [&] { return 0.5 * (mass.array() * u.array().square()).sum(); };
     const double before = kinetic();
-    std::fill(motorImpulse_.begin(), motorImpulse_.end(), 0.0);
+    // What the held torques gave in the method's step (addHeldMotorTorques()).
+    for (int k = 0; k < jointCount(); ++k) motorImpulse_[k] = held ? heldTorque(k) * h : 0.0;
     for (int it = 0; it < kMotorIterations; ++it) {
         for (int k = 0; k < jointCount(); ++k) {
             const Joint& j = joints_[k];
@@ -620,8 +622,30 @@ double JointSolver::driveMotors(double h, const Vec& q, Vec& u, const Vec& mass,
         }
         projectVelocities(q, u, invMass, it > 0);
     }
+    for (int k = 0; k < jointCount(); ++k) heldMotorTorque_[k] = motorImpulse_[k] / h;
     lastMotorWork_ = kinetic() - before;
     return lastMotorWork_;
+}
+
+double JointSolver::heldTorque(int k) const {
+    const Joint& j = joints_[k];
+    if (!j.hasMotor || !takesTorque(endA_[k]) || !takesTorque(endB_[k])) return 0.0;
+    const double most = j.maxMotorTorque;
+    return std::clamp(heldMotorTorque_[k], -most, most);
+}
+
+bool JointSolver::addHeldMotorTorques(Vec& force) const {
+    bool any = false;
+    for (int k = 0; hasMotors_ && k < jointCount(); ++k) {
+        const double torque = heldTorque(k);
+        if (torque == 0.0) continue;
+        const End& a = endA_[k];
+        const End& b = endB_[k];
+        if (a.turns) force[a.dof + 2] -= torque;
+        if (b.turns) force[b.dof + 2] += torque;
+        any = any || a.turns || b.turns;
+    }
+    return any;
 }
 
 int JointSolver::substepsFor(double h, const Vec& q, const Vec& u) const {

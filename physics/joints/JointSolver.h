@@ -134,10 +134,19 @@ public:
     // x ← x − W·Jᵀ·(J·W·Jᵀ)⁻¹·J·x (the contacts' joined relax, ContactSolver::relaxJoined).
     void projectChange(Vec& x, const Vec& invMass);
     // 4. Motors: a clamped impulse on the hinge's rate (|τ| ≤ max_torque), alternating with
-    //    step 3 (Box2D's motor with the joints re-projected). Returns the kinetic energy this
-    //    adds or takes: the motors' work.
-    double driveMotors(double h, const Vec& q, Vec& u, const Vec& mass, const Vec& invMass);
+    //    step 3 (Box2D's motor with the joints re-projected). Where the method's step has given
+    //    each motor its held torque's impulse already (held: addHeldMotorTorques() was in it),
+    //    the impulse starts from that, the total clamped, as a contact's from its warm start.
+    //    Returns the kinetic energy this adds or takes: the motors' work beyond their held
+    //    torques'.
+    double driveMotors(double h, const Vec& q, Vec& u, const Vec& mass, const Vec& invMass,
+                       bool held);
     double lastMotorWork() const { return lastMotorWork_; }
+    // The motors' torques of their last drive (its impulse over its step, |τ| ≤ max_torque),
+    // held over the next method step as forces: −τ on end A's angle, +τ on end B's. The motor
+    // then pushes inside the method's step as a contact's held force does, so the contacts meet
+    // a wheel the motor keeps turning. Adds them to force; false when none is held.
+    bool addHeldMotorTorques(Vec& force) const;
 
     // How many sub-steps a step of h needs so that no joint's geometry turns by more than
     // kMaxTurnPerStep in one (a rod's direction, a hinge's lever arm). Beyond that the step
@@ -374,6 +383,9 @@ private:
     std::vector<double> stiffness_;  // per state index: geometric stiffness (geometricFrequency)
     std::vector<std::array<Vec2, 2>> forceOn_;
     std::vector<double> motorImpulse_;
+    std::vector<double> heldMotorTorque_;  // N·m per joint: the last drive's (driveMotors())
+    // Joint k's held torque: 0 without a motor that both ends take, within its max_torque.
+    double heldTorque(int k) const;
 
     // The block LDLᵀ of J·W·Jᵀ (physics/linear/BlockLdlt.h): a node per joint, by elimination
     // position. B = 2 when no joint can have a third row (no weld, no hinge with limits).

@@ -119,6 +119,8 @@ void World::commit() {
     invMass_.setZero(n);
     force_.setZero(n);
     heldForce_.setZero(n);
+    heldMotor_.setZero(n);
+    motorsHeld_ = false;
     heldValid_ = false;  // the contact solver's bodies are of the old layout until a collide
     Vec& q = q_[0];
     Vec& u = u_[0];
@@ -418,12 +420,13 @@ OdeSystem::SplitAcceleration World::accelerationSplit(double t, const Vec& q, co
 bool World::addAccelerations(double t, const Vec& q, const Vec& u, Vec& accel,
                              const std::vector<int>& fields, double& power) {
     bool written = false;
-    if (!forceEffects_.empty() || penalty_ || holding_) {
+    if (!forceEffects_.empty() || penalty_ || holding_ || motorsHeld_) {
         if (holding_) {
             force_ = heldForce_;
         } else {
             force_.setZero();
         }
+        if (motorsHeld_) force_ += heldMotor_;
         for (int i : forceEffects_) {
             const auto start = Clock::now();
             power += effects_[i]->addForces(t, q, u, force_);
@@ -455,6 +458,7 @@ double World::nonConservativePower(double t, const Vec& q, const Vec& u) {
 
 void World::addHeldForces(Vec& force) const {
     if (holding_) force += heldForce_;
+    if (motorsHeld_) force += heldMotor_;
 }
 
 double World::forces(double t, const Vec& q, const Vec& u, Vec& force) {
@@ -565,6 +569,7 @@ bool World::step() {
         }
         timer.start(StepStage::Integrate);
         holdContactForces();
+        holdMotorTorques();
         const bool ok = integrate(t, h, next, sumHere ? &summary : nullptr);
         if (ok) solveConstraints(h, s == 0 ? substeps : 0, next, timer);
         if (!ok || (substeps > 1 && !(q_[next].allFinite() && u_[next].allFinite())))
@@ -646,6 +651,7 @@ bool World::failSubstep(double t, bool integratorFailed, int next) {
                                    "steps: the scene is too stiff for it"
                              : std::string(info.name) + " failed";
     holding_ = false;
+    motorsHeld_ = false;
     current_ = next;  // restore() reads the frame start from the right place
     if (guard_.onNonFinite() == DivergenceGuard::Verdict::RestoreRunawayStart)
         restore(guard_.runawayStart(), false);

@@ -296,6 +296,9 @@ private:
     // The stages of step(), in the order they run.
     void primeContactForces(StageTimer& timer);
     void holdContactForces();
+    // The motors' torques of their last drive into heldMotor_, held over the method's step
+    // (JointSolver::addHeldMotorTorques(); their work: bookHeldWork()).
+    void holdMotorTorques();
     bool integrate(double t, double h, int next, StateSummary* summary);
     // After the method's step of h into buffer next: the joints, the contacts (found when
     // collideSubsteps > 0, the frame's first sub-step of that many), their booking.
@@ -351,6 +354,10 @@ private:
     Vec heldForce_;
     double heldWork_ = 0.0;  // their work in this sub-step's method (bookHeldWork())
     bool holding_ = false;
+    // The joints' motors' torques, held likewise while motorsHeld_ (one sub-step's method).
+    Vec heldMotor_;
+    bool motorsHeld_ = false;
+    bool motorsHeldInStep_ = false;  // this sub-step's method had them (driveMotors())
     bool heldValid_ = false;
     bool penaltyPairsStale_ = true;
     std::unique_ptr<JointSolver> joints_;

@@ -235,6 +235,19 @@ void World::holdContactForces() {
     holding_ = contacts_->solver().addHeldForces(heldForce_);
 }
 
+void World::holdMotorTorques() {
+    // A motor is a joint's force: a method that takes the joints' force at the step's end
+    // (backward Euler) meets it there too (driveMotors() from nothing). Held in that method's
+    // step, the torque pair turned bodies the joints did not hold within it, and a motor
+    // pushing on its hinge's limit spun the free pair it joins (tst_joints).
+    motorsHeld_ = false;
+    if (joints_ && joints_->hasMotors() && !integrator_->info().constraintsAtEnd) {
+        heldMotor_.setZero();
+        motorsHeld_ = joints_->addHeldMotorTorques(heldMotor_);
+    }
+    motorsHeldInStep_ = motorsHeld_;
+}
+
 void World::bookHeldWork(double h, int next) {
     // A force held over the step changes every method's velocities by h·W·F, and so the kinetic
     // energy by exactly F·h·(u0 + u1)/2: that is its work on the method's path, whatever the
@@ -242,9 +255,19 @@ void World::bookHeldWork(double h, int next) {
     // (solveContacts()): a held force the solver takes back again (a body that left its
     // support) nets to nothing; a body at rest books nothing.
     heldWork_ = 0.0;
-    if (!holding_) return;
     const Vec& u0 = u_[current_];
     const Vec& u1 = u_[next];
+    if (motorsHeld_) {
+        // The motors' held torques push on the method's path: their work is the motors' (a
+        // motor's push is work, in or out), booked at once; the rest of a motor's work is
+        // driveMotors()' change of the kinetic energy (solveJoints()).
+        double work = 0.0;
+        for (int i = 0; i < static_cast<int>(heldMotor_.size()); ++i)
+            if (heldMotor_[i] != 0.0) work += heldMotor_[i] * (u0[i] + u1[i]);
+        ledger_.workNc += 0.5 * h * work;
+        motorsHeld_ = false;
+    }
+    if (!holding_) return;
     double work = 0.0;
     for (int i = 0; i < static_cast<int>(heldForce_.size()); ++i)
         if (heldForce_[i] != 0.0) work += heldForce_[i] * (u0[i] + u1[i]);

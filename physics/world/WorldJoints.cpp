@@ -128,7 +128,7 @@ void World::solveJoints(double h, int next) {
     }
     const bool caught = joints_->projectVelocities(q, u, joints_->shakeWeights(invMass_));
     const double projected = caught ? mechanicalEnergy(q, u) : afterCorrection;
-    const double motorWork = joints_->driveMotors(h, q, u, mass_, invMass_);
+    const double motorWork = joints_->driveMotors(h, q, u, mass_, invMass_, motorsHeldInStep_);
     if (!std::isfinite(projected) || !std::isfinite(motorWork)) return;  // the guard reports it
     ledger_.correction += afterCorrection - beforeCorrection;
     const double catchEnergy = projected - afterCorrection;
