@@ -128,6 +128,8 @@ void ContactSolver::colourRows() {
         }
         wide_.resize(wideRows);
         wideCold_.resize(wideRows);
+        wideClosing_.resize(wideRows);
+        closingWide_.assign(wideRows, 0);
         wideSetup_.resize(wideRows);
         order_.assign(kLanes * wideRows, -1);
         for (std::size_t i = 0; i < rowCount; ++i)

@@ -20,6 +20,7 @@ using namespace contact_impulse;
 namespace {
 using WideRow = ContactSolver::WideRow;
 using WideCold = ContactSolver::WideCold;
+using WideClosing = ContactSolver::WideClosing;
 using ContactSolverBody = ContactSolver::BodyState;
 using RowSetup = ContactSolver::RowSetup;
 using WideSetup = ContactSolver::WideSetup;
@@ -145,7 +146,7 @@ using WideLoop = void (*)(WideRow*, int, ContactSolverBody*, int);
 using WideWarm = void (*)(WideRow*, const WideCold*, int, ContactSolverBody*, int);
 using WideMeasure = void (*)(const WideRow*, WideCold*, int, const BodyMotion*);
 using WidePrepare = void (*)(WideRow*, WideCold*, int, const WideSetup*, const BodyMotion*,
-                             const PhaseTerms&);
+                             const PhaseTerms&, unsigned char*, WideClosing*);
 // The instruction set the wide kernels use: 2 AVX-512, 1 AVX2, 0 none. Without AVX2 the rows are
 // solved one by one in the same colour order (the portable build of the wide loop, on SSE2
 // pairs, was slower than that).
@@ -210,8 +211,9 @@ void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
             b.v0 = u0.segment<2>(b.dof);
             b.smoothDv = u.segment<2>(b.dof) - b.v0;
             b.startOffset = q0.segment<2>(b.dof) - b.collidePosition;
-            b.shift = b.path = b.timeShift = b.pushOut = b.bounceDv = Vec2::Zero();
-            b.angleShift = b.anglePath = b.angleTimeShift = b.pushOutAngle = b.bounceDw = 0.0;
+            b.shift = b.path = b.timeShift = b.pushOut = b.bounceDv = b.impactDv = Vec2::Zero();
+            b.angleShift = b.anglePath = b.angleTimeShift = b.pushOutAngle = b.bounceDw =
+                b.impactDw = 0.0;
             if (b.rotates) {
                 b.w0 = u0[b.dof + 2];
                 b.smoothDw = u[b.dof + 2] - b.w0;
@@ -244,6 +246,8 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     // Each colour's last wide row may be partly empty.
     wide_.reserve(constraints / kLanes + kColours);
     wideCold_.reserve(constraints / kLanes + kColours);
+    wideClosing_.reserve(constraints / kLanes + kColours);
+    closingWide_.reserve(constraints / kLanes + kColours);
     wideSetup_.reserve(constraints / kLanes + kColours);
     order_.reserve(constraints + kLanes * kColours);
     colourMask_.reserve(bodies + 1);
@@ -262,7 +266,8 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
         forColours([&](std::size_t first, std::size_t end) {
             wide.prepare(wide_.data() + first, wideCold_.data() + first,
                          static_cast<int>(end - first), wideSetup_.data() + first,
-                         measure ? motion_.data() : nullptr, terms);
+                         measure ? motion_.data() : nullptr, terms, closingWide_.data() + first,
+                         wideClosing_.data() + first);
         });
         for (const int i : overflow_) prepareRow(static_cast<std::size_t>(i), terms, measure);
         return;
@@ -281,6 +286,13 @@ void ContactSolver::prepareRow(std::size_t i, const PhaseTerms& terms, bool meas
     for (int k = 0; k < c.pointCount; ++k) {
         RowPoint& p = c.p[k];
         const PointTerms t = pointTerms(separation_[2 * i + k], setup, k, terms);
+        if (!terms.useBias) {
+            // As the lanes do (ContactWideLoop.inc): speculative in the soft solve (its impulse
+            // scale 0), touching now.
+            p.closing = t.active && p.impulseScale == 0.0;
+            p.relaxStartNormal = p.normalImpulse;
+            p.relaxStartTangent = p.tangentImpulse;
+        }
         active[k] = t.active;
         compliance[k] = t.compliance;
         p.bias = t.bias;
@@ -296,6 +308,58 @@ void ContactSolver::prepareRow(std::size_t i, const PhaseTerms& terms, bool meas
         c.i22 = b.i22;
         c.invA11 = b.invA11;
         c.invA22 = b.invA22;
+    }
+}
+
+void ContactSolver::bookClosing(int a, int b, double nx, double ny, const double (&arm)[4],
+                                double normal, double tangent) {
+    // The impulse's velocity change on each dynamic body (the static world's stays still).
+    const int world = static_cast<int>(bodies_.size());
+    const Vec2 impulse = normal * Vec2(nx, ny) + tangent * Vec2(ny, -nx);
+    if (a != world) {
+        SolverBody& body = bodies_[a];
+        body.impactDv -= body.invMass * impulse;
+        body.impactDw -= body.invInertia * cross(Vec2(arm[0], arm[1]), impulse);
+    }
+    if (b != world) {
+        SolverBody& body = bodies_[b];
+        body.impactDv += body.invMass * impulse;
+        body.impactDw += body.invInertia * cross(Vec2(arm[2], arm[3]), impulse);
+    }
+}
+
+void ContactSolver::bookClosings() {
+    // Serially, in the rows' order: a few rows in a sub-step, where bodies land.
+    if (lanesHold_) {
+        for (std::size_t r = 0; r < closingWide_.size(); ++r) {
+            if (!closingWide_[r]) continue;
+            const WideRow& w = wide_[r];
+            const WideCold& u = wideCold_[r];
+            const WideClosing& c = wideClosing_[r];
+            for (int l = 0; l < kLanes; ++l)
+                for (int k = 0; k < 2; ++k) {
+                    if (!c.mask[k][l]) continue;
+                    const WideCold::Point& e = u.p[k];
+                    const double arm[4] = {e.rAx[l], e.rAy[l], e.rBx[l], e.rBy[l]};
+                    bookClosing(w.a[l], w.b[l], w.nx[l], w.ny[l], arm,
+                                w.p[k].normalImpulse[l] - c.normal[k][l],
+                                w.p[k].tangentImpulse[l] - c.tangent[k][l]);
+                }
+        }
+    }
+    const auto bookRow = [&](const Row& row) {
+        for (int k = 0; k < row.pointCount; ++k) {
+            const RowPoint& p = row.p[k];
+            if (!p.closing) continue;
+            const double arm[4] = {p.rAx, p.rAy, p.rBx, p.rBy};
+            bookClosing(row.a, row.b, row.nx, row.ny, arm, p.normalImpulse - p.relaxStartNormal,
+                        p.tangentImpulse - p.relaxStartTangent);
+        }
+    };
+    if (lanesHold_) {
+        for (const int i : overflow_) bookRow(rows_[static_cast<std::size_t>(i)]);
+    } else {
+        for (const Row& row : rows_) bookRow(row);
     }
 }
 
@@ -638,6 +702,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
         moved = false;
         preparePhase(hi, false, settings, true);
         for (int it = 0; it < settings.relaxIterations; ++it) solve();
+        bookClosings();
         // One pass over the bodies ends this sub-step and starts the next.
         const bool next = i < n;
         forChunks(count, kBodyGrain, [&](std::size_t first, std::size_t end) {
@@ -645,9 +710,13 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
                 SolverBody& b = bodies_[k];
                 BodyState& s = state_[k];
                 // What relax removed is the push-out's velocity: its displacement is the position
-                // correction (the energy ledger's `correction`).
-                b.pushOut += hi * (b.pushV - Vec2(s.vx, s.vy));
-                if (b.rotates) b.pushOutAngle += hi * (b.pushW - s.w);
+                // correction (the energy ledger's `correction`). But at a point that closed in the
+                // sub-step relax stops an approach the soft solve let the body make for real: an
+                // impact, the same whatever the push-out (bookClosings()).
+                b.pushOut += hi * (b.pushV - Vec2(s.vx, s.vy) + b.impactDv);
+                if (b.rotates) b.pushOutAngle += hi * (b.pushW - s.w + b.impactDw);
+                b.impactDv = Vec2::Zero();
+                b.impactDw = 0.0;
                 if (next) smoothShare(b, s);
             }
         });

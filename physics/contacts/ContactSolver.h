@@ -87,6 +87,9 @@ struct SolverBody {
     double pushW = 0.0;
     Vec2 pushOut = Vec2::Zero();  // the position correction (push-out) of this step
     double pushOutAngle = 0.0;
+    // What relax's impulses at closing points changed in this sub-step (bookClosings()).
+    Vec2 impactDv = Vec2::Zero();
+    double impactDw = 0.0;
     int contactCount = 0;  // constraints this step
     // The vector sum of the contact impulses the body received this step (N·s): warm start,
     // bounces, soft solve and relax of every inner sub-step, over the world's sub-steps and the
@@ -262,6 +265,13 @@ public:
         } p[2];
         int points[kLanes];  // each lane's point count (0: an unused lane)
     };
+    // A wide row's points that close in an inner sub-step (speculative in its soft solve, touching
+    // when relax measures them), and their impulses as relax finds them: what relax adds there
+    // is the impact's (bookClosings()). Written only where some lane closes.
+    struct alignas(64) WideClosing {
+        long long mask[2][kLanes];  // −1 where the lane's point closes
+        double normal[2][kLanes], tangent[2][kLanes];
+    };
     // Box2D v3 takes 24 colours; a pile of disks started at one point gives a disk 30 to 40
     // contacts in its first steps, and with 24 colours 41% of its rows went to the overflow,
     // solved one by one after the lanes (none with 64). The sweeps pass only the colours in use.
@@ -321,6 +331,10 @@ private:
         // and what the held force gives in one inner sub-step.
         double baseSeparation;
         double heldNormal, heldTangent;
+        // Relax's: the point closes in this sub-step, and its impulses as relax found them
+        // (WideClosing's, for the rows no lane took).
+        bool closing;
+        double relaxStartNormal, relaxStartTangent;
     };
     // A constraint as the iterations see it: built once per step from ContactConstraint with
     // everything that does not change within the step (masses, the block's K), and per phase
@@ -417,6 +431,12 @@ private:
     // their lanes (ContactWideLoop.inc), the others' into rows_ (prepareRow()).
     void preparePhase(double h, bool useBias, const ContactSettings& settings, bool measure);
     void prepareRow(std::size_t i, const PhaseTerms& terms, bool measure);
+    // After relax: the velocity its impulses gave at points that closed in the sub-step (an
+    // approach stopped, an impact), per body into SolverBody::impactDv, which the push-out
+    // then leaves out: the soft solve's approach moved the body for real.
+    void bookClosings();
+    void bookClosing(int a, int b, double nx, double ny, const double (&arm)[4], double normal,
+                     double tangent);
     // Row i's point k's separation where the solver's path is now: in its lane for a coloured
     // row (with the wide sweep), else in separation_.
     double separationOf(std::size_t i, int k) const {
@@ -511,6 +531,8 @@ private:
     std::vector<double> separation_;            // per row point (2 per row), where the path is now
     LargeVector<WideRow> wide_;                 // the coloured rows, colour by colour
     LargeVector<WideCold> wideCold_;            // likewise, their cold lanes
+    LargeVector<WideClosing> wideClosing_;      // likewise, where relax's closing flags say
+    std::vector<unsigned char> closingWide_;    // per wide row: some lane closes (relax)
     std::vector<int> slot_;  // per row: kLanes·wide row + lane, or −1 (solved alone)
     std::vector<std::pair<int, int>> colouredPairs_;  // per row: its bodies at the last colouring
     std::vector<int> order_;     // per wide slot: its row, or −1 (the sweep order)
