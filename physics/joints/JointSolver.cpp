@@ -232,6 +232,9 @@ void JointSolver::carryFrom(const JointSolver& old) {
         forceOn_[now] = old.forceOn_[was];
         lambda_[now] = old.lambda_[was];
         ropeShaken_[now] = old.ropeShaken_[was];
+        // A motor's island never sleeps (World::fallAsleep), so its held torque carries on
+        // when another island falls asleep or wakes.
+        heldMotorTorque_[now] = old.heldMotorTorque_[was];
     }
     // A body that kept turning keeps the stiffness it held (one that slept, what it held then).
     // Per rigid body: the stiffness it held at the last bind, as it turned then or slept.
