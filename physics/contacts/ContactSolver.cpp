@@ -316,16 +316,18 @@ void ContactSolver::bookClosing(int a, int b, double nx, double ny, const double
     // The impulse's velocity change on each dynamic body (the static world's stays still).
     const int world = static_cast<int>(bodies_.size());
     const Vec2 impulse = normal * Vec2(nx, ny) + tangent * Vec2(ny, -nx);
-    if (a != world) {
-        SolverBody& body = bodies_[a];
-        body.impactDv -= body.invMass * impulse;
-        body.impactDw -= body.invInertia * cross(Vec2(arm[0], arm[1]), impulse);
-    }
-    if (b != world) {
-        SolverBody& body = bodies_[b];
-        body.impactDv += body.invMass * impulse;
-        body.impactDw += body.invInertia * cross(Vec2(arm[2], arm[3]), impulse);
-    }
+    const auto book = [&](int index, bool onB) {
+        SolverBody& body = bodies_[index];
+        BodyState change{0.0, 0.0, 0.0, body.invMass, body.invInertia};
+        if (onB)
+            applyImpulse(change, arm[2], arm[3], impulse.x(), impulse.y());
+        else
+            removeImpulse(change, arm[0], arm[1], impulse.x(), impulse.y());
+        body.impactDv += Vec2(change.vx, change.vy);
+        body.impactDw += change.w;
+    };
+    if (a != world) book(a, false);
+    if (b != world) book(b, true);
 }
 
 void ContactSolver::bookClosings() {

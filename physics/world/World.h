@@ -357,7 +357,6 @@ private:
     // The joints' motors' torques, held likewise while motorsHeld_ (one sub-step's method).
     Vec heldMotor_;
     bool motorsHeld_ = false;
-    bool motorsHeldInStep_ = false;  // this sub-step's method had them (driveMotors())
     bool heldValid_ = false;
     bool penaltyPairsStale_ = true;
     std::unique_ptr<JointSolver> joints_;

@@ -245,7 +245,6 @@ void World::holdMotorTorques() {
         heldMotor_.setZero();
         motorsHeld_ = joints_->addHeldMotorTorques(heldMotor_);
     }
-    motorsHeldInStep_ = motorsHeld_;
 }
 
 void World::bookHeldWork(double h, int next) {

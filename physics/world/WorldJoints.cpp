@@ -128,7 +128,10 @@ void World::solveJoints(double h, int next) {
     }
     const bool caught = joints_->projectVelocities(q, u, joints_->shakeWeights(invMass_));
     const double projected = caught ? mechanicalEnergy(q, u) : afterCorrection;
-    const double motorWork = joints_->driveMotors(h, q, u, mass_, invMass_, motorsHeldInStep_);
+    // Every method's step but backward Euler's had the motors' held torques in it
+    // (holdMotorTorques()).
+    const double motorWork =
+        joints_->driveMotors(h, q, u, mass_, invMass_, !integrator_->info().constraintsAtEnd);
     if (!std::isfinite(projected) || !std::isfinite(motorWork)) return;  // the guard reports it
     ledger_.correction += afterCorrection - beforeCorrection;
     const double catchEnergy = projected - afterCorrection;
