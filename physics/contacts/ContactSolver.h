@@ -397,8 +397,15 @@ private:
     // Sub-steps for this step: `base`, or more when the stack the warm-start impulses carry
     // would sag further than kSagTarget at the base stiffness (after loadBodies).
     int stackSubsteps(double h, int base, const ContactSettings& settings);
-    // depth_ from supports_: how far each body sinks down its support chains.
-    void sagDepths();
+    // Kahn's order of the bodies by supports_ into supportReady_ (with supportStart_ and
+    // supportOrder_, the supports by lower body); false where the supports form a cycle.
+    bool orderSupports();
+    // depth_ from supports_: how far each body sinks down its support chains (ordered: in
+    // orderSupports()' order, else by passes).
+    void sagDepths(bool ordered);
+    // The first solve's sinks, from the weights pressed down the supports (in orderSupports()'
+    // order, which it needs); returns the deepest over the most a contact may sink.
+    double weightSinks(double h, double omega);
     // What a row is built from besides its constraint: the step's softness and warm start.
     struct BuildTerms {
         double hertz, zeta, h, warmScale;
@@ -580,6 +587,7 @@ private:
     // sagDepths: the supports by lower body (supportOrder_ from supportStart_[lower]), per body
     // how many supports under it are not done yet, and the bodies in the order they are done.
     std::vector<int> supportStart_, supportOrder_, supportsUnder_, supportReady_;
+    std::vector<double> load_;     // weightSinks: per body (+ the world), the weight it carries
     std::vector<Vec2> deepShift_;  // per body (+ the static world): deepPushOut's displacement
     // What deepPushOut's passes read of a row: its bodies, normal, deepest point's separation
     // (a move along the normal shifts every point alike, and rounding keeps their order) and

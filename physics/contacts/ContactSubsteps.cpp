@@ -20,17 +20,14 @@ int ContactSolver::innerSubsteps(double h, const ContactSettings& settings) {
     return std::clamp(n, 1, kMaxInnerSubsteps);
 }
 
-void ContactSolver::sagDepths() {
-    // Down the support chains: each body's depth is the deepest of its supports' depths plus
-    // the sink into it (0 on none). The supports form chains up a stack, mostly, and the
-    // contacts' order runs along them in no particular direction (a row's neighbours lean on
-    // each other either way, the ground's contacts come last), so passes in that order took 10
-    // to 233 on the 100-row pyramid. In the supports' topological order one pass does; a pass in
-    // any order that changes nothing leaves the same depths, bit for bit (each the largest sum
-    // over its supports of their final depth and its sink), so both ways agree on those.
+bool ContactSolver::orderSupports() {
+    // The supports by their lower body (a counting sort), how many rest under each body, and
+    // Kahn's order of the bodies: one once all that it rests on come before it. The supports form
+    // chains up a stack, mostly, and the contacts' order runs along them in no particular
+    // direction (a row's neighbours lean on each other either way, the ground's contacts come
+    // last), so passes in that order took 10 to 233 on the 100-row pyramid; in this order one
+    // pass does.
     const std::size_t nodes = bodies_.size() + 1;
-    depth_.assign(nodes, 0.0);
-    // The supports by their lower body (a counting sort), and how many rest under each body.
     supportStart_.assign(nodes + 1, 0);
     supportsUnder_.assign(nodes, 0);
     for (const Support& s : supports_) {
@@ -47,22 +44,36 @@ void ContactSolver::sagDepths() {
             if (supports_[i].upper >= 0)
                 supportOrder_[supportReady_[supports_[i].lower]++] = static_cast<int>(i);
     }
-    // Kahn's order: a body once all that it rests on are done.
     supportReady_.clear();
     for (std::size_t k = 0; k < nodes; ++k)
         if (supportsUnder_[k] == 0) supportReady_.push_back(static_cast<int>(k));
     for (std::size_t next = 0; next < supportReady_.size(); ++next) {
         const int lower = supportReady_[next];
         for (int e = supportStart_[lower]; e < supportStart_[lower + 1]; ++e) {
-            const Support& s = supports_[supportOrder_[e]];
-            depth_[s.upper] = std::max(depth_[s.upper], depth_[lower] + s.sink);
-            if (--supportsUnder_[s.upper] == 0) supportReady_.push_back(s.upper);
+            const int upper = supports_[supportOrder_[e]].upper;
+            if (--supportsUnder_[upper] == 0) supportReady_.push_back(upper);
         }
     }
-    if (supportReady_.size() == nodes) return;
+    return supportReady_.size() == nodes;
+}
+
+void ContactSolver::sagDepths(bool ordered) {
+    // Down the support chains: each body's depth is the deepest of its supports' depths plus
+    // the sink into it (0 on none). In the supports' topological order one pass does; a pass in
+    // any order that changes nothing leaves the same depths, bit for bit (each the largest sum
+    // over its supports of their final depth and its sink), so both ways agree on those.
+    const std::size_t nodes = bodies_.size() + 1;
+    depth_.assign(nodes, 0.0);
+    if (ordered) {
+        for (const int lower : supportReady_)
+            for (int e = supportStart_[lower]; e < supportStart_[lower + 1]; ++e) {
+                const Support& s = supports_[supportOrder_[e]];
+                depth_[s.upper] = std::max(depth_[s.upper], depth_[lower] + s.sink);
+            }
+        return;
+    }
     // A cycle (bodies resting on each other round a ring): passes in the contacts' order, as
     // many as the cap allows (the depths on the ring grow with every pass).
-    std::fill(depth_.begin(), depth_.end(), 0.0);
     bool changed = true;
     for (int pass = 0; changed && pass < kMaxSagPasses; ++pass) {
         changed = false;
@@ -77,9 +88,51 @@ void ContactSolver::sagDepths() {
     }
 }
 
+double ContactSolver::weightSinks(double h, double omega) {
+    // No impulses yet: each contact carries the weight pressed onto it, from the top of each
+    // stack down (the bodies in reverse of the supports' order): a body's own smooth push and
+    // all that rests on it, shared evenly among the supports under it, and among a contact's
+    // points. Returns the deepest sink over the most a contact may sink (stackSubsteps()).
+    const std::size_t nodes = bodies_.size() + 1;
+    const int world = static_cast<int>(bodies_.size());
+    load_.assign(nodes, 0.0);
+    supportsUnder_.assign(nodes, 0);
+    for (const Support& s : supports_)
+        if (s.upper >= 0) ++supportsUnder_[s.upper];
+    double worst = 0.0;
+    for (auto it = supportReady_.rbegin(); it != supportReady_.rend(); ++it) {
+        const int lower = *it;
+        if (lower < world && bodies_[lower].invMass > 0.0) {
+            const SolverBody& b = bodies_[lower];
+            load_[lower] += b.mass * (b.smoothDv - b.heldDv).norm() / h;
+        }
+        for (int e = supportStart_[lower]; e < supportStart_[lower + 1]; ++e) {
+            Support& s = supports_[supportOrder_[e]];
+            const ContactConstraint& c = constraints_[supportOrder_[e]];
+            // The upper body's load is whole: everything on it came before it.
+            const double carried = load_[s.upper] / supportsUnder_[s.upper];
+            load_[lower] += carried;
+            const double w = omega * c.stiffness, perPoint = carried / c.pointCount;
+            double sink = 0.0;
+            for (int k = 0; k < c.pointCount; ++k) {
+                const ContactPoint& p = c.points[k];
+                if (p.normalMass > 0.0) sink += perPoint / (p.normalMass * w * w);
+            }
+            s.sink = sink / c.pointCount;
+            worst = std::max(worst, s.sink / (kLoadedSinkShare * c.deepOverlap));
+        }
+    }
+    return worst;
+}
+
 int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& settings) {
     predictedSag_ = 0.0;
-    if (lastInnerH_ <= 0.0) return base;
+    // The first solve has no last step's impulses: the loads are the weights pressed down the
+    // stacks (weightSinks()), and the count they need is taken at once. A scene starts at rest
+    // or in free flight, not in an impact, and a stack started on too soft a support would sink
+    // into it and be pushed back out over the steps the count takes to rise (a 40-box tower
+    // 13 cm; a 1,000 kg box on a 1 kg one bounced 2.5 cm deep for half a second).
+    const bool fromWeights = !(lastInnerH_ > 0.0);
     // A soft contact of frequency ω carries a force F by sinking F/(m·ω²); a body sinks by what
     // its supports sink plus its own contact's share. Which body rests on which: the smooth
     // forces of the step (less the held contact forces) press the upper one into the lower one. The
@@ -100,13 +153,17 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
             s.upper = -1;
             const double w = omega * c.stiffness;
             double sink = 0.0;
-            for (int k = 0; k < c.pointCount; ++k) {
-                const ContactPoint& p = c.points[k];
-                if (p.normalMass > 0.0) sink += p.normalImpulse / (p.normalMass * w * w);
+            if (!fromWeights) {
+                for (int k = 0; k < c.pointCount; ++k) {
+                    const ContactPoint& p = c.points[k];
+                    if (p.normalMass > 0.0) sink += p.normalImpulse / (p.normalMass * w * w);
+                }
+                if (c.pointCount == 0 || !(sink > 0.0)) continue;
+                sink /= c.pointCount * lastInnerH_;
+                worstSink = std::max(worstSink, sink / (kLoadedSinkShare * c.deepOverlap));
+            } else if (c.pointCount == 0) {
+                continue;
             }
-            if (c.pointCount == 0 || !(sink > 0.0)) continue;
-            sink /= c.pointCount * lastInnerH_;
-            worstSink = std::max(worstSink, sink / (kLoadedSinkShare * c.deepOverlap));
             const int a = c.bodyA >= 0 ? c.bodyA : world;
             const int b = c.bodyB >= 0 ? c.bodyB : world;
             // The normal points from A to B: B rests on A when its smooth push is against n.
@@ -118,8 +175,11 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
         for (double seen = worst.load(); worstSink > seen;)
             if (worst.compare_exchange_weak(seen, worstSink)) break;
     });
-    const double worstSink = worst.load();
-    sagDepths();
+    const bool ordered = orderSupports();
+    // A ring of bodies resting on each other has no top to start the weights from.
+    if (fromWeights && !ordered) return base;
+    const double worstSink = fromWeights ? weightSinks(h, omega) : worst.load();
+    sagDepths(ordered);
     for (double d : depth_) predictedSag_ = std::max(predictedSag_, d);
     if (settings.substeps > 0) return base;
     // How far past its bound the worse of the two goes: the stack's sag, or a contact's own.
@@ -135,6 +195,7 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
         return std::min(kMaxInnerSubsteps, static_cast<int>(std::ceil(base * factor)));
     };
     const int wanted = needed(depthRatio);
+    if (fromWeights) return std::max(base, wanted);
     if (wanted > held) {
         stepsWantingFewer_ = 0;
         leastDepthRatio_ =
