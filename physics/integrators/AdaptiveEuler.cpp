@@ -8,8 +8,9 @@
 
 namespace phasebox::methods {
 
-// Position weight ¼: an accepted step keeps two explicit Euler half steps, which move a body by
-// h·v + h²/4·a under a constant acceleration.
+// Position weight ¼ for a frame taken in one accepted step: it keeps two explicit Euler half
+// steps, which move a body by h·v + h²/4·a under a constant acceleration. A frame taken in several
+// moves it further (positionWeight()): ½·(1 − Σ s_j²/H²) over its half steps s_j, towards ½.
 const IntegratorInfo kAdaptiveEulerInfo{
     "adaptive_euler",
     "Adaptive Euler (step doubling)",
@@ -46,6 +47,7 @@ public:
         const double end = t + H;
         double time = t;
         long long internal = 0;
+        double squares = 0.0;  // Σ s_j² over the accepted half steps
         const long long maxInternal = std::min<long long>(
             kMaxInternalSteps,
             static_cast<long long>(settings_.workShare * kMaxEvaluationWork /
@@ -75,11 +77,14 @@ public:
             u = uHalf_;
             workNc += 0.5 * h * (p0 + ph);
             time = (end - time == h) ? end : time + h;
+            squares += 0.5 * h * h;
             ++stats_.acceptedSteps;
         }
+        weight_ = 0.5 * (1.0 - squares / (H * H));
         return true;
     }
 
+    double positionWeight() const override { return weight_; }
     std::vector<double> carriedState() const override { return {stepper_.suggested()}; }
     void restoreCarriedState(const std::vector<double>& carried) override {
         stepper_.setSuggested(carried.empty() ? 0.0 : carried.front());
@@ -87,6 +92,7 @@ public:
 
 private:
     AdaptiveStepper stepper_;
+    double weight_ = 0.25;  // the last frame's positionWeight()
     Vec a0_, ah_, qFull_, uFull_, qHalf_, uHalf_;
 };
 }  // namespace

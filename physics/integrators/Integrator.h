@@ -68,6 +68,11 @@ public:
     virtual ~Integrator() = default;
 
     virtual const IntegratorInfo& info() const = 0;
+    // How far a constant acceleration a moved a body in the last step, in units of a·h²: the
+    // info's positionWeight, but for a method whose weight depends on the internal steps it took
+    // (adaptive Euler's explicit half steps s_j move it by ½·(1 − Σ s_j²/h²)). The contacts read
+    // it after the step (World::solveContacts).
+    virtual double positionWeight() const { return info().positionWeight; }
 
     // Sizes scratch memory for a state of this dimension and forgets any step-size history.
     virtual void reset(int dimension) = 0;

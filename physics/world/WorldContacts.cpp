@@ -212,7 +212,7 @@ void World::primeContactForces(StageTimer& timer) {
         collide(next, substeps);
         if (!contacts_->anyDeepOverlap()) {
             contacts_->solveStep(h, q_[current_], u_[current_], q_[next], u_[next],
-                                 settings_.contacts, integrator_->info().positionWeight, false);
+                                 settings_.contacts, integrator_->positionWeight(), false);
             contacts_->primeHeld();
         }
     }
@@ -288,7 +288,7 @@ void World::releaseHeldForces(double h, int next, bool collided) {
     Vec& u = u_[next];
     heldForce_ *= -1.0;  // what the solver's contacts do not account for: held − accounted
     contacts_->solver().addHeldForces(heldForce_);
-    const double weight = integrator_->info().positionWeight * h;
+    const double weight = integrator_->positionWeight() * h;
     for (int i = 0; i < static_cast<int>(heldForce_.size()); ++i) {
         if (heldForce_[i] == 0.0) continue;
         const double dv = -h * invMass_[i] * heldForce_[i];
@@ -368,7 +368,7 @@ void World::solveContacts(double h, int next, double before, bool held) {
     Vec& q = q_[next];
     Vec& u = u_[next];
     contacts_->solveStep(h, q_[current_], u_[current_], q, u, settings_.contacts,
-                         integrator_->info().positionWeight, held);
+                         integrator_->positionWeight(), held);
     const double after = mechanicalEnergy(q, u);
     withoutPushOut_ = q;
     contacts_->addPushOut(withoutPushOut_, -1.0);

@@ -48,16 +48,20 @@ private slots:
         QTest::addColumn<QString>("integrator");
         for (const char* scene : {"pyramid 20", "pyramid 40", "tower 30", "tower 40", "1/20/400 kg",
                                   "1/400 kg", "100x on small"})
-            for (const char* integrator :
-                 {"symplectic_euler", "velocity_verlet", "rk4", "implicit_euler"})
+            for (const IntegratorInfo& info : integratorRegistry()) {
+                const QString integrator = QString::fromLatin1(info.name.data(), info.name.size());
                 QTest::newRow(qPrintable(QString("%1, %2").arg(scene, integrator)))
-                    << QString(scene) << QString(integrator);
+                    << QString(scene) << integrator;
+            }
     }
     void stacksHoldAtTheDefaults() {
         // Issue 15: at dt 1/60, substeps 1 and no solver keys, whatever the method, no box of a
         // pyramid or tower up to 40 high or of a stack with mass ratios up to 1:400 moves more
         // than 5 cm from its start in 10 s. A soft contact sinks by its load over its
         // stiffness, summed down a column: the solver must see a tall stack coming and stiffen.
+        // (Under adaptive Euler the 20-row pyramid fell 3.8 m in 10 s: a frame it took in
+        // several steps moved a resting box further than the one step the contacts assumed,
+        // Integrator::positionWeight().)
         QFETCH(QString, scene);
         QFETCH(QString, integrator);
         SceneDesc desc;
