@@ -397,13 +397,13 @@ private:
     // Sub-steps for this step: `base`, or more when the stack the warm-start impulses carry
     // would sag further than kSagTarget at the base stiffness (after loadBodies).
     int stackSubsteps(double h, int base, const ContactSettings& settings);
-    // Kahn's order of the bodies by supports_ into supportReady_ (with supportStart_ and
-    // supportOrder_, the supports by lower body); false where the supports form a cycle.
-    bool orderSupports();
-    // depth_ from supports_: how far each body sinks down its support chains (ordered: in
-    // orderSupports()' order, else by passes).
-    void sagDepths(bool ordered);
-    // The first solve's sinks, from the weights pressed down the supports (in orderSupports()'
+    // depth_ from supports_: how far each body sinks down its support chains, in the supports'
+    // topological order (Kahn's, left in supportReady_ with supportStart_ and supportOrder_,
+    // the supports by lower body); false where they form a cycle (then by passes).
+    bool sagDepths();
+    // depth_ again in sagDepths()' order (after weightSinks() set the sinks).
+    void depthsInOrder();
+    // The first solve's sinks, from the weights pressed down the supports (in sagDepths()'
     // order, which it needs); returns the deepest over the most a contact may sink.
     double weightSinks(double h, double omega);
     // What a row is built from besides its constraint: the step's softness and warm start.

@@ -20,14 +20,17 @@ int ContactSolver::innerSubsteps(double h, const ContactSettings& settings) {
     return std::clamp(n, 1, kMaxInnerSubsteps);
 }
 
-bool ContactSolver::orderSupports() {
-    // The supports by their lower body (a counting sort), how many rest under each body, and
-    // Kahn's order of the bodies: one once all that it rests on come before it. The supports form
-    // chains up a stack, mostly, and the contacts' order runs along them in no particular
-    // direction (a row's neighbours lean on each other either way, the ground's contacts come
-    // last), so passes in that order took 10 to 233 on the 100-row pyramid; in this order one
-    // pass does.
+bool ContactSolver::sagDepths() {
+    // Down the support chains: each body's depth is the deepest of its supports' depths plus
+    // the sink into it (0 on none). The supports form chains up a stack, mostly, and the
+    // contacts' order runs along them in no particular direction (a row's neighbours lean on
+    // each other either way, the ground's contacts come last), so passes in that order took 10
+    // to 233 on the 100-row pyramid. In the supports' topological order one pass does; a pass in
+    // any order that changes nothing leaves the same depths, bit for bit (each the largest sum
+    // over its supports of their final depth and its sink), so both ways agree on those.
     const std::size_t nodes = bodies_.size() + 1;
+    depth_.assign(nodes, 0.0);
+    // The supports by their lower body (a counting sort), and how many rest under each body.
     supportStart_.assign(nodes + 1, 0);
     supportsUnder_.assign(nodes, 0);
     for (const Support& s : supports_) {
@@ -44,36 +47,22 @@ bool ContactSolver::orderSupports() {
             if (supports_[i].upper >= 0)
                 supportOrder_[supportReady_[supports_[i].lower]++] = static_cast<int>(i);
     }
+    // Kahn's order: a body once all that it rests on are done.
     supportReady_.clear();
     for (std::size_t k = 0; k < nodes; ++k)
         if (supportsUnder_[k] == 0) supportReady_.push_back(static_cast<int>(k));
     for (std::size_t next = 0; next < supportReady_.size(); ++next) {
         const int lower = supportReady_[next];
         for (int e = supportStart_[lower]; e < supportStart_[lower + 1]; ++e) {
-            const int upper = supports_[supportOrder_[e]].upper;
-            if (--supportsUnder_[upper] == 0) supportReady_.push_back(upper);
+            const Support& s = supports_[supportOrder_[e]];
+            depth_[s.upper] = std::max(depth_[s.upper], depth_[lower] + s.sink);
+            if (--supportsUnder_[s.upper] == 0) supportReady_.push_back(s.upper);
         }
     }
-    return supportReady_.size() == nodes;
-}
-
-void ContactSolver::sagDepths(bool ordered) {
-    // Down the support chains: each body's depth is the deepest of its supports' depths plus
-    // the sink into it (0 on none). In the supports' topological order one pass does; a pass in
-    // any order that changes nothing leaves the same depths, bit for bit (each the largest sum
-    // over its supports of their final depth and its sink), so both ways agree on those.
-    const std::size_t nodes = bodies_.size() + 1;
-    depth_.assign(nodes, 0.0);
-    if (ordered) {
-        for (const int lower : supportReady_)
-            for (int e = supportStart_[lower]; e < supportStart_[lower + 1]; ++e) {
-                const Support& s = supports_[supportOrder_[e]];
-                depth_[s.upper] = std::max(depth_[s.upper], depth_[lower] + s.sink);
-            }
-        return;
-    }
+    if (supportReady_.size() == nodes) return true;
     // A cycle (bodies resting on each other round a ring): passes in the contacts' order, as
     // many as the cap allows (the depths on the ring grow with every pass).
+    std::fill(depth_.begin(), depth_.end(), 0.0);
     bool changed = true;
     for (int pass = 0; changed && pass < kMaxSagPasses; ++pass) {
         changed = false;
@@ -86,6 +75,16 @@ void ContactSolver::sagDepths(bool ordered) {
             }
         }
     }
+    return false;
+}
+
+void ContactSolver::depthsInOrder() {
+    std::fill(depth_.begin(), depth_.end(), 0.0);
+    for (const int lower : supportReady_)
+        for (int e = supportStart_[lower]; e < supportStart_[lower + 1]; ++e) {
+            const Support& s = supports_[supportOrder_[e]];
+            depth_[s.upper] = std::max(depth_[s.upper], depth_[lower] + s.sink);
+        }
 }
 
 double ContactSolver::weightSinks(double h, double omega) {
@@ -175,11 +174,14 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
         for (double seen = worst.load(); worstSink > seen;)
             if (worst.compare_exchange_weak(seen, worstSink)) break;
     });
-    const bool ordered = orderSupports();
-    // A ring of bodies resting on each other has no top to start the weights from.
-    if (fromWeights && !ordered) return base;
-    const double worstSink = fromWeights ? weightSinks(h, omega) : worst.load();
-    sagDepths(ordered);
+    const bool ordered = sagDepths();
+    double worstSink = worst.load();
+    if (fromWeights) {
+        // A ring of bodies resting on each other has no top to start the weights from.
+        if (!ordered) return base;
+        worstSink = weightSinks(h, omega);
+        depthsInOrder();
+    }
     for (double d : depth_) predictedSag_ = std::max(predictedSag_, d);
     if (settings.substeps > 0) return base;
     // How far past its bound the worse of the two goes: the stack's sag, or a contact's own.
