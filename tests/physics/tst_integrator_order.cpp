@@ -3,9 +3,11 @@
 // adaptive ones how the error follows the tolerance and that they land on the caller's step.
 
 #include "PhysicsTestSupport.h"
+#include "physics/integrators/Integrator.h"
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -65,6 +67,8 @@ private slots:
     void adaptiveLandsOnStepBoundaries();
     void adaptiveResultIndependentOfFrameSplitting_data();
     void adaptiveResultIndependentOfFrameSplitting();
+    void positionWeightIsTheStepsDisplacement_data();
+    void positionWeightIsTheStepsDisplacement();
 };
 
 // The registry's advertised order is what the app and `phasebox-cli integrators` show.
@@ -304,6 +308,59 @@ void TestIntegratorOrder::adaptiveResultIndependentOfFrameSplitting() {
         const double diff = (ends[i] - exact).lpNorm<Eigen::Infinity>();
         QVERIFY2(diff <= bound,
                  qPrintable(QString("split %1 is %2 from the exact state").arg(i).arg(diff)));
+    }
+}
+
+void TestIntegratorOrder::positionWeightIsTheStepsDisplacement_data() {
+    QTest::addColumn<QString>("integrator");
+    QTest::addColumn<double>("tolerance");
+    for (const IntegratorInfo& info : integratorRegistry())
+        for (double tolerance : {1.0, 1e-9}) {
+            const QString name = QString::fromLatin1(info.name.data(), info.name.size());
+            QTest::newRow(qPrintable(QString("%1, tolerance %2").arg(name).arg(tolerance)))
+                << name << tolerance;
+        }
+}
+
+// Under a constant acceleration a, one step of h moves a body by h·v + w·a·h², and w is what the
+// method reports (Integrator::positionWeight()): the contacts move a resting body by it. Gravity
+// alone on a particle, frame after frame. Adaptive Euler's w depends on how it cut the frame: one
+// accepted step at a loose tolerance (¼), thousands at a tight one (close to ½).
+void TestIntegratorOrder::positionWeightIsTheStepsDisplacement() {
+    QFETCH(QString, integrator);
+    QFETCH(double, tolerance);
+    const double g = 9.81, h = 1.0 / 60.0;
+    SceneDesc scene;
+    scene.simulation = simulation(integrator.toStdString(), h);
+    scene.simulation.tolerance = tolerance;
+    scene.effects.gravity = GravityDesc{{0.0, -g}};
+    ParticleDesc p;
+    p.id = "ball";
+    p.position = {0.0, 0.0};
+    p.velocity = {1.0, 2.0};
+    p.radius = 0.0;
+    scene.particles.push_back(p);
+    auto world = build(scene);
+    double weights[2] = {0.0, 0.0};
+    for (int frame = 0; frame < 3; ++frame) {
+        const double y0 = world->positions()[1], v0 = world->velocities()[1];
+        const long long before = world->integrator().stats().acceptedSteps;
+        QVERIFY(world->step());
+        const double w = world->integrator().positionWeight();
+        const double moved = world->positions()[1] - (y0 + h * v0);
+        qInfo("frame %d: %lld internal steps, w %.15f, moved/(-g h^2) %.15f", frame,
+              world->integrator().stats().acceptedSteps - before, w, moved / (-g * h * h));
+        QVERIFY2(std::abs(moved - w * (-g) * h * h) <= 1e-12 * g * h * h,
+                 qPrintable(QString("moved %1, w·a·h² %2").arg(moved).arg(w * -g * h * h)));
+        weights[std::min(frame, 1)] = w;
+    }
+    const IntegratorInfo& info = world->integrator().info();
+    if (!info.adaptive || integrator == "rk45") {
+        QCOMPARE(weights[1], info.positionWeight);
+    } else if (tolerance >= 1.0) {
+        QCOMPARE(weights[1], 0.25);  // one accepted step of two half steps
+    } else {
+        QVERIFY2(weights[1] > 0.49 && weights[1] < 0.5, qPrintable(QString::number(weights[1])));
     }
 }
 
