@@ -25,15 +25,15 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // no last va
 // size would make a small body's contacts behave unlike a large one's.)
 constexpr double kStiffHalfSize = 5e-3;
 constexpr double kMostSizeStiffness = 1000.0;
-// A contact between unequal masses is stiffened by √(heavy/light) up to this factor, that of a
-// contact with the fixed world (Box2D v3's static softness). Stiffer, the light body between a
-// heavy one and the ground is driven past its sub-step's rate (a 100 kg box on a 1 kg one: 600 Hz
-// at 240 sub-steps a second); the solve, not converged across the mass ratio, leaves the heavy
-// body part of each push-out, and it bounced for ever: masses 50 to 200 times the light box's
-// under every method uncapped, and at 4× still under symplectic and implicit Euler at dt 1/30 to
-// 1/10. What is left of the light body's sink adds sub-steps (stackSubsteps(): a contact's own
-// sink is bounded too).
-constexpr double kMostMassStiffness = 2.0;
+// A contact with anything fixed is twice as stiff (Box2D v3's static softness): it carries whole
+// stacks. A contact between unequal masses is stiffened by √(heavy/light), but no further than
+// that. Stiffer, the light body between a heavy one and the ground is driven past its sub-step's
+// rate (a 100 kg box on a 1 kg one: 600 Hz at 240 sub-steps a second); the solve, not converged
+// across the mass ratio, leaves the heavy body part of each push-out, and it bounced for ever:
+// masses 50 to 200 times the light box's under every method uncapped, and at 4× still under
+// symplectic and implicit Euler at dt 1/30 to 1/10. What is left of the light body's sink adds
+// sub-steps (stackSubsteps(): a contact's own sink is bounded too).
+constexpr double kFixedContactStiffness = 2.0;
 
 double sizeStiffness(double deepOverlap) {
     const double halfSize = deepOverlap / ContactConstraint::kDeepOverlapFraction;
@@ -81,20 +81,20 @@ void ContactSolver::prepare() {
             const double mA = a ? a->invMass : 0.0, iA = a ? a->invInertia : 0.0;
             const double mB = b ? b->invMass : 0.0, iB = b ? b->invInertia : 0.0;
             // A contact's stiffness follows the heavier of its bodies: the spring that holds a
-            // heavy box on a light one must be as stiff as for the heavy box, or the light one is
-            // squashed in (its effective mass sets the soft constraint's spring). Contacts with the
-            // static world are twice as stiff (Box2D v3): they carry whole stacks.
+            // heavy box on a light one must be stiffer than for the light box, or the light one is
+            // squashed in (its effective mass sets the soft constraint's spring); up to a fixed
+            // contact's stiffness (kFixedContactStiffness).
             if (a && b) {
                 const double heavy = std::max(a->mass, b->mass);
                 const double light = std::min(a->mass, b->mass);
                 if (!(heavy == lastHeavy && light == lastLight)) {
                     lastHeavy = heavy;
                     lastLight = light;
-                    lastRoot = std::min(std::sqrt(heavy / light), kMostMassStiffness);
+                    lastRoot = std::min(std::sqrt(heavy / light), kFixedContactStiffness);
                 }
                 c.stiffness = lastRoot;
             } else {
-                c.stiffness = 2.0;
+                c.stiffness = kFixedContactStiffness;
             }
             if (!(c.deepOverlap == lastOverlap)) {
                 lastOverlap = c.deepOverlap;

@@ -11,6 +11,21 @@
 
 namespace phasebox {
 
+namespace {
+// Σ over a contact's points of the force each carries over its spring's stiffness m·ω²: how far
+// the contact sinks, summed (force(point) gives each point's force, in any unit the caller
+// scales).
+template <class Force>
+double summedSink(const ContactConstraint& c, double omega, Force force) {
+    double sink = 0.0;
+    for (int k = 0; k < c.pointCount; ++k) {
+        const ContactPoint& p = c.points[k];
+        if (p.normalMass > 0.0) sink += force(p) / (p.normalMass * omega * omega);
+    }
+    return sink;
+}
+}  // namespace
+
 int ContactSolver::innerSubsteps(double h, const ContactSettings& settings) {
     if (settings.substeps > 0) return settings.substeps;
     // At least kInnerRate sub-steps per second whatever the frame: a soft contact's stiffness
@@ -111,13 +126,10 @@ double ContactSolver::weightSinks(double h, double omega) {
             // The upper body's load is whole: everything on it came before it.
             const double carried = load_[s.upper] / supportsUnder_[s.upper];
             load_[lower] += carried;
-            const double w = omega * c.stiffness, perPoint = carried / c.pointCount;
-            double sink = 0.0;
-            for (int k = 0; k < c.pointCount; ++k) {
-                const ContactPoint& p = c.points[k];
-                if (p.normalMass > 0.0) sink += perPoint / (p.normalMass * w * w);
-            }
-            s.sink = sink / c.pointCount;
+            const double perPoint = carried / c.pointCount;
+            s.sink =
+                summedSink(c, omega * c.stiffness, [&](const ContactPoint&) { return perPoint; }) /
+                c.pointCount;
             worst = std::max(worst, s.sink / (kLoadedSinkShare * c.deepOverlap));
         }
     }
@@ -154,10 +166,7 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
             const double w = omega * c.stiffness;
             double sink = 0.0;
             if (!fromWeights) {
-                for (int k = 0; k < c.pointCount; ++k) {
-                    const ContactPoint& p = c.points[k];
-                    if (p.normalMass > 0.0) sink += p.normalImpulse / (p.normalMass * w * w);
-                }
+                sink = summedSink(c, w, [](const ContactPoint& p) { return p.normalImpulse; });
                 if (c.pointCount == 0 || !(sink > 0.0)) continue;
                 sink /= c.pointCount * lastInnerH_;
                 worstSink = std::max(worstSink, sink / (kLoadedSinkShare * c.deepOverlap));

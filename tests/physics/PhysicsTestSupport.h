@@ -110,6 +110,15 @@ inline Eigen::Vector4d keplerState(double e, double nu0, double t) {
     return {std::cos(E) - e, b * std::sin(E), -std::sin(E) * rate, b * std::cos(E) * rate};
 }
 
+// The scene under `integrator` at the format's defaults for the contact solver: one step per
+// frame, no solver keys (the hard contact cases must hold there).
+inline SceneDesc atDefaults(SceneDesc scene, const std::string& integrator) {
+    scene.simulation.substeps = 1;
+    scene.simulation.solver.clear();
+    scene.simulation.integrator = integrator;
+    return scene;
+}
+
 inline std::unique_ptr<World> build(const SceneDesc& scene) {
     return buildWorld(scene).world;
 }

@@ -2,6 +2,7 @@
 // removes is `correction`, never work_nc; e = 1 is exactly elastic at the format's defaults;
 // and no step size makes a ball rise above the height it fell from.
 
+#include "../physics/PhysicsTestSupport.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
@@ -12,16 +13,9 @@
 #include <string>
 
 using namespace phasebox;
+using namespace phasebox::testing;
 
 namespace {
-
-// The format's defaults for the contact solver: one step per frame, no solver keys.
-SceneDesc atDefaults(SceneDesc scene, const char* integrator) {
-    scene.simulation.substeps = 1;
-    scene.simulation.solver.clear();
-    scene.simulation.integrator = integrator;
-    return scene;
-}
 
 void addIntegrators() {
     QTest::addColumn<QString>("integrator");

@@ -1,5 +1,6 @@
 // The hard contact cases of issue #3, each against what physics says must happen.
 
+#include "../physics/PhysicsTestSupport.h"
 #include "physics/contacts/ContactStage.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
@@ -11,12 +12,9 @@
 #include <numbers>
 
 using namespace phasebox;
+using namespace phasebox::testing;
 
 namespace {
-
-std::unique_ptr<World> build(const SceneDesc& scene) {
-    return buildWorld(scene).world;
-}
 
 // Steps for `seconds`; fails the test (returns false) if the world reports divergence.
 bool run(World& world, double seconds) {
@@ -79,9 +77,7 @@ private slots:
             desc = scenes::stack({1, 400});
         else
             desc = scenes::bigOnSmall(100);
-        desc.simulation.integrator = integrator.toStdString();
-        desc.simulation.substeps = 1;
-        desc.simulation.solver.clear();
+        desc = atDefaults(desc, integrator.toStdString());
         QCOMPARE(desc.simulation.dt, 1.0 / 60.0);
         auto world = build(desc);
         QVERIFY(run(*world, 10.0));

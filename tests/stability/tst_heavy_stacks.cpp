@@ -2,6 +2,7 @@
 // heavy box on a light one comes to rest and its books stay flat, and a tall tower takes the
 // inner sub-steps its load needs from its first step instead of sinking first.
 
+#include "../physics/PhysicsTestSupport.h"
 #include "physics/contacts/ContactStage.h"
 #include "physics/integrators/Integrator.h"
 #include "physics/scene/BuildWorld.h"
@@ -13,16 +14,9 @@
 #include <cmath>
 
 using namespace phasebox;
+using namespace phasebox::testing;
 
 namespace {
-
-// The format's defaults for the contact solver: one step per frame, no solver keys.
-SceneDesc atDefaults(SceneDesc scene, const QString& integrator) {
-    scene.simulation.substeps = 1;
-    scene.simulation.solver.clear();
-    scene.simulation.integrator = integrator.toStdString();
-    return scene;
-}
 
 // The ten methods by their names.
 QStringList integrators() {
@@ -60,7 +54,7 @@ private slots:
         QFETCH(QString, integrator);
         QFETCH(double, ratio);
         QFETCH(int, frameRate);
-        SceneDesc scene = atDefaults(scenes::bigOnSmall(ratio), integrator);
+        SceneDesc scene = atDefaults(scenes::bigOnSmall(ratio), integrator.toStdString());
         scene.simulation.dt = 1.0 / frameRate;
         auto world = buildWorld(scene).world;
         const int tenSeconds = 10 * frameRate;
@@ -107,7 +101,7 @@ private slots:
         // the first step is the one the solved loads keep.
         QFETCH(QString, integrator);
         QFETCH(int, count);
-        auto world = buildWorld(atDefaults(scenes::tower(count), integrator)).world;
+        auto world = buildWorld(atDefaults(scenes::tower(count), integrator.toStdString())).world;
         const int top = count - 1;
         const double y0 = world->bodyPosition(top).y();
         QVERIFY(world->step());
