@@ -179,7 +179,7 @@ StabilityAdvice adviseStability(World& world, int powerIterations) {
     const int n = world.dimension();
     ForceJacobians jac;
     Vec force(n);
-    world.forcesAndJacobians(world.time(), world.positions(), world.velocities(), force, jac);
+    world.diagnosticForcesAndJacobians(force, jac);
     if (n > 0 && jac.hasStiffness()) {
         SparseMatrix k(n, n);
         const std::vector<Triplet> triplets = jac.stiffnessTriplets();

@@ -221,6 +221,11 @@ public:
     // a separate integrator instance keeps the run's own (its adaptive step, its solver's warm
     // start) as it was, so estimating never changes the simulation. Costs about three steps.
     double estimateLocalError();
+    // The forces and their Jacobians at the current state, for a diagnostic (the stability
+    // advisor): not part of the run either. Its evaluation is not counted or timed, and the
+    // joints keep what the run's evaluations left (their forces, cached rotations and the limits
+    // the step holds), so asking between steps never changes the simulation.
+    void diagnosticForcesAndJacobians(Vec& force, ForceJacobians& jacobians);
     const EnergyLedger& energy() const { return ledger_; }
     // Makes the current state the energy baseline (drift 0, work_nc 0).
     void resetEnergyBaseline();
@@ -388,7 +393,11 @@ private:
 
     SimulationClock clock_;
     long long forceEvaluations_ = 0;
-    JointSolver::EvaluationRecord keptJointEvaluation_;  // across estimateLocalError()
+    // Runs fn outside the run (estimateLocalError(), diagnosticForcesAndJacobians()): what its
+    // evaluations change of the run's bookkeeping is put back after it.
+    template <class Fn>
+    auto outsideTheRun(Fn&& fn);
+    JointSolver::EvaluationRecord keptJointEvaluation_;  // across outsideTheRun()
     EnergyLedger ledger_;
     DivergenceGuard guard_;
     std::optional<Divergence> divergence_;

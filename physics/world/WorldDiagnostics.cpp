@@ -19,26 +19,44 @@ using Clock = ProfileClock;
 
 // ---- diagnostics --------------------------------------------------------------------------
 
-double World::estimateLocalError() {
-    ensureLayout();
-    // The estimate is not part of the run: its force evaluations and time are not booked, and
-    // the joints keep what the run's evaluations left: their forces (the trial steps have no
-    // contacts: a car's axles pulled nothing there, and the free-body view and force(JOINT)
-    // showed that) and their cached rotations (tst_determinism: a chain stepped with the
-    // estimate after every step, as the app does, ended elsewhere than one stepped without).
+template <class Fn>
+auto World::outsideTheRun(Fn&& fn) {
+    // A diagnostic is not part of the run: its force evaluations and time are not booked, and
+    // the joints keep what the run's evaluations left: their forces (the error estimate's trial
+    // steps have no contacts: a car's axles pulled nothing there, and the free-body view and
+    // force(JOINT) showed that), their cached rotations (tst_determinism: a chain stepped with
+    // the estimate after every step, as the app does, ended elsewhere than one stepped without)
+    // and the limits the step holds. The stability advisor's one evaluation between steps was
+    // left out of this until tst_determinism's chain and bridge with the advisor after every
+    // step, and the ragdoll in tst_window_run, ended elsewhere than runs without it.
     const long long evaluations = forceEvaluations_;
     const std::vector<double> seconds = effectSeconds_;
     if (joints_) joints_->keepEvaluation(keptJointEvaluation_);
-    // Of the sub-step the run takes: with the joints' own sub-steps of the last frame (a step
-    // of the user's dt alone can be beyond the method's stability on a chain that needs them).
-    const int jointSubsteps = joints_ ? std::max(jointSubsteps_, pulledSubsteps_) : 1;
-    const double error = errorEstimator_.estimate(
-        *this, *integrator_, clock_.time, settings_.dt / (settings_.substeps * jointSubsteps),
-        q_[current_], u_[current_]);
+    auto result = fn();
     forceEvaluations_ = evaluations;
     effectSeconds_ = seconds;
     if (joints_) joints_->restoreEvaluation(keptJointEvaluation_);
-    return error;
+    return result;
+}
+
+double World::estimateLocalError() {
+    ensureLayout();
+    return outsideTheRun([&] {
+        // Of the sub-step the run takes: with the joints' own sub-steps of the last frame (a
+        // step of the user's dt alone can be beyond the method's stability on a chain that
+        // needs them).
+        const int jointSubsteps = joints_ ? std::max(jointSubsteps_, pulledSubsteps_) : 1;
+        return errorEstimator_.estimate(*this, *integrator_, clock_.time,
+                                        settings_.dt / (settings_.substeps * jointSubsteps),
+                                        q_[current_], u_[current_]);
+    });
+}
+
+void World::diagnosticForcesAndJacobians(Vec& force, ForceJacobians& jacobians) {
+    ensureLayout();
+    outsideTheRun([&] {
+        return forcesAndJacobians(clock_.time, q_[current_], u_[current_], force, jacobians);
+    });
 }
 
 void World::resetEnergyBaseline() {

@@ -4,7 +4,8 @@
 //   - a fresh world built later in the process (after other worlds have run and freed memory,
 //     so that nothing may depend on addresses, allocation order or leftover scratch state);
 //   - stepping in chunks, with every read-only query of the app in between (energies, the
-//     local-error estimate, costs, profile reset, state reads), against stepping at once;
+//     local-error estimate, the stability advisor, costs, profile reset, state reads), against
+//     stepping at once;
 //   - a hash pinned in this file, so that a change of the bits between builds or commits is
 //     seen too (tst_contacts' runsAreBitIdentical only compares two runs of one process);
 //   - at 1, 2 and 4 workers (World::setWorkers, CONTRACT §4), and the 100-row pyramid, whose
@@ -18,6 +19,7 @@
 
 #include "physics/contacts/ContactSolver.h"
 #include "physics/core/WorkerPool.h"
+#include "physics/diagnostics/StabilityAdvisor.h"
 #include "physics/scene/BuildWorld.h"
 #include "physics/scene/SceneLibrary.h"
 #include "physics/world/World.h"
@@ -27,6 +29,7 @@
 #include <QTest>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <memory>
@@ -69,6 +72,46 @@ QString hex(std::uint64_t v) {
     return QStringLiteral("0x%1").arg(v, 16, 16, QLatin1Char('0'));
 }
 
+// Ten planks hinged end to end in a shallow V between two hinges to the world (a straight one
+// would have to be pulled infinitely taut), and a crate dropped on them: joints and contacts at
+// once, as in the chain-bridge example, where the joints' forces of one step's evaluations feed
+// the next (the sub-steps a pulled joint needs, the contacts' joined relax).
+SceneDesc bridge() {
+    SceneDesc s;
+    s.effects.gravity = GravityDesc{};
+    constexpr double kSag = 0.15;  // each half's slope, rad
+    Point2 at{0.0, 5.0};           // the next hinge
+    const auto hinge = [&](const std::string& a, const std::string& b) {
+        JointDesc j;
+        j.type = JointType::Hinge;
+        j.a = a;
+        if (!b.empty()) j.b = b;  // absent: the world
+        j.anchor = at;
+        s.joints.push_back(j);
+    };
+    for (int i = 0; i < 10; ++i) {
+        const double angle = i < 5 ? -kSag : kSag;
+        const Point2 next{at[0] + std::cos(angle), at[1] + std::sin(angle)};
+        BoxDesc plank;
+        plank.id = "plank" + std::to_string(i);
+        plank.position = {0.5 * (at[0] + next[0]), 0.5 * (at[1] + next[1])};
+        plank.angle = angle;
+        plank.size = {1.0, 0.2};
+        plank.density = 10.0;
+        s.boxes.push_back(plank);
+        hinge(plank.id, i == 0 ? std::string() : "plank" + std::to_string(i - 1));
+        at = next;
+    }
+    hinge("plank9", {});
+    BoxDesc crate;
+    crate.id = "crate";
+    crate.position = {4.3, 5.0};
+    crate.size = {0.8, 0.8};
+    crate.density = 10.0;
+    s.boxes.push_back(crate);
+    return s;
+}
+
 SceneDesc sceneFor(const QString& name, const QString& integrator) {
     SceneDesc s;
     if (name == "pyramid")
@@ -77,6 +120,8 @@ SceneDesc sceneFor(const QString& name, const QString& integrator) {
         s = scenes::elasticGas(60);
     else if (name == "chain100")
         s = scenes::hingedChain(100);
+    else if (name == "bridge")
+        s = bridge();
     else
         s = scenes::cloth(6, 200.0);
     s.simulation.integrator = integrator.toStdString();
@@ -131,6 +176,14 @@ private slots:
         QTest::newRow("chain100 velocity_verlet")
             << "chain100"
             << "velocity_verlet" << quint64(0x1e49b59e72fd8175ull);
+        // Joints and contacts: the Parameters panel's stability advisor evaluates the forces
+        // between steps.
+        QTest::newRow("bridge velocity_verlet")
+            << "bridge"
+            << "velocity_verlet" << quint64(0x20684ac319d74da4ull);
+        QTest::newRow("bridge symplectic_euler")
+            << "bridge"
+            << "symplectic_euler" << quint64(0x13988f5a06341b03ull);
     }
 
     void bitIdentical() {
@@ -165,6 +218,7 @@ private slots:
             for (int k = 0; k < chunk; ++k) {
                 QVERIFY(chunked->step());
                 (void)chunked->estimateLocalError();  // the status bar's, once a frame
+                (void)adviseStability(*chunked, 20);  // the Parameters panel's, on a refresh
             }
             done += chunk;
             (void)chunked->energy();
