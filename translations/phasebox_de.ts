@@ -142,6 +142,14 @@
         <translation>%1, das bei jedem Zeitschritt stabil bleibt (es dämpft schnelle Bewegungen)</translation>
     </message>
     <message>
+        <source>start the chain from joint &apos;%1&apos; to joint &apos;%2&apos; with some sag: it is pulled straight between two fixed points, where it cannot sag without stretching, and the forces that keep it straight grow without bound as it moves</source>
+        <translation>den Strang vom Gelenk „%1“ bis zum Gelenk „%2“ mit etwas Durchhang beginnen: Er ist zwischen zwei festen Punkten straff gezogen, wo er nicht durchhängen kann, ohne sich zu dehnen, und die Kräfte, die ihn gerade halten, wachsen ohne Grenze, sobald er sich bewegt</translation>
+    </message>
+    <message>
+        <source>or free one end of that chain</source>
+        <translation>oder ein Ende dieses Strangs lösen</translation>
+    </message>
+    <message>
         <source>softer springs or cloth (a lower stiffness)</source>
         <translation>weichere Federn oder Tücher (eine kleinere Steifigkeit)</translation>
     </message>

@@ -142,6 +142,14 @@
         <translation>%1, que es estable con cualquier paso de tiempo (amortigua el movimiento rápido)</translation>
     </message>
     <message>
+        <source>start the chain from joint &apos;%1&apos; to joint &apos;%2&apos; with some sag: it is pulled straight between two fixed points, where it cannot sag without stretching, and the forces that keep it straight grow without bound as it moves</source>
+        <translation>empezar la cadena de la articulación «%1» a la articulación «%2» con algo de comba: está tensada en línea recta entre dos puntos fijos, donde no puede combarse sin estirarse, y las fuerzas que la mantienen recta crecen sin límite en cuanto se mueve</translation>
+    </message>
+    <message>
+        <source>or free one end of that chain</source>
+        <translation>o soltar un extremo de esa cadena</translation>
+    </message>
+    <message>
         <source>softer springs or cloth (a lower stiffness)</source>
         <translation>muelles o telas más blandos (una rigidez menor)</translation>
     </message>

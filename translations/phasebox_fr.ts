@@ -142,6 +142,14 @@
         <translation>%1, qui reste stable à tout pas de temps (il amortit les mouvements rapides)</translation>
     </message>
     <message>
+        <source>start the chain from joint &apos;%1&apos; to joint &apos;%2&apos; with some sag: it is pulled straight between two fixed points, where it cannot sag without stretching, and the forces that keep it straight grow without bound as it moves</source>
+        <translation>commencer la chaîne de l’articulation « %1 » à l’articulation « %2 » avec un peu de flèche : elle est tendue en ligne droite entre deux points fixes, où elle ne peut fléchir sans s’allonger, et les forces qui la maintiennent droite croissent sans limite dès qu’elle bouge</translation>
+    </message>
+    <message>
+        <source>or free one end of that chain</source>
+        <translation>ou libérer une extrémité de cette chaîne</translation>
+    </message>
+    <message>
         <source>softer springs or cloth (a lower stiffness)</source>
         <translation>des ressorts ou des tissus plus souples (une raideur plus faible)</translation>
     </message>

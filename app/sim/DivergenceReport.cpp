@@ -99,6 +99,15 @@ DivergenceReport describeDivergence(World& world) {
     double maxDt = std::numeric_limits<double>::infinity();
     for (const StepLimit& limit : advice.limits)
         if (limit.integrator == settings.integrator) maxDt = limit.maxDt;
+    // A chain pulled straight between two fixed points: first what removes the cause.
+    if (!d.straightFrom.empty())
+        tries << DivergenceText::tr(
+                     "start the chain from joint '%1' to joint '%2' with some sag: it is pulled "
+                     "straight between two fixed points, where it cannot sag without stretching, "
+                     "and the forces that keep it straight grow without bound as it moves")
+                     .arg(QString::fromStdString(d.straightFrom),
+                          QString::fromStdString(d.straightTo))
+              << DivergenceText::tr("or free one end of that chain");
     if (!advice.currentStable && maxDt > 0.0 && std::isfinite(maxDt)) {
         // A margin below the limit: a step right at it is barely stable.
         const double target = 0.8 * maxDt;

@@ -18,8 +18,16 @@ std::string Divergence::message() const {
     std::ostringstream out;
     out << "the simulation diverged at t = " << time << " s";
     if (!objectId.empty()) out << " in object \"" << objectId << "\"";
-    out << " (" << what << "); the state was restored to t = " << restoredTime
-        << " s. Try a smaller dt, more sub-steps, or an implicit integrator (implicit_euler).";
+    out << " (" << what << "); the state was restored to t = " << restoredTime << " s.";
+    if (!straightFrom.empty()) {
+        out << " The joints from \"" << straightFrom << "\" to \"" << straightTo
+            << "\" hold a chain pulled straight between two fixed points: it cannot sag without "
+               "stretching, and the forces that keep it straight grow without bound as it moves. "
+               "Start the chain with some sag or free one of its ends; else try";
+    } else {
+        out << " Try";
+    }
+    out << " a smaller dt, more sub-steps, or an implicit integrator (implicit_euler).";
     return out.str();
 }
 

@@ -15,6 +15,10 @@ struct Divergence {
     std::string objectId;       // the first object where it appeared
     std::string what;           // "non-finite velocity", "energy growing without bound", …
     double restoredTime = 0.0;  // the state was restored to this time
+    // Where hinges or rods hold a chain pulled straight between two fixed points (a sag or a
+    // free end is what helps there): the ids of its first and last joints, else empty
+    // (World::nameStraightChain).
+    std::string straightFrom, straightTo;
     std::string message() const;
 };
 

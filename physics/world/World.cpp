@@ -636,6 +636,7 @@ bool World::guard(const StateSummary& summary) {
     else
         restore(guard_.frameStart(), true);
     d.restoredTime = clock_.time;
+    nameStraightChain(d);
     divergence_ = d;
     return false;
 }
@@ -658,6 +659,7 @@ bool World::failSubstep(double t, bool integratorFailed, int next) {
     else
         restore(guard_.frameStart(), true);
     d.restoredTime = clock_.time;
+    nameStraightChain(d);
     divergence_ = d;
     return false;
 }

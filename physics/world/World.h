@@ -332,6 +332,10 @@ private:
     void restore(const DivergenceGuard::Checkpoint& checkpoint, bool fromOtherBuffer);
     std::string firstNonFinite(const Vec& q, const Vec& u) const;
     std::string mostEnergeticObject() const;
+    // A divergence's cause where it is a chain of hinges or rods pulled straight between two
+    // fixed points at the current state (Divergence::straightFrom): such a chain cannot sag
+    // without stretching, and the joints' system is singular there.
+    void nameStraightChain(Divergence& d) const;
     void checkInvariants(StepStage after) const;
 
     Bodies bodies_;

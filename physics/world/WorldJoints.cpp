@@ -175,4 +175,77 @@ Vec2 World::jointForceOn(int j, bool onB) const {
     return onB ? joints_->forceOnB(j) : joints_->forceOnA(j);
 }
 
+void World::nameStraightChain(Divergence& d) const {
+    // A chain: hinges and rods end to end, each body between two of them holding exactly those
+    // two, from a fixed point (the world, a static or pinned body) to another. Pulled straight,
+    // the path through its joints' points is as long as the line between its ends: it has no
+    // slack to sag with, and gravity or any load across it asks an unbounded force of it as it
+    // moves (held still, some methods at a small enough step keep it straight).
+    if (!joints_) return;
+    const std::vector<Joint>& joints = bodies_.joints;
+    const auto linking = [&](const Joint& j) {
+        return j.type == Joint::Type::Hinge || j.type == Joint::Type::Rod;
+    };
+    const auto fixed = [&](const JointBody& e) {
+        switch (e.kind) {
+            case JointBody::Kind::World:
+                return true;
+            case JointBody::Kind::Rigid:
+                return bodies_.rigidBodies[static_cast<std::size_t>(e.index)].dof < 0;
+            case JointBody::Kind::Particle:
+                break;
+        }
+        return bodies_.particles[static_cast<std::size_t>(e.index)].dof < 0;
+    };
+    const auto same = [](const JointBody& a, const JointBody& b) {
+        return a.kind == b.kind && a.index == b.index;
+    };
+    // Straight when the path's length exceeds the distance between its ends by less than this
+    // share: a chain hung with a sag of a hundredth of its span is longer by about 3e-4.
+    constexpr double kTaut = 1e-5;
+    const Vec& q = q_[current_];
+    const int count = static_cast<int>(joints.size());
+    for (int first = 0; first < count; ++first) {
+        const Joint& start = joints[static_cast<std::size_t>(first)];
+        if (!linking(start) || fixed(start.a) == fixed(start.b)) continue;
+        // Walk from the fixed end along bodies that hold exactly two linking joints.
+        bool fromA = fixed(start.a);
+        JointBody body = fromA ? start.b : start.a;
+        std::vector<Vec2> points{fromA ? joints_->pointA(first, q) : joints_->pointB(first, q),
+                                 fromA ? joints_->pointB(first, q) : joints_->pointA(first, q)};
+        int previous = first, last = -1, bodies = 1;
+        for (int walked = 0; walked < count && last < 0; ++walked) {
+            int next = -1, held = 0;
+            for (int k = 0; k < count; ++k) {
+                const Joint& j = joints[static_cast<std::size_t>(k)];
+                if (!linking(j) || !(same(j.a, body) || same(j.b, body))) continue;
+                ++held;
+                if (k != previous) next = k;
+            }
+            if (held != 2 || next < 0) break;
+            const Joint& j = joints[static_cast<std::size_t>(next)];
+            fromA = same(j.a, body);
+            points.push_back(fromA ? joints_->pointA(next, q) : joints_->pointB(next, q));
+            points.push_back(fromA ? joints_->pointB(next, q) : joints_->pointA(next, q));
+            body = fromA ? j.b : j.a;
+            previous = next;
+            if (fixed(body))
+                last = next;
+            else
+                ++bodies;
+        }
+        // Only the walk that starts at the lower joint index reports a chain (each is walked
+        // from both ends); a single body pinned at two points is merely held twice.
+        if (last < 0 || last < first || bodies < 2) continue;
+        double length = 0.0;
+        for (std::size_t i = 1; i < points.size(); ++i)
+            length += (points[i] - points[i - 1]).norm();
+        const double span = (points.back() - points.front()).norm();
+        if (!(span > 0.0) || !(length <= span * (1.0 + kTaut))) continue;
+        d.straightFrom = start.id;
+        d.straightTo = joints[static_cast<std::size_t>(last)].id;
+        return;
+    }
+}
+
 }  // namespace phasebox

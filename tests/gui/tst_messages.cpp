@@ -176,6 +176,48 @@ private slots:
         box->close();
     }
 
+    // A straight bridge (ten planks hinged in a line, hinged to the world at both ends) cannot
+    // sag without stretching: the dialog names its first and last hinges and says first to give
+    // it a sag or free an end (tst_straight_chain has the physics).
+    void aStraightBridgeIsToldToSag() {
+        MainWindow w;
+        w.resize(1024, 700);
+        w.show();
+        SceneDesc scene;
+        scene.effects.gravity = GravityDesc{};
+        scene.simulation.integrator = "velocity_verlet";
+        for (int i = 0; i < 10; ++i) {
+            BoxDesc plank;
+            plank.id = "plank" + std::to_string(i);
+            plank.position = {0.5 + i, 5.0};
+            plank.size = {1.0, 0.2};
+            scene.boxes.push_back(plank);
+            JointDesc hinge;
+            hinge.id = "hinge" + std::to_string(i);
+            hinge.a = plank.id;
+            if (i > 0) hinge.b = "plank" + std::to_string(i - 1);
+            hinge.anchor = Point2{static_cast<double>(i), 5.0};
+            scene.joints.push_back(hinge);
+        }
+        JointDesc end;
+        end.id = "end";
+        end.a = "plank9";
+        end.anchor = Point2{10.0, 5.0};
+        scene.joints.push_back(end);
+        QVERIFY(w.document().loadFromDesc(scene));
+        QVERIFY(!w.controller().advance(1.0));
+        QMessageBox* box = nullptr;
+        QTRY_VERIFY((box = w.findChild<QMessageBox*>("divergenceDialog")) && box->isVisible());
+        const QString text = box->text();
+        QVERIFY2(text.contains(QStringLiteral("What to try:\n• start the chain from joint "
+                                              "'hinge0' to joint 'end' with some sag")) &&
+                     text.contains(QStringLiteral("• or free one end of that chain")),
+                 qPrintable(text));
+        QVERIFY2(box->detailedText().contains(QStringLiteral("pulled straight")),
+                 qPrintable(box->detailedText()));
+        box->close();
+    }
+
     // The row and column of a node are those of its id ID[i,j] (i the column, j the row), counted
     // from 1 for people; a body by its kind and id.
     void objectsAreNamedInTheUsersTerms() {
