@@ -7,6 +7,7 @@
 #include "physics/world/World.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace phasebox {
@@ -200,11 +201,30 @@ void World::nameStraightChain(Divergence& d) const {
     const auto same = [](const JointBody& a, const JointBody& b) {
         return a.kind == b.kind && a.index == b.index;
     };
+    // Per body (particles first, then rigid bodies) how many linking joints hold it and the
+    // first two of them: once, so that a chain of n links is walked in O(n).
+    const std::size_t particleCount = bodies_.particles.size();
+    const auto slot = [&](const JointBody& e) {
+        return e.kind == JointBody::Kind::Rigid ? particleCount + static_cast<std::size_t>(e.index)
+                                                : static_cast<std::size_t>(e.index);
+    };
+    const int count = static_cast<int>(joints.size());
+    std::vector<int> held(particleCount + bodies_.rigidBodies.size(), 0);
+    std::vector<std::array<int, 2>> links(held.size(), {-1, -1});
+    for (int k = 0; k < count; ++k) {
+        const Joint& j = joints[static_cast<std::size_t>(k)];
+        if (!linking(j)) continue;
+        for (const JointBody* e : {&j.a, &j.b}) {
+            if (fixed(*e)) continue;
+            const std::size_t i = slot(*e);
+            if (held[i] < 2) links[i][static_cast<std::size_t>(held[i])] = k;
+            ++held[i];
+        }
+    }
     // Straight when the path's length exceeds the distance between its ends by less than this
     // share: a chain hung with a sag of a hundredth of its span is longer by about 3e-4.
     constexpr double kTaut = 1e-5;
     const Vec& q = q_[current_];
-    const int count = static_cast<int>(joints.size());
     for (int first = 0; first < count; ++first) {
         const Joint& start = joints[static_cast<std::size_t>(first)];
         if (!linking(start) || fixed(start.a) == fixed(start.b)) continue;
@@ -215,14 +235,9 @@ void World::nameStraightChain(Divergence& d) const {
                                  fromA ? joints_->pointB(first, q) : joints_->pointA(first, q)};
         int previous = first, last = -1, bodies = 1;
         for (int walked = 0; walked < count && last < 0; ++walked) {
-            int next = -1, held = 0;
-            for (int k = 0; k < count; ++k) {
-                const Joint& j = joints[static_cast<std::size_t>(k)];
-                if (!linking(j) || !(same(j.a, body) || same(j.b, body))) continue;
-                ++held;
-                if (k != previous) next = k;
-            }
-            if (held != 2 || next < 0) break;
+            const std::size_t i = slot(body);
+            if (held[i] != 2) break;
+            const int next = links[i][0] == previous ? links[i][1] : links[i][0];
             const Joint& j = joints[static_cast<std::size_t>(next)];
             fromA = same(j.a, body);
             points.push_back(fromA ? joints_->pointA(next, q) : joints_->pointB(next, q));
