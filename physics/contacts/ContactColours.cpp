@@ -17,22 +17,27 @@ using WideSetup = ContactSolver::WideSetup;
 
 namespace {
 // An unused lane: the static world joined to itself, every term zero (a colour's last wide row).
-void clearLane(WideRow& w, WideCold& u, WideSetup& S, int l, int world) {
+// An unused lane: its points' (the first only in a single wide row, whose block terms and
+// second points no kernel reads).
+void clearLane(WideRow& w, WideCold& u, WideSetup& S, int l, int world, int points) {
     w.a[l] = w.b[l] = world;
     u.points[l] = 0;
-    for (double* lanes : {w.nx, w.ny, w.friction, w.iA, w.iB, w.k11, w.k12, w.k22, w.i11, w.i12,
-                          w.i22, w.invA11, w.invA22})
-        lanes[l] = 0.0;
-    for (WideRow::Point& q : w.p)
+    for (double* lanes : {w.nx, w.ny, w.friction, w.iA, w.iB}) lanes[l] = 0.0;
+    if (points == 2)
+        for (double* lanes : {w.k11, w.k12, w.k22, w.i11, w.i12, w.i22, w.invA11, w.invA22})
+            lanes[l] = 0.0;
+    for (int k = 0; k < points; ++k) {
+        WideRow::Point& q = w.p[k];
         for (double* lanes : {q.rnA, q.rnB, q.rtA, q.rtB, q.bias, q.effectiveMass, q.impulseScale,
                               q.tangentMass, q.normalImpulse, q.tangentImpulse})
             lanes[l] = 0.0;
-    for (WideCold::Point& q : u.p)
-        for (double* lanes : {q.rAx, q.rAy, q.rBx, q.rBy, q.heldNormal, q.heldTangent,
-                              q.baseSeparation, q.separation})
+        WideCold::Point& e = u.p[k];
+        for (double* lanes : {e.rAx, e.rAy, e.rBx, e.rBy, e.heldNormal, e.heldTangent,
+                              e.baseSeparation, e.separation})
             lanes[l] = 0.0;
-    for (double* lanes : {S.biasRate, S.massScale, S.impulseScale, S.normalMass[0], S.normalMass[1],
-                          S.compliance[0], S.compliance[1], S.deepOverlap, S.pushOutShare})
+        S.normalMass[k][l] = S.compliance[k][l] = 0.0;
+    }
+    for (double* lanes : {S.biasRate, S.massScale, S.impulseScale, S.deepOverlap, S.pushOutShare})
         lanes[l] = 0.0;
     S.blockable[l] = 0;
 }
@@ -130,6 +135,7 @@ void ContactSolver::colourRows() {
         wideCold_.resize(wideRows);
         wideClosing_.resize(wideRows);
         closingWide_.assign(wideRows, 0);
+        singleWide_.resize(wideRows);
         wideSetup_.resize(wideRows);
         order_.assign(kLanes * wideRows, -1);
         for (std::size_t i = 0; i < rowCount; ++i)
@@ -157,10 +163,19 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
                         __builtin_prefetch(constraint + at);
                     __builtin_prefetch(constraint + sizeof(ContactConstraint) - 1);
                 }
+            // A wide row none of whose lanes has a second point: the kernels read neither the
+            // second points nor the block terms, so they are not written (half the lines).
+            bool single = true;
+            for (int l = 0; l < kLanes; ++l) {
+                const int i = order_[kLanes * r + l];
+                single = single && (i < 0 || constraints_[i].pointCount < 2);
+            }
+            singleWide_[r] = single;
+            const int points = single ? 1 : 2;
             for (int l = 0; l < kLanes; ++l) {
                 const int i = order_[kLanes * r + l];
                 if (i < 0) {
-                    clearLane(w, u, S, l, world);
+                    clearLane(w, u, S, l, world, points);
                     continue;
                 }
                 // On the stack: the scalar passes read only the overflow's rows (a bounce
@@ -179,10 +194,12 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
                 w.friction[l] = c.friction;
                 w.iA[l] = a.invInertia;
                 w.iB[l] = b.invInertia;
-                w.k11[l] = c.k11;
-                w.k12[l] = c.k12;
-                w.k22[l] = c.k22;
-                for (int k = 0; k < 2; ++k) {
+                if (!single) {
+                    w.k11[l] = c.k11;
+                    w.k12[l] = c.k12;
+                    w.k22[l] = c.k22;
+                }
+                for (int k = 0; k < points; ++k) {
                     const RowPoint& p = c.p[k];
                     WideRow::Point& q = w.p[k];
                     WideCold::Point& e = u.p[k];
@@ -205,7 +222,7 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
                 S.biasRate[l] = setup.biasRate;
                 S.massScale[l] = setup.massScale;
                 S.impulseScale[l] = setup.impulseScale;
-                for (int k = 0; k < 2; ++k) {
+                for (int k = 0; k < points; ++k) {
                     S.normalMass[k][l] = setup.normalMass[k];
                     S.compliance[k][l] = setup.compliance[k];
                 }

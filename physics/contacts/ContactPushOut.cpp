@@ -20,7 +20,7 @@ const double* ContactSolver::gatherSeparations() {
             const int i = rows[l];
             if (i < 0) continue;
             gathered_[2 * i] = w.p[0].separation[l];
-            gathered_[2 * i + 1] = w.p[1].separation[l];
+            gathered_[2 * i + 1] = w.points[l] == 2 ? w.p[1].separation[l] : 0.0;
         }
     }
     for (const int i : overflow_) {  // solved alone: separationOf() reads separation_

@@ -310,9 +310,13 @@ void ContactSolver::unpackRows() {
             c.k12 = w.k12[l];
             c.k22 = w.k22[l];
             for (int k = 0; k < 2; ++k) {
+                RowPoint& p = c.p[k];
+                if (k >= c.pointCount) {  // as buildRow() left it (a single row's lanes have none)
+                    p = RowPoint{};
+                    continue;
+                }
                 const WideRow::Point& q = w.p[k];
                 const WideCold::Point& e = u.p[k];
-                RowPoint& p = c.p[k];
                 p.rAx = e.rAx[l];
                 p.rAy = e.rAy[l];
                 p.rBx = e.rBx[l];

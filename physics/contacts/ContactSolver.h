@@ -540,6 +540,7 @@ private:
     LargeVector<WideCold> wideCold_;            // likewise, their cold lanes
     LargeVector<WideClosing> wideClosing_;      // likewise, where relax's closing flags say
     std::vector<unsigned char> closingWide_;    // per wide row: some lane closes (relax)
+    std::vector<unsigned char> singleWide_;     // per wide row: no lane has a second point
     std::vector<int> slot_;  // per row: kLanes·wide row + lane, or −1 (solved alone)
     std::vector<std::pair<int, int>> colouredPairs_;  // per row: its bodies at the last colouring
     std::vector<int> order_;     // per wide slot: its row, or −1 (the sweep order)
