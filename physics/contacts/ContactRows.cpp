@@ -76,6 +76,7 @@ void ContactSolver::prepare() {
         double lastOverlap = kNaN, lastSize = 0.0;
         for (std::size_t i = first; i < end; ++i) {
             ContactConstraint& c = constraints_[i];
+            if (c.kept) continue;  // the same bodies, anchors and normal as when last prepared
             const SolverBody* a = c.bodyA >= 0 ? &bodies_[c.bodyA] : nullptr;
             const SolverBody* b = c.bodyB >= 0 ? &bodies_[c.bodyB] : nullptr;
             const double mA = a ? a->invMass : 0.0, iA = a ? a->invInertia : 0.0;

@@ -148,8 +148,8 @@ inline void scatterVelocities(ContactSolverBody* state, const int* index, int wo
 #endif
 
 using WideLoop = void (*)(WideRow*, const unsigned char*, int, ContactSolverBody*, int);
-using WideWarm = void (*)(WideRow*, const WideCold*, const unsigned char*, int,
-                          ContactSolverBody*, int);
+using WideWarm = void (*)(WideRow*, const WideCold*, const unsigned char*, int, ContactSolverBody*,
+                          int);
 using WideMeasure = void (*)(const WideRow*, WideCold*, const unsigned char*, int,
                              const BodyMotion*);
 using WidePrepare = void (*)(WideRow*, WideCold*, const unsigned char*, int, const WideSetup*,
@@ -272,9 +272,8 @@ void ContactSolver::preparePhase(double h, bool useBias, const ContactSettings& 
     const PhaseTerms terms{1.0 / h, settings.pushOut, useBias};
     if (lanesHold_) {
         forColours([&](std::size_t first, std::size_t end) {
-            wide.prepare(wide_.data() + first, wideCold_.data() + first,
-                         singleWide_.data() + first, static_cast<int>(end - first),
-                         wideSetup_.data() + first,
+            wide.prepare(wide_.data() + first, wideCold_.data() + first, singleWide_.data() + first,
+                         static_cast<int>(end - first), wideSetup_.data() + first,
                          measure ? motion_.data() : nullptr, terms, closingWide_.data() + first,
                          wideClosing_.data() + first);
         });
@@ -458,8 +457,8 @@ void ContactSolver::updateSeparations() {
     updateMotion(nullptr);
     if (lanesHold_) {
         forColours([&](std::size_t first, std::size_t end) {
-            wide.measure(wide_.data() + first, wideCold_.data() + first,
-                         singleWide_.data() + first, static_cast<int>(end - first), motion_.data());
+            wide.measure(wide_.data() + first, wideCold_.data() + first, singleWide_.data() + first,
+                         static_cast<int>(end - first), motion_.data());
         });
         for (const int i : overflow_) rowSeparations(static_cast<std::size_t>(i));
         return;

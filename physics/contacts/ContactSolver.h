@@ -49,6 +49,10 @@ struct ContactSettings {
     double pushOut = 3.0;               // m/s: the fastest overlap is removed
     double restitutionThreshold = 1.0;  // m/s, times 1 − e: slower impacts do not bounce
     double speculativeDistance = 0.02;  // m: contacts are made this far ahead of touching
+    // A pair of colliders neither of which has moved since its contact was found keeps that
+    // contact instead of a narrow phase (ContactStage's frames); off: every pair found anew
+    // (tests and benchmarks compare the two).
+    bool keepStillContacts = true;
 };
 
 // A body as the solver sees it during one step: what the stage sets (dof, rotates, masses,
@@ -130,6 +134,8 @@ struct ContactConstraint {
     static constexpr double kDeepOverlapFraction = 0.1;
     double deepOverlap = std::numeric_limits<double>::infinity();
     int pointCount = 0;
+    // Last frame's, kept as it was (ContactStage's frames): its masses and stiffness stand.
+    bool kept = false;
     ContactPoint points[2];
 };
 

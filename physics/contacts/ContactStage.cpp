@@ -153,6 +153,7 @@ void ContactStage::bind(const Bodies& bodies) {
     polygons_.assign(colliders_.size(), OrientedPolygon{});
     bounds_.resize(colliders_.size());
     bodyOfCollider_.assign(colliders_.size(), -1);
+    frames_.assign(colliders_.size(), Frame{});  // found anew: previous_ is not this list's
     bodyColliders_.reserve(colliders_.size());
     // Contacts for kReservedContacts a collider (a stack, a chain folding on itself, a pile's
     // inside) before any buffer grows in the step.
@@ -273,11 +274,30 @@ void ContactStage::fillConstraint(ContactConstraint& c, std::uint64_t key, int c
     const Vec2 centerA = a.center, centerB = b.center;
     c.deepOverlap = ContactConstraint::kDeepOverlapFraction * std::min(a.size, b.size);
     c.pointCount = m.pointCount;
+    // A point x found now, on a collider that has moved by (offset, turn) from its frame: its
+    // anchor r in the frame, R(turn)·r = x − centre, and the separation the solver would measure
+    // from there, s₀ = s − n·(d_B − d_A), d = offset + R(turn)·r − r, so that it measures s now.
+    const auto inFrame = [&](int collider, const Vec2& center, const Vec2& x, Vec2& anchor) {
+        const Vec2 arm = x - center;
+        const Frame& frame = frames_[collider];
+        if (frame.turn == 0.0 && frame.offset.x() == 0.0 && frame.offset.y() == 0.0) {
+            anchor = arm;
+            return Vec2(Vec2::Zero());
+        }
+        const double cosine = std::cos(frame.turn), sine = std::sin(frame.turn);
+        anchor = Vec2(cosine * arm.x() + sine * arm.y(), cosine * arm.y() - sine * arm.x());
+        return Vec2(frame.offset + (arm - anchor));
+    };
     for (int k = 0; k < m.pointCount; ++k) {
         ContactPoint& p = c.points[k];
-        p.anchorA = colliderA >= 0 ? Vec2(m.points[k].position - centerA) : Vec2::Zero();
-        p.anchorB = m.points[k].position - centerB;
+        const Vec2& x = m.points[k].position;
+        const Vec2 movedA =
+            colliderA >= 0 ? inFrame(colliderA, centerA, x, p.anchorA) : Vec2(Vec2::Zero());
+        if (colliderA < 0) p.anchorA = Vec2::Zero();
+        const Vec2 movedB = inFrame(colliderB, centerB, x, p.anchorB);
         p.baseSeparation = m.points[k].separation;
+        if (movedA.x() != 0.0 || movedA.y() != 0.0 || movedB.x() != 0.0 || movedB.y() != 0.0)
+            p.baseSeparation -= c.normal.dot(movedB - movedA);
         p.id = m.points[k].id;
     }
 }
@@ -410,7 +430,7 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
 }
 
 bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin, Manifold& m,
-                               PairContact& pair) const {
+                               PairContact& pair, bool geometry) const {
     const Collider& a = colliders_[i];
     const Collider& b = colliders_[j];
     if (a.dof < 0 && b.dof < 0) return false;
@@ -438,6 +458,7 @@ bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin
         pair.a = polygon;
         pair.b = other;
         const Collider& o = colliders_[other];
+        if (!geometry) return true;
         if (o.kind == Collider::Kind::Polygon)
             return collidePolygons(
                 polygons_[polygon], polygons_[other], margin, m,
@@ -458,8 +479,16 @@ bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin
             if (pa.cloth >= 0 && pa.cloth == pb.cloth) return false;  // no cloth self-collision
             pair.restitution = particleRestitution_;
         }
+        if (!geometry) return true;
         return collideDisks(disks_[i], disks_[j], margin, m,
                             whenCoincident(disks_[i].center, disks_[j].center));
+    }
+    if (!geometry) {
+        if (diskA != diskB) {
+            pair.a = diskA ? j : i;
+            pair.b = diskA ? i : j;
+        }
+        return true;
     }
     if (!diskA && !diskB)
         return collideBoxes(boxes_[i], boxes_[j], margin, m,
@@ -470,14 +499,15 @@ bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin
     return collideBoxDisk(boxes_[box], disks_[disk], margin, m);
 }
 
-bool ContactStage::narrowPhasePlane(int k, int i, double margin, Manifold& m,
-                                    PairContact& pair) const {
+bool ContactStage::narrowPhasePlane(int k, int i, double margin, Manifold& m, PairContact& pair,
+                                    bool geometry) const {
     const Collider& c = colliders_[i];
     if (c.dof < 0) return false;
     pair.a = -1 - k;
     pair.b = i;
     pair.friction = std::sqrt(planeFriction_[k] * c.friction);
     pair.restitution = std::max(planeRestitution_[k], c.restitution);
+    if (!geometry) return true;
     const HalfPlane& plane = planes_[k];
     return c.kind == Collider::Kind::Disk      ? collidePlaneDisk(plane, disks_[i], margin, m)
            : c.kind == Collider::Kind::Polygon ? collidePlanePolygon(plane, polygons_[i], margin, m)
@@ -497,8 +527,57 @@ void ContactStage::sortByKey(ConstraintList& constraints) {
     std::swap(constraints, sorted_);
 }
 
-void ContactStage::findContacts(const Bodies& bodies, const Vec& q, const Vec& inverseMass,
-                                double dt, const ContactSettings& settings) {
+void ContactStage::updateFrames(const Vec& q, const Vec& u, const Vec& uNext, double dt,
+                                bool keep) {
+    // After rebind() previous_ holds what it carried, in no frame kept here: all found anew.
+    keep = keep && !carried_;
+    forRange(static_cast<int>(colliders_.size()), kColliderGrain, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            const Collider& c = colliders_[i];
+            Frame& frame = frames_[i];
+            if (c.dof < 0) {  // static (or asleep): never moves while bound
+                frame.still = true;
+                continue;
+            }
+            const Vec2 position = q.segment<2>(c.dof);
+            const double speed =
+                std::max(u.segment<2>(c.dof).norm(), uNext.segment<2>(c.dof).norm());
+            double size = boxes_[i].halfExtents.minCoeff();
+            if (c.kind == Collider::Kind::Disk) size = disks_[i].radius;
+            if (c.kind == Collider::Kind::Polygon) size = polygons_[i].inradius;
+            const double reach = std::min(kStillShare * size, kStillMost);
+            bool still =
+                keep && frame.valid && (position - frame.position).norm() + speed * dt <= reach;
+            double angle = 0.0;
+            if (c.rigid) {
+                angle = q[c.dof + 2];
+                const double spin = std::max(std::abs(u[c.dof + 2]), std::abs(uNext[c.dof + 2]));
+                still = still && std::abs(angle - frame.angle) + spin * dt <= kStillTurn;
+            }
+            frame.still = still;
+            if (!still) {
+                frame.position = position;
+                frame.angle = angle;
+                frame.valid = true;
+            }
+            frame.offset = position - frame.position;
+            frame.turn = angle - frame.angle;
+        }
+    });
+}
+
+int ContactStage::keptContact(std::uint64_t key, int& next) const {
+    // Pairs come in much the order of last frame's contacts: the one after the last found first.
+    const auto count = static_cast<int>(previousKeys_.size());
+    if (next < count && previousKeys_[next] == key) return next++;
+    const auto at = std::lower_bound(previousKeys_.begin(), previousKeys_.end(), key);
+    if (at == previousKeys_.end() || *at != key) return -1;
+    next = static_cast<int>(at - previousKeys_.begin()) + 1;
+    return next - 1;
+}
+
+void ContactStage::findContacts(const Bodies& bodies, const Vec& inverseMass, double dt,
+                                const ContactSettings& settings) {
     // Every candidate pair's manifold into its own slot, in parallel, then every plane against
     // every collider; the contacts are then made from the slots in order, serially (they number
     // the solver's bodies as they come), so that nothing depends on how the loops were shared.
@@ -508,8 +587,23 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& q, const Vec& i
     found_.resize(static_cast<std::size_t>(pairCount + planeTests));
     const std::vector<double>& sweep = sweep_;
     forRange(pairCount, kPairGrain, [&](int begin, int end) {
+        int next = 0;  // keptContact()'s guess
         for (int p = begin; p < end; ++p) {
             const auto [i, j] = pairs_[p];
+            Found& f = found_[p];
+            f.kept = -1;
+            if (frames_[i].still && frames_[j].still) {
+                // Neither has moved since its contacts were found: last frame's stands.
+                if (!narrowPhase(bodies, i, j, 0.0, f.m, f.pair, false)) {
+                    f.hit = false;
+                    continue;
+                }
+                f.kept = keptContact(pairKey(f.pair.a, f.pair.b), next);
+                if (f.kept >= 0) {
+                    f.hit = true;
+                    continue;
+                }
+            }
             // How much closer the two can come in this step: their relative velocity (largest
             // at the step's start or end, the change being linear in between) and their turns,
             // not the sum of their speeds. Bodies moving together (a pile spreading out, boxes
@@ -520,16 +614,25 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& q, const Vec& i
                 std::max((b.start - a.start).squaredNorm(), (b.end - a.end).squaredNorm()));
             const double margin = settings.speculativeDistance +
                                   std::min(sweep[i] + sweep[j], closing * dt + a.turn + b.turn);
-            Found& f = found_[p];
             f.hit = narrowPhase(bodies, i, j, margin, f.m, f.pair);
         }
     });
     // Planes against every dynamic body (planes are infinite: not in the broad phase).
     forRange(planeTests, kColliderGrain, [&](int begin, int end) {
+        int next = 0;
         for (int t = begin; t < end; ++t) {
             const int k = t / count, i = t % count;
             Found& f = found_[pairCount + t];
-            f.hit = narrowPhasePlane(k, i, settings.speculativeDistance + sweep[i], f.m, f.pair);
+            const double margin = settings.speculativeDistance + sweep[i];
+            f.kept = -1;
+            if (frames_[i].still && narrowPhasePlane(k, i, margin, f.m, f.pair, false)) {
+                f.kept = keptContact(pairKey(count + k, i), next);
+                if (f.kept >= 0) {
+                    f.hit = true;
+                    continue;
+                }
+            }
+            f.hit = narrowPhasePlane(k, i, margin, f.m, f.pair);
         }
     });
     // The contacts in slot order: numbered, with their solver bodies and keys, here; built
@@ -542,10 +645,12 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& q, const Vec& i
         madeFrom_.reserve(std::max(found_.size(), 2 * madeFrom_.capacity()));
     std::uint64_t lastKey = 0;
     keysAscending_ = true;
+    keptCount_ = 0;
     for (int s = 0; s < pairCount + planeTests; ++s) {
         Found& f = found_[s];
         if (!f.hit) continue;
         if (s >= pairCount) f.pair.a = -1;  // a plane: the world is body A
+        keptCount_ += f.kept >= 0;
         Made made;
         made.slot = s;
         made.bodyA = f.pair.a >= 0 ? solverBodyFor(f.pair.a) : -1;
@@ -570,8 +675,9 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& q, const Vec& i
             b.rotates = c.rigid;
             b.round = c.kind == Collider::Kind::Disk;
             b.jointed = c.jointed;
-            b.collidePosition = q.segment<2>(c.dof);
-            if (b.rotates) b.collideAngle = q[c.dof + 2];
+            const Frame& frame = frames_[bodyColliders_[k]];
+            b.collidePosition = frame.position;
+            if (b.rotates) b.collideAngle = frame.angle;
             b.invMass = inverseMass[b.dof];
             b.invInertia = b.rotates ? inverseMass[b.dof + 2] : 0.0;
         }
@@ -588,10 +694,22 @@ void ContactStage::buildContacts(int begin, int end) {
         const Made& made = madeFrom_[k];
         const Found& f = found_[made.slot];
         ContactConstraint& c = constraints[k];
-        c = ContactConstraint{};
+        if (f.kept < 0) {
+            c = ContactConstraint{};
+            c.bodyA = made.bodyA;
+            c.bodyB = made.bodyB;
+            fillConstraint(c, made.key, f.pair.a, f.pair.b, f.m, f.pair.friction,
+                           f.pair.restitution);
+            continue;
+        }
+        // As last frame found it, in the same frames, with its masses (ContactSolver::prepare()
+        // keeps them) and impulses (carryChunk() finds the same).
+        c = previous_[static_cast<std::size_t>(f.kept)];
         c.bodyA = made.bodyA;
         c.bodyB = made.bodyB;
-        fillConstraint(c, made.key, f.pair.a, f.pair.b, f.m, f.pair.friction, f.pair.restitution);
+        c.friction = f.pair.friction;
+        c.restitution = f.pair.restitution;
+        c.kept = true;
     }
 }
 
@@ -631,8 +749,13 @@ void ContactStage::collide(const Bodies& bodies, const Vec& inverseMass, const V
     std::fill(bodyOfCollider_.begin(), bodyOfCollider_.end(), -1);
 
     findPairs(bodies, q, u, uNext, frameFraction, dt, settings);
+    updateFrames(q, u, uNext, dt, settings.keepStillContacts);
+    // Their keys side by side, for keptContact()'s search (a search through the contacts
+    // themselves reads a line of a different contact at every probe).
+    previousKeys_.resize(previous_.size());
+    for (std::size_t k = 0; k < previous_.size(); ++k) previousKeys_[k] = previous_[k].key;
     findReachedSleepers(bodies, settings);
-    findContacts(bodies, q, inverseMass, dt, settings);
+    findContacts(bodies, inverseMass, dt, settings);
 
     // The contacts are built from their slots, and carry the impulses of persisting contacts
     // (same shapes, same features) for the warm start: in the same pass when they come sorted

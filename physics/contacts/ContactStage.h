@@ -127,6 +127,9 @@ public:
     }
     const ContactSolver& solver() const { return solver_; }
     int pointCount() const;
+    // Of the last collide()'s contacts, those kept from the frame before as they were (a pair of
+    // colliders that have not moved: ContactSettings::keepStillContacts).
+    int keptContacts() const { return keptCount_; }
 
     // The most overlapping pairs a dynamic body takes part in with other dynamic bodies
     // (partners at least half its size; see PairCap; a box's size is its circumscribed circle).
@@ -160,16 +163,19 @@ private:
     };
     void updateShapes(const Bodies& bodies, const Vec& q);
     // collide()'s narrow phase: the contacts of the pairs found and of the planes.
-    void findContacts(const Bodies& bodies, const Vec& q, const Vec& inverseMass, double dt,
+    void findContacts(const Bodies& bodies, const Vec& inverseMass, double dt,
                       const ContactSettings& settings);
     // collide()'s contacts [begin, end) from their slots, and the warm start of those contacts
     // (returns the points carried that held a force; heldBefore: those of previous_ passed).
     void buildContacts(int begin, int end);
     std::size_t carryChunk(int begin, int end, std::size_t& heldBefore);
     void updateShapes(const Bodies& bodies, const Vec& q, int begin, int end);
+    // geometry false: the pair's material and order alone, and whether it may touch at all (a
+    // kept contact's pair), no manifold.
     bool narrowPhase(const Bodies& bodies, int i, int j, double margin, Manifold& m,
-                     PairContact& pair) const;
-    bool narrowPhasePlane(int k, int i, double margin, Manifold& m, PairContact& pair) const;
+                     PairContact& pair, bool geometry = true) const;
+    bool narrowPhasePlane(int k, int i, double margin, Manifold& m, PairContact& pair,
+                          bool geometry = true) const;
     Vec2 colliderCenter(int i) const;
     // The solver body of a collider in this step, numbered as the contacts come (−1: static);
     // findContacts() makes the bodies after, in parallel (bodyColliders_).
@@ -216,6 +222,7 @@ private:
         Manifold m;
         PairContact pair;
         bool hit = false;
+        int kept = -1;  // the contact of previous_ it keeps as it was, or −1 (found anew)
     };
     LargeVector<Found> found_;
     // Per contact of this step: its slot in found_, solver bodies and key; and whether the
@@ -236,8 +243,34 @@ private:
     std::vector<double> pairSize_;            // per collider: disk radius, for the cap
     std::vector<HalfPlane> planes_;
     std::vector<double> planeFriction_, planeRestitution_;
-    std::vector<int> bodyOfCollider_;  // solver body index in this step, −1 none yet
-    std::vector<int> bodyColliders_;   // per solver body in this step, its collider
+    // Where each collider's contacts are measured from: the solver's collidePosition and
+    // collideAngle, its place when last seen moving (ContactSolver measures each point's
+    // separation from there, its anchors turned with the body). A collider that is still there,
+    // within kStillShare of its least half extent (at most kStillMost) and kStillTurn, counting
+    // what it can move in the frame, keeps it; a pair of two such colliders (or one and a plane
+    // or a static body) keeps last frame's contact as it was instead of a narrow phase, as a
+    // contact cache does; a contact found anew is written in its colliders' frames.
+    static constexpr double kStillShare = 1e-3;
+    static constexpr double kStillMost = 5e-4;  // m
+    static constexpr double kStillTurn = 1e-3;  // rad
+    struct Frame {
+        Vec2 position = Vec2::Zero();
+        double angle = 0.0;
+        Vec2 offset = Vec2::Zero();  // where the collider is now, from position
+        double turn = 0.0;           // and its angle
+        bool valid = false;          // set at a collide() since bind()
+        bool still = false;          // kept at this collide()
+    };
+    std::vector<Frame> frames_;
+    // Each collider's frame kept or moved to where it is (keep false: all moved).
+    void updateFrames(const Vec& q, const Vec& u, const Vec& uNext, double dt, bool keep);
+    int keptCount_ = 0;  // contacts the last collide() kept
+    // The contact of previous_ with this key, or −1; next: where the next one is looked for
+    // first (updated).
+    int keptContact(std::uint64_t key, int& next) const;
+    std::vector<std::uint64_t> previousKeys_;  // previous_'s keys, in its order (ascending)
+    std::vector<int> bodyOfCollider_;          // solver body index in this step, −1 none yet
+    std::vector<int> bodyColliders_;           // per solver body in this step, its collider
     ConstraintList previous_;
     bool heldCarried_ = false;
     // Sleeping: previous_ was filled by rebind() (collide() keeps it), the contacts of islands

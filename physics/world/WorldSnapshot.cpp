@@ -29,7 +29,8 @@ bool sameSettings(const SimulationSettings& a, const SimulationSettings& b) {
            a.contacts.dampingRatio == b.contacts.dampingRatio &&
            a.contacts.pushOut == b.contacts.pushOut &&
            a.contacts.restitutionThreshold == b.contacts.restitutionThreshold &&
-           a.contacts.speculativeDistance == b.contacts.speculativeDistance;
+           a.contacts.speculativeDistance == b.contacts.speculativeDistance &&
+           a.contacts.keepStillContacts == b.contacts.keepStillContacts;
 }
 
 }  // namespace
