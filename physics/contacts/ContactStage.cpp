@@ -430,7 +430,7 @@ void ContactStage::findPairs(const Bodies& bodies, const Vec& q, const Vec& u, c
 }
 
 bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin, Manifold& m,
-                               PairContact& pair, bool geometry) const {
+                               PairContact& pair) const {
     const Collider& a = colliders_[i];
     const Collider& b = colliders_[j];
     if (a.dof < 0 && b.dof < 0) return false;
@@ -458,7 +458,6 @@ bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin
         pair.a = polygon;
         pair.b = other;
         const Collider& o = colliders_[other];
-        if (!geometry) return true;
         if (o.kind == Collider::Kind::Polygon)
             return collidePolygons(
                 polygons_[polygon], polygons_[other], margin, m,
@@ -479,16 +478,8 @@ bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin
             if (pa.cloth >= 0 && pa.cloth == pb.cloth) return false;  // no cloth self-collision
             pair.restitution = particleRestitution_;
         }
-        if (!geometry) return true;
         return collideDisks(disks_[i], disks_[j], margin, m,
                             whenCoincident(disks_[i].center, disks_[j].center));
-    }
-    if (!geometry) {
-        if (diskA != diskB) {
-            pair.a = diskA ? j : i;
-            pair.b = diskA ? i : j;
-        }
-        return true;
     }
     if (!diskA && !diskB)
         return collideBoxes(boxes_[i], boxes_[j], margin, m,
@@ -499,15 +490,14 @@ bool ContactStage::narrowPhase(const Bodies& bodies, int i, int j, double margin
     return collideBoxDisk(boxes_[box], disks_[disk], margin, m);
 }
 
-bool ContactStage::narrowPhasePlane(int k, int i, double margin, Manifold& m, PairContact& pair,
-                                    bool geometry) const {
+bool ContactStage::narrowPhasePlane(int k, int i, double margin, Manifold& m,
+                                    PairContact& pair) const {
     const Collider& c = colliders_[i];
     if (c.dof < 0) return false;
     pair.a = -1 - k;
     pair.b = i;
     pair.friction = std::sqrt(planeFriction_[k] * c.friction);
     pair.restitution = std::max(planeRestitution_[k], c.restitution);
-    if (!geometry) return true;
     const HalfPlane& plane = planes_[k];
     return c.kind == Collider::Kind::Disk      ? collidePlaneDisk(plane, disks_[i], margin, m)
            : c.kind == Collider::Kind::Polygon ? collidePlanePolygon(plane, polygons_[i], margin, m)
@@ -566,6 +556,14 @@ void ContactStage::updateFrames(const Vec& q, const Vec& u, const Vec& uNext, do
     });
 }
 
+std::pair<int, int> ContactStage::pairOrder(int i, int j) const {
+    // narrowPhase()'s: a polygon is body A unless both are, a box before a disk.
+    const Collider::Kind a = colliders_[i].kind, b = colliders_[j].kind;
+    using K = Collider::Kind;
+    const bool swap = (a != K::Polygon && b == K::Polygon) || (a == K::Disk && b == K::Box);
+    return swap ? std::pair{j, i} : std::pair{i, j};
+}
+
 int ContactStage::keptContact(std::uint64_t key, int& next) const {
     // Pairs come in much the order of last frame's contacts: the one after the last found first.
     const auto count = static_cast<int>(previousKeys_.size());
@@ -593,13 +591,13 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& inverseMass, do
             Found& f = found_[p];
             f.kept = -1;
             if (frames_[i].still && frames_[j].still) {
-                // Neither has moved since its contacts were found: last frame's stands.
-                if (!narrowPhase(bodies, i, j, 0.0, f.m, f.pair, false)) {
-                    f.hit = false;
-                    continue;
-                }
-                f.kept = keptContact(pairKey(f.pair.a, f.pair.b), next);
+                // Neither has moved since its contacts were found: last frame's stands (with
+                // its materials: they change only with a new bind()).
+                const auto [a, b] = pairOrder(i, j);
+                f.kept = keptContact(pairKey(a, b), next);
                 if (f.kept >= 0) {
+                    f.pair.a = a;
+                    f.pair.b = b;
                     f.hit = true;
                     continue;
                 }
@@ -625,9 +623,11 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& inverseMass, do
             Found& f = found_[pairCount + t];
             const double margin = settings.speculativeDistance + sweep[i];
             f.kept = -1;
-            if (frames_[i].still && narrowPhasePlane(k, i, margin, f.m, f.pair, false)) {
+            if (frames_[i].still) {
                 f.kept = keptContact(pairKey(count + k, i), next);
                 if (f.kept >= 0) {
+                    f.pair.a = -1 - k;
+                    f.pair.b = i;
                     f.hit = true;
                     continue;
                 }
@@ -707,8 +707,6 @@ void ContactStage::buildContacts(int begin, int end) {
         c = previous_[static_cast<std::size_t>(f.kept)];
         c.bodyA = made.bodyA;
         c.bodyB = made.bodyB;
-        c.friction = f.pair.friction;
-        c.restitution = f.pair.restitution;
         c.kept = true;
     }
 }
@@ -731,7 +729,11 @@ std::size_t ContactStage::carryChunk(int begin, int end, std::size_t& heldBefore
     for (int n = begin; n < end; ++n) {
         ContactConstraint& c = now[n];
         while (old != last && old->key < c.key) heldBefore += heldPoints(*old++);
-        if (old != last && old->key == c.key) carryImpulses(*old, c, carried);
+        if (old == last || old->key != c.key) continue;
+        if (c.kept)  // a copy of old, its impulses with it
+            carried += heldPoints(c);
+        else
+            carryImpulses(*old, c, carried);
     }
     while (old != last) heldBefore += heldPoints(*old++);
     return carried;

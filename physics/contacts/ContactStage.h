@@ -170,12 +170,9 @@ private:
     void buildContacts(int begin, int end);
     std::size_t carryChunk(int begin, int end, std::size_t& heldBefore);
     void updateShapes(const Bodies& bodies, const Vec& q, int begin, int end);
-    // geometry false: the pair's material and order alone, and whether it may touch at all (a
-    // kept contact's pair), no manifold.
     bool narrowPhase(const Bodies& bodies, int i, int j, double margin, Manifold& m,
-                     PairContact& pair, bool geometry = true) const;
-    bool narrowPhasePlane(int k, int i, double margin, Manifold& m, PairContact& pair,
-                          bool geometry = true) const;
+                     PairContact& pair) const;
+    bool narrowPhasePlane(int k, int i, double margin, Manifold& m, PairContact& pair) const;
     Vec2 colliderCenter(int i) const;
     // The solver body of a collider in this step, numbered as the contacts come (−1: static);
     // findContacts() makes the bodies after, in parallel (bodyColliders_).
@@ -265,6 +262,8 @@ private:
     // Each collider's frame kept or moved to where it is (keep false: all moved).
     void updateFrames(const Vec& q, const Vec& u, const Vec& uNext, double dt, bool keep);
     int keptCount_ = 0;  // contacts the last collide() kept
+    // The pair (i, j) as narrowPhase() orders it: the contact's body A first.
+    std::pair<int, int> pairOrder(int i, int j) const;
     // The contact of previous_ with this key, or −1; next: where the next one is looked for
     // first (updated).
     int keptContact(std::uint64_t key, int& next) const;
