@@ -138,6 +138,8 @@ void ContactSolver::colourRows() {
         singleWide_.resize(wideRows);
         wideSetup_.resize(wideRows);
         order_.assign(kLanes * wideRows, -1);
+        // Slots past the end are forgotten: a row built again there later is built whole.
+        laneKey_.resize(static_cast<std::size_t>(kLanes) * wideRows, kNoLane);
         for (std::size_t i = 0; i < rowCount; ++i)
             if (slot_[i] >= 0) order_[slot_[i]] = static_cast<int>(i);
     }
@@ -172,6 +174,15 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
             }
             singleWide_[r] = single;
             const int points = single ? 1 : 2;
+            if (sameLanes(r)) {
+                refreshLanes(r, terms, cache);
+                continue;
+            }
+            for (int l = 0; l < kLanes; ++l) {
+                const int i = order_[kLanes * r + l];
+                laneKey_[kLanes * r + l] =
+                    i < 0 || !constraints_[i].kept ? kNoLane : constraints_[i].key;
+            }
             for (int l = 0; l < kLanes; ++l) {
                 const int i = order_[kLanes * r + l];
                 if (i < 0) {
@@ -232,6 +243,59 @@ void ContactSolver::buildLanes(const BuildTerms& terms) {
             }
         }
     });
+}
+
+bool ContactSolver::sameLanes(std::size_t r) const {
+    // Every lane holds the contact it held last step, kept as it was (ContactConstraint::kept:
+    // the same anchors, normal, masses and stiffness), and none bounces (its bounce terms are
+    // made with the row).
+    for (int l = 0; l < kLanes; ++l) {
+        const std::size_t slot = kLanes * r + static_cast<std::size_t>(l);
+        const int i = order_[slot];
+        if (i < 0) return false;
+        const ContactConstraint& c = constraints_[static_cast<std::size_t>(i)];
+        if (!c.kept || c.restitution != 0.0 || laneKey_[slot] != c.key) return false;
+    }
+    return true;
+}
+
+void ContactSolver::refreshLanes(std::size_t r, const BuildTerms& terms, RowCache& cache) {
+    // What buildRow() makes anew each step, the rest standing in the lanes: the bodies' indices
+    // (numbered as the contacts come), the warm start at this step's sub-step, the held forces,
+    // the separations back to where the contacts were found, the softness and the push-out share.
+    const int world = static_cast<int>(bodies_.size());
+    WideRow& w = wide_[r];
+    WideCold& u = wideCold_[r];
+    WideSetup& S = wideSetup_[r];
+    for (int l = 0; l < kLanes; ++l) {
+        const auto i = static_cast<std::size_t>(order_[kLanes * r + static_cast<std::size_t>(l)]);
+        const ContactConstraint& c = constraints_[i];
+        w.a[l] = c.bodyA >= 0 ? c.bodyA : world;
+        w.b[l] = c.bodyB >= 0 ? c.bodyB : world;
+        const Softness soft = stepSoftness(c, terms, cache);
+        S.biasRate[l] = soft.biasRate;
+        S.massScale[l] = soft.massScale;
+        S.impulseScale[l] = soft.impulseScale;
+        S.pushOutShare[l] = cache.share;
+        for (int k = 0; k < 2; ++k) {
+            if (k >= c.pointCount) {
+                separation_[2 * i + static_cast<std::size_t>(k)] = 0.0;
+                continue;
+            }
+            const ContactPoint& p = c.points[k];
+            WideRow::Point& q = w.p[k];
+            WideCold::Point& e = u.p[k];
+            separation_[2 * i + static_cast<std::size_t>(k)] = p.baseSeparation;
+            e.separation[l] = p.baseSeparation;
+            S.compliance[k][l] = soft.impulseScale / (soft.massScale * p.normalMass);
+            q.normalImpulse[l] = terms.warmScale * p.normalImpulse;
+            q.tangentImpulse[l] = terms.warmScale * p.tangentImpulse;
+            const Vec2 held =
+                holding_ ? Vec2(terms.h * Vec2(p.heldNormal, p.heldTangent)) : Vec2::Zero();
+            e.heldNormal[l] = held.x();
+            e.heldTangent[l] = held.y();
+        }
+    }
 }
 
 }  // namespace phasebox

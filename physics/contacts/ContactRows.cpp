@@ -128,6 +128,27 @@ double ContactSolver::smoothNormalChange(const Row& c, const RowPoint& p) const 
     return Vec2(c.nx, c.ny).dot(at(c.b, p.rBx, p.rBy) - at(c.a, p.rAx, p.rAy));
 }
 
+ContactSolver::Softness ContactSolver::stepSoftness(const ContactConstraint& c,
+                                                    const BuildTerms& terms, RowCache& cache) {
+    // The softness and the push-out share, of a stiffness and a count most rows share with the
+    // row before: their divisions once for each new value.
+    const double hertz = c.stiffness * terms.hertz;
+    if (!(hertz == cache.hertz)) {
+        cache.hertz = hertz;
+        cache.soft = makeSoft(hertz, terms.zeta, terms.h);
+    }
+    // The push-out speed is a body's, shared among its contacts: in a pile each contact's
+    // push adds up along chains of bodies (200 boxes started at one point left at 20 m/s
+    // with a whole 3 m/s per contact, 13 m/s shared).
+    const int sharers = std::max({1, c.bodyA >= 0 ? bodies_[c.bodyA].contactCount : 1,
+                                  c.bodyB >= 0 ? bodies_[c.bodyB].contactCount : 1});
+    if (sharers != cache.sharers) {
+        cache.sharers = sharers;
+        cache.share = 1.0 / sharers;
+    }
+    return cache.soft;
+}
+
 void ContactSolver::buildRow(std::size_t i, Row& row, RowSetup& setup, const BuildTerms& terms,
                              RowCache& cache) {
     const int world = static_cast<int>(bodies_.size());
@@ -139,24 +160,8 @@ void ContactSolver::buildRow(std::size_t i, Row& row, RowSetup& setup, const Bui
     row.nx = c.normal.x();
     row.ny = c.normal.y();
     row.friction = c.friction;
-    // The softness and the push-out share, of a stiffness and a count most rows share with the
-    // row before: their divisions once for each new value.
-    const double hertz = c.stiffness * terms.hertz;
-    if (!(hertz == cache.hertz)) {
-        cache.hertz = hertz;
-        cache.soft = makeSoft(hertz, terms.zeta, h);
-    }
-    const Softness& soft = cache.soft;
+    const Softness soft = stepSoftness(c, terms, cache);
     setup.deepOverlap = c.deepOverlap;
-    // The push-out speed is a body's, shared among its contacts: in a pile each contact's
-    // push adds up along chains of bodies (200 boxes started at one point left at 20 m/s
-    // with a whole 3 m/s per contact, 13 m/s shared).
-    const int sharers = std::max({1, c.bodyA >= 0 ? bodies_[c.bodyA].contactCount : 1,
-                                  c.bodyB >= 0 ? bodies_[c.bodyB].contactCount : 1});
-    if (sharers != cache.sharers) {
-        cache.sharers = sharers;
-        cache.share = 1.0 / sharers;
-    }
     setup.pushOutShare = cache.share;
     setup.biasRate = soft.biasRate;
     setup.massScale = soft.massScale;

@@ -256,6 +256,7 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     wideClosing_.reserve(constraints / kLanes + kColours);
     closingWide_.reserve(constraints / kLanes + kColours);
     singleWide_.reserve(constraints / kLanes + kColours);
+    laneKey_.reserve(constraints + kLanes * kColours);
     wideSetup_.reserve(constraints / kLanes + kColours);
     order_.reserve(constraints + kLanes * kColours);
     colourMask_.reserve(bodies + 1);

@@ -429,6 +429,14 @@ private:
     };
     void buildRow(std::size_t i, Row& row, RowSetup& setup, const BuildTerms& terms,
                   RowCache& cache);
+    // A row's softness this step, and its push-out share in cache.share.
+    Softness stepSoftness(const ContactConstraint& c, const BuildTerms& terms, RowCache& cache);
+    // Wide row r holds in every lane the kept contact it held last step (laneKey_), none
+    // bouncing: refreshLanes() writes only what changes from step to step.
+    bool sameLanes(std::size_t r) const;
+    void refreshLanes(std::size_t r, const BuildTerms& terms, RowCache& cache);
+    static constexpr std::uint64_t kNoLane = ~std::uint64_t{0};
+    std::vector<std::uint64_t> laneKey_;  // per wide slot: the kept contact built there, or kNoLane
     // Row i's bounce terms (a row with restitution), from the row as buildRow() made it: where
     // it is built, so that a lane's row need not be kept in rows_ for bounce().
     void fillBounce(std::size_t i, const Row& row, const RowSetup& setup);
