@@ -519,8 +519,8 @@ void ContactStage::sortByKey(ConstraintList& constraints) {
 
 void ContactStage::updateFrames(const Vec& q, const Vec& u, const Vec& uNext, double dt,
                                 bool keep) {
-    // After rebind() previous_ holds what it carried, in no frame kept here: all found anew.
-    keep = keep && !carried_;
+    // After bind() and rebind() no frame is valid (previous_ then holds what rebind() carried,
+    // in no frame kept here): every collider's is set anew.
     forRange(static_cast<int>(colliders_.size()), kColliderGrain, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
             const Collider& c = colliders_[i];
