@@ -68,7 +68,7 @@ struct SolverBody {
     double invMass = 0.0;
     double invInertia = 0.0;
     double mass = 0.0;  // 1 / invMass, once a step (prepare(): a body has several contacts)
-    Vec2 collidePosition = Vec2::Zero();  // where the contacts were found
+    Vec2 collidePosition = Vec2::Zero();  // where its contacts are measured from (its frame)
     double collideAngle = 0.0;
     // The step: velocity at its start, the smooth step's velocity change, and the start's
     // offset from where the contacts were found.

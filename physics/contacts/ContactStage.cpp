@@ -551,7 +551,9 @@ void ContactStage::updateFrames(const Vec& q, const Vec& u, const Vec& uNext, do
                 frame.valid = true;
             }
             frame.offset = position - frame.position;
-            frame.turn = angle - frame.angle;
+            // A disk's separations move with its centre alone (the solver does not turn its
+            // anchors: ContactSolver::updateMotion), so a contact found anew is not turned back.
+            frame.turn = c.kind == Collider::Kind::Disk ? 0.0 : angle - frame.angle;
         }
     });
 }

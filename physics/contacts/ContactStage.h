@@ -254,7 +254,7 @@ private:
         Vec2 position = Vec2::Zero();
         double angle = 0.0;
         Vec2 offset = Vec2::Zero();  // where the collider is now, from position
-        double turn = 0.0;           // and its angle
+        double turn = 0.0;           // and its angle (0 for a disk)
         bool valid = false;          // set at a collide() since bind()
         bool still = false;          // kept at this collide()
     };
