@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace phasebox {
 
@@ -39,26 +40,39 @@ void ContactSolver::refreshHeld() {
     // the last two, an impact is never held: the solver meets it as before, from the smooth
     // step alone, and the force held is what the contact has shown it keeps up. Nor is an
     // overlap deeper than a resting stack's (bodies started inside each other): its force is
-    // the push-out's, which acts on positions only. Nor, where two bodies that joints hold
-    // touch (a chain folding onto itself), is it the contact's alone: the joints answer it
-    // within the step, so it is left to the solve after it, as an impact is.
+    // the push-out's, which acts on positions only.
+    // Where two bodies that joints hold touch (a ragdoll's torso on its forearm, a chain heaped
+    // on itself), the force is held too: left to the solve after the step, the bodies fell
+    // into each other in every method's step while their other contacts' held forces pushed
+    // them apart, the joints caught the difference and the solve put it back, a lying ragdoll
+    // booking about 1 J of correction and −1 J of work_nc a step (docs/robustness.md). Its
+    // overlap may be deeper than the deep-overlap bound (the joints hold a limb there, at its
+    // stop), and it is held there too. But where the joints close a loop through the contact
+    // (a link pressed between its neighbours' neighbours), the force they balance has no
+    // bound of its own: it grew by a tenth a step, a 1 kg link's contact reached 900 N and the
+    // heap diverged. It is held up to kJointedHoldWeights times the two bodies' weight.
     if (!(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) return;
     const double perSubstep = 1.0 / lastInnerH_, perStep = 1.0 / lastStepH_;
     forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             ContactConstraint& c = constraints_[i];
-            const bool held = !(c.bodyA >= 0 && c.bodyB >= 0 && bodies_[c.bodyA].jointed &&
-                                bodies_[c.bodyB].jointed);
+            const bool jointed = c.bodyA >= 0 && c.bodyB >= 0 && bodies_[c.bodyA].jointed &&
+                                 bodies_[c.bodyB].jointed;
+            const double most = jointed ? kJointedHoldWeights * weightField_ *
+                                              (bodies_[c.bodyA].mass + bodies_[c.bodyB].mass)
+                                        : std::numeric_limits<double>::infinity();
             for (int k = 0; k < c.pointCount; ++k) {
                 ContactPoint& p = c.points[k];
                 p.heldNormal = p.heldTangent = 0.0;
                 // Where the solver's path has left it (separation_ is of these rows).
-                if (!held || separationOf(i, k) < -c.deepOverlap) continue;
+                if (!jointed && separationOf(i, k) < -c.deepOverlap) continue;
                 const Vec2 force = forceOf(p, perSubstep, perStep);
-                p.heldNormal = std::clamp(force.x(), 0.0, std::max(double(p.lastNormal), 0.0));
+                p.heldNormal =
+                    std::min(std::clamp(force.x(), 0.0, std::max(double(p.lastNormal), 0.0)), most);
                 if (force.y() * p.lastTangent > 0.0)
                     p.heldTangent = std::copysign(
-                        std::min(std::abs(force.y()), std::abs(double(p.lastTangent))), force.y());
+                        std::min({std::abs(force.y()), std::abs(double(p.lastTangent)), most}),
+                        force.y());
             }
         }
     });

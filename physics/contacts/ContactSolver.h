@@ -202,6 +202,12 @@ public:
     // After a trial solve of a first step (World::primeContactForces): each point's force is
     // held over the next step as it is, with no step before it to bound it.
     void primeHeld();
+    // The strength of the uniform field (m/s², gravity's |g|; 0 without one) that bounds the
+    // force held on a contact between two jointed bodies (refreshHeld()). The world sets it
+    // at each collide().
+    void setWeightField(double strength) { weightField_ = strength; }
+    // That bound: this many times the two bodies' weight in the field.
+    static constexpr double kJointedHoldWeights = 4.0;
     // Adds scale times the last step's position correction (push-out) to q.
     void addPushOut(Vec& q, double scale) const;
 
@@ -680,8 +686,9 @@ private:
     void storeImpulses(bool solved = false);
     // Per body, the held forces' share of the smooth step's change (after loadBodies).
     void holdBodies(double h);
-    double lastInnerH_ = 0.0;  // the last step's inner sub-step (its impulses are per one)
-    double lastStepH_ = 0.0;   // and the step itself (relaxJoined()'s impulses are per one)
+    double lastInnerH_ = 0.0;   // the last step's inner sub-step (its impulses are per one)
+    double weightField_ = 0.0;  // setWeightField()
+    double lastStepH_ = 0.0;    // and the step itself (relaxJoined()'s impulses are per one)
     int lastSubsteps_ = 0;
     int stepsWantingFewer_ = 0;
     int stepsWantingMore_ = 0;

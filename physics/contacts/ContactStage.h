@@ -81,6 +81,7 @@ public:
     void relaxJoined(Vec& u, const TangentProjection& joints) { solver_.relaxJoined(u, joints); }
     void keepImpulses() { solver_.keepImpulses(); }
     void primeHeld() { solver_.primeHeld(); }
+    void setWeightField(double strength) { solver_.setWeightField(strength); }
     // Whether some contact overlaps deeper than its deepOverlap (bodies started inside each
     // other).
     bool anyDeepOverlap() const {

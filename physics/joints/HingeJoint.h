@@ -18,17 +18,17 @@ inline void hingeRows(const RowsInput& in, Rows& r) {
         // like an equality, as a floor holds a box: after the step only, a limb resting on its
         // stop under its weight sank past it every step and was lifted back by the projection,
         // its energy booked as correction. Which limits hold is found at the step's start (at a
-        // limit within kLimitBand, or past it) and kept for the step's every evaluation, so that
-        // the derivative is smooth within a step (an implicit method's Newton solve). Written so
-        // that it pushes with λ ≥ 0 (solveDynamics() lets go of one that would pull); target
+        // limit within kLimitHoldBand, or past it) and kept for the step's every evaluation, so
+        // that the derivative is smooth within a step (an implicit method's Newton solve). Written
+        // so that it pushes with λ ≥ 0 (solveDynamics() lets go of one that would pull); target
         // marks the side.
         // A hinge still moving out of its limit is an impact: the step does not hold it (the
         // velocity projection after the step catches it, booked as work).
         const double rate = in.b.omega - in.a.omega;
-        const int side = in.limit != kFindLimit                               ? in.limit
-                         : angle < j.lower + kLimitBand && rate > -kLimitRate ? kLowerLimit
-                         : angle > j.upper - kLimitBand && rate < kLimitRate  ? kUpperLimit
-                                                                              : kNoLimit;
+        const int side = in.limit != kFindLimit                                       ? in.limit
+                         : angle < j.lower + kLimitHoldBand && rate > -kLimitHoldRate ? kLowerLimit
+                         : angle > j.upper - kLimitHoldBand && rate < kLimitHoldRate  ? kUpperLimit
+                                                                                      : kNoLimit;
         if (side == kLowerLimit) {
             angleRow(in, angle, j.lower, r);
         } else if (side == kUpperLimit) {

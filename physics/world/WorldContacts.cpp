@@ -161,6 +161,15 @@ void World::collide(int next, int substeps) {
     } else {
         contacts_->collide(bodies_, invMass_, q_[current_], u_[current_], u_[next], 1.0 / substeps,
                            settings_.dt, settings_.contacts);
+        // The uniform fields' strength (gravity's): what a jointed contact's held force is
+        // bounded by (ContactSolver::setWeightField).
+        Vec2 field = Vec2::Zero();
+        for (int i : uniformEffects_) {
+            Vec2 a = Vec2::Zero();
+            effects_[i]->uniformAcceleration(a);
+            field += a;
+        }
+        contacts_->setWeightField(field.norm());
         heldValid_ = true;  // the solver's bodies are of this layout from now on
     }
     effectSeconds_.back() += secondsSince(start);

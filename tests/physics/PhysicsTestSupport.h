@@ -148,4 +148,27 @@ inline double mechanicalEnergy(const World& world) {
     return world.energy().kinetic + world.energy().potential;
 }
 
+// Gravity and a floor through the origin under `integrator`, at the format's defaults otherwise
+// (dt 1/60, one sub-step, impulse contacts): the resting scenes' ground.
+inline SceneDesc floorScene(const std::string& integrator) {
+    SceneDesc s;
+    s.simulation.integrator = integrator;
+    s.effects.gravity = GravityDesc{};
+    PlaneDesc floor;
+    floor.point = {0.0, 0.0};
+    floor.normal = {0.0, 1.0};
+    s.planes.push_back(floor);
+    return s;
+}
+
+// The mass of the world's moving particles and bodies (what CONTRACT §6's rest bound is per).
+inline double dynamicMass(const World& world) {
+    double mass = 0.0;
+    for (const Particle& p : world.particles())
+        if (!p.pinned) mass += p.mass;
+    for (const RigidBody& b : world.rigidBodies())
+        if (!b.isStatic) mass += b.mass;
+    return mass;
+}
+
 }  // namespace phasebox::testing

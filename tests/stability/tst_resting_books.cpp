@@ -21,17 +21,6 @@ using namespace phasebox::testing;
 
 namespace {
 
-SceneDesc floorScene(const char* integrator) {
-    SceneDesc s;
-    s.simulation.integrator = integrator;  // dt 1/60, one sub-step: the format's defaults
-    s.effects.gravity = GravityDesc{};
-    PlaneDesc floor;
-    floor.point = {0.0, 0.0};
-    floor.normal = {0.0, 1.0};
-    s.planes.push_back(floor);
-    return s;
-}
-
 BoxDesc box(const std::string& id, Point2 position, Point2 size) {
     BoxDesc b;
     b.id = id;
@@ -109,15 +98,6 @@ RestingScene restingScene(const QString& name, const char* integrator) {
         r.mustNotSink.push_back("top");
     }
     return r;
-}
-
-double dynamicMass(const World& world) {
-    double mass = 0.0;
-    for (const Particle& p : world.particles())
-        if (!p.pinned) mass += p.mass;
-    for (const RigidBody& b : world.rigidBodies())
-        if (!b.isStatic) mass += b.mass;
-    return mass;
 }
 
 // Every dynamic body's centre, by id.
