@@ -372,6 +372,11 @@ private:
     Vec jointScratch_;
     Vec unappliedJointForce_;  // constrainJoints() under a method that takes them at the end
     Vec beforeContactsQ_, beforeContactsU_;  // the state the contacts start from (step)
+    // The first sub-step's velocities the trial of primeContactForces() collided with, when it
+    // stopped at a deep overlap (trialSubsteps_ > 0: its contacts stand for the step's collide
+    // while the step's inputs are the same to the bit).
+    Vec trialNextU_;
+    int trialSubsteps_ = 0;
     // The joints' sub-steps per frame (jointSubstepsForFrame()): for turning, held since when,
     // and for the pull of their forces, held since when, and the most needed since then.
     int jointSubsteps_ = 1;
