@@ -687,8 +687,8 @@ private:
     // Per body, the held forces' share of the smooth step's change (after loadBodies).
     void holdBodies(double h);
     double lastInnerH_ = 0.0;   // the last step's inner sub-step (its impulses are per one)
-    double weightField_ = 0.0;  // setWeightField()
     double lastStepH_ = 0.0;    // and the step itself (relaxJoined()'s impulses are per one)
+    double weightField_ = 0.0;  // setWeightField()
     int lastSubsteps_ = 0;
     int stepsWantingFewer_ = 0;
     int stepsWantingMore_ = 0;

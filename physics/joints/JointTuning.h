@@ -25,16 +25,14 @@ inline constexpr double kShakeReach = 0.1;
 // rad: a hinge this close to a limit, or past it, is at the limit in the derivative (the
 // position projection leaves it within shakeTolerance_, at most kShakeCeiling, of the limit).
 inline constexpr double kLimitBand = 1e-6;
-// rad/s: a hinge at a limit moving out of it faster than this is meeting it (an impact, caught
-// after the step), not resting on it. The velocity projection leaves a caught rate at rounding.
-inline constexpr double kLimitRate = 1e-9;
 // What the step's derivative takes as resting on a limit: within kLimitHoldBand of it (rad) and
-// moving out past it no faster than kLimitHoldRate (rad/s). The contacts lift a resting limb
-// off its stop by a fraction of a milliradian (a ragdoll's neck by 0.3 mrad, a knee by 0.26
-// mrad, moving at a hundredth of a radian a second); held only within kLimitBand, such a
-// limb swung back onto the stop inside every step under its held contact forces and was caught
-// after it, booking 0.6 J of work_nc and as much correction a step (docs/robustness.md). An
-// approach at kLimitHoldRate carries a limb of 0.05 kg·m² 6e-5 J into its stop.
+// moving out past it no faster than kLimitHoldRate (rad/s); faster, it is meeting the limit (an
+// impact, caught after the step). The contacts lift a resting limb off its stop by a fraction of
+// a milliradian (a ragdoll's neck by 0.3 mrad, a knee by 0.26 mrad, moving at a hundredth of a
+// radian a second); held only within kLimitBand (and below 1e-9 rad/s), such a limb swung back
+// onto the stop inside every step under its held contact forces and was caught after it,
+// booking 0.6 J of work_nc and as much correction a step (docs/robustness.md). An approach at
+// kLimitHoldRate carries a limb of 0.05 kg·m² 6e-5 J into its stop.
 inline constexpr double kLimitHoldBand = 1e-3;
 inline constexpr double kLimitHoldRate = 5e-2;
 

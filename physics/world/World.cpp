@@ -406,13 +406,19 @@ OdeSystem::SplitAcceleration World::accelerationSplit(double t, const Vec& q, co
         return split;
     }
     ++forceEvaluations_;
+    split.uniform = uniformField();
+    split.hasRest = addAccelerations(t, q, u, rest, restFieldEffects_, split.power);
+    return split;
+}
+
+Vec2 World::uniformField() const {
+    Vec2 field = Vec2::Zero();
     for (int i : uniformEffects_) {
         Vec2 a = Vec2::Zero();
         effects_[i]->uniformAcceleration(a);
-        split.uniform += a;
+        field += a;
     }
-    split.hasRest = addAccelerations(t, q, u, rest, restFieldEffects_, split.power);
-    return split;
+    return field;
 }
 
 // The force channel, then the given field effects; returns false (accel untouched) when there

@@ -258,6 +258,8 @@ public:
     }
     double acceleration(double t, const Vec& q, const Vec& u, Vec& accel) override;
     SplitAcceleration accelerationSplit(double t, const Vec& q, const Vec& u, Vec& rest) override;
+    // The sum of the uniform fields' accelerations (gravity's g).
+    Vec2 uniformField() const;
     double nonConservativePower(double t, const Vec& q, const Vec& u) override;
     double forces(double t, const Vec& q, const Vec& u, Vec& force) override;
     double forcesAndJacobians(double t, const Vec& q, const Vec& u, Vec& force,

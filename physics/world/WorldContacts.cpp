@@ -165,15 +165,8 @@ void World::collide(int next, int substeps) {
         if (!found)
             contacts_->collide(bodies_, invMass_, q_[current_], u_[current_], u_[next],
                                1.0 / substeps, settings_.dt, settings_.contacts);
-        // The uniform fields' strength (gravity's): what a jointed contact's held force is
-        // bounded by (ContactSolver::setWeightField).
-        Vec2 field = Vec2::Zero();
-        for (int i : uniformEffects_) {
-            Vec2 a = Vec2::Zero();
-            effects_[i]->uniformAcceleration(a);
-            field += a;
-        }
-        contacts_->setWeightField(field.norm());
+        // What a jointed contact's held force is bounded by (ContactSolver::setWeightField).
+        contacts_->setWeightField(uniformField().norm());
         heldValid_ = true;  // the solver's bodies are of this layout from now on
     }
     effectSeconds_.back() += secondsSince(start);
@@ -210,6 +203,7 @@ void World::primeContactForces(StageTimer& timer) {
     // books would show both. So the forces are found first by a trial of the frame's first
     // sub-step from its start (the method, the contacts found and solved), which leaves the
     // state, the clock, the ledger and the counters as they were; the step then holds them.
+    trialSubsteps_ = 0;  // a trial's contacts serve its own step only
     if (!contacts_ || heldValid_ || settings_.contactModel != ContactModel::Impulse) return;
     timer.start(StepStage::SolveContacts);
     const int next = 1 - current_;
