@@ -36,6 +36,7 @@ void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
     // masses, by the overlap beyond deepOverlap but at most pushOut·h per pass. Separations
     // are where the last inner sub-step left them, plus these moves.
     const int world = static_cast<int>(bodies_.size());
+    ++pushOuts_;
     // Whether any point is that deep, most often not: where the lanes hold the coloured rows,
     // looked for in their separations and deep overlaps, lane by lane and shared, instead of in
     // the constraints' scattered lines (on the 100-row pyramid that walk was 2% of the step, on
@@ -94,12 +95,35 @@ void ContactSolver::deepPushOut(double h, const ContactSettings& settings) {
             const double push = std::min(excess, step) / (wA + wB);
             deepShift_[c.a] -= push * wA * n;
             deepShift_[c.b] += push * wB * n;
+            if (c.a != world && c.b != world) continue;
+            // Out of static geometry: one more solve running (counted once a call).
+            const int dof = bodies_[c.a == world ? c.b : c.a].dof;
+            if (static_cast<std::size_t>(dof) >= jammed_.size()) jammed_.resize(dof + 1);
+            Jammed& jam = jammed_[dof];
+            if (jam.at == pushOuts_) continue;
+            jam.solves = jam.at + 1 == pushOuts_ ? jam.solves + 1 : 1;
+            jam.at = pushOuts_;
         }
     }
     for (int k = 0; k < world; ++k) {
         bodies_[k].shift += deepShift_[k];
         bodies_[k].pushOut += deepShift_[k];
     }
+}
+
+bool ContactSolver::jammedWeights(const Vec& weights, double factor, Vec& out) const {
+    bool any = false;
+    for (const SolverBody& b : bodies_) {
+        const auto dof = static_cast<std::size_t>(b.dof);
+        if (dof >= jammed_.size() || jammed_[dof].at != pushOuts_ ||
+            jammed_[dof].solves < kJammedSolves)
+            continue;
+        if (!any) out = weights;  // the same size after the first: no allocation
+        any = true;
+        out.segment<2>(b.dof) *= factor;
+        if (b.rotates) out[b.dof + 2] *= factor;
+    }
+    return any;
 }
 
 void ContactSolver::addPushOut(Vec& q, double scale) const {

@@ -189,8 +189,13 @@ void ContactSolver::buildRow(std::size_t i, Row& row, RowSetup& setup, const Bui
         r.tangentMass = p.tangentMass;
         // Converged, the soft update −m·s·(v_n + b) − r·λ = 0 is v_n + b + (r/(s·m))·λ = 0.
         setup.compliance[k] = soft.impulseScale / (soft.massScale * p.normalMass);
-        r.normalImpulse = warmScale * p.normalImpulse;
-        r.tangentImpulse = warmScale * p.tangentImpulse;
+        // The warm start is the solve's own impulse of its last inner sub-step. What the
+        // joined relax added after it (relaxJoined()) is an impulse for the whole step, through
+        // the joints' inverse mass: warm-started here it acted in each inner sub-step on the free
+        // bodies, and a ragdoll's shin stopped on a stair with 16 N·s took it four times over
+        // and left at 50 m/s (docs/robustness.md). The held forces still count it (forceOf()).
+        r.normalImpulse = warmScale * p.solvedNormal;
+        r.tangentImpulse = warmScale * p.solvedTangent;
         const Vec2 held = holding_ ? Vec2(h * Vec2(p.heldNormal, p.heldTangent)) : Vec2::Zero();
         r.heldNormal = held.x();
         r.heldTangent = held.y();

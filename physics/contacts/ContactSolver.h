@@ -210,6 +210,13 @@ public:
     static constexpr double kJointedHoldWeights = 4.0;
     // Adds scale times the last step's position correction (push-out) to q.
     void addPushOut(Vec& q, double scale) const;
+    // A body jammed into static geometry: one the deep push-out has moved out of it in each of
+    // the last kJammedSolves solveStep() calls (a limb the joints press into a stair's corner,
+    // under the weight of the body they hold it to). Where there is one, out becomes weights
+    // (inverse masses, by state entry) with a jammed body's times factor, and the call returns
+    // true (World::rejoin).
+    static constexpr int kJammedSolves = 3;
+    bool jammedWeights(const Vec& weights, double factor, Vec& out) const;
 
     // Inner sub-steps per step of h: at least kInnerRate per second (settings.substeps > 0
     // overrides).
@@ -610,6 +617,15 @@ private:
     std::vector<int> supportStart_, supportOrder_, supportsUnder_, supportReady_;
     std::vector<double> load_;     // weightSinks: per body (+ the world), the weight it carries
     std::vector<Vec2> deepShift_;  // per body (+ the static world): deepPushOut's displacement
+    // Per state entry of a body's x: the solves running in which the deep push-out moved it out
+    // of static geometry, and the last of them (pushOuts_ then). Keyed by the state, not by the
+    // solver's bodies: those are numbered anew at each collide.
+    struct Jammed {
+        int solves = 0;
+        std::uint64_t at = 0;
+    };
+    std::vector<Jammed> jammed_;
+    std::uint64_t pushOuts_ = 2;  // deepPushOut() calls; bind() skips one (see reserve())
     // What deepPushOut's passes read of a row: its bodies, normal, deepest point's separation
     // (a move along the normal shifts every point alike, and rounding keeps their order) and
     // deep overlap, side by side (a pass over the rows themselves streams 384 bytes a row).

@@ -23,12 +23,15 @@ inline void hingeRows(const RowsInput& in, Rows& r) {
         // so that it pushes with λ ≥ 0 (solveDynamics() lets go of one that would pull); target
         // marks the side.
         // A hinge still moving out of its limit is an impact: the step does not hold it (the
-        // velocity projection after the step catches it, booked as work).
+        // velocity projection after the step catches it, booked as work). A limit that held
+        // through the last step holds on within kLimitKeepBand (JointTuning.h).
         const double rate = in.b.omega - in.a.omega;
-        const int side = in.limit != kFindLimit                                       ? in.limit
-                         : angle < j.lower + kLimitHoldBand && rate > -kLimitHoldRate ? kLowerLimit
-                         : angle > j.upper - kLimitHoldBand && rate < kLimitHoldRate  ? kUpperLimit
-                                                                                      : kNoLimit;
+        const double lowerBand = in.previousLimit == kLowerLimit ? kLimitKeepBand : kLimitHoldBand;
+        const double upperBand = in.previousLimit == kUpperLimit ? kLimitKeepBand : kLimitHoldBand;
+        const int side = in.limit != kFindLimit                                  ? in.limit
+                         : angle < j.lower + lowerBand && rate > -kLimitHoldRate ? kLowerLimit
+                         : angle > j.upper - upperBand && rate < kLimitHoldRate  ? kUpperLimit
+                                                                                 : kNoLimit;
         if (side == kLowerLimit) {
             angleRow(in, angle, j.lower, r);
         } else if (side == kUpperLimit) {

@@ -88,7 +88,8 @@ void JointSolver::rowsOf(int k, Mode mode, const Vec& q, const Vec& u, Rows& r, 
                                .limit = findLimits_ ? joints::kFindLimit
                                         : mode == Mode::Position && !shakingAlongEnd_
                                             ? joints::kNoLimit
-                                            : heldLimit_[k]};
+                                            : heldLimit_[k],
+                               .previousLimit = heldLimit_[k]};
     switch (j.type) {
         case Joint::Type::Hinge:
             joints::hingeRows(in, r);

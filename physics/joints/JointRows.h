@@ -64,6 +64,9 @@ struct RowsInput {
     // Dynamics mode: the hinge limit the step holds (kNoLimit, kLowerLimit, kUpperLimit), or
     // kFindLimit: the one the hinge is at now, if any (JointSolver::holdLimitsFromNextEvaluation).
     int limit = 0;
+    // The limit the last step held (kNoLimit, kLowerLimit, kUpperLimit): with kFindLimit, one
+    // that held is found within the wider kLimitKeepBand.
+    int previousLimit = 0;
 };
 inline constexpr int kNoLimit = 0, kLowerLimit = 1, kUpperLimit = 2, kFindLimit = 3;
 

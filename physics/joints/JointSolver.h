@@ -68,6 +68,10 @@ public:
     // and push against, and the step's evaluations hold those (HingeJoint.h). A function of the
     // step's start alone: nothing to keep in a snapshot.
     void holdLimitsFromNextEvaluation() { findLimits_ = true; }
+    // The caller has changed the contents of weights: factors made with them do not stand.
+    void weightsChanged(const Vec& weights) {
+        if (factoredMass_ == &weights) factoredValid_ = false;
+    }
 
     // accel holds M⁻¹·F of every other force; adds M⁻¹·Jᵀ·λ so that the joints' second
     // derivatives vanish.

@@ -374,6 +374,7 @@ private:
     Vec jointScratch_;
     Vec unappliedJointForce_;  // constrainJoints() under a method that takes them at the end
     Vec beforeContactsQ_, beforeContactsU_;  // the state the contacts start from (step)
+    Vec rejoinWeights_;                      // rejoin(): the inverse masses, a jammed body's scaled
     // The first sub-step's velocities the trial of primeContactForces() collided with, when it
     // stopped at a deep overlap (trialSubsteps_ > 0: its contacts stand for the step's collide
     // while the step's inputs are the same to the bit).

@@ -26,6 +26,8 @@ constexpr double kJointStabilityShare = 0.5;
 // midpoint in its fourth step; at a quarter, both weights held over 30 s under velocity
 // Verlet, RK4 and implicit midpoint, their drift within 9 J (jointSubstepsForFrame()).
 constexpr double kPulledStabilityShare = 0.25;
+// A jammed body's inverse mass in the joints' position correction after the contacts (rejoin()).
+constexpr double kJammedInverseMassShare = 0.01;
 // The joints as the contacts' joined relax sees them (rejoin()).
 class JointTangent final : public TangentProjection {
 public:
@@ -147,7 +149,18 @@ void World::rejoin(int next) {
     // contact and to the car by the hinge at once. step() books the net of contacts and joints.
     Vec& q = q_[next];
     Vec& u = u_[next];
-    joints_->correctPositions(q, u, invMass_);
+    // A body jammed into static geometry (ContactSolver::jammedWeights) weighs
+    // 1/kJammedInverseMassShare times its mass here: the joints bring the rest of the body to
+    // where the push-out moved it, instead of pulling it back in, where the next step's method
+    // put it again. Before, a ragdoll's shin went 2.7 cm in and out of a stair's corner every
+    // step, the deep overlap's force was never held and the doll fell freely in each method
+    // step: 0.45 J of correction a step, lying still (docs/robustness.md).
+    const Vec* weights = &invMass_;
+    if (contacts_->solver().jammedWeights(invMass_, kJammedInverseMassShare, rejoinWeights_)) {
+        joints_->weightsChanged(rejoinWeights_);
+        weights = &rejoinWeights_;
+    }
+    joints_->correctPositions(q, u, *weights);
     joints_->projectVelocities(q, u, invMass_);
     if (!contacts_->touching()) return;
     contacts_->relaxJoined(u, JointTangent(*joints_, invMass_));
