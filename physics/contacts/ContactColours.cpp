@@ -288,8 +288,8 @@ void ContactSolver::refreshLanes(std::size_t r, const BuildTerms& terms, RowCach
             separation_[2 * i + static_cast<std::size_t>(k)] = p.baseSeparation;
             e.separation[l] = p.baseSeparation;
             S.compliance[k][l] = soft.impulseScale / (soft.massScale * p.normalMass);
-            q.normalImpulse[l] = terms.warmScale * p.normalImpulse;
-            q.tangentImpulse[l] = terms.warmScale * p.tangentImpulse;
+            q.normalImpulse[l] = terms.warmScale * p.solvedNormal;  // as buildRow()'s
+            q.tangentImpulse[l] = terms.warmScale * p.solvedTangent;
             const Vec2 held =
                 holding_ ? Vec2(terms.h * Vec2(p.heldNormal, p.heldTangent)) : Vec2::Zero();
             e.heldNormal[l] = held.x();
