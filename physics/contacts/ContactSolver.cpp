@@ -232,7 +232,7 @@ void ContactSolver::loadBodies(const Vec& q0, const Vec& u0, const Vec& u) {
 }
 
 void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
-    pushOuts_ += 2;  // the bodies are bound anew: no count runs on across it
+    jammed_.clear();  // the bodies are bound anew: no count runs on across it
     bodies_.reserve(bodies);
     constraints_.reserve(constraints);
     state_.reserve(bodies + 1);

@@ -107,10 +107,11 @@ struct ContactPoint {
     double baseSeparation = 0.0;  // separation when found
     double normalMass = 0.0;
     double tangentMass = 0.0;
-    double normalImpulse = 0.0;  // accumulated (warm-started)
+    double normalImpulse = 0.0;  // accumulated
     double tangentImpulse = 0.0;
-    // Of those, what the last inner sub-step's solve and relax gave (per inner sub-step); the
-    // rest came from relaxJoined() after the step, once for the whole step.
+    // Of those, what the last inner sub-step's solve and relax gave (per inner sub-step: the
+    // next step's warm start); the rest came from relaxJoined() after the step, once for the
+    // whole step.
     double solvedNormal = 0.0, solvedTangent = 0.0;
     // The force the impulses of the step before the last stood for (a bound for the held force:
     // single precision is enough), and the force held over the next step (refreshHeld()), each
@@ -625,7 +626,7 @@ private:
         std::uint64_t at = 0;
     };
     std::vector<Jammed> jammed_;
-    std::uint64_t pushOuts_ = 2;  // deepPushOut() calls; bind() skips one (see reserve())
+    std::uint64_t pushOuts_ = 0;  // deepPushOut() calls
     // What deepPushOut's passes read of a row: its bodies, normal, deepest point's separation
     // (a move along the normal shifts every point alike, and rounding keeps their order) and
     // deep overlap, side by side (a pass over the rows themselves streams 384 bytes a row).

@@ -65,8 +65,8 @@ public:
     // Ropes or hinge limits: rows that switch on and off.
     bool hasInequalities() const { return hasInequalities_; }
     // A step starts: its first derivative evaluation finds which hinge limits the hinges rest on
-    // and push against, and the step's evaluations hold those (HingeJoint.h). A function of the
-    // step's start alone: nothing to keep in a snapshot.
+    // and push against, and the step's evaluations hold those (HingeJoint.h). From the step's
+    // start and the limits the last step held (heldLimit_, which snapshots keep with the rest).
     void holdLimitsFromNextEvaluation() { findLimits_ = true; }
     // The caller has changed the contents of weights: factors made with them do not stand.
     void weightsChanged(const Vec& weights) {
