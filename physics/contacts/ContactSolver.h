@@ -209,6 +209,10 @@ public:
     void setWeightField(double strength) { weightField_ = strength; }
     // That bound: this many times the two bodies' weight in the field.
     static constexpr double kJointedHoldWeights = 4.0;
+    // A point of a jointed body found open at the frame's collide by more than this share of
+    // the contact's deep overlap (1% of the smaller body's half-size) holds no force over the
+    // next method step (refreshHeld()).
+    static constexpr double kHeldOpenShare = 0.1;
     // Adds scale times the last step's position correction (push-out) to q.
     void addPushOut(Vec& q, double scale) const;
     // A body jammed into static geometry: one the deep push-out has moved out of it in each of
