@@ -55,9 +55,10 @@ void ContactSolver::refreshHeld() {
     // nothing: the force held over the method's step had pushed the body off it. Held again,
     // that force fed itself: the joints pulled the body back, the solve caught it harder, and
     // the larger force was held. A 2 kg forearm off a stair of the ragdoll example was held at
-    // 1,400 N and then 4,400 N over three frames, kicked to 40 rad/s in each method step, and the
-    // fall booked 1,100 J of correction (docs/robustness.md). A free body pushed off leaves its
-    // contact, whose force then falls to nothing; a body that joints hold is brought back.
+    // 1,400 N and then 4,400 N over three frames, spun at 32 and then 40 rad/s in the method's
+    // steps, and the fall booked 1,100 J of correction (docs/robustness.md). A free body pushed off
+    // leaves its contact, whose force then falls to nothing; a body that joints hold is brought
+    // back.
     if (!(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) return;
     const double perSubstep = 1.0 / lastInnerH_, perStep = 1.0 / lastStepH_;
     forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
