@@ -48,20 +48,21 @@ void ContactSolver::refreshHeld() {
     // booking about 1 J of correction and −1 J of work_nc a step (docs/robustness.md). Its
     // overlap may be deeper than the deep-overlap bound (the joints hold a limb there, at its
     // stop), and it is held there too, as is a jointed body's deep point on anything else: a
-    // lying doll's shin 13.7 mm into the floor held nothing there, its leg fell about the hip in
-    // every method step and rejoin lifted the thigh 7.6 mm back onto the knee, 25 J of
-    // correction a second under symplectic Euler (docs/robustness.md). But where the joints close a
-    // loop through the contact (a link pressed between its neighbours' neighbours), the force they
-    // balance has no bound of its own: it grew by a tenth a step, a 1 kg link's contact reached 900
-    // N and the heap diverged. It is held up to kJointedHoldWeights times the two bodies' weight.
+    // lying doll's shin 13.7 mm into the floor held nothing there, its leg fell about the hip
+    // in every method step and rejoin lifted the thigh 7.6 mm back onto the knee, 25 J of
+    // correction a second under symplectic Euler (docs/robustness.md). But where the joints
+    // close a loop through the contact (a link pressed between its neighbours' neighbours), the
+    // force they balance has no bound of its own: it grew by a tenth a step, a 1 kg link's
+    // contact reached 900 N and the heap diverged. It is held up to kJointedHoldWeights times
+    // the two bodies' weight.
     // A point of a jointed body that the frame's collide found open (kHeldOpenShare) holds
     // nothing: the force held over the method's step had pushed the body off it. Held again,
     // that force fed itself: the joints pulled the body back, the solve caught it harder, and
     // the larger force was held. A 2 kg forearm off a stair of the ragdoll example was held at
     // 1,400 N and then 4,400 N over three frames, spun at 32 and then 40 rad/s in the method's
-    // steps, and the fall booked 1,100 J of correction (docs/robustness.md). A free body pushed off
-    // leaves its contact, whose force then falls to nothing; a body that joints hold is brought
-    // back.
+    // steps, and the fall booked 1,100 J of correction (docs/robustness.md). A free body pushed
+    // off leaves its contact, whose force then falls to nothing; a body that joints hold is
+    // brought back.
     if (!(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) return;
     const double perSubstep = 1.0 / lastInnerH_, perStep = 1.0 / lastStepH_;
     forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
@@ -69,7 +70,8 @@ void ContactSolver::refreshHeld() {
             ContactConstraint& c = constraints_[i];
             const bool jointedA = c.bodyA >= 0 && bodies_[c.bodyA].jointed;
             const bool jointedB = c.bodyB >= 0 && bodies_[c.bodyB].jointed;
-            const bool jointed = jointedA && jointedB;
+            const bool jointed = jointedA && jointedB;  // both: the force's bound below
+            const bool holdsJointed = jointedA || jointedB;
             const double most = jointed ? kJointedHoldWeights * weightField_ *
                                               (bodies_[c.bodyA].mass + bodies_[c.bodyB].mass)
                                         : std::numeric_limits<double>::infinity();
@@ -77,10 +79,9 @@ void ContactSolver::refreshHeld() {
                 ContactPoint& p = c.points[k];
                 p.heldNormal = p.heldTangent = 0.0;
                 // Where the solver's path has left it (separation_ is of these rows).
-                if (!(jointedA || jointedB) && separationOf(i, k) < -c.deepOverlap) continue;
+                if (!holdsJointed && separationOf(i, k) < -c.deepOverlap) continue;
                 // Where the frame's collide found it, after the method's step.
-                if ((jointedA || jointedB) && p.baseSeparation > kHeldOpenShare * c.deepOverlap)
-                    continue;
+                if (holdsJointed && p.baseSeparation > kHeldOpenShare * c.deepOverlap) continue;
                 const Vec2 force = forceOf(p, perSubstep, perStep);
                 p.heldNormal =
                     std::min(std::clamp(force.x(), 0.0, std::max(double(p.lastNormal), 0.0)), most);
