@@ -236,19 +236,34 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
     // time.
     bouncing_.clear();
     bouncing_.reserve(constraints_.size());
+    handedOn_.clear();
+    handedOn_.reserve(constraints_.size());
     bounceAt_.resize(constraints_.size());
+    fastHanded_.clear();
     for (std::size_t i = 0; i < constraints_.size(); ++i) {
         const ContactConstraint& c = constraints_[i];
+        const BounceRow row{static_cast<int>(i), c.bodyA >= 0 ? c.bodyA : world,
+                            c.bodyB >= 0 ? c.bodyB : world, 0};
         if (c.restitution == 0.0) {
             bounceAt_[i] = -1;
+            // Not through a jointed body: its impulse would move what the joints hold too, which
+            // the passes do not see (a resting ragdoll's limbs were kicked into jitter).
+            const bool jointed = (c.bodyA >= 0 && bodies_[c.bodyA].jointed) ||
+                                 (c.bodyB >= 0 && bodies_[c.bodyB].jointed);
+            if (jointed) continue;
+            if (c.fast) fastHanded_.push_back(static_cast<int>(handedOn_.size()));
+            handedOn_.push_back(row);
             continue;
         }
         bounceAt_[i] = static_cast<int>(bouncing_.size());
-        bouncing_.push_back({static_cast<int>(i), c.bodyA >= 0 ? c.bodyA : world,
-                             c.bodyB >= 0 ? c.bodyB : world, 0});
+        bouncing_.push_back(row);
     }
+    if (bouncing_.empty() && fastHanded_.empty()) handedOn_.clear();  // no impact to hand on
     bounceTerms_.clear();
     bounceTerms_.resize(bouncing_.size());
+    handedTerms_.clear();
+    handedTerms_.resize(handedOn_.size());
+    handedMade_.assign(handedOn_.size(), 0);
     colourRows();
     const BuildTerms terms{hertz, zeta, h, warmScale};
     if (lanesHold_) {
@@ -276,10 +291,50 @@ void ContactSolver::buildRows(double hertz, double zeta, double h, double warmSc
 }
 
 void ContactSolver::fillBounce(std::size_t i, const Row& row, const RowSetup& setup) {
+    fillBounceTerms(bounceTerms_[static_cast<std::size_t>(bounceAt_[i])],
+                    constraints_[i].restitution, row, setup);
+}
+
+void ContactSolver::laneBounceTerms(std::size_t i, BounceTerms& t) const {
+    const int at = lanesHold_ ? slot_[i] : -1;
+    if (at < 0) {
+        fillBounceTerms(t, constraints_[i].restitution, rows_[i], setup_[i]);
+        return;
+    }
+    // The row as buildRow() made it, as far as the terms read it (unpackRows()'s reading).
+    const WideRow& w = wide_[at / kLanes];
+    const WideCold& u = wideCold_[at / kLanes];
+    const WideSetup& S = wideSetup_[at / kLanes];
+    const int l = at % kLanes;
+    Row row{};
+    RowSetup setup{};
+    row.a = w.a[l];
+    row.b = w.b[l];
+    row.pointCount = u.points[l];
+    row.nx = w.nx[l];
+    row.ny = w.ny[l];
+    if (row.pointCount == 2) {
+        row.k11 = w.k11[l];
+        row.k12 = w.k12[l];
+        row.k22 = w.k22[l];
+        setup.blockable = S.blockable[l] != 0;
+    }
+    for (int k = 0; k < row.pointCount; ++k) {
+        RowPoint& p = row.p[k];
+        p.rAx = u.p[k].rAx[l];
+        p.rAy = u.p[k].rAy[l];
+        p.rBx = u.p[k].rBx[l];
+        p.rBy = u.p[k].rBy[l];
+        setup.normalMass[k] = S.normalMass[k][l];
+    }
+    fillBounceTerms(t, constraints_[i].restitution, row, setup);
+}
+
+void ContactSolver::fillBounceTerms(BounceTerms& bounce, double restitution, const Row& row,
+                                    const RowSetup& setup) const {
     const int world = static_cast<int>(bodies_.size());
-    BounceTerms& bounce = bounceTerms_[static_cast<std::size_t>(bounceAt_[i])];
     bounce.pointCount = row.pointCount;
-    bounce.restitution = constraints_[i].restitution;
+    bounce.restitution = restitution;
     bounce.nx = row.nx;
     bounce.ny = row.ny;
     bounce.blockable = setup.blockable;

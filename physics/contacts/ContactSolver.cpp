@@ -246,6 +246,10 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     overflow_.reserve(constraints);
     bouncing_.reserve(constraints);
     bounceTerms_.reserve(constraints);
+    handedOn_.reserve(constraints);
+    handedTerms_.reserve(constraints);
+    handedMade_.reserve(constraints);
+    fastHanded_.reserve(constraints);
     supports_.reserve(constraints);
     for (auto* perPoint : {&shifted_, &bounces_}) perPoint->reserve(2 * constraints);
     separation_.reserve(2 * constraints);
@@ -678,7 +682,7 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     bool moved = true;
     // A sub-step's share of the smooth step's velocity change; the velocity before the bounces
     // is kept where there are bounces (relax's pass below overwrites it otherwise).
-    const bool bouncing = !bouncing_.empty();
+    const bool bouncing = bounces();
     const auto smoothShare = [&](SolverBody& b, BodyState& s) {
         s.vx += b.smoothDv.x() / n;
         s.vy += b.smoothDv.y() / n;

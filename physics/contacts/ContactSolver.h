@@ -137,6 +137,9 @@ struct ContactConstraint {
     int pointCount = 0;
     // Last frame's, kept as it was (ContactStage's frames): its masses and stiffness stand.
     bool kept = false;
+    // Its bodies' relative speed at collide could make an impact (above the restitution
+    // threshold): without restitution too, the bounce passes look at it (bounce()).
+    bool fast = false;
     ContactPoint points[2];
 };
 
@@ -582,10 +585,11 @@ private:
     std::vector<int> colourWide_;            // per colour its first wide row, then the end
     std::vector<int> blockCount_;            // per colour and block its rows, then the next slot
     std::vector<int> blockWide_;  // per colour kBlocks + 1 wide rows: where each block starts
-    // A row with restitution, as its bounce passes read it: the later passes' skip test reads
-    // only BounceRow (16 bytes a row), a look at the row its BounceTerms (what the row holds,
-    // fixed for the step, side by side: a Row is 384 bytes, a pile's rows megabytes), the
-    // separations and the body states, and a row's K only where a manifold lands flat.
+    // A row as the bounce passes read it (one with restitution, or one a bounce is handed on
+    // through): the later passes' skip test reads only BounceRow (16 bytes a row), a look at the
+    // row its BounceTerms (what the row holds, fixed for the step, side by side: a Row is 384
+    // bytes, a pile's rows megabytes), the separations and the body states, and a row's K only
+    // where a manifold lands flat.
     struct BounceRow {
         int row;
         int a, b;                 // the row's bodies
@@ -605,6 +609,21 @@ private:
     LargeVector<BounceRow> bouncing_;                    // rows with restitution > 0
     UninitializedLargeVector<BounceTerms> bounceTerms_;  // likewise (filled by fillBounce())
     std::vector<int> bounceAt_;                          // per row: its place in bouncing_, or −1
+    // The rows without restitution, where bouncing_ has some or one of them is fast: an impact
+    // is handed on through them, inelastically, to the bodies it reaches (bounce()), and a fast
+    // one is looked at from the first pass. Their terms are made the first time a pass looks at
+    // one in the step (handedMade_).
+    LargeVector<BounceRow> handedOn_;
+    UninitializedLargeVector<BounceTerms> handedTerms_;
+    std::vector<unsigned char> handedMade_;
+    std::vector<int> fastHanded_;  // the fast ones (ContactConstraint::fast), by handedOn_ entry
+    // Whether the step's rows can bounce (bounce() has something to look at).
+    bool bounces() const { return !bouncing_.empty() || !handedOn_.empty(); }
+    void fillBounceTerms(BounceTerms& t, double restitution, const Row& row,
+                         const RowSetup& setup) const;
+    // Row i's bounce terms from its lane (or from rows_ where it has none), once the step's
+    // rows are built: a row without restitution that a bounce reaches (handedOn_).
+    void laneBounceTerms(std::size_t i, BounceTerms& t) const;
     std::vector<unsigned char> shifted_;  // per row point (2 per row): moved to its time of impact
     std::vector<unsigned char> bounces_;  // per row point: bounces in this inner sub-step
     std::vector<std::uint32_t> changedAt_;  // per body (+ the world): clock of its last impulse

@@ -592,6 +592,7 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& inverseMass, do
             const auto [i, j] = pairs_[p];
             Found& f = found_[p];
             f.kept = -1;
+            f.fast = false;
             if (frames_[i].still && frames_[j].still) {
                 // Neither has moved since its contacts were found: last frame's stands (with
                 // its materials: they change only with a new bind()).
@@ -612,8 +613,10 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& inverseMass, do
             const Motion& b = motion_[j];
             const double closing = std::sqrt(
                 std::max((b.start - a.start).squaredNorm(), (b.end - a.end).squaredNorm()));
-            const double margin = settings.speculativeDistance +
-                                  std::min(sweep[i] + sweep[j], closing * dt + a.turn + b.turn);
+            const double reach = closing * dt + a.turn + b.turn;
+            const double margin =
+                settings.speculativeDistance + std::min(sweep[i] + sweep[j], reach);
+            f.fast = reach > settings.restitutionThreshold * dt;
             f.hit = narrowPhase(bodies, i, j, margin, f.m, f.pair);
         }
     });
@@ -625,6 +628,11 @@ void ContactStage::findContacts(const Bodies& bodies, const Vec& inverseMass, do
             Found& f = found_[pairCount + t];
             const double margin = settings.speculativeDistance + sweep[i];
             f.kept = -1;
+            const Motion& motion = motion_[i];
+            f.fast =
+                std::sqrt(std::max(motion.start.squaredNorm(), motion.end.squaredNorm())) * dt +
+                    motion.turn >
+                settings.restitutionThreshold * dt;
             if (frames_[i].still) {
                 f.kept = keptContact(pairKey(count + k, i), next);
                 if (f.kept >= 0) {
@@ -700,6 +708,7 @@ void ContactStage::buildContacts(int begin, int end) {
             c = ContactConstraint{};
             c.bodyA = made.bodyA;
             c.bodyB = made.bodyB;
+            c.fast = f.fast;
             fillConstraint(c, made.key, f.pair.a, f.pair.b, f.m, f.pair.friction,
                            f.pair.restitution);
             continue;
@@ -710,6 +719,7 @@ void ContactStage::buildContacts(int begin, int end) {
         c.bodyA = made.bodyA;
         c.bodyB = made.bodyB;
         c.kept = true;
+        c.fast = false;  // neither body has moved
     }
 }
 

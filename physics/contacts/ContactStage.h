@@ -220,6 +220,8 @@ private:
         Manifold m;
         PairContact pair;
         bool hit = false;
+        // Its bodies may meet faster than a bounce's threshold in this step (ContactConstraint).
+        bool fast = false;
         int kept = -1;  // the contact of previous_ it keeps as it was, or −1 (found anew)
     };
     LargeVector<Found> found_;
