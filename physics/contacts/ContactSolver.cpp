@@ -250,6 +250,7 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     handedTerms_.reserve(constraints);
     handedMade_.reserve(constraints);
     fastHanded_.reserve(constraints);
+    support_.reserve(bodies + 1);
     supports_.reserve(constraints);
     for (auto* perPoint : {&shifted_, &bounces_}) perPoint->reserve(2 * constraints);
     separation_.reserve(2 * constraints);

@@ -617,6 +617,11 @@ private:
     UninitializedLargeVector<BounceTerms> handedTerms_;
     std::vector<unsigned char> handedMade_;
     std::vector<int> fastHanded_;  // the fast ones (ContactConstraint::fast), by handedOn_ entry
+    // Per body (+ the world), in a bounce() that hands an impact on: the direction of the push
+    // of the support it was stopped against (zero: none).
+    std::vector<Vec2> support_;
+    // A row's terms with one body held (its inverse masses zero in a and b).
+    static void oneSidedTerms(BounceTerms& t, const BodyState& a, const BodyState& b);
     // Whether the step's rows can bounce (bounce() has something to look at).
     bool bounces() const { return !bouncing_.empty() || !handedOn_.empty(); }
     void fillBounceTerms(BounceTerms& t, double restitution, const Row& row,
