@@ -233,6 +233,13 @@ public:
     // The deepest sag a stack may take at the default stiffness before the solver adds inner
     // sub-steps (stiffer with each), and the passes that sum sag down support chains.
     static constexpr double kSagTarget = 0.04;
+    // A taller stack may sag by this share of its height (its centre's height above the ground,
+    // up its support chain): a 100 m pyramid sagging 10 cm looks to the class as a 40 m tower
+    // sagging 4 cm. Below 40 m, kSagTarget.
+    static constexpr double kSagHeightShare = 0.001;
+    static double allowedSag(double height) {
+        return std::max(kSagTarget, kSagHeightShare * height);
+    }
     // The deepest a loaded contact may rest at the default stiffness, as a share of its
     // deep-overlap bound (a tenth of the smaller body's half-size): past that bound the push-out
     // moves positions only, so a stack of small bodies resting there is pushed apart and falls.
@@ -424,7 +431,8 @@ private:
     // Sub-steps for this step: `base`, or more when the stack the warm-start impulses carry
     // would sag further than kSagTarget at the base stiffness (after loadBodies).
     int stackSubsteps(double h, int base, const ContactSettings& settings);
-    // depth_ from supports_: how far each body sinks down its support chains, in the supports'
+    // depth_ from supports_: how far each body sinks down its support chains, and height_ how
+    // high its centre stands up them (0 on a cycle), in the supports'
     // topological order (Kahn's, left in supportReady_ with supportStart_ and supportOrder_,
     // the supports by lower body); false where they form a cycle (then by passes).
     bool sagDepths();
@@ -635,7 +643,7 @@ private:
     // stackSubsteps: per body (+ the static world) the predicted sag, and per contact which body
     // rests on which and how far the upper one sinks into the lower (upper −1: it carries no
     // load).
-    std::vector<double> depth_;
+    std::vector<double> depth_, height_;
     struct Support {
         int upper, lower;
         double sink;

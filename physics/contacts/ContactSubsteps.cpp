@@ -44,7 +44,9 @@ bool ContactSolver::sagDepths() {
     // any order that changes nothing leaves the same depths, bit for bit (each the largest sum
     // over its supports of their final depth and its sink), so both ways agree on those.
     const std::size_t nodes = bodies_.size() + 1;
+    const int world = static_cast<int>(bodies_.size());
     depth_.assign(nodes, 0.0);
+    height_.assign(nodes, 0.0);
     // The supports by their lower body (a counting sort), and how many rest under each body.
     supportStart_.assign(nodes + 1, 0);
     supportsUnder_.assign(nodes, 0);
@@ -71,10 +73,22 @@ bool ContactSolver::sagDepths() {
         for (int e = supportStart_[lower]; e < supportStart_[lower + 1]; ++e) {
             const Support& s = supports_[supportOrder_[e]];
             depth_[s.upper] = std::max(depth_[s.upper], depth_[lower] + s.sink);
+            // Up from the lower body's centre (the ground: the contact) to the upper one's,
+            // against the upper one's push, through the first point.
+            const ContactConstraint& c = constraints_[supportOrder_[e]];
+            const ContactPoint& p = c.points[0];
+            const bool upperIsB = s.upper == (c.bodyB >= 0 ? c.bodyB : world);
+            const Vec2 push = bodies_[s.upper].smoothDv - bodies_[s.upper].heldDv;
+            const double norm = push.norm();
+            const Vec2 rise = (lower == world ? Vec2::Zero() : (upperIsB ? p.anchorA : p.anchorB)) -
+                              (upperIsB ? p.anchorB : p.anchorA);
+            const double up = norm > 0.0 ? -rise.dot(push) / norm : 0.0;
+            height_[s.upper] = std::max(height_[s.upper], height_[lower] + up);
             if (--supportsUnder_[s.upper] == 0) supportReady_.push_back(s.upper);
         }
     }
     if (supportReady_.size() == nodes) return true;
+    std::fill(height_.begin(), height_.end(), 0.0);
     // A cycle (bodies resting on each other round a ring): passes in the contacts' order, as
     // many as the cap allows (the depths on the ring grow with every pass).
     std::fill(depth_.begin(), depth_.end(), 0.0);
@@ -192,10 +206,14 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
         worstSink = weightSinks(h, omega);
         depthsInOrder();
     }
-    for (double d : depth_) predictedSag_ = std::max(predictedSag_, d);
+    double sagRatio = 0.0;
+    for (std::size_t k = 0; k < depth_.size(); ++k) {
+        predictedSag_ = std::max(predictedSag_, depth_[k]);
+        sagRatio = std::max(sagRatio, depth_[k] / allowedSag(height_[k]));
+    }
     if (settings.substeps > 0) return base;
     // How far past its bound the worse of the two goes: the stack's sag, or a contact's own.
-    const double depthRatio = std::max(predictedSag_ / kSagTarget, worstSink);
+    const double depthRatio = std::max(sagRatio, worstSink);
     // A change of stiffness moves a resting stack to a new rest, so the count follows the
     // load, not an impact: it rises when the sag has been predicted too deep for a while (by
     // the least of those predictions) and falls when fewer have sufficed for longer.
