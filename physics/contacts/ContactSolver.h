@@ -647,6 +647,7 @@ private:
     struct Support {
         int upper, lower;
         double sink;
+        double rise;  // from the lower centre up to the upper one (sagDepths()' heights)
     };
     std::vector<Support> supports_;
     // sagDepths: the supports by lower body (supportOrder_ from supportStart_[lower]), per body

@@ -44,7 +44,6 @@ bool ContactSolver::sagDepths() {
     // any order that changes nothing leaves the same depths, bit for bit (each the largest sum
     // over its supports of their final depth and its sink), so both ways agree on those.
     const std::size_t nodes = bodies_.size() + 1;
-    const int world = static_cast<int>(bodies_.size());
     depth_.assign(nodes, 0.0);
     height_.assign(nodes, 0.0);
     // The supports by their lower body (a counting sort), and how many rest under each body.
@@ -73,17 +72,7 @@ bool ContactSolver::sagDepths() {
         for (int e = supportStart_[lower]; e < supportStart_[lower + 1]; ++e) {
             const Support& s = supports_[supportOrder_[e]];
             depth_[s.upper] = std::max(depth_[s.upper], depth_[lower] + s.sink);
-            // Up from the lower body's centre (the ground: the contact) to the upper one's,
-            // against the upper one's push, through the first point.
-            const ContactConstraint& c = constraints_[supportOrder_[e]];
-            const ContactPoint& p = c.points[0];
-            const bool upperIsB = s.upper == (c.bodyB >= 0 ? c.bodyB : world);
-            const Vec2 push = bodies_[s.upper].smoothDv - bodies_[s.upper].heldDv;
-            const double norm = push.norm();
-            const Vec2 rise = (lower == world ? Vec2::Zero() : (upperIsB ? p.anchorA : p.anchorB)) -
-                              (upperIsB ? p.anchorB : p.anchorA);
-            const double up = norm > 0.0 ? -rise.dot(push) / norm : 0.0;
-            height_[s.upper] = std::max(height_[s.upper], height_[lower] + up);
+            height_[s.upper] = std::max(height_[s.upper], height_[lower] + s.rise);
             if (--supportsUnder_[s.upper] == 0) supportReady_.push_back(s.upper);
         }
     }
@@ -190,10 +179,19 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
             const int a = c.bodyA >= 0 ? c.bodyA : world;
             const int b = c.bodyB >= 0 ? c.bodyB : world;
             // The normal points from A to B: B rests on A when its smooth push is against n.
+            // The rise: from the lower body's centre (the ground's: the contact) up to the upper
+            // one's, against the upper one's push, through the first point.
+            const ContactPoint& p = c.points[0];
+            const auto rise = [&](int upper, const Vec2& upperArm, const Vec2& lowerArm) {
+                const Vec2 push = bodies_[upper].smoothDv - bodies_[upper].heldDv;
+                const Vec2 between =
+                    (upper == a ? b : a) == world ? Vec2(-upperArm) : Vec2(lowerArm - upperArm);
+                return -between.dot(push) / push.norm();
+            };
             if (b < world && c.normal.dot(bodies_[b].smoothDv - bodies_[b].heldDv) < 0.0)
-                s = {b, a, sink};
+                s = {b, a, sink, rise(b, p.anchorB, p.anchorA)};
             else if (a < world && c.normal.dot(bodies_[a].smoothDv - bodies_[a].heldDv) > 0.0)
-                s = {a, b, sink};
+                s = {a, b, sink, rise(a, p.anchorA, p.anchorB)};
         }
         for (double seen = worst.load(); worstSink > seen;)
             if (worst.compare_exchange_weak(seen, worstSink)) break;
