@@ -71,6 +71,12 @@ double ContactSolver::joinedCoupling(const JoinedRow& r, const JoinedRow& s,
 void ContactSolver::buildJoinedRows(int n) {
     const int world = static_cast<int>(bodies_.size());
     joined_.clear();
+    // Room for as many rows as the contacts were reserved for, at the first joined step (a
+    // scene without joints never comes here): the counts' new largest values allocate nothing.
+    const std::size_t room = constraints_.capacity();
+    if (joined_.capacity() < 4 * room) joined_.reserve(4 * room);
+    if (joinedStart_.capacity() < room + 1) joinedStart_.reserve(room + 1);
+    if (blockCoupling_.capacity() < room) blockCoupling_.reserve(room);
     joinedStart_.assign(rows_.size() + 1, 0);
     joinedScratch_.setZero(n);
     joinedCached_ = 0;

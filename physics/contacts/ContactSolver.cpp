@@ -239,10 +239,16 @@ void ContactSolver::reserve(std::size_t bodies, std::size_t constraints) {
     motion_.reserve(bodies + 1);
     deepShift_.reserve(bodies + 1);
     changedAt_.reserve(bodies + 1);
-    depth_.reserve(bodies + 1);
+    for (auto* perBody : {&depth_, &height_, &load_}) perBody->reserve(bodies + 1);
+    supportStart_.reserve(bodies + 2);
+    supportsUnder_.reserve(bodies + 1);
+    supportReady_.reserve(bodies + 1);
+    supportOrder_.reserve(constraints);
     rows_.reserve(constraints);
     setup_.reserve(constraints);
     slot_.reserve(constraints);
+    colouredPairs_.reserve(constraints);
+    bounceAt_.reserve(constraints);
     overflow_.reserve(constraints);
     bouncing_.reserve(constraints);
     bounceTerms_.reserve(constraints);
