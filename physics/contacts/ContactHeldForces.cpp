@@ -66,32 +66,33 @@ void ContactSolver::refreshHeld() {
     if (!(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) return;
     const double perSubstep = 1.0 / lastInnerH_, perStep = 1.0 / lastStepH_;
     forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
-        for (std::size_t i = first; i < end; ++i) {
-            ContactConstraint& c = constraints_[i];
-            const bool jointedA = c.bodyA >= 0 && bodies_[c.bodyA].jointed;
-            const bool jointedB = c.bodyB >= 0 && bodies_[c.bodyB].jointed;
-            const bool jointed = jointedA && jointedB;  // both: the force's bound below
-            const bool holdsJointed = jointedA || jointedB;
-            const double most = jointed ? kJointedHoldWeights * weightField_ *
-                                              (bodies_[c.bodyA].mass + bodies_[c.bodyB].mass)
-                                        : std::numeric_limits<double>::infinity();
-            for (int k = 0; k < c.pointCount; ++k) {
-                ContactPoint& p = c.points[k];
-                p.heldNormal = p.heldTangent = 0.0;
-                // Where the solver's path has left it (separation_ is of these rows).
-                if (!holdsJointed && separationOf(i, k) < -c.deepOverlap) continue;
-                // Where the frame's collide found it, after the method's step.
-                if (holdsJointed && p.baseSeparation > kHeldOpenShare * c.deepOverlap) continue;
-                const Vec2 force = forceOf(p, perSubstep, perStep);
-                p.heldNormal =
-                    std::min(std::clamp(force.x(), 0.0, std::max(double(p.lastNormal), 0.0)), most);
-                if (force.y() * p.lastTangent > 0.0)
-                    p.heldTangent = std::copysign(
-                        std::min({std::abs(force.y()), std::abs(double(p.lastTangent)), most}),
-                        force.y());
-            }
-        }
+        for (std::size_t i = first; i < end; ++i) holdConstraint(i, perSubstep, perStep);
     });
+}
+
+void ContactSolver::holdConstraint(std::size_t i, double perSubstep, double perStep) {
+    ContactConstraint& c = constraints_[i];
+    const bool jointedA = c.bodyA >= 0 && bodies_[c.bodyA].jointed;
+    const bool jointedB = c.bodyB >= 0 && bodies_[c.bodyB].jointed;
+    const bool jointed = jointedA && jointedB;  // both: the force's bound below
+    const bool holdsJointed = jointedA || jointedB;
+    const double most = jointed ? kJointedHoldWeights * weightField_ *
+                                      (bodies_[c.bodyA].mass + bodies_[c.bodyB].mass)
+                                : std::numeric_limits<double>::infinity();
+    for (int k = 0; k < c.pointCount; ++k) {
+        ContactPoint& p = c.points[k];
+        p.heldNormal = p.heldTangent = 0.0;
+        // Where the solver's path has left it (separation_ is of these rows).
+        if (!holdsJointed && separationOf(i, k) < -c.deepOverlap) continue;
+        // Where the frame's collide found it, after the method's step.
+        if (holdsJointed && p.baseSeparation > kHeldOpenShare * c.deepOverlap) continue;
+        const Vec2 force = forceOf(p, perSubstep, perStep);
+        p.heldNormal =
+            std::min(std::clamp(force.x(), 0.0, std::max(double(p.lastNormal), 0.0)), most);
+        if (force.y() * p.lastTangent > 0.0)
+            p.heldTangent = std::copysign(
+                std::min({std::abs(force.y()), std::abs(double(p.lastTangent)), most}), force.y());
+    }
 }
 
 namespace {

@@ -748,9 +748,8 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
 
     deepPushOut(h, settings);
     // The accumulated impulses, for the next step's warm start, all of them the solve's.
-    storeImpulses(true);
     lastStepH_ = h;
-    refreshHeld();
+    keepStep(true);
 
     // A force held over the step moves a body by positionWeight·h·Δv under the user's method;
     // inner sub-stepping moved it by (n + 1)/(2n)·h·Δv. Moving it by the difference keeps a
@@ -793,23 +792,42 @@ void ContactSolver::storeImpulses(bool solved) {
     // them into rows_ first.
     const bool fromLanes = solved && lanesHold_;
     forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) storeConstraint(i, fromLanes, solved);
+    });
+}
+
+void ContactSolver::storeConstraint(std::size_t i, bool fromLanes, bool solved) {
+    ContactConstraint& c = constraints_[i];
+    const int at = fromLanes ? slot_[i] : -1;
+    for (int k = 0; k < c.pointCount; ++k) {
+        ContactPoint& p = c.points[k];
+        if (at >= 0) {
+            const WideRow::Point& w = wide_[at / kLanes].p[k];
+            p.normalImpulse = w.normalImpulse[at % kLanes];
+            p.tangentImpulse = w.tangentImpulse[at % kLanes];
+        } else {
+            p.normalImpulse = rows_[i].p[k].normalImpulse;
+            p.tangentImpulse = rows_[i].p[k].tangentImpulse;
+        }
+        if (!solved) continue;
+        p.solvedNormal = p.normalImpulse;
+        p.solvedTangent = p.tangentImpulse;
+    }
+}
+
+void ContactSolver::keepStep(bool solved) {
+    // storeImpulses() and refreshHeld() in one walk over the constraints: each constraint's held
+    // forces read only its own impulses, just stored.
+    if (!(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) {
+        storeImpulses(solved);
+        return;
+    }
+    const bool fromLanes = solved && lanesHold_;
+    const double perSubstep = 1.0 / lastInnerH_, perStep = 1.0 / lastStepH_;
+    forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
-            ContactConstraint& c = constraints_[i];
-            const int at = fromLanes ? slot_[i] : -1;
-            for (int k = 0; k < c.pointCount; ++k) {
-                ContactPoint& p = c.points[k];
-                if (at >= 0) {
-                    const WideRow::Point& w = wide_[at / kLanes].p[k];
-                    p.normalImpulse = w.normalImpulse[at % kLanes];
-                    p.tangentImpulse = w.tangentImpulse[at % kLanes];
-                } else {
-                    p.normalImpulse = rows_[i].p[k].normalImpulse;
-                    p.tangentImpulse = rows_[i].p[k].tangentImpulse;
-                }
-                if (!solved) continue;
-                p.solvedNormal = p.normalImpulse;
-                p.solvedTangent = p.tangentImpulse;
-            }
+            storeConstraint(i, fromLanes, solved);
+            holdConstraint(i, perSubstep, perStep);
         }
     });
 }

@@ -193,10 +193,7 @@ public:
     void relaxJoined(Vec& u, const TangentProjection& joints);
     // Keeps the rows' accumulated impulses in the constraints, for the next step's warm start
     // and held forces (solveStep does; call after relaxJoined).
-    void keepImpulses() {
-        storeImpulses();
-        refreshHeld();
-    }
+    void keepImpulses() { keepStep(false); }
     bool empty() const { return constraints_.empty(); }
     // The contact forces the kept impulses stand for, held over the next step (Box2D's warm
     // start, taken into the method's step as a force): per state index, each point's held force
@@ -683,6 +680,8 @@ private:
     // Each point's force held over the next step (ContactPoint), from the kept impulses: at the
     // end of solveStep and after relaxJoined (keepImpulses()).
     void refreshHeld();
+    // refreshHeld() for constraint i (perSubstep, perStep as forceOf()'s).
+    void holdConstraint(std::size_t i, double perSubstep, double perStep);
 
     // relaxJoined(): one scalar row of a contact point (its normal or its tangent), g·u its
     // bodies' relative velocity along dir at the point. column: its W'·gᵀ over the whole state
@@ -738,6 +737,9 @@ private:
     // solved: they are the solve's (ContactPoint::solvedNormal), not the joined relax's, and a
     // coloured row's are still in its lanes (solveStep); else all are in rows_.
     void storeImpulses(bool solved = false);
+    void storeConstraint(std::size_t i, bool fromLanes, bool solved);
+    // storeImpulses(solved) then refreshHeld(), in one walk over the constraints.
+    void keepStep(bool solved);
     // Per body, the held forces' share of the smooth step's change (after loadBodies).
     void holdBodies(double h);
     double lastInnerH_ = 0.0;   // the last step's inner sub-step (its impulses are per one)
