@@ -651,21 +651,8 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     // the solver adds to it only what the contact impulses change.
     const bool lengthsKnown = lastInnerH_ > 0.0 && lastStepH_ > 0.0;
     holding_ = holding && lengthsKnown;
-    // The force the last step's impulses stood for becomes the bound of the next held force
-    // (its own held force, read below, is already set).
-    const double perSubstep = lengthsKnown ? 1.0 / lastInnerH_ : 0.0;
-    const double perStep = lengthsKnown ? 1.0 / lastStepH_ : 0.0;
-    forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
-        for (std::size_t i = first; i < end; ++i) {
-            ContactConstraint& c = constraints_[i];
-            for (int k = 0; k < c.pointCount; ++k) {
-                ContactPoint& p = c.points[k];
-                const Vec2 force = forceOf(p, perSubstep, perStep);
-                p.lastNormal = static_cast<float>(force.x());
-                p.lastTangent = static_cast<float>(force.y());
-            }
-        }
-    });
+    // The force the last step's impulses stood for becomes the bound of the next held force, in
+    // stackSubsteps()' walk over the constraints.
     loadBodies(q0, u0, u);
     holdBodies(h);
     const int base = innerSubsteps(h, settings);

@@ -160,10 +160,22 @@ int ContactSolver::stackSubsteps(double h, int base, const ContactSettings& sett
     // The deepest contact's sink over the most it may sink is a maximum, the same in any order.
     supports_.resize(constraints_.size());
     std::atomic<double> worst{0.0};
+    // The walk also keeps each point's force of the last step as the bound of the next held
+    // force (ContactPoint::lastNormal; its own held force was set at the last step's end), so
+    // that the step starts with one walk over the constraints, not two.
+    const bool lengthsKnown = lastInnerH_ > 0.0 && lastStepH_ > 0.0;
+    const double perSubstep = lengthsKnown ? 1.0 / lastInnerH_ : 0.0;
+    const double perStep = lengthsKnown ? 1.0 / lastStepH_ : 0.0;
     forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
         double worstSink = 0.0;
         for (std::size_t i = first; i < end; ++i) {
-            const ContactConstraint& c = constraints_[i];
+            ContactConstraint& c = constraints_[i];
+            for (int k = 0; k < c.pointCount; ++k) {
+                ContactPoint& p = c.points[k];
+                const Vec2 force = forceOf(p, perSubstep, perStep);
+                p.lastNormal = static_cast<float>(force.x());
+                p.lastTangent = static_cast<float>(force.y());
+            }
             Support& s = supports_[i];
             s.upper = -1;
             const double w = omega * c.stiffness;
