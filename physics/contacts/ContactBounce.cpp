@@ -25,8 +25,8 @@ constexpr double kSupportCosine = 0.7071;
 }  // namespace
 
 void ContactSolver::oneSidedTerms(BounceTerms& t, const BodyState& a, const BodyState& b) {
-    // The masses of the row with a held body's inverse masses zero (buildRow()'s K and the
-    // block's conditioning); no time-of-impact shift (that moves both).
+    // The masses of the row with a held body's inverse masses zero (buildRow()'s K, pairBlock());
+    // no time-of-impact shift (that moves both).
     double rn[2][2] = {};
     for (int k = 0; k < t.pointCount; ++k) {
         const double* arm = t.arm[k];
@@ -38,11 +38,12 @@ void ContactSolver::oneSidedTerms(BounceTerms& t, const BodyState& a, const Body
     }
     t.isolated = false;
     if (t.pointCount < 2) return;
-    const double m = a.invMass + b.invMass;
-    t.k11 = m + a.invInertia * rn[0][0] * rn[0][0] + b.invInertia * rn[0][1] * rn[0][1];
-    t.k22 = m + a.invInertia * rn[1][0] * rn[1][0] + b.invInertia * rn[1][1] * rn[1][1];
-    t.k12 = m + a.invInertia * rn[0][0] * rn[1][0] + b.invInertia * rn[0][1] * rn[1][1];
-    t.blockable = t.blockable && !(t.k11 * t.k11 >= 1000.0 * (t.k11 * t.k22 - t.k12 * t.k12));
+    const PairBlock k = pairBlock(a.invMass, a.invInertia, b.invMass, b.invInertia, rn[0][0],
+                                  rn[0][1], rn[1][0], rn[1][1]);
+    t.k11 = k.k11;
+    t.k12 = k.k12;
+    t.k22 = k.k22;
+    t.blockable = t.blockable && k.blockable;
 }
 
 bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settings) {
@@ -244,8 +245,8 @@ bool ContactSolver::bounce(double h, int substeps, const ContactSettings& settin
                 // would. Pairwise, each inelastic hand-on up a tower halved the approach (the two
                 // leave at their mean velocity), and three boxes up it fell below the threshold:
                 // the boxes above sank into each other; a brick-bonded pyramid landing on a floor
-                // of e = 0.5 was turned over by the passes' one-sided pushes (its correction
-                // 370 J, then 790 J). Only where that slows the other body: at each point the
+                // of e = 0.5 was spread by the passes' pairwise pushes (its correction 370 J,
+                // then 790 J). Only where that slows the other body: at each point the
                 // two bodies' speeds along the normal sum to the held one's side (the impulse λ
                 // on the other does work λ·(v + v')/2 ≤ 0). A domino still turning on the floor,
                 // met by the next one, passed its turn on for nothing.

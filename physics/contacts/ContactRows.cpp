@@ -2,6 +2,7 @@
 // rows built from them for the step's solve, the coloured ones straight into their lanes
 // (ContactColours.cpp), and the lanes unpacked for the passes that read whole rows.
 #include "physics/contacts/ContactChunks.h"
+#include "physics/contacts/ContactImpulse.h"
 #include "physics/contacts/ContactSolver.h"
 
 #include <algorithm>
@@ -211,11 +212,12 @@ void ContactSolver::buildRow(std::size_t i, Row& row, RowSetup& setup, const Bui
         const double mB = b.invMass, iB = b.invInertia;
         const double rn1A = cross(c.points[0].anchorA, n), rn1B = cross(c.points[0].anchorB, n);
         const double rn2A = cross(c.points[1].anchorA, n), rn2B = cross(c.points[1].anchorB, n);
-        row.k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
-        row.k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
-        row.k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
-        // Nearly coincident points make K singular: the sequential solve handles them.
-        setup.blockable = !(row.k11 * row.k11 >= 1000.0 * (row.k11 * row.k22 - row.k12 * row.k12));
+        const contact_impulse::PairBlock k =
+            contact_impulse::pairBlock(mA, iA, mB, iB, rn1A, rn1B, rn2A, rn2B);
+        row.k11 = k.k11;
+        row.k22 = k.k22;
+        row.k12 = k.k12;
+        setup.blockable = k.blockable;
     }
 }
 

@@ -774,15 +774,6 @@ void ContactSolver::solveStep(double h, const Vec& q0, const Vec& u0, Vec& q, Ve
     });
 }
 
-void ContactSolver::storeImpulses(bool solved) {
-    // The solve's impulses straight from the lanes: one pass over the rows fewer than unpacking
-    // them into rows_ first.
-    const bool fromLanes = solved && lanesHold_;
-    forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
-        for (std::size_t i = first; i < end; ++i) storeConstraint(i, fromLanes, solved);
-    });
-}
-
 void ContactSolver::storeConstraint(std::size_t i, bool fromLanes, bool solved) {
     ContactConstraint& c = constraints_[i];
     const int at = fromLanes ? slot_[i] : -1;
@@ -803,18 +794,18 @@ void ContactSolver::storeConstraint(std::size_t i, bool fromLanes, bool solved) 
 }
 
 void ContactSolver::keepStep(bool solved) {
-    // storeImpulses() and refreshHeld() in one walk over the constraints: each constraint's held
-    // forces read only its own impulses, just stored.
-    if (!(lastInnerH_ > 0.0) || !(lastStepH_ > 0.0)) {
-        storeImpulses(solved);
-        return;
-    }
+    // The accumulated impulses into the constraints and each point's held force from them
+    // (refreshHeld(), once the step's lengths are known), in one walk: a constraint's held
+    // forces read only its own impulses, just stored. The solve's impulses come straight from
+    // the lanes: one pass over the rows fewer than unpacking them into rows_ first.
     const bool fromLanes = solved && lanesHold_;
-    const double perSubstep = 1.0 / lastInnerH_, perStep = 1.0 / lastStepH_;
+    const bool hold = lastInnerH_ > 0.0 && lastStepH_ > 0.0;
+    const double perSubstep = hold ? 1.0 / lastInnerH_ : 0.0;
+    const double perStep = hold ? 1.0 / lastStepH_ : 0.0;
     forChunks(constraints_.size(), kRowGrain, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             storeConstraint(i, fromLanes, solved);
-            holdConstraint(i, perSubstep, perStep);
+            if (hold) holdConstraint(i, perSubstep, perStep);
         }
     });
 }

@@ -426,7 +426,8 @@ private:
     void loadBodies(const Vec& q0, const Vec& u0, const Vec& u);
     bool holding_ = false;  // this solveStep's holding
     // Sub-steps for this step: `base`, or more when the stack the warm-start impulses carry
-    // would sag further than kSagTarget at the base stiffness (after loadBodies).
+    // would sag further than its height allows (allowedSag()) at the base stiffness (after
+    // loadBodies).
     int stackSubsteps(double h, int base, const ContactSettings& settings);
     // depth_ from supports_: how far each body sinks down its support chains, and height_ how
     // high its centre stands up them (0 on a cycle), in the supports'
@@ -677,8 +678,9 @@ private:
     // The force a point's kept impulses stand for, along its normal and tangent.
     // (perSubstep and perStep: 1 over the last step's inner sub-step and step).
     static Vec2 forceOf(const ContactPoint& p, double perSubstep, double perStep);
-    // Each point's force held over the next step (ContactPoint), from the kept impulses: at the
-    // end of solveStep and after relaxJoined (keepImpulses()).
+    // Each point's force held over the next step (ContactPoint), from the kept impulses: per
+    // constraint in keepStep() (the end of solveStep, and after relaxJoined), whole after a
+    // trial solve (primeHeld()).
     void refreshHeld();
     // refreshHeld() for constraint i (perSubstep, perStep as forceOf()'s).
     void holdConstraint(std::size_t i, double perSubstep, double perStep);
@@ -733,13 +735,12 @@ private:
     Vec joinedColumns_, joinedScratch_;
     std::size_t joinedCached_ = 0;  // columns in joinedColumns_ this step
 
-    // The accumulated impulses into the constraints.
+    // The accumulated impulses into the constraints, then refreshHeld(), in one walk.
     // solved: they are the solve's (ContactPoint::solvedNormal), not the joined relax's, and a
     // coloured row's are still in its lanes (solveStep); else all are in rows_.
-    void storeImpulses(bool solved = false);
-    void storeConstraint(std::size_t i, bool fromLanes, bool solved);
-    // storeImpulses(solved) then refreshHeld(), in one walk over the constraints.
     void keepStep(bool solved);
+    // keepStep()'s store for constraint i (fromLanes: from the lanes where it has a slot).
+    void storeConstraint(std::size_t i, bool fromLanes, bool solved);
     // Per body, the held forces' share of the smooth step's change (after loadBodies).
     void holdBodies(double h);
     double lastInnerH_ = 0.0;   // the last step's inner sub-step (its impulses are per one)
